@@ -1,0 +1,373 @@
+/* Scene manifest parser (format in scene.h). */
+#include "scene.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+
+#include "cli.h"
+
+const char *const scene_model_names[] = {"schlick",        "lsk",  "lsk-comp",
+                                         "f82",            "gulbrandsen",
+                                         "cook-torrance",  "exact",
+                                         "exact-gaussian", "approx-conductor",
+                                         NULL};
+const char *const scene_space_names[] = {"srgb",      "display-p3", "dci-p3",
+                                         "adobe-rgb", "rec2020",    "acescg",
+                                         NULL};
+/* Number types the generator can emit; a new type is one more entry here. */
+const char *const scene_type_names[] = {"f32", NULL};
+const char *const scene_lut_spacing_names[] = {"uniform", "grazing", NULL};
+
+enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
+                 KEY_LUT_SPACING, KEY_COUNT };
+static const char *const key_names[] = {"materials", "models", "space",       "sigma",
+                                        "n1",        "types",  "lut_spacing", NULL};
+
+#define SIGMA_MAX 200.0
+#define N1_MIN 1.0
+#define N1_MAX 4.0
+
+static int *key_line(scene *s, int key)
+{
+    switch (key) {
+    case KEY_MATERIALS: return &s->materials_line;
+    case KEY_MODELS: return &s->models_line;
+    case KEY_SPACE: return &s->space_line;
+    case KEY_SIGMA: return &s->sigma_line;
+    case KEY_N1: return &s->n1_line;
+    case KEY_TYPES: return &s->types_line;
+    default: return &s->lut_spacing_line;
+    }
+}
+
+/* Messages echo whole user values, so neither part has a fixed length bound;
+ * both are sized with a measuring vsnprintf before cli_error prints them. */
+static int report(const char *path, int line, const char *fmt, ...)
+{
+    va_list ap;
+    int len, where_len;
+    char *msg, *where;
+    va_start(ap, fmt);
+    len = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    where_len = line > 0 ? snprintf(NULL, 0, "%s:%d", path, line) : (int)strlen(path);
+    msg = malloc((size_t)(len > 0 ? len : 0) + 1);
+    where = malloc((size_t)where_len + 1);
+    if (msg == NULL || where == NULL) {
+        free(msg);
+        free(where);
+        return cli_error(path, "out of memory reporting an error at line %d", line);
+    }
+    va_start(ap, fmt);
+    vsnprintf(msg, (size_t)len + 1, fmt, ap);
+    va_end(ap);
+    if (line > 0)
+        snprintf(where, (size_t)where_len + 1, "%s:%d", path, line);
+    else
+        memcpy(where, path, (size_t)where_len + 1);
+    cli_error(where, "%s", msg);
+    free(msg);
+    free(where);
+    return CLI_BAD_INPUT;
+}
+
+static int table_index(const char *const *table, const char *s)
+{
+    int i;
+    for (i = 0; table[i] != NULL; i++)
+        if (strcmp(table[i], s) == 0)
+            return i;
+    return -1;
+}
+
+/* "a, b, c" for messages; fits every table here with room to spare. */
+static const char *table_list(const char *const *table, char *buf, size_t size)
+{
+    size_t used = 0;
+    int i;
+    buf[0] = '\0';
+    for (i = 0; table[i] != NULL; i++) {
+        int n = snprintf(buf + used, size - used, "%s%s", i ? ", " : "", table[i]);
+        if (n < 0 || (size_t)n >= size - used)
+            break;
+        used += (size_t)n;
+    }
+    return buf;
+}
+
+static char *trim(char *s)
+{
+    char *end;
+    while (isspace((unsigned char)*s))
+        s++;
+    end = s + strlen(s);
+    while (end > s && isspace((unsigned char)end[-1]))
+        end--;
+    *end = '\0';
+    return s;
+}
+
+/* Split off the next whitespace-separated token of *cursor, NUL-terminating
+ * it in place; NULL when none is left. */
+static char *next_token(char **cursor)
+{
+    char *p = *cursor, *start;
+    while (isspace((unsigned char)*p))
+        p++;
+    if (*p == '\0') {
+        *cursor = p;
+        return NULL;
+    }
+    start = p;
+    while (*p != '\0' && !isspace((unsigned char)*p))
+        p++;
+    if (*p != '\0')
+        *p++ = '\0';
+    *cursor = p;
+    return start;
+}
+
+int scene_model_lut_size(const char *model, int *residual)
+{
+    const char *p;
+    int n = 0, digits = 0;
+    if (model == NULL || strncmp(model, "lut", 3) != 0)
+        return 0;
+    p = model + 3;
+    if (*p == '0') /* one spelling per size, so duplicates are caught by name */
+        return 0;
+    while (isdigit((unsigned char)*p) && digits < 4) {
+        n = n * 10 + (*p - '0');
+        p++;
+        digits++;
+    }
+    if (digits == 0 || n < SCENE_LUT_MIN || n > SCENE_LUT_MAX)
+        return 0;
+    if (*p == '\0') {
+        if (residual)
+            *residual = 0;
+        return n;
+    }
+    if (strcmp(p, "-residual") == 0) {
+        if (residual)
+            *residual = 1;
+        return n;
+    }
+    return 0;
+}
+
+int scene_model_known(const char *model)
+{
+    return model != NULL &&
+           (table_index(scene_model_names, model) >= 0 || scene_model_lut_size(model, NULL) > 0);
+}
+
+static int material_id_ok(const char *id)
+{
+    for (; *id; id++)
+        if (!((*id >= 'a' && *id <= 'z') || (*id >= '0' && *id <= '9') || *id == '_'))
+            return 0;
+    return 1;
+}
+
+static int find_in(char (*list)[SCENE_NAME_SIZE], int count, const char *s)
+{
+    int i;
+    for (i = 0; i < count; i++)
+        if (strcmp(list[i], s) == 0)
+            return i;
+    return -1;
+}
+
+static int parse_materials(const char *path, int line, char *value, scene *s)
+{
+    char *cursor = value, *id;
+    int i;
+    while ((id = next_token(&cursor)) != NULL) {
+        if (!material_id_ok(id))
+            return report(path, line, "expected material ids made of a-z, 0-9 and _, got '%s'", id);
+        if (strlen(id) >= SCENE_ID_SIZE)
+            return report(path, line, "expected a material id of at most %d characters, got '%s'",
+                          SCENE_ID_SIZE - 1, id);
+        for (i = 0; i < s->material_count; i++)
+            if (strcmp(s->materials[i], id) == 0)
+                return report(path, line, "expected each material once, '%s' is listed twice", id);
+        if (s->material_count == SCENE_MAX_MATERIALS)
+            return report(path, line, "expected at most %d materials", SCENE_MAX_MATERIALS);
+        strcpy(s->materials[s->material_count++], id);
+    }
+    return 0;
+}
+
+static int parse_models(const char *path, int line, char *value, scene *s)
+{
+    char *cursor = value, *model, names[256];
+    while ((model = next_token(&cursor)) != NULL) {
+        if (!scene_model_known(model)) {
+            if (strncmp(model, "lut", 3) == 0)
+                return report(path, line,
+                              "expected lutN or lutN-residual with N an integer in %d..%d "
+                              "(no leading zeros), got '%s'",
+                              SCENE_LUT_MIN, SCENE_LUT_MAX, model);
+            return report(path, line,
+                          "expected a model (one of %s, lutN, lutN-residual), got '%s'",
+                          table_list(scene_model_names, names, sizeof names), model);
+        }
+        if (find_in(s->models, s->model_count, model) >= 0)
+            return report(path, line, "expected each model once, '%s' is listed twice", model);
+        if (s->model_count == SCENE_MAX_MODELS)
+            return report(path, line, "expected at most %d models", SCENE_MAX_MODELS);
+        strcpy(s->models[s->model_count++], model);
+    }
+    return 0;
+}
+
+static int parse_types(const char *path, int line, char *value, scene *s)
+{
+    char *cursor = value, *type, names[256];
+    s->type_count = 0; /* replaces the default */
+    while ((type = next_token(&cursor)) != NULL) {
+        if (table_index(scene_type_names, type) < 0)
+            return report(path, line, "expected a number type (one of %s), got '%s'",
+                          table_list(scene_type_names, names, sizeof names), type);
+        if (find_in(s->types, s->type_count, type) >= 0)
+            return report(path, line, "expected each type once, '%s' is listed twice", type);
+        if (s->type_count == SCENE_MAX_TYPES)
+            return report(path, line, "expected at most %d types", SCENE_MAX_TYPES);
+        strcpy(s->types[s->type_count++], type);
+    }
+    return 0;
+}
+
+/* A value that must be one name of `table`, copied to dst. */
+static int parse_choice(const char *path, int line, const char *what,
+                        const char *const *table, const char *value, char *dst)
+{
+    char names[256];
+    if (table_index(table, value) < 0)
+        return report(path, line, "expected a %s (one of %s), got '%s'", what,
+                      table_list(table, names, sizeof names), value);
+    strcpy(dst, value);
+    return 0;
+}
+
+static int parse_number(const char *path, int line, const char *key, const char *value,
+                        double lo, double hi, double *out)
+{
+    double v;
+    if (cli_parse_double(value, &v) != 0 || !(v >= lo && v <= hi))
+        return report(path, line, "expected %s as a number in [%g, %g], got '%s'", key, lo, hi,
+                      value);
+    *out = v;
+    return 0;
+}
+
+static int parse_value(const char *path, int line, int key, char *value, scene *s)
+{
+    switch (key) {
+    case KEY_MATERIALS: return parse_materials(path, line, value, s);
+    case KEY_MODELS: return parse_models(path, line, value, s);
+    case KEY_TYPES: return parse_types(path, line, value, s);
+    case KEY_SPACE:
+        return parse_choice(path, line, "colour space", scene_space_names, value, s->space);
+    case KEY_LUT_SPACING:
+        return parse_choice(path, line, "LUT spacing", scene_lut_spacing_names, value,
+                            s->lut_spacing);
+    case KEY_SIGMA: return parse_number(path, line, "sigma (nm)", value, 0.0, SIGMA_MAX, &s->sigma);
+    default: return parse_number(path, line, "n1", value, N1_MIN, N1_MAX, &s->n1);
+    }
+}
+
+static void set_defaults(scene *s)
+{
+    memset(s, 0, sizeof *s);
+    strcpy(s->space, "srgb");
+    strcpy(s->lut_spacing, "grazing");
+    strcpy(s->types[0], "f32");
+    s->type_count = 1;
+    s->sigma = 25.0;
+    s->n1 = 1.0;
+}
+
+/* One non-blank, non-comment line, comments already cut off. */
+static int parse_line(const char *path, int line, char *text, scene *s)
+{
+    char *eq = strchr(text, '='), *key, *value, names[256];
+    int k, *where;
+    if (eq == NULL)
+        return report(path, line, "expected 'key = value', got '%s'", text);
+    *eq = '\0';
+    key = trim(text);
+    value = trim(eq + 1);
+    if (*key == '\0')
+        return report(path, line, "expected a key before '='");
+    k = table_index(key_names, key);
+    if (k < 0)
+        return report(path, line, "expected a key (one of %s), got '%s'",
+                      table_list(key_names, names, sizeof names), key);
+    where = key_line(s, k);
+    if (*where != 0)
+        return report(path, line, "expected '%s' once, it is already set at line %d", key, *where);
+    if (*value == '\0')
+        return report(path, line, "expected a value after '%s ='", key);
+    *where = line;
+    return parse_value(path, line, k, value, s);
+}
+
+int scene_load(const char *path, scene *out)
+{
+    FILE *f;
+    char *buf = NULL;
+    size_t cap = 0;
+    ssize_t len;
+    int line = 0, rc = 0, read_errno;
+    set_defaults(out);
+    f = fopen(path, "rb");
+    if (f == NULL)
+        return report(path, 0, "cannot read: %s", strerror(errno));
+    for (;;) {
+        char *text, *hash;
+        errno = 0;
+        len = getline(&buf, &cap, f);
+        read_errno = errno;
+        if (len < 0)
+            break;
+        line++;
+        text = buf;
+        if (strlen(text) != (size_t)len) {
+            rc = report(path, line, "expected text, found a NUL byte");
+            break;
+        }
+        if (line == 1 && len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
+            text += 3;
+        hash = strchr(text, '#');
+        if (hash != NULL)
+            *hash = '\0';
+        text = trim(text);
+        if (*text == '\0')
+            continue;
+        rc = parse_line(path, line, text, out);
+        if (rc != 0)
+            break;
+    }
+    free(buf);
+    if (rc == 0 && ferror(f)) {
+        fclose(f);
+        return report(path, 0, "cannot read: %s", strerror(read_errno ? read_errno : EIO));
+    }
+    fclose(f);
+    if (rc != 0)
+        return rc;
+    if (out->materials_line == 0)
+        return report(path, line > 0 ? line : 1,
+                      "expected a 'materials = id ...' line, the required key is missing");
+    if (out->models_line == 0)
+        return report(path, line > 0 ? line : 1,
+                      "expected a 'models = name ...' line, the required key is missing");
+    return 0;
+}

@@ -1,0 +1,97 @@
+/* Scene manifests: which materials, models and number types one generated C
+ * header contains (host only).
+ *
+ * FORMAT (the reference for users)
+ *   UTF-8 or ASCII text, one `key = value` per line. Blank lines and lines
+ *   whose first non-blank character is `#` are ignored; a `#` after a value
+ *   starts a comment running to the end of the line (no value contains `#`).
+ *   Whitespace around keys and values is trimmed; CRLF line ends and a UTF-8
+ *   byte-order mark at the start of the file are accepted. Each key may appear
+ *   at most once.
+ *
+ *   materials    required. Whitespace-separated material ids, each matching
+ *                [a-z0-9_]+ and at most 31 characters, at most 64 of them,
+ *                no duplicates. Whether they exist in the data pack is the
+ *                caller's check (report it at scene.materials_line).
+ *   models       required. Whitespace-separated, no duplicates, each one of
+ *                scene_model_names[] (schlick, lsk, lsk-comp, f82, gulbrandsen,
+ *                cook-torrance, exact, exact-gaussian, approx-conductor) or a
+ *                lookup table `lutN` / `lutN-residual` with N an integer in
+ *                SCENE_LUT_MIN..SCENE_LUT_MAX written without leading zeros
+ *                (lut16, lut32-residual). At most SCENE_MAX_MODELS entries.
+ *   space        optional, default srgb; one of scene_space_names[] (srgb,
+ *                display-p3, dci-p3, adobe-rgb, rec2020, acescg).
+ *   sigma        optional, default 25; Gaussian window width in nm, a finite
+ *                number in [0, 200] (0 = point sampling).
+ *   n1           optional, default 1; real index of the incident medium, a
+ *                finite number in [1, 4].
+ *   types        optional, default f32; whitespace-separated number types
+ *                from scene_type_names[], no duplicates.
+ *   lut_spacing  optional, default grazing; one of scene_lut_spacing_names[]:
+ *                uniform (LUT nodes uniform in cos theta) or grazing (nodes
+ *                denser towards cos theta = 0).
+ *
+ *   Example:
+ *       # metals for the demo scene
+ *       materials = gold silver copper
+ *       models    = schlick f82 lut32-residual
+ *       space     = display-p3   # the panel's gamut
+ *       sigma     = 20
+ *
+ * ERRORS
+ *   Reported on stderr as "path:line: what was expected" (cli_error) and
+ *   returned as CLI_BAD_INPUT: a line without `=`, an empty key or value, an
+ *   unknown key, a key given twice (the message names both lines), a malformed
+ *   or out-of-range number, an unknown space/model/type/spacing, a bad or
+ *   repeated list entry, too many entries. A missing required key is reported
+ *   at the file's last line (line 1 for an empty file), where it would be
+ *   added. An unreadable file gives "path: cannot read: <reason>". */
+#ifndef FRESNEL_SCENE_H
+#define FRESNEL_SCENE_H
+
+#define SCENE_MAX_MATERIALS 64
+#define SCENE_ID_SIZE 32 /* material id, NUL included: matches material_info.id */
+#define SCENE_MAX_MODELS 64
+#define SCENE_NAME_SIZE 24 /* model, type, space or spacing name, NUL included */
+#define SCENE_MAX_TYPES 16
+#define SCENE_LUT_MIN 4
+#define SCENE_LUT_MAX 256
+
+/* The vocabulary, NULL-terminated, for reuse in --help text. The LUT models
+ * are a pattern rather than names: see scene_model_lut_size. */
+extern const char *const scene_model_names[];
+extern const char *const scene_space_names[];
+extern const char *const scene_type_names[];
+extern const char *const scene_lut_spacing_names[];
+
+typedef struct scene {
+    /* Line of the file where each key was set; 0 where the default applies. */
+    int materials_line, models_line, space_line, sigma_line, n1_line, types_line,
+        lut_spacing_line;
+
+    int material_count;
+    char materials[SCENE_MAX_MATERIALS][SCENE_ID_SIZE];
+    int model_count;
+    char models[SCENE_MAX_MODELS][SCENE_NAME_SIZE];
+    int type_count;
+    char types[SCENE_MAX_TYPES][SCENE_NAME_SIZE];
+    char space[SCENE_NAME_SIZE];
+    char lut_spacing[SCENE_NAME_SIZE];
+    double sigma; /* nm */
+    double n1;
+} scene;
+
+/* Read and validate a manifest. Returns 0, or CLI_BAD_INPUT after printing
+ * one message; *out is filled on success and unspecified on error. Lists
+ * keep the file's order. */
+int scene_load(const char *path, scene *out);
+
+/* N for "lutN" or "lutN-residual" (N in SCENE_LUT_MIN..SCENE_LUT_MAX, no
+ * leading zeros), setting *residual (if not NULL) to 1 for the residual
+ * variant and 0 otherwise; 0 for every other string. */
+int scene_model_lut_size(const char *model, int *residual);
+
+/* 1 if the model name is one the manifest accepts, else 0. */
+int scene_model_known(const char *model);
+
+#endif
