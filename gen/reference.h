@@ -1,0 +1,48 @@
+/* Double-precision reference of every model: the yardstick for every error
+ * bound in the project. Host only, never linked into the runtime.
+ *
+ * Same conventions as include/fresnel.h (relative eta and kappa, inputs
+ * clamped to the same domains, results in [0, 1]), evaluated in binary64.
+ * ref_conductor is the careful real form; ref_conductor_complex is an
+ * independent evaluation through complex amplitudes (C99 complex), and the
+ * tests hold the two to 1e-12 relative. */
+#ifndef FRESNEL_REFERENCE_H
+#define FRESNEL_REFERENCE_H
+
+double ref_schlick(double f0, double c);
+double ref_schlick_gen(double f0, double f90, double p, double c);
+double ref_schlick_internal(double f0, double eta, double c);
+double ref_f0_in_medium(double f0, double eta_e);
+double ref_f0_from_ior(double eta, double kappa);
+
+double ref_lsk(double n, double k, double c);
+double ref_lsk_comp(double n, double k, double a, double alpha, double c);
+/* LSK's derived constants [LS05]: a = 2n and alpha matching exact - rescaled
+ * at c = 0.15; a = alpha = 0 (no compensation) where that error is >= 0 or
+ * the fit would need alpha <= 0. */
+void ref_lsk_fit(double n, double k, double *a, double *alpha);
+
+double ref_f82(double f0, double f82, double c);
+
+void ref_gulbrandsen_nk(double r, double g, double *n, double *k);
+void ref_gulbrandsen_rg(double n, double k, double *r, double *g);
+double ref_gulbrandsen(double r, double g, double c);
+
+double ref_approx_conductor(double n, double k, double c);
+double ref_cook_torrance(double f0, double eta, double kappa, double c);
+
+/* Exact unpolarised reflectance, careful real form; *_sp gives Rs and Rp. */
+double ref_conductor(double eta, double kappa, double c);
+void ref_conductor_sp(double eta, double kappa, double c, double *rs, double *rp);
+/* 1 - ref_conductor, accurate when the reflectance is near 1. */
+double ref_conductor_transmittance(double eta, double kappa, double c);
+/* Independent: r_s, r_p from complex amplitudes with cos(theta_t) on the
+ * branch where the transmitted wave decays (Im >= 0). */
+double ref_conductor_complex(double eta, double kappa, double c);
+void ref_conductor_complex_sp(double eta, double kappa, double c, double *rs, double *rp);
+double ref_dielectric(double eta, double c);
+
+/* Same clamps as the runtime (fresnel.h CONVENTIONS); NaN gives lo. */
+double ref_clamp(double x, double lo, double hi);
+
+#endif

@@ -1,0 +1,122 @@
+/* The generator's spectral pipeline, one step per file, in the order the
+ * papers give it [MS18 sections 4-5; Hof20 "Computing RGB parameter values"]:
+ *
+ *   load_nk.c              measured wavelength,n,k table, validated
+ *   resample.c             0.1 nm grid over 360-830 nm, ends held
+ *   colorimetry.c          CIE 1931 2-degree CMFs and the D65 SPD
+ *   colour_space.c         primaries/white -> XYZ->RGB with Bradford adaptation
+ *   dominant_wavelength.c  white->primary ray meets the spectral locus
+ *   gaussian_window.c      RGB eta', kappa' around the dominant wavelengths
+ *   ground_truth.c         spectral Fresnel x illuminant x CMFs -> RGB
+ *   fit.c                  black-box RGB eta, kappa fit to the ground truth
+ *
+ * Host only (stdio, libm, malloc allowed). Errors are printed as
+ * "file:line: what was expected" through cli_error and reported as
+ * CLI_BAD_INPUT. */
+#ifndef FRESNEL_SPECTRAL_H
+#define FRESNEL_SPECTRAL_H
+
+#include <stddef.h>
+#include <stdio.h>
+
+#define SPEC_LO_NM 360.0
+#define SPEC_HI_NM 830.0
+#define SPEC_STEP_NM 0.1
+#define SPEC_N 4701 /* (830 - 360) / 0.1 + 1 */
+#define CMF_N 471   /* 360..830 at 1 nm */
+
+/* Where data/ is: --data DIR, else $FRESNEL_DATA, else the build's copy. */
+const char *data_dir(const char *override);
+
+/* ---- load_nk.c: a measured table as read (ascending unique wavelengths,
+ * finite numbers, n > 0, k >= 0, at least two rows, header line). */
+typedef struct nk_table {
+    int rows;
+    double *wl, *n, *k; /* malloc'd; nk_table_free */
+} nk_table;
+int load_nk(const char *path, nk_table *t); /* 0, or CLI_BAD_INPUT after a file:line message */
+void nk_table_free(nk_table *t);
+
+/* The other data tables (CMFs, illuminant, colour spaces, materials) are read
+ * through the same strict line reader as the n,k tables, so every file in
+ * data/ reports errors the same way. Lines may end in LF or CRLF; blank lines
+ * are allowed only at the end of the file. */
+typedef struct csv_reader {
+    FILE *f;
+    const char *path;
+    int line; /* 1-based number of the line last read */
+    char *buf;
+    size_t cap;
+} csv_reader;
+/* Open path and require its first line to be exactly `header`; 0 or CLI_BAD_INPUT. */
+int csv_open(csv_reader *r, const char *path, const char *header);
+/* Next data row, its line ending removed: 1 (row set), 0 at the end, or -1 after a message. */
+int csv_next_row(csv_reader *r, char **row);
+/* Split row in place at commas; returns the number of fields (only the first max are stored). */
+int csv_split(char *row, char **field, int max);
+/* Parse a whole field as a finite number, else a message naming the column; 0 or CLI_BAD_INPUT. */
+int csv_number(const csv_reader *r, const char *field, const char *column, double *out);
+/* "path:line: message" for the line last read; returns CLI_BAD_INPUT. */
+int csv_error(const csv_reader *r, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 2, 3)))
+#endif
+    ;
+void csv_close(csv_reader *r);
+
+/* ---- materials: data/materials.csv indexes the <id>.csv files. */
+typedef struct material_info {
+    char id[32];
+    char name[96];
+    char dataset[160];
+    char kind[16]; /* "metal" or "dielectric" */
+} material_info;
+/* Look up id; 0, or CLI_BAD_INPUT (unknown id) after a message naming `where`. */
+int material_lookup(const char *dir, const char *id, material_info *out, const char *where);
+/* All ids in file order; returns the count (<= max) or -1 after a message. */
+int material_list(const char *dir, material_info *out, int max);
+
+/* ---- resample.c */
+typedef struct spectrum {
+    double n[SPEC_N], k[SPEC_N]; /* at SPEC_LO_NM + i * SPEC_STEP_NM */
+    double measured_lo, measured_hi; /* part of 360-830 the table covered; outside it the end value is held */
+} spectrum;
+void resample(const nk_table *t, spectrum *s);
+/* load + resample of data/<id>.csv; 0 or CLI_BAD_INPUT. */
+int spectrum_load(const char *dir, const char *id, spectrum *s);
+
+/* ---- colorimetry.c */
+typedef struct colorimetry {
+    double xbar[CMF_N], ybar[CMF_N], zbar[CMF_N]; /* 360..830 nm, 1 nm */
+    double d65[CMF_N];                              /* relative SPD at the same wavelengths */
+} colorimetry;
+int colorimetry_load(const char *dir, colorimetry *cm);
+/* XYZ of a perfect reflector under the D65 SPD, normalised to Y = 1 with the
+ * same sums ground_truth uses (x = 0.31273, y = 0.32902 for the CIE tables). */
+void illuminant_white(const colorimetry *cm, double xyz[3]);
+
+/* ---- colour_space.c: spaces srgb, display-p3, dci-p3, adobe-rgb, rec2020, acescg. */
+typedef struct colour_space {
+    char id[16];
+    double primary[3][2]; /* xy of R, G, B */
+    double white[2];      /* the space's white, xy */
+    /* XYZ (D65-illuminated) -> linear RGB of the space: Bradford from the D65
+     * SPD's white to the space's white where they differ, then the space's
+     * matrix, then a per-channel scale so a perfect reflector is exactly (1,1,1). */
+    double xyz_to_rgb[3][3];
+} colour_space;
+int colour_space_load(const char *dir, const char *id, const colorimetry *cm, colour_space *cs);
+extern const char *const colour_space_ids[]; /* NULL-terminated */
+
+/* ---- dominant_wavelength.c: nm[0..2] for R, G, B. */
+void dominant_wavelengths(const colorimetry *cm, const colour_space *cs, double nm[3]);
+
+/* ---- gaussian_window.c: sigma in nm, 0 = point sampling (linear interpolation). */
+void gaussian_window(const spectrum *s, const double nm[3], double sigma, double eta[3],
+                     double kappa[3]);
+
+/* ---- ground_truth.c: RGB reflectance at cosine c, incident medium of index n1. */
+void ground_truth(const spectrum *s, const colorimetry *cm, const colour_space *cs, double n1,
+                  double c, double rgb[3]);
+
+#endif

@@ -1,0 +1,52 @@
+/* Gulbrandsen's reflectivity/edge-tint parameterisation [Gul14]. */
+#include <math.h>
+#include "internal.h"
+
+fresnel_nk fresnel_gulbrandsen_nk(float r, float g)
+{
+    fresnel_nk out;
+    float sr, nmin, nmax, k2;
+    r = fr__clamp(r, 0.0f, FRESNEL_GULBRANDSEN_R_MAX);
+    g = fr__unit(g);
+    sr = sqrtf(r);
+    nmin = (1.0f - r) / (1.0f + r);
+    /* (1 + sqrt r)/(1 - sqrt r) = (1 + sqrt r)^2/(1 - r): 1 - r is exact for
+     * r >= 0.5, whereas 1 - sqrt r loses the digits of r near 1. */
+    nmax = (1.0f + sr) * (1.0f + sr) / (1.0f - r);
+    out.n = g * nmin + (1.0f - g) * nmax;
+    /* r (n+1)^2 - (n-1)^2 = (1 - sqrt r) g (nmax - nmin) (sqrt r (n+1) + n - 1):
+     * dividing by 1 - r = (1 - sqrt r)(1 + sqrt r) leaves no difference of
+     * large terms (the paper's form subtracts two numbers near 1.6e9 when
+     * r = 0.9999 and g = 0). */
+    k2 = g * (nmax - nmin) * (sr * (out.n + 1.0f) + out.n - 1.0f) / (1.0f + sr);
+    out.k = k2 > 0.0f ? sqrtf(k2) : 0.0f;
+    return out;
+}
+
+fresnel_rg fresnel_gulbrandsen_rg(float n, float k)
+{
+    fresnel_rg out;
+    float rc, sr, nmin, nmax, span;
+    out.r = fresnel_f0_from_ior(n, k);
+    n = fr__eta(n);
+    rc = out.r < FRESNEL_GULBRANDSEN_R_MAX ? out.r : FRESNEL_GULBRANDSEN_R_MAX;
+    sr = sqrtf(rc);
+    nmin = (1.0f - rc) / (1.0f + rc);
+    nmax = (1.0f + sr) * (1.0f + sr) / (1.0f - rc);
+    span = nmax - nmin;
+    /* r = 0 (n 1, k 0) gives n = 1 for every g; report 0. */
+    out.g = span > 0.0f ? fr__unit((nmax - n) / span) : 0.0f;
+    return out;
+}
+
+float fresnel_gulbrandsen(float r, float g, float c)
+{
+    fresnel_nk nk = fresnel_gulbrandsen_nk(r, g);
+    return fresnel_approx_conductor(nk.n, nk.k, c);
+}
+
+fresnel_rgb fresnel_gulbrandsen_rgb(fresnel_rgb r, fresnel_rgb g, float c)
+{
+    FR__RGB(fresnel_gulbrandsen(r.r, g.r, c), fresnel_gulbrandsen(r.g, g.g, c),
+            fresnel_gulbrandsen(r.b, g.b, c));
+}

@@ -1,0 +1,92 @@
+/* Helpers shared by the runtime's model files; not part of the public API. */
+#ifndef FRESNEL_INTERNAL_H
+#define FRESNEL_INTERNAL_H
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+
+#include "fresnel.h"
+
+/* The error-free squares below rely on the IEEE binary32 layout. */
+typedef char fr__binary32_check[(FLT_MANT_DIG == 24 && FLT_MAX_EXP == 128) ? 1 : -1];
+
+/* Clamp into [lo, hi]. Written with comparisons so that NaN (which fails
+ * both) lands on lo and +-Inf on the nearer end: this one line is the whole
+ * input policy stated in fresnel.h. */
+static inline float fr__clamp(float x, float lo, float hi)
+{
+    return x > lo ? (x < hi ? x : hi) : lo;
+}
+
+static inline float fr__unit(float x) { return fr__clamp(x, 0.0f, 1.0f); }
+static inline float fr__eta(float x) { return fr__clamp(x, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX); }
+/* kappa below FRESNEL_KAPPA_TINY is 0: its square would underflow and the
+ * interface could not tell it from a dielectric in any case. */
+static inline float fr__kappa(float x)
+{
+    return x >= FRESNEL_KAPPA_TINY ? (x < FRESNEL_KAPPA_MAX ? x : FRESNEL_KAPPA_MAX) : 0.0f;
+}
+
+/* x^5 by three multiplications: no powf on the hot path. */
+static inline float fr__pow5(float x)
+{
+    float x2 = x * x;
+    return x2 * x2 * x;
+}
+
+/* x*x = hi + lo exactly (Dekker). The split keeps the top 12 significand bits
+ * by masking, which no compiler contraction or reassociation can disturb. */
+static inline void fr__square_exact(float x, float *hi, float *lo)
+{
+#ifdef FP_FAST_FMAF
+    *hi = x * x;
+    *lo = fmaf(x, x, -*hi);
+#else
+    union {
+        float f;
+        uint32_t u;
+    } split;
+    float xh, xl;
+    split.f = x;
+    split.u &= 0xfffff000u;
+    xh = split.f;
+    xl = x - xh;
+    *hi = x * x;
+    *lo = ((xh * xh - *hi) + 2.0f * xh * xl) + xl * xl;
+#endif
+}
+
+/* eta^2 - kappa^2 - sin^2(theta) = (eta^2 + c^2 - 1) - kappa^2.
+ * Near the critical angle eta^2 + c^2 - 1 is the difference of nearly equal
+ * numbers and its square root is taken next, so a rounding of eta^2 or c^2
+ * (6e-8) would become an error of 1e-4 in the reflectance. Both squares are
+ * formed exactly and summed with their rounding error carried (Knuth's
+ * TwoSum), so the result is correct to a rounding of itself. */
+static inline float fr__eta2_minus_sin2(float eta, float c, float kappa2)
+{
+    float eh, el, ch, cl, s, t, err;
+    fr__square_exact(eta, &eh, &el);
+    fr__square_exact(c, &ch, &cl);
+    s = eh + ch;
+    t = s - eh;
+    err = (eh - (s - t)) + (ch - t);
+    /* s - 1 is exact where it can cancel (s in [0.5, 2], Sterbenz). */
+    return (s - 1.0f) + ((err + el + cl) - kappa2);
+}
+
+/* (1 - c)^p for c in [0, 1], p > 0, as exp(p log1p(-c)): powf(1 - c, p) would
+ * first round 1 - c, an error that p multiplies. */
+static inline float fr__pow_one_minus(float c, float p)
+{
+    return c < 1.0f ? expf(p * log1pf(-c)) : 0.0f;
+}
+
+/* Apply a scalar model channel by channel. */
+#define FR__RGB(expr_r, expr_g, expr_b) \
+    do { fresnel_rgb out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
+
+/* 1 - fresnel_conductor(eta, kappa, c), computed directly so that it keeps
+ * its relative precision when the reflectance is close to 1 (exact.c). */
+float fr__conductor_transmittance(float eta, float kappa, float c);
+#endif

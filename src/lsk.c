@@ -1,0 +1,39 @@
+/* Lazanyi and Szirmay-Kalos: Schlick rescaled for kappa, and its error
+ * compensation -a c (1-c)^alpha [LS05]. */
+#include <math.h>
+#include "internal.h"
+
+float fresnel_lsk(float n, float k, float c)
+{
+    float k2, num, den;
+    n = fr__eta(n);
+    k = fr__kappa(k);
+    c = fr__unit(c);
+    k2 = k * k;
+    num = (n - 1.0f) * (n - 1.0f) + 4.0f * n * fr__pow5(1.0f - c) + k2;
+    den = (n + 1.0f) * (n + 1.0f) + k2;
+    return fr__unit(num / den);
+}
+
+fresnel_rgb fresnel_lsk_rgb(fresnel_rgb n, fresnel_rgb k, float c)
+{
+    FR__RGB(fresnel_lsk(n.r, k.r, c), fresnel_lsk(n.g, k.g, c), fresnel_lsk(n.b, k.b, c));
+}
+
+float fresnel_lsk_comp(float n, float k, float a, float alpha, float c)
+{
+    float comp;
+    c = fr__unit(c);
+    a = fr__clamp(a, 0.0f, FRESNEL_A_MAX);
+    alpha = fr__clamp(alpha, 0.0f, FRESNEL_ALPHA_MAX);
+    /* alpha reaches ~50 for metals: see fr__pow_one_minus. */
+    comp = alpha > 0.0f ? a * c * fr__pow_one_minus(c, alpha) : a * c;
+    return fr__unit(fresnel_lsk(n, k, c) - comp);
+}
+
+fresnel_rgb fresnel_lsk_comp_rgb(fresnel_rgb n, fresnel_rgb k, fresnel_rgb a, fresnel_rgb alpha,
+                                 float c)
+{
+    FR__RGB(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
+            fresnel_lsk_comp(n.b, k.b, a.b, alpha.b, c));
+}

@@ -1,0 +1,108 @@
+/* Every binary32 model against its double reference on the dense grid
+ * (tests/grid.h): no NaN/Inf, results in [0, 1], and the absolute error
+ * within the bound fresnel.h documents for it. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "fresnel.h"
+#include "grid.h"
+#include "harness.h"
+#include "models.h"
+#include "reference.h"
+
+struct worst {
+    double err, eta, kappa, n1, c, ref, got;
+};
+
+/* The generalized Schlick's powf path, which the model table (p = 5) does not reach. */
+static void check_schlick_gen_exponents(float *cs, int nc)
+{
+    static const float ps[] = {0.25f, 0.5f, 1.0f, 2.0f, 3.7f, 5.0f, 8.0f, 40.0f};
+    static const float f90s[] = {0.0f, 0.5f, 1.0f};
+    double worst = 0.0;
+    int ip, i9, i0, ic;
+    for (ip = 0; ip < 8; ip++)
+        for (i9 = 0; i9 < 3; i9++)
+            for (i0 = 0; i0 <= 64; i0++)
+                for (ic = 0; ic < nc; ic++) {
+                    float f0 = (float)(i0 / 64.0);
+                    float got = fresnel_schlick_gen(f0, f90s[i9], ps[ip], cs[ic]);
+                    double ref = ref_schlick_gen(f0, f90s[i9], ps[ip], cs[ic]);
+                    double err = fabs(got - ref);
+                    if (!(err <= worst))
+                        worst = err;
+                }
+    NOTE("schlick-gen over p in [0.25, 40], F90 in {0, 0.5, 1}: max|err| %.3g", worst);
+    CHECK("schlick-gen bound, every exponent", worst <= FRESNEL_BOUND_SCHLICK_GEN, "max %.3g > %.3g",
+          worst, (double)FRESNEL_BOUND_SCHLICK_GEN);
+}
+
+/* F0 helpers, outside the model table. */
+static void check_f0_helpers(void)
+{
+    double w_ior = 0.0, w_med = 0.0;
+    int ie, ik, i0;
+    for (ie = 0; ie < GRID_ETA_N; ie++)
+        for (ik = 0; ik < GRID_KAPPA_N; ik++) {
+            float e = (float)grid_eta(ie), k = (float)grid_kappa(ik);
+            double err = fabs(fresnel_f0_from_ior(e, k) - ref_f0_from_ior(e, k));
+            if (!(err <= w_ior))
+                w_ior = err;
+            for (i0 = 0; i0 <= 64; i0++) {
+                float f0 = (float)(i0 / 64.0);
+                err = fabs(fresnel_f0_in_medium(f0, e) - ref_f0_in_medium(f0, e));
+                if (!(err <= w_med))
+                    w_med = err;
+            }
+        }
+    NOTE("f0_from_ior max|err| %.3g, f0_in_medium max|err| %.3g", w_ior, w_med);
+    CHECK("f0_from_ior bound", w_ior <= FRESNEL_BOUND_F0, "max %.3g", w_ior);
+    CHECK("f0_in_medium bound", w_med <= FRESNEL_BOUND_F0_IN_MEDIUM, "max %.3g", w_med);
+}
+
+int main(void)
+{
+    float cs[2048];
+    int nc = grid_cos(cs, 2048);
+    int mi;
+    for (mi = 0; mi < model_count; mi++) {
+        const model *m = &model_table[mi];
+        struct worst w;
+        long bad_range = 0, count = 0;
+        int ie, ik, in, ic;
+        memset(&w, 0, sizeof w);
+        for (in = 0; in < GRID_N1_N; in++)
+            for (ie = 0; ie < GRID_ETA_N; ie++)
+                for (ik = 0; ik < GRID_KAPPA_N; ik++) {
+                    model_params mp;
+                    model_derive(grid_eta(ie), grid_kappa(ik), grid_n1[in], 1.0, 5.0, &mp);
+                    model_params_round_f32(&mp);
+                    for (ic = 0; ic < nc; ic++) {
+                        float got = m->f32(&mp, cs[ic]);
+                        double ref = m->f64(&mp, (double)cs[ic]);
+                        double err = fabs((double)got - ref);
+                        count++;
+                        if (!(got >= 0.0f && got <= 1.0f))
+                            bad_range++;
+                        if (!(err <= w.err)) {
+                            w.err = err;
+                            w.eta = grid_eta(ie);
+                            w.kappa = grid_kappa(ik);
+                            w.n1 = grid_n1[in];
+                            w.c = cs[ic];
+                            w.ref = ref;
+                            w.got = got;
+                        }
+                    }
+                }
+        printf("NOTE %-18s max|err| %.3g at eta %.4g kappa %.4g n1 %.3g c %.9g (ref %.9g got %.9g), %ld points\n",
+               m->name, w.err, w.eta, w.kappa, w.n1, w.c, w.ref, (double)w.got, count);
+        CHECK(m->name, bad_range == 0, "%ld results outside [0,1] or NaN", bad_range);
+        CHECK(m->name, w.err <= m->bound, "max|err| %.3g exceeds the documented bound %.3g",
+              w.err, (double)m->bound);
+    }
+    check_schlick_gen_exponents(cs, nc);
+    check_f0_helpers();
+    return harness_exit();
+}
