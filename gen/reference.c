@@ -18,6 +18,18 @@ static double kappa_dom(double x)
     return x >= FRESNEL_KAPPA_TINY ? (x < FRESNEL_KAPPA_MAX ? x : FRESNEL_KAPPA_MAX) : 0.0;
 }
 
+/* eta^2 + c^2 - 1 - kappa^2 with the squares exact (fma) and their sum's
+ * rounding carried, as src/internal.h does in binary32: near the critical
+ * angle this is a difference of nearly equal numbers whose root is taken. */
+static double eta2_minus_sin2(double eta, double c, double kappa2)
+{
+    double eh = eta * eta, el = fma(eta, eta, -eh);
+    double ch = c * c, cl = fma(c, c, -ch);
+    double s = eh + ch, t = s - eh;
+    double err = (eh - (s - t)) + (ch - t);
+    return (s - 1.0) + ((err + el + cl) - kappa2);
+}
+
 double ref_schlick(double f0, double c)
 {
     f0 = unit(f0);
@@ -39,7 +51,7 @@ double ref_schlick_internal(double f0, double eta, double c)
     c = unit(c);
     if (eta >= 1.0)
         return ref_schlick(f0, c);
-    ct2 = (eta - 1.0) * (eta + 1.0) + c * c;
+    ct2 = eta2_minus_sin2(eta, c, 0.0);
     if (!(ct2 > 0.0))
         return 1.0;
     return ref_schlick(f0, sqrt(ct2) / eta);
@@ -177,7 +189,7 @@ double ref_cook_torrance(double f0, double eta, double kappa, double c)
 static void transmitted(double eta, double kappa, double c, double *u, double *v, double *m)
 {
     double ek = eta * kappa;
-    double a = ((eta - 1.0) * (eta + 1.0) - kappa * kappa) + c * c;
+    double a = eta2_minus_sin2(eta, c, kappa * kappa);
     *m = hypot(a, 2.0 * ek);
     if (a >= 0.0) {
         *u = sqrt(0.5 * (*m + a));
@@ -283,7 +295,7 @@ double ref_dielectric(double eta, double c)
     c = unit(c);
     if (eta == 1.0)
         return 0.0;
-    a = (eta - 1.0) * (eta + 1.0) + c * c;
+    a = eta2_minus_sin2(eta, c, 0.0);
     if (a < 0.0)
         return 1.0;
     w = sqrt(a);
