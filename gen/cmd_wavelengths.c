@@ -1,0 +1,80 @@
+/* fresnel wavelengths: the dominant wavelengths of a colour space's
+ * primaries [MS18 section 5], the centres of the RGB eta/kappa windows. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli.h"
+#include "spectral.h"
+
+#define WHERE "fresnel wavelengths"
+
+static void wavelengths_usage(FILE *out)
+{
+    int i;
+    fprintf(out,
+            "usage: fresnel wavelengths --space NAME [--data DIR]\n"
+            "\n"
+            "Prints, as CSV with the header red_nm,green_nm,blue_nm, the dominant\n"
+            "wavelength of each primary of colour space NAME: where the ray from the\n"
+            "space's white point through the primary's xy meets the CIE 1931 2-degree\n"
+            "spectral locus (1 nm samples, interpolated between them).\n"
+            "--data DIR   data directory (default $FRESNEL_DATA, else %s)\n"
+            "\nspaces:",
+            data_dir(NULL));
+    for (i = 0; colour_space_ids[i]; i++)
+        fprintf(out, " %s", colour_space_ids[i]);
+    fprintf(out, "\n");
+}
+
+static int known_space(const char *id)
+{
+    int i;
+    for (i = 0; colour_space_ids[i]; i++)
+        if (!strcmp(id, colour_space_ids[i]))
+            return 1;
+    return 0;
+}
+
+int cmd_wavelengths(int argc, char **argv)
+{
+    const char *space = NULL, *dir_option = NULL, *dir;
+    colorimetry cm;
+    colour_space cs;
+    double nm[3];
+    int i;
+    for (i = 1; i < argc; i++) {
+        const char *opt = argv[i];
+        if (!strcmp(opt, "--help") || !strcmp(opt, "-h")) {
+            wavelengths_usage(stdout);
+            return 0;
+        }
+        if (strcmp(opt, "--space") && strcmp(opt, "--data"))
+            return cli_error(WHERE, "unknown option '%s' (see fresnel wavelengths --help)", opt);
+        if (i + 1 >= argc)
+            return cli_error(WHERE, "option '%s' needs a value (see fresnel wavelengths --help)",
+                             opt);
+        if (!strcmp(opt, "--space"))
+            space = argv[++i];
+        else
+            dir_option = argv[++i];
+    }
+    if (!space)
+        return cli_error(WHERE, "--space is required (see fresnel wavelengths --help)");
+    if (!known_space(space)) {
+        fprintf(stderr, WHERE ": unknown colour space '%s' (expected one of:", space);
+        for (i = 0; colour_space_ids[i]; i++)
+            fprintf(stderr, " %s", colour_space_ids[i]);
+        fprintf(stderr, ")\n");
+        return CLI_BAD_INPUT;
+    }
+    dir = data_dir(dir_option);
+    if (colorimetry_load(dir, &cm) || colour_space_load(dir, space, &cm, &cs))
+        return CLI_BAD_INPUT;
+    dominant_wavelengths(&cm, &cs, nm);
+    printf("red_nm,green_nm,blue_nm\n%.2f,%.2f,%.2f\n", nm[0], nm[1], nm[2]);
+    if (fflush(stdout) || ferror(stdout)) {
+        perror(WHERE ": writing the result");
+        return 1;
+    }
+    return 0;
+}
