@@ -35,5 +35,6 @@ void cli_out_abort(cli_outfile *o);                    /* close and remove the t
 int cmd_eval(int argc, char **argv);
 int cmd_wavelengths(int argc, char **argv);
 int cmd_materials(int argc, char **argv);
+int cmd_accuracy(int argc, char **argv);
 
 #endif

@@ -15,6 +15,7 @@ static const struct command commands[] = {
     {"eval", cmd_eval, "evaluate one model on eta,kappa,cos lines from stdin"},
     {"wavelengths", cmd_wavelengths, "dominant wavelengths of a colour space's primaries"},
     {"materials", cmd_materials, "list the materials in data/ and their measured ranges"},
+    {"accuracy", cmd_accuracy, "each model's error against exact Fresnel for measured materials"},
 };
 
 static void usage(FILE *out)
