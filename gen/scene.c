@@ -10,14 +10,12 @@
 #include <sys/types.h>
 
 #include "cli.h"
+#include "spectral.h"
 
 const char *const scene_model_names[] = {"schlick",        "lsk",  "lsk-comp",
                                          "f82",            "gulbrandsen",
                                          "cook-torrance",  "exact",
                                          "exact-gaussian", "approx-conductor",
-                                         NULL};
-const char *const scene_space_names[] = {"srgb",      "display-p3", "dci-p3",
-                                         "adobe-rgb", "rec2020",    "acescg",
                                          NULL};
 /* Number types the generator can emit; a new type is one more entry here. */
 const char *const scene_type_names[] = {"f32", NULL};
@@ -239,7 +237,8 @@ static int parse_types(const char *path, int line, char *value, scene *s)
             return report(path, line, "expected each type once, '%s' is listed twice", type);
         if (s->type_count == SCENE_MAX_TYPES)
             return report(path, line, "expected at most %d types", SCENE_MAX_TYPES);
-        strcpy(s->types[s->type_count++], type);
+        /* Bounded: the type table is meant to grow. */
+        snprintf(s->types[s->type_count++], SCENE_NAME_SIZE, "%s", type);
     }
     return 0;
 }
@@ -252,7 +251,7 @@ static int parse_choice(const char *path, int line, const char *what,
     if (table_index(table, value) < 0)
         return report(path, line, "expected a %s (one of %s), got '%s'", what,
                       table_list(table, names, sizeof names), value);
-    strcpy(dst, value);
+    snprintf(dst, SCENE_NAME_SIZE, "%s", value); /* dst is a SCENE_NAME_SIZE field */
     return 0;
 }
 
@@ -274,7 +273,7 @@ static int parse_value(const char *path, int line, int key, char *value, scene *
     case KEY_MODELS: return parse_models(path, line, value, s);
     case KEY_TYPES: return parse_types(path, line, value, s);
     case KEY_SPACE:
-        return parse_choice(path, line, "colour space", scene_space_names, value, s->space);
+        return parse_choice(path, line, "colour space", colour_space_ids, value, s->space);
     case KEY_LUT_SPACING:
         return parse_choice(path, line, "LUT spacing", scene_lut_spacing_names, value,
                             s->lut_spacing);

@@ -19,8 +19,9 @@
  *                lookup table `lutN` / `lutN-residual` with N an integer in
  *                SCENE_LUT_MIN..SCENE_LUT_MAX written without leading zeros
  *                (lut16, lut32-residual). At most SCENE_MAX_MODELS entries.
- *   space        optional, default srgb; one of scene_space_names[] (srgb,
- *                display-p3, dci-p3, adobe-rgb, rec2020, acescg).
+ *   space        optional, default srgb; one of colour_space_ids[] in
+ *                spectral.h (srgb, display-p3, dci-p3, adobe-rgb, rec2020,
+ *                acescg).
  *   sigma        optional, default 25; Gaussian window width in nm, a finite
  *                number in [0, 200] (0 = point sampling).
  *   n1           optional, default 1; real index of the incident medium, a
@@ -57,10 +58,10 @@
 #define SCENE_LUT_MIN 4
 #define SCENE_LUT_MAX 256
 
-/* The vocabulary, NULL-terminated, for reuse in --help text. The LUT models
- * are a pattern rather than names: see scene_model_lut_size. */
+/* The vocabulary, NULL-terminated, for reuse in --help text (colour spaces:
+ * colour_space_ids in spectral.h). The LUT models are a pattern rather than
+ * names: see scene_model_lut_size. */
 extern const char *const scene_model_names[];
-extern const char *const scene_space_names[];
 extern const char *const scene_type_names[];
 extern const char *const scene_lut_spacing_names[];
 

@@ -10,6 +10,7 @@
 #include "cli.h"
 #include "harness.h"
 #include "scene.h"
+#include "spectral.h"
 
 static char tmp_dir[] = "/tmp/test_scene.XXXXXX";
 static int manifest_count;
@@ -166,13 +167,13 @@ static void test_accepted_values(void)
     size_t used;
     scene s;
     int i, ok = 1;
-    for (i = 0; ok && scene_space_names[i] != NULL; i++) {
+    for (i = 0; ok && colour_space_ids[i] != NULL; i++) {
         snprintf(text, sizeof text, "materials = a\nmodels = exact\nspace = %s\n",
-                 scene_space_names[i]);
+                 colour_space_ids[i]);
         ok = load_capturing(write_manifest(text), &s) == 0 &&
-             !strcmp(s.space, scene_space_names[i]);
+             !strcmp(s.space, colour_space_ids[i]);
     }
-    CHECK("scene every space name accepted", ok, "failed at '%s': %s", scene_space_names[i - 1],
+    CHECK("scene every space name accepted", ok, "failed at '%s': %s", colour_space_ids[i - 1],
           last_message);
     ok = load_capturing(write_manifest("materials = a\nmodels = exact\nsigma = 0\nn1 = 1\n"),
                         &s) == 0 && s.sigma == 0.0 && s.n1 == 1.0;
