@@ -29,8 +29,17 @@ TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 all: $(BUILD)/libfresnel.a $(BUILD)/fresnel
 	@$(MAKE) --no-print-directory main-job
 
-main-job: $(BUILD)/fresnel
+main-job: $(BUILD)/fresnel $(BUILD)/scene_example
 	$(BUILD)/fresnel accuracy
+	$(BUILD)/scene_example
+
+# The default scene: its generated header and a program built against it.
+SCENE := data/scenes/default.scene
+$(BUILD)/scene_default.h: $(SCENE) $(BUILD)/fresnel $(wildcard data/*.csv)
+	$(BUILD)/fresnel gen $(SCENE) -o $@
+
+$(BUILD)/scene_example: tests/consumer/scene_example.c $(BUILD)/scene_default.h $(BUILD)/libfresnel.a
+	$(CC) $(WARN) $(OPT) $(SAN) -Iinclude -I$(BUILD) $< $(BUILD)/libfresnel.a $(LDLIBS) -o $@
 
 $(BUILD)/libfresnel.a: $(LIB_OBJ)
 	@mkdir -p $(@D)
@@ -51,7 +60,7 @@ $(BUILD)/tests/%: tests/%.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
-test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a
+test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example
 
 # The second pass rebuilds everything with sanitizers in build/asan; the last
 # line printed is "N passed, N failed".

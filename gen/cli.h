@@ -36,5 +36,8 @@ int cmd_eval(int argc, char **argv);
 int cmd_wavelengths(int argc, char **argv);
 int cmd_materials(int argc, char **argv);
 int cmd_accuracy(int argc, char **argv);
+int cmd_params(int argc, char **argv);
+int cmd_gen(int argc, char **argv);
+int cmd_curve(int argc, char **argv);
 
 #endif

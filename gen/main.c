@@ -15,6 +15,9 @@ static const struct command commands[] = {
     {"eval", cmd_eval, "evaluate one model on eta,kappa,cos lines from stdin"},
     {"wavelengths", cmd_wavelengths, "dominant wavelengths of a colour space's primaries"},
     {"materials", cmd_materials, "list the materials in data/ and their measured ranges"},
+    {"gen", cmd_gen, "write a scene's C header from its manifest"},
+    {"params", cmd_params, "every parameter derived for one material in a colour space"},
+    {"curve", cmd_curve, "ground truth and every model over angle for one material (CSV)"},
     {"accuracy", cmd_accuracy, "each model's error against exact Fresnel for measured materials"},
 };
 

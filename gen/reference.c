@@ -97,18 +97,25 @@ double ref_lsk_comp(double n, double k, double a, double alpha, double c)
 
 void ref_lsk_fit(double n, double k, double *a, double *alpha)
 {
+    n = eta_dom(n);
+    k = kappa_dom(k);
+    ref_lsk_fit_target(n, k, ref_conductor(n, k, 0.15), a, alpha);
+}
+
+void ref_lsk_fit_target(double n, double k, double target_015, double *a, double *alpha)
+{
     /* Two constraints [LS05]: slope -a = -2n at c = 0 (their approximation for
-     * large k), and -a c (1-c)^alpha = exact - rescaled at c = 0.15, near the
+     * large k), and -a c (1-c)^alpha = target - rescaled at c = 0.15, near the
      * error's minimum for most metals. */
     const double cm = 0.15;
     double err, al;
     n = eta_dom(n);
     k = kappa_dom(k);
-    err = ref_conductor(n, k, cm) - ref_lsk(n, k, cm);
+    err = target_015 - ref_lsk(n, k, cm);
     *a = 0.0;
     *alpha = 0.0;
     if (!(err < 0.0))
-        return; /* rescaled curve not above exact there: nothing to compensate */
+        return; /* rescaled curve not above the target there: nothing to compensate */
     al = log(-err / (cm * 2.0 * n)) / log(1.0 - cm);
     if (!(al > 0.0))
         return; /* the error exceeds what -2n c (1-c)^alpha can reach: no fit */
@@ -143,15 +150,20 @@ void ref_gulbrandsen_nk(double r, double g, double *n, double *k)
 
 void ref_gulbrandsen_rg(double n, double k, double *r, double *g)
 {
-    double rc, sr, nmin, nmax, span;
     *r = ref_f0_from_ior(n, k);
+    *g = ref_gulbrandsen_g(*r, n);
+}
+
+double ref_gulbrandsen_g(double r, double n)
+{
+    double rc, sr, nmin, nmax, span;
     n = eta_dom(n);
-    rc = *r < FRESNEL_GULBRANDSEN_R_MAX ? *r : FRESNEL_GULBRANDSEN_R_MAX;
+    rc = ref_clamp(r, 0.0, FRESNEL_GULBRANDSEN_R_MAX);
     sr = sqrt(rc);
     nmin = (1.0 - rc) / (1.0 + rc);
     nmax = (1.0 + sr) * (1.0 + sr) / (1.0 - rc);
     span = nmax - nmin;
-    *g = span > 0.0 ? unit((nmax - n) / span) : 0.0;
+    return span > 0.0 ? unit((nmax - n) / span) : 0.0;
 }
 
 double ref_gulbrandsen(double r, double g, double c)

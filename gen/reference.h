@@ -21,11 +21,17 @@ double ref_lsk_comp(double n, double k, double a, double alpha, double c);
  * at c = 0.15; a = alpha = 0 (no compensation) where that error is >= 0 or
  * the fit would need alpha <= 0. */
 void ref_lsk_fit(double n, double k, double *a, double *alpha);
+/* The same fit against any curve: target_015 is its value at c = 0.15 (the
+ * generator passes the spectral ground truth there). */
+void ref_lsk_fit_target(double n, double k, double target_015, double *a, double *alpha);
 
 double ref_f82(double f0, double f82, double c);
 
 void ref_gulbrandsen_nk(double r, double g, double *n, double *k);
 void ref_gulbrandsen_rg(double n, double k, double *r, double *g);
+/* Edge tint g for a given reflectivity r and eta (Hoffman's route: r from the
+ * spectral F0, eta from elsewhere), clamped to [0, 1]. */
+double ref_gulbrandsen_g(double r, double n);
 double ref_gulbrandsen(double r, double g, double c);
 
 double ref_approx_conductor(double n, double k, double c);

@@ -1,0 +1,21 @@
+/* Step 8, emitting a scene's header (emit_header.c). */
+#ifndef FRESNEL_EMIT_H
+#define FRESNEL_EMIT_H
+
+#include <stdio.h>
+
+#include "generator.h"
+#include "scene.h"
+
+typedef struct emit_input {
+    const scene *sc;
+    const char *name;          /* C identifier part: fresnel_<name>_<material>_<param> */
+    const char *manifest_name; /* for the leading comment */
+    const gen_context *g;
+    const material_params *params; /* one per scene material, in order */
+    spectrum *const *spectra;      /* the same */
+} emit_input;
+
+int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
+
+#endif
