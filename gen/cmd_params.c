@@ -62,6 +62,8 @@ int cmd_params(int argc, char **argv)
         row("f82", p.f82);
         row("eta_gaussian", p.eta_gauss);
         row("kappa_gaussian", p.kappa_gauss);
+        row("eta_point", p.eta_point);
+        row("kappa_point", p.kappa_point);
         row("eta_fit", p.eta_fit);
         row("kappa_fit", p.kappa_fit);
         row("fit_rms", p.fit_rms);

@@ -52,6 +52,10 @@ int derive_parameters(const gen_context *g, const char *id, double sigma, double
     /* Hoffman's representative IOR is one sampled wavelength; green's
      * dominant wavelength is where the eye is most sensitive. */
     gaussian_window(s, g->nm, 0.0, eta, kappa);
+    for (ch = 0; ch < 3; ch++) {
+        p->eta_point[ch] = eta[ch] / n1;
+        p->kappa_point[ch] = kappa[ch] / n1;
+    }
     p->ct_eta = eta[1] / n1;
     p->ct_kappa = kappa[1] / n1;
 

@@ -142,6 +142,10 @@ int emit_header(FILE *f, const emit_input *in)
             emit_rgb(f, prefix, "eta_gaussian", p->eta_gauss, "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
             emit_rgb(f, prefix, "kappa_gaussian", p->kappa_gauss, "Metzgar: kappa' in a Gaussian window");
         }
+        if (scene_has(sc, "exact-point")) {
+            emit_rgb(f, prefix, "eta_point", p->eta_point, "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
+            emit_rgb(f, prefix, "kappa_point", p->kappa_point, "kappa point-sampled at the dominant wavelengths");
+        }
         if (scene_has(sc, "gulbrandsen")) {
             emit_rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
             emit_rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen edge tint g from F0 and the fitted eta");

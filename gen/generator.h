@@ -14,8 +14,9 @@
  * [0, 1] before any parameter is derived from it, as a display would clip.
  * Of the peers' choices (keep the value, rescale the colour by its maximum as
  * Filament's tool does, clamp) clamping changes the fewest channels and keeps
- * grazing incidence white; `fresnel params` still prints the unclamped F0,
- * and the report measures error against the unclamped ground truth. */
+ * grazing incidence white; `fresnel params` still prints the unclamped F0.
+ * The report measures every model against the clamped ground truth (what a
+ * model can represent) and states the clamp's own CIEDE2000 cost separately. */
 #ifndef FRESNEL_GENERATOR_H
 #define FRESNEL_GENERATOR_H
 
@@ -35,6 +36,7 @@ typedef struct material_params {
     double f0_unclamped[3];     /* ground truth at normal incidence */
     double f0[3], f82[3];       /* clamped ground truth at c = 1 and c = 1/7 */
     double eta_gauss[3], kappa_gauss[3]; /* Metzgar's Gaussian window, sigma nm */
+    double eta_point[3], kappa_point[3]; /* point-sampled at the dominant wavelengths (Hoffman's "PS") */
     double eta_fit[3], kappa_fit[3];     /* Hoffman's black-box fit to the ground truth */
     double fit_rms[3];
     double lsk_a[3], lsk_alpha[3];       /* compensation of LSK on the fitted eta, kappa */

@@ -15,7 +15,7 @@
 const char *const scene_model_names[] = {"schlick",        "lsk",  "lsk-comp",
                                          "f82",            "gulbrandsen",
                                          "cook-torrance",  "exact",
-                                         "exact-gaussian", "approx-conductor",
+                                         "exact-gaussian", "exact-point", "approx-conductor",
                                          NULL};
 /* Number types the generator can emit; a new type is one more entry here. */
 const char *const scene_type_names[] = {"f32", NULL};

@@ -15,7 +15,7 @@
  *                caller's check (report it at scene.materials_line).
  *   models       required. Whitespace-separated, no duplicates, each one of
  *                scene_model_names[] (schlick, lsk, lsk-comp, f82, gulbrandsen,
- *                cook-torrance, exact, exact-gaussian, approx-conductor) or a
+ *                cook-torrance, exact, exact-gaussian, exact-point, approx-conductor) or a
  *                lookup table `lutN` / `lutN-residual` with N an integer in
  *                SCENE_LUT_MIN..SCENE_LUT_MAX written without leading zeros
  *                (lut16, lut32-residual). At most SCENE_MAX_MODELS entries.

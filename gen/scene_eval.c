@@ -1,11 +1,13 @@
 /* Scene models through the binary32 runtime (see scene_eval.h). */
 #include "scene_eval.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cli.h"
 #include "fresnel.h"
+#include "reference.h"
 #include "scene.h"
 
 static fresnel_rgb rgb_of(const double v[3])
@@ -27,19 +29,15 @@ int scene_model_prepare(const char *name, lut_spacing spacing, const spectrum *s
     strcpy(m->name, name);
     if (n == 0)
         return 0;
-    {
-        double *t = malloc(3 * (size_t)n * sizeof *t);
-        m->table = malloc(3 * (size_t)n * sizeof *m->table);
-        if (!t || !m->table) {
-            free(t);
-            scene_model_free(m);
-            return cli_error("scene model", "out of memory");
-        }
-        encode_lut(s, g, p, spacing, n, residual, t);
-        for (i = 0; i < 3 * n; i++)
-            m->table[i] = (float)t[i];
-        free(t);
+    m->table_d = malloc(3 * (size_t)n * sizeof *m->table_d);
+    m->table = malloc(3 * (size_t)n * sizeof *m->table);
+    if (!m->table_d || !m->table) {
+        scene_model_free(m);
+        return cli_error("scene model", "out of memory");
     }
+    encode_lut(s, g, p, spacing, n, residual, m->table_d);
+    for (i = 0; i < 3 * n; i++)
+        m->table[i] = (float)m->table_d[i];
     m->lut_n = n;
     m->residual = residual;
     m->spacing = spacing;
@@ -49,7 +47,9 @@ int scene_model_prepare(const char *name, lut_spacing spacing, const spectrum *s
 void scene_model_free(scene_model *m)
 {
     free(m->table);
+    free(m->table_d);
     m->table = NULL;
+    m->table_d = NULL;
 }
 
 void scene_model_eval(const scene_model *m, const material_params *p, float c, float out[3])
@@ -80,9 +80,58 @@ void scene_model_eval(const scene_model *m, const material_params *p, float c, f
         r = fresnel_conductor_rgb(rgb_of(p->eta_fit), rgb_of(p->kappa_fit), c);
     else if (!strcmp(name, "exact-gaussian"))
         r = fresnel_conductor_rgb(rgb_of(p->eta_gauss), rgb_of(p->kappa_gauss), c);
+    else if (!strcmp(name, "exact-point"))
+        r = fresnel_conductor_rgb(rgb_of(p->eta_point), rgb_of(p->kappa_point), c);
     else /* approx-conductor: scene_model_prepare admitted only known names */
         r = fresnel_approx_conductor_rgb(rgb_of(p->eta_fit), rgb_of(p->kappa_fit), c);
     out[0] = r.r;
     out[1] = r.g;
     out[2] = r.b;
+}
+
+static double f32(double x) { return (double)(float)x; }
+
+/* Linear interpolation of a LUT in double, at the float-rounded node values. */
+static double ref_lut(const float *t, int n, double x)
+{
+    double pos = x * (n - 1);
+    int i = (int)pos;
+    if (i >= n - 1)
+        i = n - 2;
+    return (double)t[i] + (pos - i) * ((double)t[i + 1] - (double)t[i]);
+}
+
+void scene_model_eval_ref(const scene_model *m, const material_params *p, double c, double out[3])
+{
+    const char *name = m->name;
+    int ch;
+    c = ref_clamp(c, 0.0, 1.0);
+    for (ch = 0; ch < 3; ch++) {
+        double f0 = f32(p->f0[ch]), eta = f32(p->eta_fit[ch]), kappa = f32(p->kappa_fit[ch]), v;
+        if (m->lut_n) {
+            const float *t = m->table + ch * m->lut_n;
+            double x = m->spacing == LUT_UNIFORM ? c : 1.0 - pow(1.0 - c, 5.0);
+            v = ref_lut(t, m->lut_n, x) + (m->residual ? ref_schlick(f0, c) : 0.0);
+        } else if (!strcmp(name, "schlick"))
+            v = ref_schlick(f0, c);
+        else if (!strcmp(name, "lsk"))
+            v = ref_lsk(eta, kappa, c);
+        else if (!strcmp(name, "lsk-comp"))
+            v = ref_lsk_comp(eta, kappa, f32(p->lsk_a[ch]), f32(p->lsk_alpha[ch]), c);
+        else if (!strcmp(name, "f82"))
+            v = ref_f82(f0, f32(p->f82[ch]), c);
+        else if (!strcmp(name, "gulbrandsen"))
+            v = ref_gulbrandsen(f32(p->gulb_r[ch]), f32(p->gulb_g[ch]), c);
+        else if (!strcmp(name, "cook-torrance"))
+            v = ref_cook_torrance(f0, f32(p->ct_eta), f32(p->ct_kappa), c);
+        else if (!strcmp(name, "exact"))
+            v = ref_conductor(eta, kappa, c);
+        else if (!strcmp(name, "exact-gaussian"))
+            v = ref_conductor(f32(p->eta_gauss[ch]), f32(p->kappa_gauss[ch]), c);
+        else if (!strcmp(name, "exact-point"))
+            v = ref_conductor(f32(p->eta_point[ch]), f32(p->kappa_point[ch]), c);
+        else
+            v = ref_approx_conductor(eta, kappa, c);
+        out[ch] = ref_clamp(v, 0.0, 1.0);
+    }
 }

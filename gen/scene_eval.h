@@ -12,7 +12,8 @@ typedef struct scene_model {
     char name[24];
     int lut_n, residual; /* lut_n = 0 for analytic models */
     lut_spacing spacing;
-    float *table; /* 3 * lut_n values, malloc'd; scene_model_free */
+    float *table;    /* 3 * lut_n values, malloc'd; scene_model_free */
+    double *table_d; /* the same before rounding to binary32 */
 } scene_model;
 
 /* Prepare model `name` for material p (s = its spectrum, for LUT nodes);
@@ -21,5 +22,9 @@ int scene_model_prepare(const char *name, lut_spacing spacing, const spectrum *s
                         const material_params *p, scene_model *m);
 void scene_model_free(scene_model *m);
 void scene_model_eval(const scene_model *m, const material_params *p, float c, float rgb[3]);
+/* The same model in double precision (gen/reference.c) with the parameters
+ * rounded to binary32 as the runtime sees them: the difference from
+ * scene_model_eval is the runtime's rounding, not the model's error. */
+void scene_model_eval_ref(const scene_model *m, const material_params *p, double c, double rgb[3]);
 
 #endif
