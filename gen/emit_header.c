@@ -70,7 +70,7 @@ static int emit_lut(FILE *f, const char *prefix, const char *model, const materi
     name[i] = '\0';
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s.\n"
                " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n",
-            model, n, spacing == LUT_UNIFORM ? "cos theta" : "w = 1 - (1 - cos theta)^5, from grazing to normal",
+            model, n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
             spacing == LUT_UNIFORM ? "lut_linear" : "lut", residual ? "_residual" : "", residual ? "f0, " : "", n);
     fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
     for (i = 0; i < 3 * n; i++) {

@@ -8,10 +8,7 @@
 double lut_node_cos(lut_spacing spacing, int i, int n)
 {
     double w = (double)i / (n - 1);
-    if (spacing == LUT_UNIFORM)
-        return w;
-    /* w = 1 - (1-c)^5, the Schlick weight */
-    return i == n - 1 ? 1.0 : 1.0 - pow(1.0 - w, 0.2);
+    return spacing == LUT_UNIFORM ? w : w * w; /* grazing: uniform in sqrt(c) */
 }
 
 void encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing,

@@ -110,7 +110,7 @@ void scene_model_eval_ref(const scene_model *m, const material_params *p, double
         double f0 = f32(p->f0[ch]), eta = f32(p->eta_fit[ch]), kappa = f32(p->kappa_fit[ch]), v;
         if (m->lut_n) {
             const float *t = m->table + ch * m->lut_n;
-            double x = m->spacing == LUT_UNIFORM ? c : 1.0 - pow(1.0 - c, 5.0);
+            double x = m->spacing == LUT_UNIFORM ? c : sqrt(c);
             v = ref_lut(t, m->lut_n, x) + (m->residual ? ref_schlick(f0, c) : 0.0);
         } else if (!strcmp(name, "schlick"))
             v = ref_schlick(f0, c);

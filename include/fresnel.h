@@ -270,18 +270,20 @@ float fresnel_dielectric(float eta, float c);
  * table[i], i = 0..n-1 (n >= 2), is the reflectance at the i-th node, and
  * the result interpolates linearly between the two nodes around c.
  *
- * fresnel_lut: nodes uniform in the Schlick weight w = 1 - (1 - c)^5, so
- *   c_i = 1 - (1 - i/(n-1))^(1/5): they crowd toward grazing incidence (5x
- *   denser than uniform at c = 0), where Fresnel curves bend, and any Schlick
- *   curve F0 + (1-F0)(1-c)^5 is a straight line in w, reproduced exactly.
- *   Node 0 is c = 0 (90 degrees), node n-1 is c = 1.
+ * fresnel_lut: nodes uniform in sqrt(c), c_i = (i/(n-1))^2: they crowd
+ *   toward grazing incidence, where Fresnel curves bend (the first interval
+ *   is 1/(n-1)^2 wide), and still cover normal incidence. Node 0 is c = 0
+ *   (90 degrees), node n-1 is c = 1. Measured against the alternatives
+ *   (uniform in c, in the angle, in the Schlick weight 1 - (1-c)^5) on the 14
+ *   metals of Hoffman's table, this spacing gives the smallest colour error
+ *   for 8 to 32 nodes (`make report`).
  * fresnel_lut_linear: nodes uniform in c, c_i = i/(n-1).
  * The _residual forms add the table to Schlick: F = fresnel_schlick(f0, c) +
  *   interpolated (GT - Schlick(F0)), so the table holds only what Schlick
  *   misses.
  * Results are clamped to [0, 1]; table values are trusted (generated).
  * Error: the table's own (see `fresnel curve`, the report) plus <= 3e-7
- * rounding. Cost: 6-10 flops, 1 multiply to index, no division. */
+ * rounding. Cost: 6-10 flops (+ sqrtf for fresnel_lut), no division. */
 float fresnel_lut(const float *table, int n, float c);
 float fresnel_lut_linear(const float *table, int n, float c);
 float fresnel_lut_residual(float f0, const float *table, int n, float c);

@@ -1,4 +1,6 @@
 /* Lookup tables of reflectance curves, interpolated linearly (see fresnel.h). */
+#include <math.h>
+
 #include "internal.h"
 
 /* Interpolate table at position x in [0, 1] along its n nodes. */
@@ -13,11 +15,9 @@ static float fr__interp(const float *table, int n, float x)
     return table[i] + t * (table[i + 1] - table[i]);
 }
 
-static float fr__schlick_weight(float c) { return 1.0f - fr__pow5(1.0f - c); }
-
 float fresnel_lut(const float *table, int n, float c)
 {
-    return fr__unit(fr__interp(table, n, fr__schlick_weight(fr__unit(c))));
+    return fr__unit(fr__interp(table, n, sqrtf(fr__unit(c))));
 }
 
 float fresnel_lut_linear(const float *table, int n, float c)
@@ -28,7 +28,7 @@ float fresnel_lut_linear(const float *table, int n, float c)
 float fresnel_lut_residual(float f0, const float *table, int n, float c)
 {
     c = fr__unit(c);
-    return fr__unit(fresnel_schlick(f0, c) + fr__interp(table, n, fr__schlick_weight(c)));
+    return fr__unit(fresnel_schlick(f0, c) + fr__interp(table, n, sqrtf(c)));
 }
 
 float fresnel_lut_linear_residual(float f0, const float *table, int n, float c)
