@@ -97,39 +97,30 @@ int cmd_accuracy(int argc, char **argv)
             status = cli_error(WHERE, "option '%s' needs a value (see fresnel accuracy --help)", opt);
             goto done;
         }
-        if (!strcmp(opt, "--materials")) {
-            free(mat_buf);
-            mat_buf = malloc(strlen(argv[i + 1]) + 1);
-            if (!mat_buf) {
+        if (!strcmp(opt, "--materials") || !strcmp(opt, "--nm")) {
+            char **buf = opt[2] == 'm' ? &mat_buf : &nm_buf;
+            int n;
+            free(*buf);
+            if (!(*buf = malloc(strlen(argv[i + 1]) + 1))) {
                 status = cli_error(WHERE, "out of memory");
                 goto done;
             }
-            strcpy(mat_buf, argv[++i]);
-            n_mats = split_words(mat_buf, word, MAX_ITEMS);
-            if (n_mats <= 0) {
-                status = cli_error(WHERE, "--materials expects 1 to %d ids", MAX_ITEMS);
+            strcpy(*buf, argv[++i]);
+            if ((n = split_words(*buf, word, MAX_ITEMS)) <= 0) {
+                status = cli_error(WHERE, "%s expects 1 to %d values", opt, MAX_ITEMS);
                 goto done;
             }
-            for (j = 0; j < n_mats; j++)
-                mats[j] = word[j];
-        } else if (!strcmp(opt, "--nm")) {
-            free(nm_buf);
-            nm_buf = malloc(strlen(argv[i + 1]) + 1);
-            if (!nm_buf) {
-                status = cli_error(WHERE, "out of memory");
-                goto done;
-            }
-            strcpy(nm_buf, argv[++i]);
-            n_nm = split_words(nm_buf, word, MAX_ITEMS);
-            if (n_nm <= 0) {
-                status = cli_error(WHERE, "--nm expects 1 to %d wavelengths", MAX_ITEMS);
-                goto done;
-            }
-            for (j = 0; j < n_nm; j++)
-                if (cli_parse_double(word[j], &nms[j]) || nms[j] < SPEC_LO_NM || nms[j] > SPEC_HI_NM) {
+            for (j = 0; j < n; j++)
+                if (buf == &mat_buf)
+                    mats[j] = word[j];
+                else if (cli_parse_double(word[j], &nms[j]) || nms[j] < SPEC_LO_NM || nms[j] > SPEC_HI_NM) {
                     status = cli_error(WHERE, "--nm: expected wavelengths in 360..830, got '%s'", word[j]);
                     goto done;
                 }
+            if (buf == &mat_buf)
+                n_mats = n;
+            else
+                n_nm = n;
         } else if (!strcmp(opt, "--steps")) {
             if (cli_parse_int(argv[++i], 1, 100000, &steps)) {
                 status = cli_error(WHERE, "--steps expects an integer 1..100000, got '%s'", argv[i]);

@@ -7,31 +7,32 @@
 pass=0
 fail=0
 log=$(mktemp)
+
+# tally FLAVOUR NAME EXIT_STATUS: counts $log's lines for one test
+tally() {
+    sed -n 's/^\(PASS\|FAIL\|NOTE\) /\1 ['"$1"'] /p' "$log"
+    p=$(grep -c '^PASS ' "$log")
+    f=$(grep -c '^FAIL ' "$log")
+    pass=$((pass + p))
+    fail=$((fail + f))
+    if [ "$3" -ne 0 ] && [ "$f" -eq 0 ]; then
+        echo "FAIL [$1] $2 exited $3 without a FAIL line:"
+        tail -20 "$log"
+        fail=$((fail + 1))
+    fi
+}
+
 for dir in "$@"; do
+    flavour=$(basename "$dir")
     for t in "$dir"/tests/test_*; do
         [ -x "$t" ] || continue
-        name="$dir/tests/$(basename "$t")"
-        ( "$t" ) >"$log" 2>&1
-        rc=$?
-        sed -n 's/^\(PASS\|FAIL\|NOTE\) /\1 ['"$(basename "$dir")"'] /p' "$log"
-        p=$(grep -c '^PASS ' "$log"); f=$(grep -c '^FAIL ' "$log")
-        pass=$((pass + p)); fail=$((fail + f))
-        if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
-            echo "FAIL [$(basename "$dir")] $name exited $rc without a FAIL line:"; tail -20 "$log"
-            fail=$((fail + 1))
-        fi
+        ("$t") >"$log" 2>&1
+        tally "$flavour" "$t" $?
     done
     for s in tests/test_*.sh; do
         [ -f "$s" ] || continue
         BUILD="$dir" sh "$s" >"$log" 2>&1
-        rc=$?
-        sed -n 's/^\(PASS\|FAIL\|NOTE\) /\1 ['"$(basename "$dir")"'] /p' "$log"
-        p=$(grep -c '^PASS ' "$log"); f=$(grep -c '^FAIL ' "$log")
-        pass=$((pass + p)); fail=$((fail + f))
-        if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
-            echo "FAIL [$(basename "$dir")] $s exited $rc without a FAIL line:"; tail -20 "$log"
-            fail=$((fail + 1))
-        fi
+        tally "$flavour" "$s" $?
     done
 done
 rm -f "$log"
