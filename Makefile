@@ -82,3 +82,6 @@ clean:
 	rm -rf $(BUILD)
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+
+# ---- GLSL ports and OSMesa (issue 6) ----
+include ports/glsl/glsl.mk

@@ -1,0 +1,662 @@
+/* fresnel.glsl -- the Fresnel models of include/fresnel.h as GLSL functions.
+ *
+ * ONE SOURCE, THREE DIALECTS
+ *   GLSL ES 1.00 (WebGL 1, GLES 2), GLSL ES 3.00 (WebGL 2, GLES 3) and
+ *   desktop GLSL 3.30, and every later version of each (also desktop 1.10
+ *   to 1.50: tests/glsl_test.c compiles it in every version Mesa lists). Paste or include this file
+ *   after the #version line and a default float precision, for example the
+ *   two lines of prelude_es100.glsl, prelude_es300.glsl or prelude_330.glsl:
+ *       #version 300 es
+ *       precision mediump float;
+ *       <this file>
+ *   The only dialect differences (texture2D/texture, where a const array can
+ *   live) are handled below with __VERSION__; everything else is written in
+ *   the common subset: float literals everywhere (ES has no implicit int to
+ *   float conversion), no bit operations, no loops, no recursion.
+ *
+ * NAMES
+ *   The C names: fresnel_schlick, fresnel_schlick_rgb (vec3), ...; vec3
+ *   stands for fresnel_rgb, vec2 for fresnel_nk and fresnel_rg. Internal
+ *   helpers are fresnel_i_*, macros FRESNEL_* (GLSL reserves names with "__",
+ *   so the C helpers' fr__ prefix is not available).
+ *
+ * CONVENTIONS (as in fresnel.h)
+ *   c is cos(theta) in the incident medium, clamped to [0, 1] BEFORE 1 - c is
+ *   formed: after normalisation on a GPU dot(n, v) is often 1.00001, and
+ *   pow(1 - c, 5) of the negative base is NaN (LearnOpenGL#217, bevy#8926).
+ *   Nothing here calls pow() with a base that can be negative.
+ *   eta, kappa relative to the incident medium; reflectances and results in
+ *   [0, 1]. Non-finite inputs: GLSL does not define NaN behaviour. On
+ *   llvmpipe clamp() takes NaN c to 0 and +-Inf to the nearer end, so every
+ *   function gives what the C runtime gives (tests/glsl_test.c prints it);
+ *   other GPUs may differ, so do not rely on NaN being cleaned up here.
+ *
+ * PRECISION: WHICH FUNCTIONS RUN IN MEDIUMP, WHICH NEED HIGHP
+ *   Functions whose parameters carry no precision qualifier run in the
+ *   default float precision of the including shader (mediump on a mobile
+ *   fragment shader); those declared with FRESNEL_HIGHP compute in highp
+ *   whatever the default is, and only their result is converted to it.
+ *   mediump is IEEE binary16 on current mobile GPUs (and on Mesa's llvmpipe):
+ *   11 significant bits, largest finite 65504, smallest normal 2^-14.
+ *
+ *   mediump-safe (errors and guards in each function's comment):
+ *     fresnel_schlick, _schlick_gen, _f82, _lsk, _lsk_comp,
+ *     _approx_conductor, _f0_from_ior, _f0_in_medium (and their _rgb)
+ *   highp (FRESNEL_HIGHP):
+ *     fresnel_conductor, _dielectric, _schlick_internal: eta^2 + c^2 - 1
+ *       cancels near the critical angle, and the conductor's
+ *       A = eta^2 - kappa^2 - sin^2 squares again: A^2 reaches kappa^4, which
+ *       overflows binary16 for kappa > 16 (a fitted gold red has kappa 19)
+ *       and loses all digits of u v = eta kappa long before.
+ *     fresnel_cook_torrance: uses the conductor's transmittance.
+ *     fresnel_gulbrandsen, _nk, _rg: 1 - r for r near 1 (silver, aluminium:
+ *       r 0.91-0.99) keeps 1-5 bits in binary16, and nmax = (1+sqrt r)^2/(1-r)
+ *       reaches 4e4 at the clamp r = 0.9999 (binary16 rounds 0.9999 to 1, so
+ *       1 - r = 0 and nmax = Inf).
+ *     the LUT position (index and fraction): x (n - 1) for n up to 256 nodes
+ *       would keep 2-3 bits of the fraction in binary16; table fetches use a
+ *       highp sampler (a lowp/mediump sampler may return binary16 texels).
+ *   ES 1.00 fragment shaders have highp only where GL_FRAGMENT_PRECISION_HIGH
+ *   is defined; elsewhere FRESNEL_HIGHP falls back to mediump, and the highp
+ *   functions then carry the errors measured under "mediump forced" in
+ *   ports/glsl/README.md. Define FRESNEL_HIGHP yourself before this file to
+ *   override (the tests define it as mediump to measure exactly that).
+ *
+ * EXACTNESS ON A GPU
+ *   The C runtime forms eta^2 + c^2 - 1 from exact squares (Dekker, or fmaf)
+ *   summed with TwoSum, so it keeps full precision at the critical angle.
+ *   GLSL before 4.00 / ES 3.20 has neither fma() nor `precise`, and GPU
+ *   compilers may contract a*b + c into an fma, or simplify (a + b) - a to b
+ *   and move constants across additions in non-precise code (Mesa's NIR does
+ *   all three), which silently breaks TwoSum and Veltkamp splitting. This port
+ *   splits eta and c at the fixed point 2^-12 with floor() instead, so that
+ *   every partial result of the cancelling part is a multiple of 2^-24 below
+ *   1: exact in binary32 whatever the compiler contracts or reorders
+ *   (fresnel_i_eta2_minus_sin2). It needs binary32 highp (mobile GPUs'
+ *   highp is binary32) and floor(); nothing from a later GLSL version.
+ *   The rest is the C runtime's arithmetic, operation for operation, except
+ *   where GLSL has no equivalent: pow(1 - c, p) for exp(p log1p(-c)).
+ *   Measured against the C runtime on llvmpipe: see README.md.
+ *
+ * fp16 UNDER- AND OVERFLOW GUARDS (mediump functions)
+ *   Overflow: eta and kappa are clamped to [FRESNEL_ETA_MIN,
+ *   FRESNEL_MP_IOR_MAX] = [1e-3, 100] in the mediump functions, which keeps
+ *   every intermediate below 2.1e4 < 65504 (the C runtime clamps at 1e5;
+ *   no measured material comes near 100). LSK's a is clamped to
+ *   FRESNEL_MP_A_MAX = 1e4 instead of 1e6 (the host makes a = 2 eta <= 200).
+ *   Underflow: the only quantities that fall below 2^-14 are powers of 1 - c
+ *   near c = 1 and products with them; they are added to terms of order F0,
+ *   so flushing them to zero changes a result by at most 2^-14 = 6.1e-5,
+ *   an eighth of binary16's spacing at 1 (2^-11 = 4.9e-4). No mediump
+ *   function divides by a quantity that can underflow to 0 except the
+ *   approximate conductor's s-denominator (eta, kappa and c all near 0), which
+ *   is guarded. mix() is not used (mediump mix() misbehaves on some GPUs,
+ *   WebGLSamples#4): interpolation is written a + t (b - a), as in C.
+ */
+#ifndef FRESNEL_GLSL
+#define FRESNEL_GLSL 1
+
+#ifndef FRESNEL_HIGHP
+#if defined(GL_ES) && !defined(GL_FRAGMENT_PRECISION_HIGH)
+#define FRESNEL_HIGHP mediump
+#elif !defined(GL_ES) && __VERSION__ < 130
+#define FRESNEL_HIGHP /* desktop GLSL 1.10, 1.20: no precision qualifiers */
+#else
+#define FRESNEL_HIGHP highp
+#endif
+#endif
+
+#if __VERSION__ >= 130
+#define FRESNEL_TEXTURE texture
+#else
+#define FRESNEL_TEXTURE texture2D
+#endif
+
+/* Domains, as in fresnel.h. FRESNEL_MP_* apply to the mediump functions. */
+#define FRESNEL_ETA_MIN 1e-3
+#define FRESNEL_ETA_MAX 1e5
+#define FRESNEL_KAPPA_MAX 1e5
+#define FRESNEL_KAPPA_TINY 1e-18
+#define FRESNEL_P_MIN 1e-3
+#define FRESNEL_P_MAX 1e3
+#define FRESNEL_ALPHA_MAX 1e3
+#define FRESNEL_A_MAX 1e6
+#define FRESNEL_GULBRANDSEN_R_MAX 0.9999
+#ifndef FRESNEL_MP_IOR_MAX
+#define FRESNEL_MP_IOR_MAX 100.0
+#endif
+#ifndef FRESNEL_MP_A_MAX
+#define FRESNEL_MP_A_MAX 1e4
+#endif
+
+/* ------------------------------------------------------------- helpers */
+
+float fresnel_i_unit(float x) { return clamp(x, 0.0, 1.0); }
+vec3 fresnel_i_unit(vec3 x) { return clamp(x, 0.0, 1.0); }
+float fresnel_i_pow5(float x)
+{
+    float x2 = x * x;
+    return x2 * x2 * x;
+}
+vec3 fresnel_i_pow5(vec3 x)
+{
+    vec3 x2 = x * x;
+    return x2 * x2 * x;
+}
+/* (1 - c)^p for c in [0, 1], p > 0. The C runtime uses exp(p log1p(-c));
+ * GLSL has no log1p, and 1 - c is exact for c >= 0.5 (Sterbenz) so the
+ * rounding p multiplies only exists where (1 - c)^p is large and its relative
+ * error ~ p 6e-8 harmless. The base is >= 0 and 0 is answered without pow()
+ * (pow(0, p) goes through log2(0) = -Inf). */
+float fresnel_i_pow_one_minus(float c, float p)
+{
+    float x = 1.0 - c;
+    return x > 0.0 ? pow(x, p) : 0.0;
+}
+FRESNEL_HIGHP float fresnel_i_kappa(FRESNEL_HIGHP float k)
+{
+    return k >= FRESNEL_KAPPA_TINY ? min(k, FRESNEL_KAPPA_MAX) : 0.0;
+}
+
+/* eta^2 + c^2 - 1 = eta^2 - sin^2, correct to about one rounding of itself
+ * even at the critical angle (eta < 1), where it is the difference of nearly
+ * equal numbers. eta and c are split at 2^-12: the heads eh, ch are
+ * multiples of 2^-12 below 1, so ch^2, (1 - eh)(1 + eh) and their difference
+ * are multiples of 2^-24 below 1 in magnitude: exact in binary32 whatever the
+ * compiler contracts or reorders (no TwoSum to be simplified away). The tails
+ * add (eta - eh)(eta + eh) + (c - ch)(c + ch) < 2^-10 with relative error
+ * 2^-23. For eta >= 1 both terms of (eta-1)(eta+1) + c^2 are >= 0: no
+ * cancellation. */
+FRESNEL_HIGHP float fresnel_i_eta2_minus_sin2(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float eh, ch;
+    if (eta >= 1.0)
+        return (eta - 1.0) * (eta + 1.0) + c * c;
+    eh = floor(eta * 4096.0) * (1.0 / 4096.0);
+    ch = floor(c * 4096.0) * (1.0 / 4096.0);
+    return (ch * ch - (1.0 - eh) * (1.0 + eh)) + ((eta - eh) * (eta + eh) + (c - ch) * (c + ch));
+}
+
+/* ------------------------------------------------------------- Schlick */
+
+/* F0 + (1 - F0)(1 - c)^5. mediump: (1-c)^5 underflows below 2^-14 for
+ * c > 0.856, which changes F by < 6.1e-5 (see the file comment). */
+float fresnel_schlick(float f0, float c)
+{
+    f0 = fresnel_i_unit(f0);
+    return fresnel_i_unit(f0 + (1.0 - f0) * fresnel_i_pow5(1.0 - fresnel_i_unit(c)));
+}
+vec3 fresnel_schlick_rgb(vec3 f0, float c)
+{
+    f0 = fresnel_i_unit(f0);
+    return fresnel_i_unit(f0 + (1.0 - f0) * fresnel_i_pow5(1.0 - fresnel_i_unit(c)));
+}
+
+/* F0 + (F90 - F0)(1 - c)^p, p clamped to [1e-3, 1e3]. mediump: as Schlick;
+ * pow() itself is the GPU's (binary16 pow is exp2(p log2 x) with a few ulp). */
+float fresnel_schlick_gen(float f0, float f90, float p, float c)
+{
+    float t;
+    c = fresnel_i_unit(c);
+    f0 = fresnel_i_unit(f0);
+    f90 = fresnel_i_unit(f90);
+    p = clamp(p, FRESNEL_P_MIN, FRESNEL_P_MAX);
+    t = p == 5.0 ? fresnel_i_pow5(1.0 - c) : fresnel_i_pow_one_minus(c, p);
+    return fresnel_i_unit(f0 + (f90 - f0) * t);
+}
+vec3 fresnel_schlick_gen_rgb(vec3 f0, vec3 f90, float p, float c)
+{
+    float t;
+    c = fresnel_i_unit(c);
+    f0 = fresnel_i_unit(f0);
+    f90 = fresnel_i_unit(f90);
+    p = clamp(p, FRESNEL_P_MIN, FRESNEL_P_MAX);
+    t = p == 5.0 ? fresnel_i_pow5(1.0 - c) : fresnel_i_pow_one_minus(c, p);
+    return fresnel_i_unit(f0 + (f90 - f0) * t);
+}
+
+/* Schlick at the transmitted angle for eta < 1 (1 past the critical angle).
+ * highp: eta^2 ct^2 = (eta-1)(eta+1) + c^2 cancels at the critical angle. */
+float fresnel_schlick_internal(float f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HIGHP float cc = clamp(c, 0.0, 1.0);
+    FRESNEL_HIGHP float ct2;
+    if (e >= 1.0)
+        return fresnel_schlick(f0, cc);
+    ct2 = fresnel_i_eta2_minus_sin2(e, cc);
+    if (!(ct2 > 0.0))
+        return 1.0;
+    return fresnel_schlick(f0, sqrt(ct2) / e);
+}
+vec3 fresnel_schlick_internal_rgb(vec3 f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HIGHP float cc = clamp(c, 0.0, 1.0);
+    FRESNEL_HIGHP float ct2;
+    if (e >= 1.0)
+        return fresnel_schlick_rgb(f0, cc);
+    ct2 = fresnel_i_eta2_minus_sin2(e, cc);
+    if (!(ct2 > 0.0))
+        return vec3(1.0);
+    return fresnel_schlick_rgb(f0, sqrt(ct2) / e);
+}
+
+/* Hoffman's F0 in a surrounding medium of index etaE, rebuilt from
+ * 1 - s = 2/(etaE+1) and 1 - sqrt F0 = (1-F0)/(1+sqrt F0) as in C.
+ * mediump: every intermediate is in [0, 2]; etaE clamped to [1e-3, 100]. */
+float fresnel_f0_in_medium(float f0, float eta_e)
+{
+    float r, one_minus_s, one_minus_r, q;
+    eta_e = clamp(eta_e, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
+    f0 = fresnel_i_unit(f0);
+    r = sqrt(f0);
+    one_minus_s = 2.0 / (eta_e + 1.0);
+    one_minus_r = (1.0 - f0) / (1.0 + r);
+    q = (one_minus_s - one_minus_r) / (one_minus_r + r * one_minus_s);
+    return fresnel_i_unit(q * q);
+}
+
+/* ((eta-1)^2 + kappa^2) / ((eta+1)^2 + kappa^2). mediump: eta, kappa <= 100
+ * keep the denominator <= 20201; it is >= 1, so nothing underflows. */
+float fresnel_f0_from_ior(float eta, float kappa)
+{
+    float k2;
+    eta = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
+    kappa = clamp(kappa, 0.0, FRESNEL_MP_IOR_MAX);
+    k2 = kappa * kappa;
+    return fresnel_i_unit(((eta - 1.0) * (eta - 1.0) + k2) / ((eta + 1.0) * (eta + 1.0) + k2));
+}
+FRESNEL_HIGHP float fresnel_i_f0_from_ior_hp(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa)
+{
+    FRESNEL_HIGHP float k2;
+    eta = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    kappa = fresnel_i_kappa(kappa);
+    k2 = kappa * kappa;
+    return clamp(((eta - 1.0) * (eta - 1.0) + k2) / ((eta + 1.0) * (eta + 1.0) + k2), 0.0, 1.0);
+}
+
+/* ----------------------------------------------------------------- LSK */
+
+/* ((n-1)^2 + 4n (1-c)^5 + k^2) / ((n+1)^2 + k^2). mediump: guards as
+ * fresnel_f0_from_ior; 4n(1-c)^5 <= 400. */
+float fresnel_lsk(float n, float k, float c)
+{
+    float k2;
+    n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
+    k = clamp(k, 0.0, FRESNEL_MP_IOR_MAX);
+    c = fresnel_i_unit(c);
+    k2 = k * k;
+    return fresnel_i_unit(((n - 1.0) * (n - 1.0) + 4.0 * n * fresnel_i_pow5(1.0 - c) + k2) /
+                          ((n + 1.0) * (n + 1.0) + k2));
+}
+vec3 fresnel_lsk_rgb(vec3 n, vec3 k, float c)
+{
+    vec3 k2;
+    n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
+    k = clamp(k, 0.0, FRESNEL_MP_IOR_MAX);
+    c = fresnel_i_unit(c);
+    k2 = k * k;
+    return fresnel_i_unit(((n - 1.0) * (n - 1.0) + 4.0 * n * fresnel_i_pow5(1.0 - c) + k2) /
+                          ((n + 1.0) * (n + 1.0) + k2));
+}
+
+/* fresnel_lsk - a c (1-c)^alpha, a in [0, 1e4] (mediump bound; C: 1e6),
+ * alpha in [0, 1e3]; alpha = 0 means the term a c. mediump: a c (1-c)^alpha
+ * is formed as a (c (1-c)^alpha), which stays below a; pow() underflowing to
+ * 0 for large alpha drops a term < 2^-14 a c. */
+float fresnel_lsk_comp(float n, float k, float a, float alpha, float c)
+{
+    float comp;
+    c = fresnel_i_unit(c);
+    a = clamp(a, 0.0, FRESNEL_MP_A_MAX);
+    alpha = clamp(alpha, 0.0, FRESNEL_ALPHA_MAX);
+    comp = alpha > 0.0 ? a * (c * fresnel_i_pow_one_minus(c, alpha)) : a * c;
+    return fresnel_i_unit(fresnel_lsk(n, k, c) - comp);
+}
+vec3 fresnel_lsk_comp_rgb(vec3 n, vec3 k, vec3 a, vec3 alpha, float c)
+{
+    return vec3(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
+                fresnel_lsk_comp(n.b, k.b, a.b, alpha.b, c));
+}
+
+/* ----------------------------------------------------------------- F82 */
+
+/* F0 + (1-F0)(1-c)^5 - a c (1-c)^6, a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0),
+ * clamped to [0, 1]. mediump: |a| <= 26; underflow as Schlick. The constants
+ * are written out: in a mediump expression, 823543.0 / 46656.0 is folded after
+ * 823543 has become binary16 Inf (measured on llvmpipe: F = 0 at c = 0).
+ * 17.6513844 and 8.16666698 are the binary32 values of 7^7/6^6 and 49/6. */
+#define FRESNEL_I_F82_A1 17.6513844
+#define FRESNEL_I_F82_A2 8.16666698
+float fresnel_f82(float f0, float f82, float c)
+{
+    float x, x5, a;
+    f0 = fresnel_i_unit(f0);
+    f82 = fresnel_i_unit(f82);
+    c = fresnel_i_unit(c);
+    x = 1.0 - c;
+    x5 = fresnel_i_pow5(x);
+    a = FRESNEL_I_F82_A1 * (f0 - f82) + FRESNEL_I_F82_A2 * (1.0 - f0);
+    return fresnel_i_unit(f0 + (1.0 - f0) * x5 - a * c * x5 * x);
+}
+vec3 fresnel_f82_rgb(vec3 f0, vec3 f82, float c)
+{
+    float x, x5;
+    vec3 a;
+    f0 = fresnel_i_unit(f0);
+    f82 = fresnel_i_unit(f82);
+    c = fresnel_i_unit(c);
+    x = 1.0 - c;
+    x5 = fresnel_i_pow5(x);
+    a = FRESNEL_I_F82_A1 * (f0 - f82) + FRESNEL_I_F82_A2 * (1.0 - f0);
+    return fresnel_i_unit(f0 + (1.0 - f0) * x5 - a * c * x5 * x);
+}
+
+/* --------------------------------------------------- approximate conductor */
+
+/* rs = ((n-c)^2 + k^2) / ((n+c)^2 + k^2),
+ * rp = ((nc-1)^2 + (kc)^2) / ((n^2+k^2)c^2 + 2nc + 1),  F = (rs + rp)/2.
+ * mediump: n, k <= 100 keep both denominators <= 20201; the rp denominator
+ * is >= 1; the rs denominator underflows only when n, k and c are all below
+ * 2^-8, where rs = 1 is the limit. */
+float fresnel_approx_conductor(float n, float k, float c)
+{
+    float kc, den_s;
+    n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
+    k = clamp(k, 0.0, FRESNEL_MP_IOR_MAX);
+    c = fresnel_i_unit(c);
+    kc = k * c;
+    den_s = (n + c) * (n + c) + k * k;
+    return fresnel_i_unit(0.5 * ((den_s > 0.0 ? ((n - c) * (n - c) + k * k) / den_s : 1.0) +
+                                 ((n * c - 1.0) * (n * c - 1.0) + kc * kc) /
+                                     ((n * n + k * k) * c * c + 2.0 * n * c + 1.0)));
+}
+vec3 fresnel_approx_conductor_rgb(vec3 n, vec3 k, float c)
+{
+    return vec3(fresnel_approx_conductor(n.r, k.r, c), fresnel_approx_conductor(n.g, k.g, c),
+                fresnel_approx_conductor(n.b, k.b, c));
+}
+/* The same in highp with the C domain (eta, kappa up to 1e5), for Gulbrandsen. */
+FRESNEL_HIGHP float fresnel_i_approx_conductor_hp(FRESNEL_HIGHP float n, FRESNEL_HIGHP float k,
+                                                  FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float kc, rs, rp;
+    n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    k = fresnel_i_kappa(k);
+    c = clamp(c, 0.0, 1.0);
+    kc = k * c;
+    rs = ((n - c) * (n - c) + k * k) / ((n + c) * (n + c) + k * k);
+    rp = ((n * c - 1.0) * (n * c - 1.0) + kc * kc) / ((n * n + k * k) * c * c + 2.0 * n * c + 1.0);
+    return clamp(0.5 * (rs + rp), 0.0, 1.0);
+}
+
+/* ---------------------------------------------------------- Gulbrandsen */
+
+/* r, g -> (n, k), r clamped to [0, 0.9999]. highp (see the file comment).
+ * k^2 in the factored form of src/gulbrandsen.c. */
+FRESNEL_HIGHP vec2 fresnel_gulbrandsen_nk(FRESNEL_HIGHP float r, FRESNEL_HIGHP float g)
+{
+    FRESNEL_HIGHP float sr, nmin, nmax, n, k2;
+    r = clamp(r, 0.0, FRESNEL_GULBRANDSEN_R_MAX);
+    g = clamp(g, 0.0, 1.0);
+    sr = sqrt(r);
+    nmin = (1.0 - r) / (1.0 + r);
+    nmax = (1.0 + sr) * (1.0 + sr) / (1.0 - r);
+    n = g * nmin + (1.0 - g) * nmax;
+    k2 = g * (nmax - nmin) * (sr * (n + 1.0) + n - 1.0) / (1.0 + sr);
+    return vec2(n, k2 > 0.0 ? sqrt(k2) : 0.0);
+}
+
+/* (n, k) -> (r, g); g clamped to [0, 1]. highp. */
+FRESNEL_HIGHP vec2 fresnel_gulbrandsen_rg(FRESNEL_HIGHP float n, FRESNEL_HIGHP float k)
+{
+    FRESNEL_HIGHP float r = fresnel_i_f0_from_ior_hp(n, k);
+    FRESNEL_HIGHP float rc = min(r, FRESNEL_GULBRANDSEN_R_MAX);
+    FRESNEL_HIGHP float sr = sqrt(rc);
+    FRESNEL_HIGHP float nmin = (1.0 - rc) / (1.0 + rc);
+    FRESNEL_HIGHP float nmax = (1.0 + sr) * (1.0 + sr) / (1.0 - rc);
+    FRESNEL_HIGHP float span = nmax - nmin;
+    n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    return vec2(r, span > 0.0 ? clamp((nmax - n) / span, 0.0, 1.0) : 0.0);
+}
+
+/* The approximate conductor at the (n, k) of (r, g). highp. */
+float fresnel_gulbrandsen(FRESNEL_HIGHP float r, FRESNEL_HIGHP float g, FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP vec2 nk = fresnel_gulbrandsen_nk(r, g);
+    return fresnel_i_approx_conductor_hp(nk.x, nk.y, c);
+}
+vec3 fresnel_gulbrandsen_rgb(FRESNEL_HIGHP vec3 r, FRESNEL_HIGHP vec3 g, FRESNEL_HIGHP float c)
+{
+    return vec3(fresnel_gulbrandsen(r.r, g.r, c), fresnel_gulbrandsen(r.g, g.g, c),
+                fresnel_gulbrandsen(r.b, g.b, c));
+}
+
+/* ------------------------------------------------------------ exact */
+
+/* u + iv = sqrt((eta + i kappa)^2 - sin^2) on the decaying branch, and
+ * m = u^2 + v^2, returned as (u, v, m). The smaller of u, v comes from
+ * u v = eta kappa, never from (m - |A|)/2. eta, kappa already clamped. */
+FRESNEL_HIGHP vec3 fresnel_i_transmitted(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa,
+                                         FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float ek = eta * kappa;
+    FRESNEL_HIGHP float a = fresnel_i_eta2_minus_sin2(eta, c) - kappa * kappa;
+    FRESNEL_HIGHP float m = sqrt(a * a + 4.0 * ek * ek);
+    FRESNEL_HIGHP float u, v;
+    if (a >= 0.0) {
+        u = sqrt(0.5 * (m + a));
+        v = u > 0.0 ? ek / u : 0.0;
+    } else {
+        v = sqrt(0.5 * (m - a));
+        u = ek / v;
+    }
+    return vec3(u, v, m);
+}
+
+/* Exact unpolarised reflectance of eta + i kappa (fresnel.h). highp. */
+float fresnel_conductor(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa, FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HIGHP float k = fresnel_i_kappa(kappa);
+    FRESNEL_HIGHP float cc = clamp(c, 0.0, 1.0);
+    FRESNEL_HIGHP vec3 w;
+    FRESNEL_HIGHP float p, q, den_s, den_p, rs, rp;
+    if (e == 1.0 && k == 0.0)
+        return 0.0; /* matched index: nothing reflected, also at c = 0 */
+    w = fresnel_i_transmitted(e, k, cc);
+    p = cc * ((e - k) * (e + k)); /* (eta + i kappa)^2 c = p + i q */
+    q = 2.0 * e * k * cc;
+    den_s = (cc + w.x) * (cc + w.x) + w.y * w.y;
+    den_p = (p + w.x) * (p + w.x) + (q + w.y) * (q + w.y);
+    rs = den_s > 0.0 ? ((cc - w.x) * (cc - w.x) + w.y * w.y) / den_s : 0.0;
+    rp = den_p > 0.0 ? ((p - w.x) * (p - w.x) + (q - w.y) * (q - w.y)) / den_p : 0.0;
+    return clamp(0.5 * (rs + rp), 0.0, 1.0);
+}
+vec3 fresnel_conductor_rgb(FRESNEL_HIGHP vec3 eta, FRESNEL_HIGHP vec3 kappa, FRESNEL_HIGHP float c)
+{
+    return vec3(fresnel_conductor(eta.r, kappa.r, c), fresnel_conductor(eta.g, kappa.g, c),
+                fresnel_conductor(eta.b, kappa.b, c));
+}
+
+/* 1 - fresnel_conductor, from sums of non-negative terms (src/exact.c). */
+FRESNEL_HIGHP float fresnel_i_conductor_transmittance(FRESNEL_HIGHP float e, FRESNEL_HIGHP float k,
+                                                      FRESNEL_HIGHP float cc)
+{
+    FRESNEL_HIGHP vec3 w;
+    FRESNEL_HIGHP float p, q, den_s, den_p, ts, tp;
+    if (e == 1.0 && k == 0.0)
+        return 1.0;
+    w = fresnel_i_transmitted(e, k, cc);
+    p = cc * ((e - k) * (e + k));
+    q = 2.0 * e * k * cc;
+    den_s = (cc + w.x) * (cc + w.x) + w.y * w.y;
+    den_p = (p + w.x) * (p + w.x) + (q + w.y) * (q + w.y);
+    ts = den_s > 0.0 ? 4.0 * cc * w.x / den_s : 1.0;
+    tp = den_p > 0.0 ? 4.0 * cc * w.x * (w.z + (1.0 - cc) * (1.0 + cc)) / den_p : 1.0;
+    return clamp(0.5 * (ts + tp), 0.0, 1.0);
+}
+
+/* Exact dielectric, either side; 1 past the critical angle. highp. */
+float fresnel_dielectric(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HIGHP float cc = clamp(c, 0.0, 1.0);
+    FRESNEL_HIGHP float a, w, e2c, rs, rp;
+    if (e == 1.0)
+        return 0.0;
+    a = fresnel_i_eta2_minus_sin2(e, cc);
+    if (a < 0.0)
+        return 1.0; /* total internal reflection */
+    w = sqrt(a);
+    e2c = e * e * cc;
+    rs = (cc - w) / (cc + w);
+    rp = (e2c - w) / (e2c + w);
+    return clamp(0.5 * (rs * rs + rp * rp), 0.0, 1.0);
+}
+
+/* -------------------------------------------------------- Cook-Torrance */
+
+/* F0 + (1 - F0) (1 - T'(c)/T'(1)), T' the transmittance of one
+ * representative eta + i kappa, T'(1) = 4 eta / ((eta+1)^2 + kappa^2).
+ * F0 may be mediump; eta, kappa, c and the interpolant are highp. */
+FRESNEL_HIGHP float fresnel_i_cook_torrance_t(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa,
+                                              FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HIGHP float k = fresnel_i_kappa(kappa);
+    FRESNEL_HIGHP float d = (e + 1.0) * (e + 1.0) + k * k;
+    return clamp(1.0 - fresnel_i_conductor_transmittance(e, k, clamp(c, 0.0, 1.0)) * d / (4.0 * e), 0.0,
+                 1.0);
+}
+float fresnel_cook_torrance(float f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa,
+                            FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float t = fresnel_i_cook_torrance_t(eta, kappa, c);
+    f0 = fresnel_i_unit(f0);
+    return fresnel_i_unit(f0 + (1.0 - f0) * t);
+}
+vec3 fresnel_cook_torrance_rgb(vec3 f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa,
+                               FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP float t = fresnel_i_cook_torrance_t(eta, kappa, c);
+    f0 = fresnel_i_unit(f0);
+    return fresnel_i_unit(f0 + (1.0 - f0) * t);
+}
+
+/* --------------------------------------------------------------- LUTs */
+
+/* Tables of src/lut.c: n nodes, uniform in sqrt(c), c_i = (i/(n-1))^2
+ * (fresnel_lut*), or in c (fresnel_lut_linear*); RGB tables
+ * hold n red nodes, then n green, then n blue; the _residual forms add the
+ * table to Schlick(F0). Linear interpolation between the two nodes around c,
+ * computed here (not by the texture unit, whose filter weights have 8 bits
+ * on many GPUs), so results match the C runtime.
+ *
+ * FROM A TEXTURE: the table is a strip of texels in one row of a 2D texture
+ * (node j of an RGB table at texel first + j, j = 0..3n-1), value in .r.
+ * strip = (u of the first texel's centre, v of the row's centre, du = 1/width):
+ *     strip = vec3((first + 0.5) / width, (row + 0.5) / height, 1.0 / width)
+ * Any filter works (fetches hit texel centres); R32F keeps the table's
+ * binary32 values (ES 2.0 needs OES_texture_float; ES 3.0 has R32F,
+ * unfilterable, so NEAREST), R16F rounds them to binary16 (2.4e-4 near 1),
+ * 8-bit formats to 1/510.
+ *
+ * FROM AN ARRAY (ES 3.00, GLSL 3.30: const or uniform arrays; ES 1.00 does
+ * not index fragment arrays with a variable): FRESNEL_LUT_ARRAY(table, n, c)
+ * and friends below, with the same layout.
+ *
+ * Precision: position, fetches and interpolation highp (see the file
+ * comment); the result is converted to the default precision. */
+FRESNEL_HIGHP vec2 fresnel_i_lut_pos(FRESNEL_HIGHP float n, FRESNEL_HIGHP float x)
+{
+    FRESNEL_HIGHP float pos = x * (n - 1.0);
+    FRESNEL_HIGHP float i = min(floor(pos), n - 2.0); /* x = 1 ends the last segment */
+    return vec2(i, pos - i);
+}
+/* Node index (floor) and fraction of c in an n-node table. */
+FRESNEL_HIGHP vec2 fresnel_lut_pos(FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+{
+    return fresnel_i_lut_pos(n, sqrt(clamp(c, 0.0, 1.0)));
+}
+FRESNEL_HIGHP vec2 fresnel_lut_linear_pos(FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+{
+    return fresnel_i_lut_pos(n, clamp(c, 0.0, 1.0));
+}
+FRESNEL_HIGHP float fresnel_lut_lerp(FRESNEL_HIGHP float a, FRESNEL_HIGHP float b, FRESNEL_HIGHP float t)
+{
+    return a + t * (b - a);
+}
+FRESNEL_HIGHP float fresnel_i_lut_tex(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                                      FRESNEL_HIGHP vec2 pos, FRESNEL_HIGHP float first)
+{
+    FRESNEL_HIGHP float u = strip.x + (first + pos.x) * strip.z;
+    return fresnel_lut_lerp(FRESNEL_TEXTURE(table, vec2(u, strip.y)).r,
+                            FRESNEL_TEXTURE(table, vec2(u + strip.z, strip.y)).r, pos.y);
+}
+
+float fresnel_lut(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
+                  FRESNEL_HIGHP float c)
+{
+    return clamp(fresnel_i_lut_tex(table, strip, fresnel_lut_pos(n, c), 0.0), 0.0, 1.0);
+}
+float fresnel_lut_linear(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
+                         FRESNEL_HIGHP float c)
+{
+    return clamp(fresnel_i_lut_tex(table, strip, fresnel_lut_linear_pos(n, c), 0.0), 0.0, 1.0);
+}
+float fresnel_lut_residual(float f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                           FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+{
+    return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_lut_tex(table, strip, fresnel_lut_pos(n, c), 0.0));
+}
+float fresnel_lut_linear_residual(float f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                                  FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+{
+    return fresnel_i_unit(fresnel_schlick(f0, c) +
+                          fresnel_i_lut_tex(table, strip, fresnel_lut_linear_pos(n, c), 0.0));
+}
+FRESNEL_HIGHP vec3 fresnel_i_lut_tex_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                                         FRESNEL_HIGHP vec2 pos, FRESNEL_HIGHP float n)
+{
+    return vec3(fresnel_i_lut_tex(table, strip, pos, 0.0), fresnel_i_lut_tex(table, strip, pos, n),
+                fresnel_i_lut_tex(table, strip, pos, 2.0 * n));
+}
+vec3 fresnel_lut_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
+                     FRESNEL_HIGHP float c)
+{
+    return clamp(fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_pos(n, c), n), 0.0, 1.0);
+}
+vec3 fresnel_lut_linear_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
+                            FRESNEL_HIGHP float c)
+{
+    return clamp(fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_linear_pos(n, c), n), 0.0, 1.0);
+}
+vec3 fresnel_lut_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                              FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+{
+    return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
+                          fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_pos(n, c), n));
+}
+vec3 fresnel_lut_linear_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                                     FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+{
+    return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
+                          fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
+}
+
+/* Arrays: table is a float array (const or uniform) of n or 3n nodes, n an
+ * int constant expression or variable. Each macro is one expression. */
+#define FRESNEL_I_LUT_AT(table, base, p) fresnel_lut_lerp((table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (p).y)
+#define FRESNEL_I_LUT_AT_RGB(table, n, p) vec3(FRESNEL_I_LUT_AT(table, 0, p), FRESNEL_I_LUT_AT(table, (n), p), FRESNEL_I_LUT_AT(table, 2 * (n), p))
+#define FRESNEL_LUT_ARRAY(table, n, c) clamp(FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))), 0.0, 1.0)
+#define FRESNEL_LUT_LINEAR_ARRAY(table, n, c) clamp(FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))), 0.0, 1.0)
+#define FRESNEL_LUT_RESIDUAL_ARRAY(f0, table, n, c) fresnel_i_unit(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY(f0, table, n, c) fresnel_i_unit(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))))
+#define FRESNEL_LUT_ARRAY_RGB(table, n, c) clamp(FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))), 0.0, 1.0)
+#define FRESNEL_LUT_LINEAR_ARRAY_RGB(table, n, c) clamp(FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))), 0.0, 1.0)
+#define FRESNEL_LUT_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
+
+#endif /* FRESNEL_GLSL */

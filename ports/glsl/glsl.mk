@@ -1,0 +1,22 @@
+# GLSL port (issue 6), included at the end of the Makefile.
+#   make gallery    spheres per metal and model through OSMesa: build/gallery/index.html
+# The port's test is tests/test_glsl.sh (run by make test; it builds its own
+# binary because it links OSMesa).
+
+GALLERY_METALS ?= au cu ag al cr
+GALLERY_DIR    := $(BUILD)/gallery
+GALLERY_SRC    := ports/glsl/host/gallery.c ports/glsl/host/glctx.c ports/glsl/host/png.c
+
+.PHONY: gallery
+gallery: $(BUILD)/fresnel $(BUILD)/glsl/gallery
+	@mkdir -p $(GALLERY_DIR)
+	@for m in $(GALLERY_METALS); do \
+	    $(BUILD)/fresnel params --material $$m >$(GALLERY_DIR)/$$m.params.csv && \
+	    $(BUILD)/fresnel curve --material $$m --samples 4097 --models exact >$(GALLERY_DIR)/$$m.curve.csv || exit 1; \
+	done
+	$(BUILD)/glsl/gallery ports/glsl $(GALLERY_DIR) $(GALLERY_METALS)
+
+$(BUILD)/glsl/gallery: $(GALLERY_SRC) $(wildcard ports/glsl/host/*.h)
+	@mkdir -p $(@D)
+	@pkg-config --exists osmesa || { echo "gallery: OSMesa missing: apt-get install libosmesa6-dev"; exit 1; }
+	$(CC) $(WARN) -O2 -Iports/glsl/host -o $@ $(GALLERY_SRC) $$(pkg-config --cflags --libs osmesa) -lm
