@@ -14,7 +14,8 @@
  *   5. ES shaders with precision mediump: against the C runtime on the same
  *      binary16 inputs, within the per-model bounds below, no NaN, in [0, 1];
  *      with FRESNEL_HIGHP forced to mediump only measured (it shows why
- *      those functions are highp).
+ *      those functions are highp); where the tree has the C binary16 path
+ *      (include/fresnel_f16.h) the renders are also compared with it.
  * The table at the end (NOTE lines) is ports/glsl/README.md's.
  *
  * Usage: glsl_test PORT_DIR   (PORT_DIR = ports/glsl) */
@@ -24,6 +25,19 @@
 #include <string.h>
 
 #include "fresnel.h"
+/* The C binary16 path of the fixed-point issue, where the tree has it and
+ * the compiler has _Float16: the mediump results are also compared with it
+ * (NOTE lines only; its domain and LUT layout are its own). */
+#if defined(__has_include)
+#if __has_include("fresnel_f16.h")
+#include "fresnel_f16.h"
+#endif
+#endif
+#if defined(FRESNEL_HAS_F16)
+#define HAVE_F16 FRESNEL_HAS_F16
+#else
+#define HAVE_F16 0
+#endif
 #include "glctx.h"
 #include "harness.h"
 #include "png.h"
@@ -514,8 +528,84 @@ struct summary {
     long forced_bad;
     int hp_row, hp_col, mp_row, mp_col, fo_row, fo_col;
     int mp_seen, forced_seen;
+    double f16, f16_forced; /* mediump against the C binary16 path */
+    int f16_seen, f16_forced_seen;
 };
 static struct summary summaries[64];
+
+/* The C binary16 function of a scalar case, on the same binary16 inputs. */
+typedef float (*eval16_fn)(const struct row *r, float c);
+#if HAVE_F16
+#define H(x) ((fresnel_f16)(x))
+static float h_schlick(const struct row *r, float c) { return (float)fresnel_schlick_f16(H(P(0, 1)), H(c)); }
+static float h_schlick_gen(const struct row *r, float c)
+{
+    return (float)fresnel_schlick_gen_f16(H(P(0, 1)), H(P(1, 1)), H(P(2, 1)), H(c));
+}
+static float h_schlick_internal(const struct row *r, float c)
+{
+    return (float)fresnel_schlick_internal_f16(H(P(0, 1)), H(P(1, 1)), H(c));
+}
+static float h_f0_in_medium(const struct row *r, float c) { return (float)fresnel_f0_in_medium_f16(H(c), H(P(0, 1))); }
+static float h_f0_from_ior(const struct row *r, float c) { return (float)fresnel_f0_from_ior_f16(H(4.0f * c), H(P(1, 1))); }
+static float h_lsk(const struct row *r, float c) { return (float)fresnel_lsk_f16(H(P(0, 1)), H(P(1, 1)), H(c)); }
+static float h_lsk_comp(const struct row *r, float c)
+{
+    return (float)fresnel_lsk_comp_f16(H(P(0, 1)), H(P(1, 1)), H(P(2, 1)), H(P(3, 1)), H(c));
+}
+static float h_f82(const struct row *r, float c) { return (float)fresnel_f82_f16(H(P(0, 1)), H(P(1, 1)), H(c)); }
+static float h_approx(const struct row *r, float c)
+{
+    return (float)fresnel_approx_conductor_f16(H(P(0, 1)), H(P(1, 1)), H(c));
+}
+static float h_gulb(const struct row *r, float c) { return (float)fresnel_gulbrandsen_f16(H(P(0, 1)), H(P(1, 1)), H(c)); }
+static float h_ct(const struct row *r, float c)
+{
+    return (float)fresnel_cook_torrance_f16(H(P(0, 1)), H(P(1, 0)), H(P(1, 1)), H(c));
+}
+static float h_cond(const struct row *r, float c) { return (float)fresnel_conductor_f16(H(P(0, 1)), H(P(1, 1)), H(c)); }
+static float h_diel(const struct row *r, float c) { return (float)fresnel_dielectric_f16(H(P(0, 1)), H(c)); }
+static const struct {
+    const char *name;
+    eval16_fn fn;
+} evals16[] = {
+    {"schlick", h_schlick}, {"schlick_gen", h_schlick_gen}, {"schlick_internal", h_schlick_internal},
+    {"f0_in_medium", h_f0_in_medium}, {"f0_from_ior", h_f0_from_ior}, {"lsk", h_lsk}, {"lsk_comp", h_lsk_comp},
+    {"f82", h_f82}, {"approx_conductor", h_approx}, {"gulbrandsen", h_gulb}, {"cook_torrance", h_ct},
+    {"conductor", h_cond}, {"dielectric", h_diel},
+};
+#endif
+
+static eval16_fn eval16_of(const char *name)
+{
+#if HAVE_F16
+    size_t i;
+    for (i = 0; i < sizeof evals16 / sizeof evals16[0]; i++)
+        if (!strcmp(evals16[i].name, name))
+            return evals16[i].fn;
+#else
+    (void)name;
+#endif
+    return NULL;
+}
+
+/* Largest |GPU mediump - C binary16| over the case's rows and cosines. */
+static double compare16(const struct mcase *mc, eval16_fn fn)
+{
+    double worst = 0.0;
+    int ri, x;
+    for (ri = 0; ri < nrows_of(mc); ri++) {
+        struct row r;
+        setup_row(mc, ri, &r);
+        round_row_f16(&r);
+        for (x = 0; x < W; x++) {
+            double d = fabs((double)out_f[((size_t)ri * W + (size_t)x) * 4] - (double)fn(&r, cos_mp[x]));
+            if (!(d <= worst))
+                worst = isnan(d) ? INFINITY : d;
+        }
+    }
+    return worst;
+}
 
 /* The checks of one case after its float render (prog is still needed for
  * the RGBA8 one). */
@@ -562,6 +652,12 @@ static void judge_case(const struct dialect *d, int mode, int ci, GLuint prog)
             sm->mp_col = s.col;
         }
         sm->mp_seen = 1;
+        if (eval16_of(mc->name)) {
+            double d16 = compare16(mc, eval16_of(mc->name));
+            if (!(d16 <= sm->f16))
+                sm->f16 = d16;
+            sm->f16_seen = 1;
+        }
     } else {
         if (s.max > sm->forced || isinf(s.max)) {
             sm->forced = s.max;
@@ -570,6 +666,12 @@ static void judge_case(const struct dialect *d, int mode, int ci, GLuint prog)
         }
         sm->forced_bad += s.bad;
         sm->forced_seen = 1;
+        if (eval16_of(mc->name)) {
+            double d16 = compare16(mc, eval16_of(mc->name));
+            if (!(d16 <= sm->f16_forced))
+                sm->f16_forced = d16;
+            sm->f16_forced_seen = 1;
+        }
     }
 }
 
@@ -864,6 +966,8 @@ int main(int argc, char **argv)
     tex_lut = glctx_r32f_texture(LUT_W, NMETALS * LUT_VARIANTS, lut_tex);
     free(lut_tex);
 
+    if (!HAVE_F16)
+        NOTE("the C binary16 path (include/fresnel_f16.h with _Float16) is not available to this build");
     check_png();
     probe_context();
     probe_nonfinite();
@@ -906,6 +1010,12 @@ int main(int argc, char **argv)
         else
             snprintf(hpat, sizeof hpat, "-");
         NOTE("table: %s | %.2g | %s | %s | %s | %s", mc->name, sm->hp, hpat, lsb, mp, fo);
+        if (sm->f16_seen && sm->f16_forced_seen)
+            NOTE("f16: %s: mediump GPU against the C binary16 path (fresnel_%s_f16) on the same inputs: max %.2g; "
+                 "with FRESNEL_HIGHP = mediump: max %.2g", mc->name, mc->name, sm->f16, sm->f16_forced);
+        else if (sm->f16_seen)
+            NOTE("f16: %s: mediump GPU against the C binary16 path (fresnel_%s_f16) on the same inputs: max %.2g",
+                 mc->name, mc->name, sm->f16);
     }
     glDeleteTextures(1, &tex_cos_hp);
     glDeleteTextures(1, &tex_cos_mp);
