@@ -35,7 +35,7 @@ enum { M_REF, M_SCHLICK, M_F82, M_LSK_COMP, M_GULBRANDSEN, M_COOK_TORRANCE, M_EX
 static const char *const model_names[NMODELS] = {"reference", "schlick", "f82", "lsk-comp", "gulbrandsen",
                                                   "cook-torrance", "exact", "lut16"};
 static const char *const model_notes[NMODELS] = {
-    "exact reflectance of the spectral ground truth (256-node table)",
+    "spectral ground truth (fresnel curve) as a 256-node table",
     "F0",
     "F0, F82",
     "fitted eta, kappa; a, alpha",
