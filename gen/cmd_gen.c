@@ -14,9 +14,11 @@
 static void gen_usage(FILE *out)
 {
     int i;
-    fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--data DIR]\n\n"
+    fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--glsl] [--data DIR]\n\n"
                  "Reads the scene manifest SCENE and writes a C header with static const\n"
                  "constants and tables for exactly its materials, models and number types.\n"
+                 "--glsl writes the same constants as GLSL instead (const vec3, float arrays)\n"
+                 "for use after ports/glsl/fresnel.glsl.\n"
                  "The output is written to a temporary file and renamed: on any error nothing\n"
                  "is left at OUT.h. Identical input gives byte-identical output.\n\n"
                  "Manifest format: `key = value` lines, # comments (see gen/scene.h):\n"
@@ -59,7 +61,7 @@ int cmd_gen(int argc, char **argv)
     material_params *params = NULL;
     spectrum **spectra = NULL;
     char name[64], where[1100];
-    int i, status = 0;
+    int i, status = 0, glsl = 0;
     cli_outfile out;
     emit_input in;
 
@@ -67,6 +69,8 @@ int cmd_gen(int argc, char **argv)
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             gen_usage(stdout);
             return 0;
+        } else if (!strcmp(argv[i], "--glsl")) {
+            glsl = 1;
         } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data")) {
             if (i + 1 >= argc)
                 return cli_error(WHERE, "option '%s' needs a value (see fresnel gen --help)", argv[i]);
@@ -117,6 +121,7 @@ int cmd_gen(int argc, char **argv)
     in.g = g;
     in.params = params;
     in.spectra = spectra;
+    in.glsl = glsl;
     if (cli_out_open(&out, out_path)) {
         status = cli_error(out_path, "cannot write");
         goto done;

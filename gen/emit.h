@@ -14,6 +14,7 @@ typedef struct emit_input {
     const gen_context *g;
     const material_params *params; /* one per scene material, in order */
     spectrum *const *spectra;      /* the same */
+    int glsl; /* 0: C header for include/fresnel.h; 1: GLSL for ports/glsl/fresnel.glsl */
 } emit_input;
 
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */

@@ -29,29 +29,43 @@ static int scene_has_residual_lut(const scene *sc)
     return 0;
 }
 
+/* C or GLSL: the one difference in what is emitted is the syntax. */
+static int glsl;
+
 /* A binary32 literal that reads back to the same float: 9 significant
- * digits, always with a '.' or exponent so that the 'f' suffix is legal. */
+ * digits, always with a '.' or an exponent. C gets the 'f' suffix; GLSL ES
+ * 1.00 has no suffixes, and its float is binary32 at highp anyway. */
 static void put_float(FILE *f, double v)
 {
     char buf[40];
     snprintf(buf, sizeof buf, "%.9g", (double)(float)v);
-    fprintf(f, strpbrk(buf, ".e") ? "%sf" : "%s.0f", buf);
+    fputs(buf, f);
+    if (!strpbrk(buf, ".e"))
+        fputs(".0", f);
+    if (!glsl)
+        fputc('f', f);
 }
 
 static void emit_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
 {
-    fprintf(f, "/* %s */\nstatic const fresnel_rgb %s_%s FRESNEL_GEN_UNUSED = {", why, prefix, name);
+    if (glsl)
+        fprintf(f, "/* %s */\nconst vec3 %s_%s = vec3(", why, prefix, name);
+    else
+        fprintf(f, "/* %s */\nstatic const fresnel_rgb %s_%s FRESNEL_GEN_UNUSED = {", why, prefix, name);
     put_float(f, v[0]);
     fputs(", ", f);
     put_float(f, v[1]);
     fputs(", ", f);
     put_float(f, v[2]);
-    fputs("};\n", f);
+    fputs(glsl ? ");\n" : "};\n", f);
 }
 
 static void emit_float(FILE *f, const char *prefix, const char *name, double v, const char *why)
 {
-    fprintf(f, "/* %s */\nstatic const float %s_%s FRESNEL_GEN_UNUSED = ", why, prefix, name);
+    if (glsl)
+        fprintf(f, "/* %s */\nconst FRESNEL_HIGHP float %s_%s = ", why, prefix, name);
+    else
+        fprintf(f, "/* %s */\nstatic const float %s_%s FRESNEL_GEN_UNUSED = ", why, prefix, name);
     put_float(f, v);
     fputs(";\n", f);
 }
@@ -68,18 +82,26 @@ static int emit_lut(FILE *f, const char *prefix, const char *model, const materi
     for (i = 0; model[i] && i < (int)sizeof name - 1; i++)
         name[i] = model[i] == '-' ? '_' : model[i];
     name[i] = '\0';
-    fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s.\n"
-               " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n",
-            model, n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
-            spacing == LUT_UNIFORM ? "lut_linear" : "lut", residual ? "_residual" : "", residual ? "f0, " : "", n);
-    fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
+    fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s.\n", model, n,
+            spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal");
+    if (glsl) {
+        fprintf(f, " * Evaluate with FRESNEL_%s%s_ARRAY_RGB(%s%s_%s, %d, c) (GLSL ES 3.00, GLSL 3.30; for\n"
+                   " * ES 1.00 upload the same values as a texture strip, see fresnel.glsl). */\n",
+                spacing == LUT_UNIFORM ? "LUT_LINEAR" : "LUT", residual ? "_RESIDUAL" : "", residual ? "f0, " : "",
+                prefix, name, n);
+        fprintf(f, "const FRESNEL_HIGHP float %s_%s[%d] = float[%d](", prefix, name, 3 * n, 3 * n);
+    } else {
+        fprintf(f, " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n", spacing == LUT_UNIFORM ? "lut_linear" : "lut",
+                residual ? "_residual" : "", residual ? "f0, " : "", n);
+        fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
+    }
     for (i = 0; i < 3 * n; i++) {
         fputs(i % 6 == 0 ? "\n    " : " ", f);
         put_float(f, t[i]);
         if (i + 1 < 3 * n)
             fputc(',', f);
     }
-    fprintf(f, "\n};\n");
+    fprintf(f, glsl ? "\n);\n" : "\n};\n");
     free(t);
     return 0;
 }
@@ -91,6 +113,7 @@ int emit_header(FILE *f, const emit_input *in)
     lut_spacing spacing = strcmp(sc->lut_spacing, "uniform") ? LUT_GRAZING : LUT_UNIFORM;
     char guard[96];
     int i, m;
+    glsl = in->glsl;
     for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
         guard[i] = (char)toupper((unsigned char)in->name[i]);
     guard[i] = '\0';
@@ -115,9 +138,14 @@ int emit_header(FILE *f, const emit_input *in)
         fprintf(f, " *   %-18s %s.csv, %s, %s, %.1f-%.1f nm\n", p->info.id, p->info.id, p->info.name,
                 p->info.dataset, p->measured_lo, p->measured_hi);
     }
-    fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n\n", guard, guard);
-    fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
-               "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");
+    if (glsl) {
+        fprintf(f, " * GLSL: paste after ports/glsl/fresnel.glsl, which defines FRESNEL_HIGHP.\n */\n"
+                   "#ifndef FRESNEL_SCENE_%s_GLSL\n#define FRESNEL_SCENE_%s_GLSL\n", guard, guard);
+    } else {
+        fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n\n", guard, guard);
+        fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
+                   "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");
+    }
 
     for (i = 0; i < sc->material_count; i++) {
         const material_params *p = &in->params[i];
