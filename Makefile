@@ -85,3 +85,36 @@ clean:
 
 # ---- GLSL ports and OSMesa (issue 6) ----
 include ports/glsl/glsl.mk
+
+# ---- fuzzing (issue 7) ----
+# `make fuzz` runs each libFuzzer target tests/fuzz/fuzz_*.c for FUZZ_SECONDS
+# under ASan+UBSan, starting from the committed seed corpus
+# tests/fuzz/corpus/<target>/; inputs it finds go to $(BUILD)/fuzz/corpus/<target>/,
+# crashes to $(BUILD)/fuzz/artifacts/<target>/. `make test` replays the seed
+# corpus without libFuzzer (tests/test_fuzz_replay.sh).
+FUZZ_CC      ?= clang
+FUZZ_SECONDS ?= 60
+FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
+                -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Igen -Itests/fuzz
+# Host code the targets exercise, linked into each with the whole runtime.
+FUZZ_GEN     := gen/reference.c gen/cli.c gen/load_nk.c gen/resample.c gen/scene.c \
+                gen/colour_space.c gen/colorimetry.c
+FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
+
+.PHONY: fuzz fuzz-bins
+fuzz-bins: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/%)
+
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(wildcard tests/fuzz/*.h) $(LIB_SRC) $(wildcard src/*.h) $(FUZZ_GEN)
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN) -lm -o $@
+
+fuzz: fuzz-bins
+	@for t in $(FUZZ_TARGETS); do \
+	    mkdir -p $(BUILD)/fuzz/corpus/$$t $(BUILD)/fuzz/artifacts/$$t || exit 1; \
+	    echo "== $$t: $(FUZZ_SECONDS) s"; \
+	    $(BUILD)/fuzz/$$t -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	        -artifact_prefix=$(BUILD)/fuzz/artifacts/$$t/ \
+	        $(BUILD)/fuzz/corpus/$$t tests/fuzz/corpus/$$t 2>$(BUILD)/fuzz/$$t.log; \
+	    rc=$$?; grep -E '^(stat::number_of_executed_units|stat::new_units_added|==[0-9]+==|SUMMARY|fuzz oracle)' $(BUILD)/fuzz/$$t.log; \
+	    [ $$rc -eq 0 ] || { echo "$$t: finding, see $(BUILD)/fuzz/$$t.log and $(BUILD)/fuzz/artifacts/$$t/"; exit 1; }; \
+	done

@@ -39,5 +39,6 @@ int cmd_accuracy(int argc, char **argv);
 int cmd_params(int argc, char **argv);
 int cmd_gen(int argc, char **argv);
 int cmd_curve(int argc, char **argv);
+int cmd_extremes(int argc, char **argv);
 
 #endif

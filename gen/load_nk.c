@@ -8,12 +8,15 @@
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/types.h>
 
 #include "cli.h"
 #include "spectral.h"
 
 #define NK_HEADER "wavelength_nm,n,k"
+/* Most data rows accepted. Measured tables have tens to a few thousand rows
+ * (even 0.005 nm spacing over 360-830 nm is 94001); the cap bounds the
+ * memory and time a hostile file (100 MB of rows) can take. */
+#define NK_MAX_ROWS 100000
 
 int csv_error(const csv_reader *r, const char *fmt, ...)
 {
@@ -26,28 +29,50 @@ int csv_error(const csv_reader *r, const char *fmt, ...)
     return CLI_BAD_INPUT;
 }
 
+/* Longest line accepted in a data file. The real tables' lines are under
+ * 200 bytes; the cap keeps a hostile file (one 100 MB line, say) from being
+ * read into memory whole, as getline would. */
+#define CSV_MAX_LINE 4096
+
 /* Reads one physical line into r->buf without its LF or CRLF ending.
  * 1 = line read, 0 = end of file, -1 = error (message printed). */
 static int read_line(csv_reader *r, char **line)
 {
-    ssize_t len = getline(&r->buf, &r->cap, r->f);
-    if (len < 0) {
+    size_t len = 0;
+    int ch;
+    if (!r->buf) {
+        r->buf = malloc(CSV_MAX_LINE + 1);
+        if (!r->buf) {
+            r->line++;
+            csv_error(r, "out of memory");
+            return -1;
+        }
+        r->cap = CSV_MAX_LINE + 1;
+    }
+    while ((ch = getc(r->f)) != EOF && ch != '\n') {
+        if (ch == '\0' || len == CSV_MAX_LINE) {
+            r->line++;
+            if (ch == '\0')
+                csv_error(r, "expected text, found a NUL byte");
+            else
+                csv_error(r, "expected a line of at most %d bytes", CSV_MAX_LINE);
+            return -1;
+        }
+        r->buf[len++] = (char)ch;
+    }
+    if (ch == EOF) {
         if (ferror(r->f)) {
             r->line++;
             csv_error(r, "read error: %s", strerror(errno));
             return -1;
         }
-        return 0;
+        if (len == 0)
+            return 0;
     }
     r->line++;
-    if ((size_t)len != strlen(r->buf)) {
-        csv_error(r, "expected text, found a NUL byte");
-        return -1;
-    }
-    if (len > 0 && r->buf[len - 1] == '\n')
-        r->buf[--len] = '\0';
     if (len > 0 && r->buf[len - 1] == '\r')
-        r->buf[--len] = '\0';
+        len--;
+    r->buf[len] = '\0';
     *line = r->buf;
     return 1;
 }
@@ -222,6 +247,10 @@ int load_nk(const char *path, nk_table *t)
         if (t->rows > 0 && !(wl > t->wl[t->rows - 1])) {
             csv_error(&r, "wavelength %.10g not greater than previous %.10g", wl,
                       t->wl[t->rows - 1]);
+            goto fail;
+        }
+        if (t->rows == NK_MAX_ROWS) {
+            csv_error(&r, "expected at most %d data rows", NK_MAX_ROWS);
             goto fail;
         }
         if (t->rows == capacity && grow(t, &capacity)) {

@@ -4,6 +4,7 @@
  * Beyond the measured range the end value is held: the only tables that stop
  * short are dielectrics with flat dispersion there, where README.md bounds
  * the effect on XYZ below 1e-4. */
+#include <stdio.h>
 #include <string.h>
 
 #include "cli.h"
@@ -46,6 +47,30 @@ void resample(const nk_table *t, spectrum *s)
     s->measured_hi = clamp_to_grid(t->wl[last]);
 }
 
+/* Holding the end values is a fair extension over a few nm of flat
+ * dispersion, so a partial range proceeds with a warning; a table with no
+ * measured point strictly inside 360-830 nm would turn into a constant n, k
+ * that nobody measured, so it is an error. Data row i is on line i + 2 of
+ * the file (header first, no blank lines between rows: load_nk's rules). */
+static int coverage(const char *path, const nk_table *t)
+{
+    int last = t->rows - 1;
+    char where[1100];
+    if (t->wl[last] <= SPEC_LO_NM || t->wl[0] >= SPEC_HI_NM) {
+        int line = t->wl[0] >= SPEC_HI_NM ? 2 : last + 2;
+        snprintf(where, sizeof where, "%s:%d", path, line);
+        return cli_error(where, "the table covers %.10g-%.10g nm, expected it to reach into %g-%g nm",
+                         t->wl[0], t->wl[last], SPEC_LO_NM, SPEC_HI_NM);
+    }
+    if (t->wl[0] > SPEC_LO_NM || t->wl[last] < SPEC_HI_NM) {
+        int line = t->wl[0] > SPEC_LO_NM ? 2 : last + 2;
+        snprintf(where, sizeof where, "%s:%d", path, line);
+        fprintf(stderr, "%s: warning: measured %.10g-%.10g nm, n and k held at the end values over the rest of %g-%g nm\n",
+                where, t->wl[0], t->wl[last], SPEC_LO_NM, SPEC_HI_NM);
+    }
+    return 0;
+}
+
 int spectrum_load(const char *dir, const char *id, spectrum *s)
 {
     char path[1024];
@@ -57,6 +82,10 @@ int spectrum_load(const char *dir, const char *id, spectrum *s)
         return cli_error(dir, "data directory path too long");
     if (load_nk(path, &t))
         return CLI_BAD_INPUT;
+    if (coverage(path, &t)) {
+        nk_table_free(&t);
+        return CLI_BAD_INPUT;
+    }
     resample(&t, s);
     nk_table_free(&t);
     return 0;

@@ -1,0 +1,55 @@
+/* The extreme and stiff cases of issue 7, shared by `fresnel extremes` (which
+ * prints what every model returns on them) and tests/test_extremes.c (which
+ * asserts the properties). Host only. */
+#ifndef FRESNEL_EXTREMES_H
+#define FRESNEL_EXTREMES_H
+
+#include "models.h"
+
+/* A material seen from an incident medium: eta + i kappa absolute, n1 real. */
+typedef struct extreme_case {
+    const char *name;
+    double eta, kappa, n1;
+    const char *note;
+} extreme_case;
+extern const extreme_case extreme_cases[];
+extern const int extreme_case_count;
+
+/* Cosines as a caller might pass them, in and outside [0, 1]. */
+typedef struct extreme_cos {
+    const char *label;
+    float c;
+} extreme_cos;
+extern const extreme_cos extreme_cosines[];
+extern const int extreme_cosine_count;
+
+/* F0/F82 pairs at and beyond the ends of [0, 1] (out-of-gamut gold, F82 far
+ * above or below F0). */
+typedef struct extreme_reflectance {
+    const char *name;
+    float f0, f82;
+} extreme_reflectance;
+extern const extreme_reflectance extreme_reflectances[];
+extern const int extreme_reflectance_count;
+/* Gulbrandsen r (in .f0) and g (in .f82) at the ends of their domain. */
+extern const extreme_reflectance extreme_gulbrandsen[];
+extern const int extreme_gulbrandsen_count;
+
+/* The cosines in [0, 1] every maximum error is taken over: each extreme of
+ * extreme_cosines inside [0, 1], then points uniform in c and in the angle.
+ * Writes at most max, returns the count. */
+int extreme_cos_grid(float *c, int max);
+
+/* Parameters of a case as `fresnel eval` makes them (model_derive, f90 = 1,
+ * p = 5), rounded to binary32. */
+void extreme_params(const extreme_case *e, model_params *m);
+
+/* 1 if eta and kappa (relative, after the runtime's clamps) lie where the
+ * FRESNEL_BOUND_* were measured: eta in [0.01, 100], kappa in [0, 1000]. */
+int extreme_in_measured_domain(const model_params *m);
+
+/* F82 curve F0 + (1-F0)(1-c)^5 - a c (1-c)^6 without the final clamp, in
+ * double: how far outside [0, 1] a pair pushes it before the runtime clamps. */
+double extreme_f82_unclamped(double f0, double f82, double c);
+
+#endif
