@@ -1,0 +1,19 @@
+/* Host side of the fixed-point runtime: double model parameters converted to
+ * the formats of include/fresnel_fixed.h (its LAYOUT section), rounded to
+ * nearest. This is the reference implementation of what `fresnel gen` emits
+ * for fixed-point scenes. Host only (libm). */
+#ifndef FRESNEL_FIXED_PARAMS_H
+#define FRESNEL_FIXED_PARAMS_H
+
+#include "fresnel_fixed.h"
+
+fresnel_qf fixed_qf(double x);          /* x >= 0; 0 for x <= 0 or NaN */
+int32_t fixed_q15(double x);            /* round(x 32768), x clamped to [0, 1] */
+fresnel_q16 fixed_q16(double x);        /* round(x 65536), clamped to int32 */
+/* eta, kappa relative to the incident medium, clamped like fresnel.h. */
+void fixed_ior(double eta, double kappa, fresnel_q15_ior *out);
+void fixed_nk(double n, double k, fresnel_q15_nk *out);
+void fixed_lsk(double n, double k, double a, double alpha, fresnel_q15_lsk *out);
+double fixed_qf_value(fresnel_qf x);    /* m 2^e */
+
+#endif

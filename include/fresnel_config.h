@@ -1,0 +1,65 @@
+/* fresnel_config.h -- compile-time feature selection, checked at compile time.
+ *
+ * One macro selects what a build contains:
+ *
+ *     cc -DFRESNEL_CONFIG='FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16' ...
+ *
+ * FRESNEL_CONFIG is a bitwise OR of the flags below (default 0: everything
+ * the compiler supports). Each source file of the runtime compiles to nothing
+ * when its feature is switched off, so a build can take all of src/ and still
+ * contain only what it asked for.
+ *
+ *   FRESNEL_CFG_NO_FLOAT  no binary32 functions (fresnel.h). Honoured by the
+ *                         binary32 files that include this header; the
+ *                         fixed-point-only build (ports/, `make cross`) takes the
+ *                         fixed-point files by name in any case.
+ *   FRESNEL_CFG_NO_F16    no _Float16 functions (fresnel_f16.h, src/\*_f16.c).
+ *                         Implied when the compiler has no _Float16.
+ *   FRESNEL_CFG_NO_FIXED  no fixed-point functions (fresnel_fixed.h,
+ *                         src/\*_q15.c, src/fixed_math.c).
+ *
+ * WHY ONE MACRO
+ *   A misspelled stb-style switch (-DFRESNEL_NO_FLOT) is silently ignored by
+ *   the preprocessor, and the build tests the wrong thing (libfixmath's test
+ *   matrix shipped FIXMATH_NO_HARD_DIV, a name the library never read). Here
+ *   the flags are names the C compiler must resolve: FRESNEL_CONFIG is used in
+ *   a C constant expression below, where an unknown identifier
+ *   (FRESNEL_CFG_NO_FLOT) is a hard error, and bits outside the known flags
+ *   are rejected too. The spellings people try first (FRESNEL_NO_FLOAT, ...)
+ *   stop the build with a pointer here. tests/test_config.sh builds each case.
+ */
+#ifndef FRESNEL_CONFIG_H
+#define FRESNEL_CONFIG_H
+
+#define FRESNEL_CFG_NO_FLOAT 0x1
+#define FRESNEL_CFG_NO_F16 0x2
+#define FRESNEL_CFG_NO_FIXED 0x4
+#define FRESNEL_CFG_KNOWN_FLAGS 0x7
+
+#ifndef FRESNEL_CONFIG
+#define FRESNEL_CONFIG 0
+#endif
+
+#if defined(FRESNEL_NO_FLOAT) || defined(FRESNEL_NO_F16) || defined(FRESNEL_NO_FIXED) || \
+    defined(FRESNEL_NO_FLOATS) || defined(FRESNEL_NO_FIXED_POINT) || defined(FRESNEL_NO_HALF) || \
+    defined(FRESNEL_FIXED_ONLY) || defined(FRESNEL_CFG)
+#error "fresnel: configure with -DFRESNEL_CONFIG='FRESNEL_CFG_NO_FLOAT|...' (see fresnel_config.h)"
+#endif
+
+/* An unknown flag name is an undeclared identifier here; unknown bits make
+ * the array size negative. (In #if the same name would quietly be 0.) */
+typedef char fresnel_config_has_unknown_flags_[(((FRESNEL_CONFIG) & ~FRESNEL_CFG_KNOWN_FLAGS) == 0) ? 1 : -1];
+
+#define FRESNEL_HAS_FLOAT (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_FLOAT) == 0)
+#define FRESNEL_HAS_FIXED (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_FIXED) == 0)
+/* _Float16 needs the compiler's support as well as the configuration: gcc
+ * defines __FLT16_MANT_DIG__ exactly where it accepts _Float16 (x86-64,
+ * Arm with -mfp16-format=ieee or an FP16 FPU, AArch64); clang 14 on x86-64
+ * does not. */
+#if defined(__FLT16_MANT_DIG__)
+#define FRESNEL_HAS_F16 (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_F16) == 0)
+#else
+#define FRESNEL_HAS_F16 0
+#endif
+
+#endif /* FRESNEL_CONFIG_H */

@@ -1,0 +1,144 @@
+/* Helpers shared by the fixed-point model files (src/\*_q15.c); not public.
+ *
+ * Two kinds of arithmetic, both in 32-bit integers only:
+ *
+ * 1. Plain fixed point, for Schlick, F82 and the LUTs: unsigned values in
+ *    [0, 1] held as Q30 (1 = 2^30) and Q15 (1 = 2^15). A product of two Q30
+ *    values is formed from 15-bit halves (fr__mul_q30), so x^5 keeps 30 bits
+ *    without int64.
+ *
+ * 2. fresnel_qf, value = m 2^e with m in [2^30, 2^31), for the models whose
+ *    intermediates span many octaves (exact, approximate conductor,
+ *    Gulbrandsen, LSK's powers, F0 helpers). Operations truncate to 31 bits,
+ *    a relative error below 2^-29 per operation; they are defined in
+ *    fixed_math.c and work on non-negative values only: every formula that
+ *    uses them is arranged so that signs are handled outside (see exact_q15.c).
+ *
+ * Range analysis convention: the comment "R:" after a statement states the
+ * range of what it computes; tests/test_fixed_bounds.c re-checks the
+ * interesting ones through FR__RANGE (active only when the test build
+ * defines FRESNEL_RANGE_CHECK).
+ */
+#ifndef FRESNEL_FIXED_INTERNAL_H
+#define FRESNEL_FIXED_INTERNAL_H
+
+#include <stdint.h>
+
+#include "fresnel_fixed.h"
+
+#define FR__ONE_Q15 32768u
+#define FR__ONE_Q30 (1u << 30)
+
+/* Range assertions of the range analysis. A test build defines
+ * FRESNEL_RANGE_CHECK and a function fr__range_fail that records the
+ * violation; the runtime build compiles them away. */
+#ifdef FRESNEL_RANGE_CHECK
+void fr__range_fail(const char *what, long long value);
+#define FR__RANGE(what, x, lo, hi)                                                                 \
+    do {                                                                                           \
+        long long v_ = (long long)(x), lo_ = (long long)(lo), hi_ = (long long)(hi);              \
+        if (v_ < lo_ || v_ > hi_)                                                                  \
+            fr__range_fail((what), v_);                                                            \
+    } while (0)
+#else
+#define FR__RANGE(what, x, lo, hi) ((void)0)
+#endif
+
+/* A Q15 argument as the API promises: any int32, clamped to [0, one]. */
+static inline uint32_t fr__q15_arg(int32_t x)
+{
+    return x <= 0 ? 0u : (x >= 32768 ? FR__ONE_Q15 : (uint32_t)x);
+}
+
+/* floor(a b / 2^15) for a < 2^31, b <= 2^15.
+ * R: a>>15 < 2^16 and b <= 2^15 give (a>>15) b < 2^31; (a & 0x7fff) b < 2^30;
+ * the sum is floor(a b / 2^15) < 2^31. Exact floor: a b / 2^15 =
+ * (a>>15) b + (a & 0x7fff) b / 2^15. */
+static inline uint32_t fr__mul_q30_q15(uint32_t a, uint32_t b)
+{
+    return (a >> 15) * b + (((a & 0x7fffu) * b) >> 15);
+}
+
+/* floor(a b / 2^30) for a < 2^31, b <= 2^30, from 15-bit halves.
+ * R: ah = a>>15 < 2^16, bh = b>>15 <= 2^15, al, bl < 2^15;
+ * ah bh < 2^31; ah bl < 2^31; al bh <= 2^30; al bl < 2^30, >>15 < 2^15;
+ * middle sum < 2^31 + 2^30 + 2^15 < 2^32; result = floor(a b / 2^30) < 2^31.
+ * Exact floor: a b = ah bh 2^30 + (ah bl + al bh) 2^15 + al bl. */
+static inline uint32_t fr__mul_q30(uint32_t a, uint32_t b)
+{
+    uint32_t ah = a >> 15, al = a & 0x7fffu, bh = b >> 15, bl = b & 0x7fffu;
+    return ah * bh + ((ah * bl + al * bh + ((al * bl) >> 15)) >> 15);
+}
+
+/* x^5 in Q30 for x in Q15, x <= 2^15.
+ * R: x^2 <= 2^30 exact; x^4 = floor(x2 x2 / 2^30) <= 2^30; x^5 <= 2^30.
+ * Error: two floors, each < 2^-30, the first multiplied by x <= 1:
+ * x^5 is 0 to 2 units of 2^-30 low. */
+static inline uint32_t fr__pow5_q30(uint32_t x)
+{
+    uint32_t x2 = x * x;
+    uint32_t x4 = fr__mul_q30(x2, x2);
+    return fr__mul_q30_q15(x4, x);
+}
+
+/* Round a Q30 value in [0, 2^30] to Q15 (half up). R: v + 2^14 < 2^31. */
+static inline fresnel_q15 fr__q30_to_q15(uint32_t v)
+{
+    return (fresnel_q15)((v + (1u << 14)) >> 15);
+}
+
+/* Clamp a signed Q30 value to [0, 2^30] and round to Q15. */
+static inline fresnel_q15 fr__q30s_to_q15(int32_t v)
+{
+    return v <= 0 ? (fresnel_q15)0 : (v >= (int32_t)FR__ONE_Q30 ? (fresnel_q15)FR__ONE_Q15 : fr__q30_to_q15((uint32_t)v));
+}
+
+/* Schlick's F0 + (1 - F0) x5 in Q30 from F0 in Q15 and x5 in Q30.
+ * R: f0 2^15 <= 2^30 - (1 - f0) 2^15 ... the sum is <= f0 2^15 + (2^15 - f0) 2^15 = 2^30. */
+static inline uint32_t fr__schlick_q30(uint32_t f0, uint32_t x5)
+{
+    return (f0 << 15) + fr__mul_q30_q15(x5, FR__ONE_Q15 - f0);
+}
+
+/* ---- fresnel_qf (fixed_math.c). Non-negative values; zero is m == 0. */
+fresnel_qf fr__qf(uint32_t x, int32_t e); /* x 2^e, normalised (x any uint32) */
+fresnel_qf fr__qf_mul(fresnel_qf a, fresnel_qf b);
+fresnel_qf fr__qf_add(fresnel_qf a, fresnel_qf b);
+/* |a - b|; *negative set when a < b (may be NULL when a >= b is known) */
+fresnel_qf fr__qf_sub(fresnel_qf a, fresnel_qf b, int *negative);
+fresnel_qf fr__qf_div(fresnel_qf a, fresnel_qf b); /* b != 0 */
+fresnel_qf fr__qf_sqrt(fresnel_qf a);
+/* round(a 2^frac), saturating at 2^32 - 1 */
+uint32_t fr__qf_to_fix(fresnel_qf a, int32_t frac);
+/* a < b: -1, a == b: 0, a > b: 1 */
+int fr__qf_cmp(fresnel_qf a, fresnel_qf b);
+/* a 2^k */
+static inline fresnel_qf fr__qf_scale(fresnel_qf a, int32_t k)
+{
+    a.e += k;
+    return a;
+}
+static inline fresnel_qf fr__qf_one(void) { return fr__qf(1u, 0); }
+/* a value clamped to [0, 1] as Q30 */
+static inline uint32_t fr__qf_to_q30_unit(fresnel_qf a)
+{
+    uint32_t v = fr__qf_to_fix(a, 30);
+    return v > FR__ONE_Q30 ? FR__ONE_Q30 : v;
+}
+
+/* The power function's tables (fixed_math.c), exposed for their test. */
+extern const uint16_t fr__log2_r[64];
+extern const uint32_t fr__log2_t[64];
+extern const uint32_t fr__exp2_t[64];
+
+/* x^p for x in Q15 ([0, 2^15]) and p in Q16.16 (p > 0): relative error
+ * below 2^-24 for p <= 64, 2^-21 for p <= 1000 (fixed_math.c). */
+fresnel_qf fr__pow_q15(uint32_t x, uint32_t p);
+
+/* 1 - exact Fresnel of m at c (exact_q15.c), in qf: Cook-Torrance's T(c). */
+fresnel_qf fr__conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c);
+
+#define FR__RGB_Q15(expr_r, expr_g, expr_b) \
+    do { fresnel_q15_rgb out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
+
+#endif

@@ -1,0 +1,87 @@
+/* Gulbrandsen's edge tint in fixed point (fresnel_fixed.h): the same
+ * factored, cancellation-free expressions as gulbrandsen.c, in fresnel_qf. */
+#include "fixed_internal.h"
+
+#if FRESNEL_HAS_FIXED
+
+/* nmin = (1 - r)/(1 + r) and nmax = (1 + sqrt r)^2 / (1 - r) (the form that
+ * keeps its digits as r -> 1), for r < 1 as qf with 1 - r given exactly. */
+static void fr__nmin_nmax(fresnel_qf sr, fresnel_qf omr, fresnel_qf opr, fresnel_qf *nmin, fresnel_qf *nmax)
+{
+    fresnel_qf ops = fr__qf_add(fr__qf_one(), sr);
+    *nmin = fr__qf_div(omr, opr);
+    *nmax = fr__qf_div(fr__qf_mul(ops, ops), omr);
+}
+
+void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_q15_nk *out)
+{
+    uint32_t r = fr__q15_arg(r_in), g = fr__q15_arg(g_in);
+    fresnel_qf one = fr__qf_one(), sr, nmin, nmax, n, gq, k2, t;
+    int below_one;
+    if (r > FRESNEL_Q15_GULBRANDSEN_R_MAX)
+        r = FRESNEL_Q15_GULBRANDSEN_R_MAX;
+    sr = fr__qf_sqrt(fr__qf(r, -15));
+    /* R: 1 - r >= 4 and 1 + r < 2^16 in Q15, both exact */
+    fr__nmin_nmax(sr, fr__qf(FR__ONE_Q15 - r, -15), fr__qf(FR__ONE_Q15 + r, -15), &nmin, &nmax);
+    gq = fr__qf(g, -15);
+    n = fr__qf_add(fr__qf_mul(gq, nmin), fr__qf_mul(fr__qf(FR__ONE_Q15 - g, -15), nmax));
+    /* k^2 = g (nmax - nmin)(sqrt r (n+1) + n - 1) / (1 + sqrt r); the last
+     * factor is sqrt r (n + 1) + n minus one, which is positive for n in
+     * [nmin, nmax] and may round below it at g = 1: then k = 0 as in
+     * fresnel_gulbrandsen_nk. */
+    t = fr__qf_sub(fr__qf_add(fr__qf_mul(sr, fr__qf_add(n, one)), n), one, &below_one);
+    if (below_one)
+        t = fr__qf(0, 0);
+    k2 = fr__qf_div(fr__qf_mul(fr__qf_mul(gq, fr__qf_sub(nmax, nmin, (int *)0)), t), fr__qf_add(one, sr));
+    out->n = n;
+    out->nk2 = fr__qf_add(fr__qf_mul(n, n), k2);
+}
+
+void fresnel_gulbrandsen_rg_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15 *r_out, fresnel_q15 *g_out)
+{
+    /* r = F0 of n + ik; g = (nmax(r) - n) / (nmax(r) - nmin(r)) with r
+     * clamped to 0.9999 first, clamped to [0, 1]. */
+    uint32_t nn = n_in <= FRESNEL_Q16_ETA_MIN ? (uint32_t)FRESNEL_Q16_ETA_MIN : (uint32_t)n_in;
+    uint32_t kk = k_in <= 0 ? 0u : (uint32_t)k_in;
+    uint32_t em1 = nn >= 65536u ? nn - 65536u : 65536u - nn;
+    fresnel_qf one = fr__qf_one(), n = fr__qf(nn, -16), k = fr__qf(kk, -16);
+    fresnel_qf d = fr__qf(em1, -16), s = fr__qf(nn + 65536u, -16), k2 = fr__qf_mul(k, k);
+    fresnel_qf num = fr__qf_add(fr__qf_mul(d, d), k2), den = fr__qf_add(fr__qf_mul(s, s), k2);
+    fresnel_qf r = fr__qf_div(num, den), rmax = fr__qf(2147268900u, -31); /* round(0.9999 2^31) */
+    fresnel_qf omr, opr, nmin, nmax, span, above;
+    int n_above_nmax;
+    *r_out = fr__q30_to_q15(fr__qf_to_q30_unit(r));
+    if (fr__qf_cmp(r, rmax) > 0) {
+        r = rmax;
+        omr = fr__qf_sub(one, rmax, (int *)0);
+    } else {
+        /* 1 - r = 4n / ((n+1)^2 + k^2), without cancellation */
+        omr = fr__qf_div(fr__qf_scale(n, 2), den);
+    }
+    opr = fr__qf_add(one, r);
+    fr__nmin_nmax(fr__qf_sqrt(r), omr, opr, &nmin, &nmax);
+    span = fr__qf_sub(nmax, nmin, (int *)0);
+    above = fr__qf_sub(nmax, n, &n_above_nmax);
+    if (span.m == 0 || n_above_nmax) {
+        *g_out = 0; /* r = 0 (n 1, k 0) has no edge tint; n beyond nmax neither */
+        return;
+    }
+    *g_out = fr__q30_to_q15(fr__qf_to_q30_unit(fr__qf_div(above, span)));
+}
+
+fresnel_q15 fresnel_gulbrandsen_q15(int32_t r, int32_t g, int32_t c)
+{
+    fresnel_q15_nk nk;
+    fresnel_gulbrandsen_nk_q15(r, g, &nk);
+    return fresnel_approx_conductor_q15(&nk, c);
+}
+
+fresnel_q15_rgb fresnel_gulbrandsen_q15_rgb(fresnel_q15_rgb r, fresnel_q15_rgb g, int32_t c)
+{
+    FR__RGB_Q15(fresnel_gulbrandsen_q15(r.r, g.r, c), fresnel_gulbrandsen_q15(r.g, g.g, c),
+                fresnel_gulbrandsen_q15(r.b, g.b, c));
+}
+
+#else
+typedef int fr__gulbrandsen_q15_disabled;
+#endif

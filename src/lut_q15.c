@@ -1,0 +1,197 @@
+/* Lookup tables of reflectance curves in fixed point (fresnel_fixed.h):
+ * linear interpolation at a position in Q15 node units, no division. */
+#include "fixed_internal.h"
+
+#if FRESNEL_HAS_FIXED
+
+/* Position of x (Q30, [0, 2^30]) along n nodes, as node index and a 15-bit
+ * fraction, rounded to nearest (a floor would cost up to one LSB on a
+ * steep two-node table). R: n - 1 <= 2^15 - 1 (n <= 32768): (x >> 15)(n-1)
+ * < 2^30, (x & 0x7fff)(n-1) + 2^14 < 2^31, and the position is at most
+ * (n-1) 2^15, index <= n - 1. x = 1 lands on the last segment's end: index
+ * n - 2 with fraction 2^15. */
+typedef struct fr__pos {
+    int i;
+    uint32_t t;
+} fr__pos;
+
+static fr__pos fr__position(uint32_t x, int n)
+{
+    fr__pos p;
+    uint32_t nodes = (uint32_t)(n < 2 ? 1 : (n > 32768 ? 32767 : n - 1));
+    uint32_t pos = (x >> 15) * nodes + (((x & 0x7fffu) * nodes + (1u << 14)) >> 15);
+    p.i = (int)(pos >> 15);
+    p.t = pos & 0x7fffu;
+    if (p.i >= (int)nodes) {
+        p.i = (int)nodes - 1;
+        p.t = 1u << 15;
+    }
+    return p;
+}
+
+/* w = 1 - (1 - c)^5 in Q30, or c in Q30 for linear spacing. */
+static uint32_t fr__schlick_w(int32_t c) { return FR__ONE_Q30 - fr__pow5_q30(FR__ONE_Q15 - fr__q15_arg(c)); }
+static uint32_t fr__linear_w(int32_t c) { return fr__q15_arg(c) << 15; }
+
+/* Interpolate two values v0, v1 <= 2^15 with a 15-bit fraction: the result
+ * is scaled by 2^15 (Q30 for Q15 values). R: v0 2^15 <= 2^30,
+ * |v1 - v0| t <= 2^15 2^15; the sum is a convex combination in [0, 2^30]. */
+static uint32_t fr__lerp_q30(uint32_t v0, uint32_t v1, uint32_t t)
+{
+    return v1 >= v0 ? (v0 << 15) + (v1 - v0) * t : (v0 << 15) - (v0 - v1) * t;
+}
+
+/* round(v / 255) for v <= 255 2^15 without a division: (n 257) >> 16 with
+ * n = v + 127 is n / 255.0039, so floor(n / 255) or one less, and the
+ * remainder test settles it. R: n 257 <= (255 2^15 + 127) 257 < 2^31. */
+static uint32_t fr__div255_round(uint32_t v)
+{
+    uint32_t n = v + 127u, q = (n * 257u) >> 16;
+    if (n - q * 255u >= 255u)
+        q++;
+    return q;
+}
+
+static uint32_t fr__u16_q15(uint16_t v) { return v > FR__ONE_Q15 ? FR__ONE_Q15 : v; }
+
+static fresnel_q15 fr__lut_u16(const uint16_t *table, int n, uint32_t x)
+{
+    fr__pos p = fr__position(x, n);
+    return fr__q30_to_q15(fr__lerp_q30(fr__u16_q15(table[p.i]), fr__u16_q15(table[p.i + 1]), p.t));
+}
+
+/* uint8 nodes mean v / 255: interpolated in units of 2^-15 / 255 (the lerp
+ * of the raw codes, <= 255 2^15) and divided by 255 once, so the encoding
+ * adds no rounding of its own. */
+static fresnel_q15 fr__lut_u8(const uint8_t *table, int n, uint32_t x)
+{
+    fr__pos p = fr__position(x, n);
+    return (fresnel_q15)fr__div255_round(fr__lerp_q30(table[p.i], table[p.i + 1], p.t));
+}
+
+/* Signed residual nodes v0, v1 (|v| <= 2^15) scaled by 2^-frac, interpolated
+ * and brought to Q30. R: v0 2^15 and (v1 - v0) t are each < 2^31 in
+ * magnitude (|v1 - v0| <= 2^16 - 1, t <= 2^15) and their sum is the convex
+ * combination, |.| <= 2^30, so the signed addition cannot overflow. The
+ * value is in units of 2^-(frac + 15); Q30 needs a shift by frac - 15. */
+static int32_t fr__residual_q30(int32_t v0, int32_t v1, uint32_t t, int frac)
+{
+    int32_t v = v0 * 32768 + (v1 - v0) * (int32_t)t;
+    uint32_t mag = (uint32_t)(v < 0 ? -v : v);
+    int sh = frac - 15;
+    FR__RANGE("lut residual", v, -(1 << 30), 1 << 30);
+    if (sh > 0)
+        mag = (mag + (1u << (sh - 1))) >> sh;
+    else if (sh < 0)
+        mag <<= -sh; /* s8 tables: |v| <= 2^22, frac >= 7, so |.| <= 2^30 */
+    return v < 0 ? -(int32_t)mag : (int32_t)mag;
+}
+
+/* Schlick (Q30) plus a residual (Q30, |.| <= 2^30), clamped and rounded.
+ * R: the sum is in [-2^30, 2^31 - 1]. */
+static fresnel_q15 fr__plus_schlick(int32_t f0, int32_t c, int32_t residual)
+{
+    uint32_t s = fr__schlick_q30(fr__q15_arg(f0), fr__pow5_q30(FR__ONE_Q15 - fr__q15_arg(c)));
+    return fr__q30s_to_q15((int32_t)s + residual);
+}
+
+static int fr__frac(int frac, int lo, int hi) { return frac < lo ? lo : (frac > hi ? hi : frac); }
+
+static fresnel_q15 fr__lut_s16(int32_t f0, const int16_t *table, int n, int frac, uint32_t x, int32_t c)
+{
+    fr__pos p = fr__position(x, n);
+    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 15, 30)));
+}
+
+static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int frac, uint32_t x, int32_t c)
+{
+    fr__pos p = fr__position(x, n);
+    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 7, 22)));
+}
+
+fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c)
+{
+    return fr__lut_u16(table, n, fr__schlick_w(c));
+}
+fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c)
+{
+    return fr__lut_u16(table, n, fr__linear_w(c));
+}
+fresnel_q15 fresnel_lut_q15_u8(const uint8_t *table, int n, int32_t c)
+{
+    return fr__lut_u8(table, n, fr__schlick_w(c));
+}
+fresnel_q15 fresnel_lut_linear_q15_u8(const uint8_t *table, int n, int32_t c)
+{
+    return fr__lut_u8(table, n, fr__linear_w(c));
+}
+fresnel_q15 fresnel_lut_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
+{
+    return fr__lut_s16(f0, table, n, frac, fr__schlick_w(c), c);
+}
+fresnel_q15 fresnel_lut_linear_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
+{
+    return fr__lut_s16(f0, table, n, frac, fr__linear_w(c), c);
+}
+fresnel_q15 fresnel_lut_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
+{
+    return fr__lut_s8(f0, table, n, frac, fr__schlick_w(c), c);
+}
+fresnel_q15 fresnel_lut_linear_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
+{
+    return fr__lut_s8(f0, table, n, frac, fr__linear_w(c), c);
+}
+
+/* RGB: n red nodes, then n green, then n blue. */
+fresnel_q15_rgb fresnel_lut_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
+{
+    uint32_t x = fr__schlick_w(c);
+    FR__RGB_Q15(fr__lut_u16(table, n, x), fr__lut_u16(table + n, n, x), fr__lut_u16(table + 2 * n, n, x));
+}
+fresnel_q15_rgb fresnel_lut_linear_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
+{
+    uint32_t x = fr__linear_w(c);
+    FR__RGB_Q15(fr__lut_u16(table, n, x), fr__lut_u16(table + n, n, x), fr__lut_u16(table + 2 * n, n, x));
+}
+fresnel_q15_rgb fresnel_lut_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
+{
+    uint32_t x = fr__schlick_w(c);
+    FR__RGB_Q15(fr__lut_u8(table, n, x), fr__lut_u8(table + n, n, x), fr__lut_u8(table + 2 * n, n, x));
+}
+fresnel_q15_rgb fresnel_lut_linear_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
+{
+    uint32_t x = fr__linear_w(c);
+    FR__RGB_Q15(fr__lut_u8(table, n, x), fr__lut_u8(table + n, n, x), fr__lut_u8(table + 2 * n, n, x));
+}
+fresnel_q15_rgb fresnel_lut_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n, int frac,
+                                                 int32_t c)
+{
+    uint32_t x = fr__schlick_w(c);
+    FR__RGB_Q15(fr__lut_s16(f0.r, table, n, frac, x, c), fr__lut_s16(f0.g, table + n, n, frac, x, c),
+                fr__lut_s16(f0.b, table + 2 * n, n, frac, x, c));
+}
+fresnel_q15_rgb fresnel_lut_linear_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n,
+                                                        int frac, int32_t c)
+{
+    uint32_t x = fr__linear_w(c);
+    FR__RGB_Q15(fr__lut_s16(f0.r, table, n, frac, x, c), fr__lut_s16(f0.g, table + n, n, frac, x, c),
+                fr__lut_s16(f0.b, table + 2 * n, n, frac, x, c));
+}
+fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n, int frac,
+                                                int32_t c)
+{
+    uint32_t x = fr__schlick_w(c);
+    FR__RGB_Q15(fr__lut_s8(f0.r, table, n, frac, x, c), fr__lut_s8(f0.g, table + n, n, frac, x, c),
+                fr__lut_s8(f0.b, table + 2 * n, n, frac, x, c));
+}
+fresnel_q15_rgb fresnel_lut_linear_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n,
+                                                       int frac, int32_t c)
+{
+    uint32_t x = fr__linear_w(c);
+    FR__RGB_Q15(fr__lut_s8(f0.r, table, n, frac, x, c), fr__lut_s8(f0.g, table + n, n, frac, x, c),
+                fr__lut_s8(f0.b, table + 2 * n, n, frac, x, c));
+}
+
+#else
+typedef int fr__lut_q15_disabled;
+#endif

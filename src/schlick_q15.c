@@ -1,0 +1,130 @@
+/* Schlick, generalized Schlick, Schlick internal and the F0 helpers in
+ * fixed point (fresnel_fixed.h). */
+#include "fixed_internal.h"
+
+#if FRESNEL_HAS_FIXED
+
+fresnel_q15 fresnel_schlick_q15(int32_t f0, int32_t c)
+{
+    uint32_t x = FR__ONE_Q15 - fr__q15_arg(c); /* exact: 1 - c in Q15 */
+    return fr__q30_to_q15(fr__schlick_q30(fr__q15_arg(f0), fr__pow5_q30(x)));
+}
+
+fresnel_q15_rgb fresnel_schlick_q15_rgb(fresnel_q15_rgb f0, int32_t c)
+{
+    uint32_t x5 = fr__pow5_q30(FR__ONE_Q15 - fr__q15_arg(c));
+    FR__RGB_Q15(fr__q30_to_q15(fr__schlick_q30(fr__q15_arg(f0.r), x5)),
+                fr__q30_to_q15(fr__schlick_q30(fr__q15_arg(f0.g), x5)),
+                fr__q30_to_q15(fr__schlick_q30(fr__q15_arg(f0.b), x5)));
+}
+
+static uint32_t fr__clamp_p(fresnel_q16 p)
+{
+    return p <= FRESNEL_Q16_P_MIN ? (uint32_t)FRESNEL_Q16_P_MIN
+                                  : (p >= FRESNEL_Q16_P_MAX ? (uint32_t)FRESNEL_Q16_P_MAX : (uint32_t)p);
+}
+
+/* (1 - c)^p in Q30: Schlick's multiplications for p = 5, the power function otherwise. */
+static uint32_t fr__weight_q30(uint32_t c, uint32_t p)
+{
+    if (p == 5u * 65536u)
+        return fr__pow5_q30(FR__ONE_Q15 - c);
+    return fr__qf_to_q30_unit(fr__pow_q15(FR__ONE_Q15 - c, p));
+}
+
+/* F0 + (F90 - F0) t in Q30, t in Q30. R: |F90 - F0| <= 2^15, so the product
+ * is <= 2^30 in magnitude and the sum stays in [0, 2^30] (a convex combination). */
+static fresnel_q15 fr__mix_q15(uint32_t f0, uint32_t f90, uint32_t t)
+{
+    uint32_t base = f0 << 15;
+    if (f90 >= f0)
+        return fr__q30_to_q15(base + fr__mul_q30_q15(t, f90 - f0));
+    return fr__q30_to_q15(base - fr__mul_q30_q15(t, f0 - f90));
+}
+
+fresnel_q15 fresnel_schlick_gen_q15(int32_t f0, int32_t f90, fresnel_q16 p, int32_t c)
+{
+    return fr__mix_q15(fr__q15_arg(f0), fr__q15_arg(f90), fr__weight_q30(fr__q15_arg(c), fr__clamp_p(p)));
+}
+
+fresnel_q15_rgb fresnel_schlick_gen_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f90, fresnel_q16 p,
+                                            int32_t c)
+{
+    uint32_t t = fr__weight_q30(fr__q15_arg(c), fr__clamp_p(p));
+    FR__RGB_Q15(fr__mix_q15(fr__q15_arg(f0.r), fr__q15_arg(f90.r), t),
+                fr__mix_q15(fr__q15_arg(f0.g), fr__q15_arg(f90.g), t),
+                fr__mix_q15(fr__q15_arg(f0.b), fr__q15_arg(f90.b), t));
+}
+
+/* (1 - ct)^5 in Q30 for Schlick internal, or 2^31 for total internal
+ * reflection. ct^2 = (a0 + c^2) / eta^2; for eta < 1 (a0 < 0, kappa 0) the
+ * prepared shift is 0, so a0 + c^2 is exact in Q30 (|a0| < 2^30). */
+static uint32_t fr__internal_weight_q30(const fresnel_q15_ior *m, uint32_t c)
+{
+    uint32_t c2 = c * c, ct, x, x2;
+    int32_t a;
+    if (m->a0 >= 0)
+        return fr__pow5_q30(FR__ONE_Q15 - c); /* eta >= 1: external, c as is */
+    /* R: a0 in (-2^31, 0) and c^2 >> shift <= 2^30: a in (-2^31, 2^30] */
+    a = m->a0 + (int32_t)(m->shift ? (c2 + (1u << (m->shift - 1))) >> m->shift : c2);
+    if (a <= 0)
+        return 1u << 31; /* past the critical angle */
+    ct = fr__qf_to_q30_unit(fr__qf_sqrt(fr__qf_mul(fr__qf((uint32_t)a, m->shift - 30), m->inv_eta2)));
+    x = FR__ONE_Q30 - ct;   /* R: [0, 2^30] */
+    x2 = fr__mul_q30(x, x); /* R: <= 2^30 */
+    return fr__mul_q30(fr__mul_q30(x2, x2), x);
+}
+
+static fresnel_q15 fr__internal_q15(uint32_t f0, uint32_t w)
+{
+    return w > FR__ONE_Q30 ? (fresnel_q15)FR__ONE_Q15 : fr__q30_to_q15(fr__schlick_q30(f0, w));
+}
+
+fresnel_q15 fresnel_schlick_internal_q15(int32_t f0, const fresnel_q15_ior *m, int32_t c)
+{
+    return fr__internal_q15(fr__q15_arg(f0), fr__internal_weight_q30(m, fr__q15_arg(c)));
+}
+
+fresnel_q15_rgb fresnel_schlick_internal_q15_rgb(fresnel_q15_rgb f0, const fresnel_q15_ior *m, int32_t c)
+{
+    uint32_t w = fr__internal_weight_q30(m, fr__q15_arg(c));
+    FR__RGB_Q15(fr__internal_q15(fr__q15_arg(f0.r), w), fr__internal_q15(fr__q15_arg(f0.g), w),
+                fr__internal_q15(fr__q15_arg(f0.b), w));
+}
+
+/* eta and kappa of the Q16.16 API, clamped to the fixed-point domain. */
+static uint32_t fr__eta_q16(fresnel_q16 x) { return x <= FRESNEL_Q16_ETA_MIN ? (uint32_t)FRESNEL_Q16_ETA_MIN : (uint32_t)x; }
+static uint32_t fr__kappa_q16(fresnel_q16 x) { return x <= 0 ? 0u : (uint32_t)x; }
+
+/* ((eta-1)^2 + kappa^2) / ((eta+1)^2 + kappa^2): eta - 1 and eta + 1 are
+ * exact in Q16.16 (eta + 1 < 2^32 unsigned), each square has 31 bits. */
+static fresnel_qf fr__f0_qf(uint32_t eta, uint32_t kappa)
+{
+    uint32_t em1 = eta >= 65536u ? eta - 65536u : 65536u - eta;
+    fresnel_qf k = fr__qf(kappa, -16), d = fr__qf(em1, -16), s = fr__qf(eta + 65536u, -16);
+    fresnel_qf k2 = fr__qf_mul(k, k);
+    return fr__qf_div(fr__qf_add(fr__qf_mul(d, d), k2), fr__qf_add(fr__qf_mul(s, s), k2));
+}
+
+fresnel_q15 fresnel_f0_from_ior_q15(fresnel_q16 eta, fresnel_q16 kappa)
+{
+    return fr__q30_to_q15(fr__qf_to_q30_unit(fr__f0_qf(fr__eta_q16(eta), fr__kappa_q16(kappa))));
+}
+
+fresnel_q15 fresnel_f0_in_medium_q15(int32_t f0_in, fresnel_q16 eta_e)
+{
+    /* As fresnel_f0_in_medium: r = sqrt F0, 1 - s = 2/(etaE + 1),
+     * 1 - r = (1 - F0)/(1 + r); q = ((1-s) - (1-r)) / ((1-r) + r (1-s)). */
+    uint32_t f0 = fr__q15_arg(f0_in);
+    fresnel_qf one = fr__qf_one();
+    fresnel_qf r = fr__qf_sqrt(fr__qf(f0, -15));
+    fresnel_qf oms = fr__qf_div(fr__qf(2u, 0), fr__qf(fr__eta_q16(eta_e) + 65536u, -16));
+    fresnel_qf omr = fr__qf_div(fr__qf(FR__ONE_Q15 - f0, -15), fr__qf_add(one, r));
+    fresnel_qf den = fr__qf_add(omr, fr__qf_mul(r, oms)); /* > 0: 1 - r s > 0 */
+    fresnel_qf q = fr__qf_div(fr__qf_sub(oms, omr, (int *)0), den);
+    return fr__q30_to_q15(fr__qf_to_q30_unit(fr__qf_mul(q, q)));
+}
+
+#else
+typedef int fr__schlick_q15_disabled;
+#endif
