@@ -1,0 +1,133 @@
+/* fresnel_f16.h -- Fresnel reflectance in IEEE binary16 (_Float16): GPU mediump behaviour.
+ *
+ * WHAT IT IS
+ *   The models of fresnel.h evaluated with every arithmetic operation
+ *   rounded to binary16 (11-bit significand, largest finite 65504, smallest
+ *   normal 2^-14), as a mobile GPU evaluates a mediump shader. They exist to
+ *   show, and to test, what GLSL/HLSL ports of this library get in fp16; the
+ *   measured errors below are the numbers to compare with a GPU.
+ *   Sources: src/\*_f16.c. Scalar functions only: a shader applies the same
+ *   scalar operations to each channel of a vec3.
+ *
+ * AVAILABILITY
+ *   Declared when the compiler has _Float16 (gcc on x86-64, on Arm with
+ *   -mfp16-format=ieee or an FP16 unit, on AArch64) and the build did not
+ *   set FRESNEL_CFG_NO_F16 (fresnel_config.h); otherwise this header declares
+ *   nothing and src/\*_f16.c compile to nothing, so the rest of the library
+ *   builds with any C99 compiler (clang 14 on x86-64 has no _Float16).
+ *
+ * ARITHMETIC
+ *   Each +, -, *, / is one binary16 operation, rounded to nearest even: the
+ *   sources write every operation through a helper that returns _Float16,
+ *   and a C99 return (like an assignment or a cast) removes any excess
+ *   precision, whatever FLT_EVAL_METHOD the compiler uses for _Float16 (gcc
+ *   12 evaluates _Float16 in _Float16 on x86-64 and Arm:
+ *   __FLT_EVAL_METHOD_TS_18661_3__ == 0; clang may evaluate in float unless
+ *   told otherwise). No fused multiply-add. tests/test_f16_bounds.c checks
+ *   per-operation rounding at run time ((1 + 2^-10)^2 - 1 must give 2^-9).
+ *   sqrt is sqrtf of the half value rounded to half: that is the correctly
+ *   rounded binary16 square root (binary32 has more than 2*11+2 bits, so the
+ *   double rounding is harmless). (1-c)^p (generalized Schlick with p != 5,
+ *   LSK compensation) is evaluated the way a GPU evaluates pow, as
+ *   exp(p ln(1-c)) with ln(1-c) (log1pf), the product and exp (expf) each
+ *   rounded to half: the intermediate product is where mediump pow loses
+ *   its digits.
+ *
+ * CONVENTIONS
+ *   As fresnel.h (relative eta, kappa; c clamped to [0, 1], NaN -> 0;
+ *   results in [0, 1]); the domain is narrower so that no intermediate
+ *   overflows 65504: eta in [FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX],
+ *   kappa in [0, FRESNEL_F16_KAPPA_MAX], p and alpha in [1/1024, 64], LSK a in
+ *   [0, 64]. The algorithms are those of the binary32 code, with its
+ *   cancellation-free forms except the exact squares (no Dekker splitting:
+ *   a shader would not do it, so near a dielectric's critical angle
+ *   (eta-1)(eta+1) + c^2 carries binary16's rounding), and with scaling where
+ *   binary16 would overflow: hypot as M sqrt(1 + (S/M)^2), and the p-polarised
+ *   ratio of the conductor divided through by |z|^2.
+ *
+ * ERROR BOUNDS
+ *   FRESNEL_F16_BOUND_*: absolute, against the double reference of the same
+ *   model at the same binary16 inputs, measured by tests/test_f16_bounds.c on
+ *   every binary16 cosine in [0, 1] (15361 values) and the material set of
+ *   fresnel_fixed.h. binary16 ulp(1) = 9.8e-4, ulp(0.5) = 4.9e-4.
+ */
+#ifndef FRESNEL_F16_H
+#define FRESNEL_F16_H
+
+#include "fresnel_config.h"
+
+#define FRESNEL_F16_ETA_MIN 0.0009765625f /* 2^-10, as fresnel.h's 1e-3 */
+#define FRESNEL_F16_ETA_MAX 16.0f
+#define FRESNEL_F16_KAPPA_MAX 16.0f
+#define FRESNEL_F16_P_MIN 0.0009765625f
+#define FRESNEL_F16_P_MAX 64.0f
+
+/* Measured error bounds (see ERROR BOUNDS); measured maxima in brackets,
+ * from `build/tests/test_f16_bounds`. Most models lose 2-7 half-ulps: the
+ * rounding of 1 - c (ulp 2^-11 near 1) is multiplied by the slope of
+ * (1-c)^5. The exact models, Cook-Torrance and Schlick internal have
+ * an infinite slope at a dielectric's critical angle, where binary16's
+ * rounding of (eta-1)(eta+1) + c^2 shows in full (binary32 needs exact
+ * squares there, and the GLSL port evaluates these models in highp for
+ * this reason); FRESNEL_F16_BOUND_NONCRITICAL is every model's error at
+ * least 1/64 in c away from it. The LUT bound is the position pos = w (n-1)
+ * rounded to half (ulp 1/8 for pos in [128, 256)) times the steepest table
+ * step. */
+#define FRESNEL_F16_BOUND_SCHLICK 2.1e-3 /* [2.008e-3] */
+#define FRESNEL_F16_BOUND_SCHLICK_GEN 2.1e-3 /* [2.008e-3 at p 5; 6.63e-4 over p in [0.25, 40]] */
+#define FRESNEL_F16_BOUND_SCHLICK_INTERNAL 0.105 /* [0.1045, at the critical angle] */
+#define FRESNEL_F16_BOUND_F0 1.8e-3 /* [1.718e-3] */
+#define FRESNEL_F16_BOUND_F0_IN_MEDIUM 2.5e-3 /* [2.438e-3] */
+#define FRESNEL_F16_BOUND_LSK 2.8e-3 /* [2.797e-3] */
+#define FRESNEL_F16_BOUND_LSK_COMP 2.9e-3 /* [2.886e-3] */
+#define FRESNEL_F16_BOUND_F82 3.5e-3 /* [3.457e-3] */
+#define FRESNEL_F16_BOUND_GULBRANDSEN 1.8e-3 /* [1.748e-3] */
+#define FRESNEL_F16_BOUND_APPROX_CONDUCTOR 1.6e-3 /* [1.584e-3] */
+#define FRESNEL_F16_BOUND_COOK_TORRANCE 0.12 /* [0.1189, at the critical angle] */
+#define FRESNEL_F16_BOUND_CONDUCTOR 0.12 /* [0.1189, at the critical angle] */
+#define FRESNEL_F16_BOUND_DIELECTRIC 0.37 /* [0.3636, at the critical angle] */
+#define FRESNEL_F16_BOUND_LUT 1.2e-2 /* [1.192e-2] */
+#define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3 /* [4.449e-3] */
+
+#if FRESNEL_HAS_F16
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* __extension__: _Float16 is ISO/IEC TS 18661-3, not C99; this keeps
+ * -Wpedantic quiet for code that only includes the header. */
+__extension__ typedef _Float16 fresnel_f16;
+
+/* F0 + (1 - F0)(1 - c)^5, (1-c)^5 by three multiplications. */
+fresnel_f16 fresnel_schlick_f16(fresnel_f16 f0, fresnel_f16 c);
+/* F0 + (F90 - F0)(1 - c)^p; p = 5 multiplies, other p use the GPU pow. */
+fresnel_f16 fresnel_schlick_gen_f16(fresnel_f16 f0, fresnel_f16 f90, fresnel_f16 p, fresnel_f16 c);
+/* Schlick at the transmitted cosine for eta < 1, one past the critical angle. */
+fresnel_f16 fresnel_schlick_internal_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f16 c);
+fresnel_f16 fresnel_f0_in_medium_f16(fresnel_f16 f0, fresnel_f16 eta_e);
+fresnel_f16 fresnel_f0_from_ior_f16(fresnel_f16 eta, fresnel_f16 kappa);
+fresnel_f16 fresnel_lsk_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 c);
+fresnel_f16 fresnel_lsk_comp_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 a, fresnel_f16 alpha, fresnel_f16 c);
+fresnel_f16 fresnel_f82_f16(fresnel_f16 f0, fresnel_f16 f82, fresnel_f16 c);
+/* Gulbrandsen r, g -> n, k (r clamped to 1 - 2^-11 = 0.99951, the largest half below 1;
+ * n and k clamped to the binary16 domain), then
+ * the approximate conductor form. */
+fresnel_f16 fresnel_gulbrandsen_f16(fresnel_f16 r, fresnel_f16 g, fresnel_f16 c);
+fresnel_f16 fresnel_approx_conductor_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 c);
+fresnel_f16 fresnel_cook_torrance_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
+fresnel_f16 fresnel_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
+fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);
+/* Lookup tables as fresnel_lut (nodes uniform in w = 1 - (1-c)^5) and
+ * fresnel_lut_linear (uniform in c), plain and residual, binary16 nodes. */
+fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
+fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
+fresnel_f16 fresnel_lut_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);
+fresnel_f16 fresnel_lut_linear_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* FRESNEL_HAS_F16 */
+#endif /* FRESNEL_F16_H */
