@@ -118,3 +118,27 @@ fuzz: fuzz-bins
 	    rc=$$?; grep -E '^(stat::number_of_executed_units|stat::new_units_added|==[0-9]+==|SUMMARY|fuzz oracle)' $(BUILD)/fuzz/$$t.log; \
 	    [ $$rc -eq 0 ] || { echo "$$t: finding, see $(BUILD)/fuzz/$$t.log and $(BUILD)/fuzz/artifacts/$$t/"; exit 1; }; \
 	done
+
+# ---- fixed point, fp16 and cross targets (issue 4) ----
+# Everything below belongs to the fixed-point / binary16 runtime and its
+# cross builds (include/fresnel_fixed.h, include/fresnel_f16.h, ports/).
+
+# _Float16 on x86-64 without F16C converts through libgcc (__extendhfsf2,
+# __truncsfhf2): with -mf16c each conversion is one instruction, the values
+# are the same, and the library still references only libm. (F16C: every
+# x86-64 CPU since 2012.)
+F16_CFLAGS := $(if $(findstring x86_64,$(shell $(CC) -dumpmachine 2>/dev/null)),-mf16c)
+$(BUILD)/obj/src/%_f16.o: CFLAGS_LIB += $(F16_CFLAGS)
+
+# The exhaustive fixed-point test links its own copy of the fixed-point
+# sources built with FRESNEL_RANGE_CHECK, which turns the range analysis in
+# the sources (FR__RANGE) into checks; linked before libfresnel.a, these
+# objects provide every fixed-point symbol, so no archive member is pulled.
+FIXED_SRC := src/fixed_math.c $(wildcard src/*_q15.c)
+FIXED_RC_OBJ := $(FIXED_SRC:%.c=$(BUILD)/obj/rc/%.o)
+$(BUILD)/obj/rc/src/%.o: src/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_LIB) -DFRESNEL_RANGE_CHECK -c $< -o $@
+$(BUILD)/tests/test_fixed_bounds: tests/test_fixed_bounds.c $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)

@@ -4,17 +4,22 @@
 #include <string.h>
 
 #include "cli.h"
+#include "fixed_params.h"
 #include "models.h"
 
 static void eval_usage(FILE *out)
 {
     int i;
     fprintf(out,
-            "usage: fresnel eval --model NAME --type f32|f64 [--n1 X] [--f90 X] [--p X]\n"
+            "usage: fresnel eval --model NAME --type f32|f64|fixed|f16 [--n1 X] [--f90 X] [--p X]\n"
             "\n"
             "Reads CSV lines eta,kappa,cos on stdin and writes one reflectance per line,\n"
             "in order: %%.9g for f32 (the binary32 runtime), %%.17g for f64 (the double\n"
-            "reference). eta + i kappa is the material's index, seen from a medium of\n"
+            "reference), %%.9g for fixed (the Q15 runtime of fresnel_fixed.h: cos and\n"
+            "the parameters converted to its formats, the result code divided by 32768)\n"
+            "and for f16 (the binary16 runtime of fresnel_f16.h, parameters and cos\n"
+            "rounded to binary16; only where the compiler has _Float16).\n"
+            "eta + i kappa is the material's index, seen from a medium of\n"
             "real index n1 (default 1); cos is the cosine of the angle of incidence.\n"
             "An optional first line 'eta,kappa,cos' is a header; empty lines and lines\n"
             "starting with '#' are ignored. Parameters a model needs (F0, F82, LSK a and\n"
@@ -63,7 +68,8 @@ int cmd_eval(int argc, char **argv)
 {
     static const char *const column[3] = {"eta", "kappa", "cos"};
     const model *m = NULL;
-    int f64 = -1, i, status = 0;
+    enum { T_NONE, T_F32, T_F64, T_FIXED, T_F16 } type = T_NONE;
+    int i, status = 0;
     double n1 = 1.0, f90 = 1.0, p = 5.0;
     char where[64];
     char *line = NULL;
@@ -87,11 +93,15 @@ int cmd_eval(int argc, char **argv)
                 return cli_error("fresnel eval", "unknown model '%s' (see fresnel eval --help)", val);
         } else if (!strcmp(opt, "--type")) {
             if (!strcmp(val, "f32"))
-                f64 = 0;
+                type = T_F32;
             else if (!strcmp(val, "f64"))
-                f64 = 1;
+                type = T_F64;
+            else if (!strcmp(val, "fixed"))
+                type = T_FIXED;
+            else if (!strcmp(val, "f16"))
+                type = T_F16;
             else
-                return cli_error("fresnel eval", "unknown type '%s': expected f32 or f64", val);
+                return cli_error("fresnel eval", "unknown type '%s': expected f32, f64, fixed or f16", val);
         } else if (!strcmp(opt, "--n1")) {
             if (cli_parse_double(val, &n1) || !(n1 > 0.0))
                 return cli_error("fresnel eval", "--n1 expects a positive number, got '%s'", val);
@@ -107,8 +117,10 @@ int cmd_eval(int argc, char **argv)
     }
     if (!m)
         return cli_error("fresnel eval", "--model is required (see fresnel eval --help)");
-    if (f64 < 0)
-        return cli_error("fresnel eval", "--type is required: f32 or f64");
+    if (type == T_NONE)
+        return cli_error("fresnel eval", "--type is required: f32, f64, fixed or f16");
+    if (type == T_F16 && !m->f16)
+        return cli_error("fresnel eval", "--type f16: this build's compiler has no _Float16");
 
     /* Everything is evaluated before anything is printed, so bad input on
      * line 1000 leaves stdout empty rather than half-written. */
@@ -174,11 +186,19 @@ int cmd_eval(int argc, char **argv)
             }
             out = grown;
         }
-        if (f64) {
+        if (type == T_F64) {
             out[count++] = m->f64(&mp, v[2]);
-        } else {
+        } else if (type == T_F32) {
             model_params_round_f32(&mp);
             out[count++] = (double)m->f32(&mp, (float)v[2]);
+        } else if (type == T_FIXED) {
+            model_fixed mf;
+            model_params_round_fixed(&mp);
+            model_fixed_from_params(&mp, &mf);
+            out[count++] = m->q15(&mf, fixed_q15(v[2])) / 32768.0;
+        } else {
+            model_params_round_f16(&mp);
+            out[count++] = m->f16(&mp, v[2]);
         }
         if (ch == EOF)
             break;
@@ -186,7 +206,7 @@ int cmd_eval(int argc, char **argv)
     {
         size_t j;
         for (j = 0; j < count; j++)
-            printf(f64 ? "%.17g\n" : "%.9g\n", out[j]);
+            printf(type == T_F64 ? "%.17g\n" : "%.9g\n", out[j]);
     }
 done:
     free(line);

@@ -4,6 +4,10 @@
 #ifndef FRESNEL_MODELS_H
 #define FRESNEL_MODELS_H
 
+#include <stdint.h>
+
+#include "fresnel_fixed.h"
+
 /* Everything any model needs. eta and kappa are relative to the incident
  * medium; the rest are derived from them by the reference (model_derive). */
 typedef struct model_params {
@@ -13,12 +17,31 @@ typedef struct model_params {
     double r, g;     /* Gulbrandsen */
 } model_params;
 
+/* A model's parameters in the fixed-point runtime's formats (fresnel_fixed.h). */
+typedef struct model_fixed {
+    int32_t f0, f82, f90, r, g; /* Q15 codes */
+    fresnel_q16 p;
+    fresnel_q15_ior ior; /* eta, kappa for the exact models and Cook-Torrance */
+    fresnel_q15_ior dior; /* eta, kappa 0 for exact-dielectric */
+    fresnel_q15_nk nk;   /* eta, kappa for the approximate conductor */
+    fresnel_q15_nk gnk;  /* Gulbrandsen's n, k from r, g (fresnel_gulbrandsen_nk_q15) */
+    fresnel_q15_lsk lsk;
+} model_fixed;
+
 typedef struct model {
     const char *name;
     const char *params; /* which parameters it reads, for --help */
     double (*f64)(const model_params *m, double c);
     float (*f32)(const model_params *m, float c);
     float bound; /* documented binary32 error bound, FRESNEL_BOUND_* */
+    /* Q15 runtime: the result code at cos code c (0..32768), and its
+     * documented bound in LSB, FRESNEL_Q15_BOUND_* */
+    int32_t (*q15)(const model_fixed *m, int32_t c);
+    double q15_bound;
+    /* binary16 runtime with every parameter and c rounded to binary16 (NULL
+     * where the compiler has no _Float16), and FRESNEL_F16_BOUND_* */
+    double (*f16)(const model_params *m, double c);
+    double f16_bound;
 } model;
 
 extern const model model_table[];
@@ -33,5 +56,19 @@ void model_derive(double eta, double kappa, double n1, double f90, double p, mod
 /* Round every parameter to binary32, so that a double evaluation sees exactly
  * the inputs the float one does and the difference is the runtime's error. */
 void model_params_round_f32(model_params *m);
+
+/* The same for the fixed-point runtime: F0, F82, F90, r, g to Q15 codes, p
+ * and alpha to Q16.16, a to its 31-bit mantissa, and eta to the
+ * value whose eta^2 - 1 the prepared a0 (of eta, kappa 0) holds exactly (near a dielectric's
+ * critical angle the reflectance is as sensitive to eta as the physics is:
+ * comparing against another eta would measure the input, not the
+ * arithmetic); the change is below 2^-31 relative, far below what any
+ * conductor or approximate model could show. kappa is kept: the prepared
+ * constants carry 31-bit mantissas. */
+void model_params_round_fixed(model_params *m);
+/* Prepared constants and codes from (rounded) parameters. */
+void model_fixed_from_params(const model_params *m, model_fixed *out);
+/* And for binary16: every parameter rounded to binary16 (a no-op without _Float16). */
+void model_params_round_f16(model_params *m);
 
 #endif

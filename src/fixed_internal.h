@@ -26,6 +26,8 @@
 
 #include "fresnel_fixed.h"
 
+#if FRESNEL_HAS_FIXED
+
 #define FR__ONE_Q15 32768u
 #define FR__ONE_Q30 (1u << 30)
 
@@ -141,4 +143,5 @@ fresnel_qf fr__conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c)
 #define FR__RGB_Q15(expr_r, expr_g, expr_b) \
     do { fresnel_q15_rgb out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
 
+#endif /* FRESNEL_HAS_FIXED */
 #endif

@@ -1,0 +1,48 @@
+#!/bin/sh
+# fresnel_config.h: a misspelled or unknown configuration fails the build
+# instead of silently building something else (libfixmath's test matrix
+# tested FIXMATH_NO_HARD_DIV, a name the library never read); the known
+# flags strip what they name.
+[ "$BUILD" = build ] || exit 0 # compile-time behaviour; once is enough
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+W="-std=c99 -Wall -Wextra -Wpedantic -Werror -Iinclude"
+cat >"$t/use.c" <<'C'
+#include "fresnel_fixed.h"
+#include "fresnel_f16.h"
+int use(int c) { return fresnel_schlick_q15(1311, c); }
+C
+for cc in gcc clang; do
+    command -v $cc >/dev/null || continue
+    must_fail() { # name, pattern, flags...
+        name=$1; pat=$2; shift 2
+        if $cc $W "$@" -c "$t/use.c" -o "$t/o.o" 2>"$t/err"; then
+            echo "FAIL $cc: $name compiled"
+        elif grep -qE -e "$pat" "$t/err"; then
+            echo "PASS $cc: $name fails the build ($(grep -m1 -oE -e "$pat" "$t/err"))"
+        else
+            echo "FAIL $cc: $name failed without naming the cause: $(head -3 "$t/err")"
+        fi
+    }
+    must_fail "misspelled flag FRESNEL_CFG_NO_FLOT" 'FRESNEL_CFG_NO_FLOT' "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOT"
+    must_fail "unknown flag bit 0x100" 'fresnel_config_has_unknown_flags_' "-DFRESNEL_CONFIG=0x100"
+    must_fail "stb-style FRESNEL_NO_FLOAT" 'configure with -DFRESNEL_CONFIG' "-DFRESNEL_NO_FLOAT"
+    must_fail "empty FRESNEL_CONFIG" 'error' "-DFRESNEL_CONFIG="
+    if $cc $W "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16" -c "$t/use.c" -o "$t/o.o" 2>"$t/err"; then
+        echo "PASS $cc: known flags FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16 compile"
+    else
+        echo "FAIL $cc: known flags: $(head -3 "$t/err")"
+    fi
+    # FRESNEL_CFG_NO_FIXED strips the fixed-point API and code
+    must_fail "FRESNEL_CFG_NO_FIXED hides fresnel_schlick_q15" 'fresnel_schlick_q15' "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FIXED"
+    syms=""
+    for f in src/*_q15.c src/fixed_math.c src/*_f16.c; do
+        $cc $W "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FIXED|FRESNEL_CFG_NO_F16" -c "$f" -o "$t/s.o" 2>>"$t/err2" || syms="$syms $f:error"
+        syms="$syms$(nm --defined-only "$t/s.o" 2>/dev/null | awk '$2 ~ /[TtDdRrBb]/ {printf " %s", $3}')"
+    done
+    if [ -z "$syms" ]; then
+        echo "PASS $cc: FRESNEL_CFG_NO_FIXED|FRESNEL_CFG_NO_F16 leave src/*_q15.c, fixed_math.c, *_f16.c empty"
+    else
+        echo "FAIL $cc: stripped files still define:$syms $(head -3 "$t/err2" 2>/dev/null)"
+    fi
+done

@@ -1,0 +1,250 @@
+/* The binary16 runtime (fresnel_f16.h) against the double reference: every
+ * binary16 cosine in [0, 1], the material set of tests/fixed_materials.h
+ * (inside the binary16 domain), every model of the model table; results in
+ * [0, 1] and within the documented bound. Also checks that the arithmetic
+ * really is one binary16 rounding per operation. These are the numbers to
+ * compare with a GPU's mediump. */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "fixed_materials.h"
+#include "fresnel_f16.h"
+#include "harness.h"
+#include "models.h"
+#include "reference.h"
+
+#if FRESNEL_HAS_F16
+#include "f16_internal.h"
+
+#define NC 15361 /* binary16 values 0x0000 .. 0x3c00: every half in [0, 1] */
+
+static fresnel_f16 half_from_bits(unsigned bits)
+{
+    union {
+        unsigned short u;
+        fresnel_f16 h;
+    } v;
+    v.u = (unsigned short)bits;
+    return v.h;
+}
+
+typedef struct worst {
+    double err;
+    char where[128];
+} worst;
+
+static void note_worst(worst *w, double err, const char *what, double c)
+{
+    if (err > w->err || err != err) {
+        w->err = err != err ? 1e9 : err;
+        snprintf(w->where, sizeof w->where, "%.90s c %.6g", what, c);
+    }
+}
+
+static void check_bound(const char *name, const worst *w, double bound, long bad)
+{
+    char label[96];
+    printf("NOTE f16 %-20s max|err| %.3e at %s\n", name, w->err, w->where);
+    snprintf(label, sizeof label, "f16 %s results in [0, 1]", name);
+    CHECK(label, bad == 0, "%ld results outside [0, 1] or NaN", bad);
+    snprintf(label, sizeof label, "f16 %s within %.2e", name, bound);
+    CHECK(label, w->err <= bound, "max|err| %.3e exceeds the documented %.3e at %s", w->err, bound, w->where);
+}
+
+static int in_f16_domain(const test_material *t)
+{
+    return t->eta >= FRESNEL_F16_ETA_MIN && t->eta <= FRESNEL_F16_ETA_MAX && t->kappa <= FRESNEL_F16_KAPPA_MAX;
+}
+
+static void check_arithmetic(void)
+{
+    fr__h a = fr__hc(1.0f + 1.0f / 1024.0f);
+    fr__h r = fr__hsub(fr__hmul(a, a), fr__hc(1.0f));
+    int i, differs = 0;
+    /* (1 + 2^-10)^2 = 1 + 2^-9 + 2^-20: the square rounds to 1 + 2^-9 in
+     * binary16, so the difference is 2^-9 exactly; with excess precision it
+     * would keep the 2^-20. */
+    CHECK("f16 helpers round each operation to binary16", (float)r == 1.0f / 512.0f, "got %.9g", (double)(float)r);
+    /* and the library's Schlick differs from Schlick in float rounded once */
+    for (i = 0; i < NC && !differs; i += 7) {
+        fresnel_f16 c = half_from_bits((unsigned)i), f0 = fr__hc(0.04f);
+        float x = 1.0f - (float)c, once = (float)f0 + (1.0f - (float)f0) * x * x * x * x * x;
+        differs = (float)fresnel_schlick_f16(f0, c) != (float)(fresnel_f16)once;
+    }
+    CHECK("f16 Schlick is evaluated in binary16, not in float rounded once", differs, "no cosine differs");
+}
+
+/* Near a critical angle (eta < 1) binary16's rounding of eta^2 - sin^2 is
+ * amplified without bound (the reflectance has an infinite slope there);
+ * the second maximum leaves out cosines within 1/64 of it. */
+static void check_models(const test_material *mat, int nmat)
+{
+    int mi, k, i;
+    worst away_all;
+    memset(&away_all, 0, sizeof away_all);
+    for (mi = 0; mi < model_count; mi++) {
+        const model *m = &model_table[mi];
+        worst w, away;
+        long bad = 0;
+        memset(&w, 0, sizeof w);
+        memset(&away, 0, sizeof away);
+        for (k = 0; k < nmat; k++) {
+            model_params mp;
+            if (!in_f16_domain(&mat[k]))
+                continue;
+            double ccrit;
+            model_derive(mat[k].eta, mat[k].kappa, 1.0, 1.0, 5.0, &mp);
+            model_params_round_f16(&mp);
+            ccrit = mp.eta < 1.0 ? sqrt(1.0 - mp.eta * mp.eta) : -1.0;
+            for (i = 0; i < NC; i++) {
+                double c = (double)(float)half_from_bits((unsigned)i);
+                double got = m->f16(&mp, c), ref = m->f64(&mp, c);
+                if (!(got >= 0.0 && got <= 1.0))
+                    bad++;
+                note_worst(&w, fabs(got - ref), mat[k].name, c);
+                if (fabs(c - ccrit) >= 1.0 / 64.0)
+                    note_worst(&away, fabs(got - ref), mat[k].name, c);
+            }
+        }
+        check_bound(m->name, &w, m->f16_bound, bad);
+        printf("NOTE f16 %-20s away from critical angles: max|err| %.3e at %s\n", m->name, away.err, away.where);
+        if (away.err > away_all.err)
+            away_all = away;
+    }
+    CHECK("f16 every model at least 1/64 away from a critical angle", away_all.err <= FRESNEL_F16_BOUND_NONCRITICAL,
+          "max|err| %.3e exceeds %.3e at %s", away_all.err, FRESNEL_F16_BOUND_NONCRITICAL, away_all.where);
+}
+
+static void check_schlick_gen(void)
+{
+    static const float ps[] = {0.25f, 0.5f, 1.0f, 2.0f, 3.7f, 8.0f, 40.0f};
+    static const float f90s[] = {0.0f, 0.5f, 1.0f};
+    static const float f0s[] = {0.0f, 0.04f, 0.5f, 0.95f};
+    worst w;
+    long bad = 0;
+    size_t ip, i9, i0;
+    int i;
+    memset(&w, 0, sizeof w);
+    for (ip = 0; ip < sizeof ps / sizeof ps[0]; ip++)
+        for (i9 = 0; i9 < 3; i9++)
+            for (i0 = 0; i0 < 4; i0++) {
+                fresnel_f16 p = (fresnel_f16)ps[ip], f0 = (fresnel_f16)f0s[i0], f90 = (fresnel_f16)f90s[i9];
+                char what[64];
+                snprintf(what, sizeof what, "p %g F90 %g F0 %g", (double)ps[ip], (double)f90s[i9], (double)f0s[i0]);
+                for (i = 0; i < NC; i++) {
+                    fresnel_f16 c = half_from_bits((unsigned)i);
+                    double got = (double)fresnel_schlick_gen_f16(f0, f90, p, c);
+                    double ref = ref_schlick_gen((double)f0, (double)f90, (double)p, (double)c);
+                    bad += !(got >= 0.0 && got <= 1.0);
+                    note_worst(&w, fabs(got - ref), what, (double)c);
+                }
+            }
+    check_bound("schlick-gen, every p", &w, FRESNEL_F16_BOUND_SCHLICK_GEN, bad);
+}
+
+static void check_f0_helpers(void)
+{
+    worst wi, wm;
+    long bad = 0;
+    int ie, ik, i;
+    memset(&wi, 0, sizeof wi);
+    memset(&wm, 0, sizeof wm);
+    for (ie = 0; ie < 41; ie++)
+        for (ik = 0; ik < 41; ik++) {
+            fresnel_f16 e = (fresnel_f16)(FRESNEL_F16_ETA_MIN * pow(1024.0, ie / 40.0));
+            fresnel_f16 k = (fresnel_f16)(ik == 0 ? 0.0 : 1e-3 * pow(16000.0, (ik - 1) / 39.0));
+            double got = (double)fresnel_f0_from_ior_f16(e, k);
+            bad += !(got >= 0.0 && got <= 1.0);
+            note_worst(&wi, fabs(got - ref_f0_from_ior((double)e, (double)k)), "grid", 1.0);
+        }
+    check_bound("f0_from_ior", &wi, FRESNEL_F16_BOUND_F0, bad);
+    bad = 0;
+    for (ie = 0; ie < 7; ie++) {
+        static const float media[] = {0.5f, 1.0f, 1.2f, 1.33f, 1.5f, 2.42f, 10.0f};
+        fresnel_f16 e = (fresnel_f16)media[ie];
+        for (i = 0; i < NC; i++) {
+            fresnel_f16 f0 = half_from_bits((unsigned)i);
+            double got = (double)fresnel_f0_in_medium_f16(f0, e);
+            bad += !(got >= 0.0 && got <= 1.0);
+            note_worst(&wm, fabs(got - ref_f0_in_medium((double)f0, (double)e)), "etaE", (double)f0);
+        }
+    }
+    check_bound("f0_in_medium", &wm, FRESNEL_F16_BOUND_F0_IN_MEDIUM, bad);
+}
+
+static double ref_interp(const double *v, int n, double x)
+{
+    double pos = x * (n - 1), t;
+    int i = (int)pos;
+    if (i >= n - 1)
+        i = n - 2;
+    t = pos - i;
+    return v[i] + t * (v[i + 1] - v[i]);
+}
+
+static void check_luts(const test_material *mat, int nmat)
+{
+    static const int sizes[] = {2, 5, 16, 64, 256};
+    static fresnel_f16 tab[256], res[256];
+    static double dtab[256], dres[256];
+    worst w;
+    long bad = 0;
+    int k, is, sp, i;
+    memset(&w, 0, sizeof w);
+    for (k = 0; k < nmat; k += 4)
+        for (is = 0; is < 5; is++)
+            for (sp = 0; sp < 2; sp++) {
+                int n = sizes[is];
+                fresnel_f16 f0 = (fresnel_f16)ref_f0_from_ior(mat[k].eta, mat[k].kappa);
+                char what[64];
+                if (!in_f16_domain(&mat[k]))
+                    continue;
+                for (i = 0; i < n; i++) {
+                    double x = i / (double)(n - 1), cn = sp == 0 ? 1.0 - pow(1.0 - x, 0.2) : x;
+                    double gt = ref_conductor(mat[k].eta, mat[k].kappa, cn);
+                    tab[i] = (fresnel_f16)gt;
+                    res[i] = (fresnel_f16)(gt - ref_schlick((double)f0, cn));
+                    dtab[i] = (double)tab[i];
+                    dres[i] = (double)res[i];
+                }
+                snprintf(what, sizeof what, "%.31s n %d %s", mat[k].name, n, sp ? "linear" : "schlick-w");
+                for (i = 0; i < NC; i++) {
+                    fresnel_f16 c = half_from_bits((unsigned)i);
+                    double cd = (double)c, x = sp == 0 ? 1.0 - pow(1.0 - cd, 5.0) : cd, r1, r2, g1, g2;
+                    g1 = (double)(sp == 0 ? fresnel_lut_f16(tab, n, c) : fresnel_lut_linear_f16(tab, n, c));
+                    g2 = (double)(sp == 0 ? fresnel_lut_residual_f16(f0, res, n, c)
+                                          : fresnel_lut_linear_residual_f16(f0, res, n, c));
+                    r1 = ref_clamp(ref_interp(dtab, n, x), 0.0, 1.0);
+                    r2 = ref_clamp(ref_schlick((double)f0, cd) + ref_interp(dres, n, x), 0.0, 1.0);
+                    bad += !(g1 >= 0.0 && g1 <= 1.0) + !(g2 >= 0.0 && g2 <= 1.0);
+                    note_worst(&w, fabs(g1 - r1), what, cd);
+                    note_worst(&w, fabs(g2 - r2), what, cd);
+                }
+            }
+    check_bound("LUT", &w, FRESNEL_F16_BOUND_LUT, bad);
+}
+
+int main(void)
+{
+    static test_material mat[TM_MAX];
+    int nmat = test_materials(mat);
+    if (nmat <= 0) {
+        CHECK("f16 test materials load from data/", 0, "spectrum_load failed");
+        return harness_exit();
+    }
+    check_arithmetic();
+    check_models(mat, nmat);
+    check_schlick_gen();
+    check_f0_helpers();
+    check_luts(mat, nmat);
+    return harness_exit();
+}
+
+#else
+int main(void)
+{
+    NOTE("no _Float16 in this compiler: the binary16 runtime is not built");
+    return harness_exit();
+}
+#endif

@@ -1,0 +1,398 @@
+/* The fixed-point runtime (fresnel_fixed.h) against the double reference:
+ * every cos code 0..32768, every material of tests/fixed_materials.h, every
+ * model of the model table; results within [0, one] and within the bound
+ * the header documents. Built from range-checked copies of the fixed-point
+ * sources (Makefile: FRESNEL_RANGE_CHECK), so every FR__RANGE of the range
+ * analysis is checked on all of these inputs as well; under the sanitizer
+ * pass, UBSan checks the signed arithmetic. */
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixed_materials.h"
+#include "fixed_params.h"
+#include "fresnel_fixed.h"
+#include "harness.h"
+#include "models.h"
+#include "reference.h"
+
+#define ONE 32768
+
+static long range_failures;
+static char range_first[160];
+
+/* Called by FR__RANGE in the range-checked fixed-point objects. */
+void fr__range_fail(const char *what, long long value);
+void fr__range_fail(const char *what, long long value)
+{
+    if (range_failures++ == 0)
+        snprintf(range_first, sizeof range_first, "%s = %lld", what, value);
+}
+
+typedef struct worst {
+    double err;
+    char where[128];
+} worst;
+
+static void note_worst(worst *w, double err, const char *what, double c)
+{
+    if (err > w->err) {
+        w->err = err;
+        snprintf(w->where, sizeof w->where, "%.100s c %.6f", what, c);
+    }
+}
+
+static void check_bound(const char *name, const worst *w, double bound, long bad_range)
+{
+    char label[96];
+    printf("NOTE %-22s max|err| %.5f LSB at %s\n", name, w->err, w->where);
+    snprintf(label, sizeof label, "fixed %s results in [0, one]", name);
+    CHECK(label, bad_range == 0, "%ld results outside [0, 32768]", bad_range);
+    snprintf(label, sizeof label, "fixed %s within %.2f LSB", name, bound);
+    CHECK(label, w->err <= bound, "max|err| %.4f LSB exceeds the documented %.4f at %s", w->err, bound, w->where);
+}
+
+/* Every model of the table, every material, every code. */
+static void check_models(const test_material *mat, int nmat)
+{
+    int mi, k;
+    for (mi = 0; mi < model_count; mi++) {
+        const model *m = &model_table[mi];
+        worst w;
+        long bad = 0;
+        memset(&w, 0, sizeof w);
+        for (k = 0; k < nmat; k++) {
+            model_params mp;
+            model_fixed mf;
+            int32_t c;
+            model_derive(mat[k].eta, mat[k].kappa, 1.0, 1.0, 5.0, &mp);
+            model_params_round_fixed(&mp);
+            model_fixed_from_params(&mp, &mf);
+            for (c = 0; c <= ONE; c++) {
+                int32_t got = m->q15(&mf, c);
+                double ref = m->f64(&mp, c / 32768.0);
+                if (got < 0 || got > ONE)
+                    bad++;
+                note_worst(&w, fabs(got / 32768.0 - ref) * 32768.0, mat[k].name, c / 32768.0);
+            }
+        }
+        check_bound(m->name, &w, m->q15_bound, bad);
+    }
+}
+
+/* Generalized Schlick away from p = 5 (the table only has p = 5). */
+static void check_schlick_gen(void)
+{
+    static const double ps[] = {0.001, 0.25, 0.5, 1.0, 2.0, 3.7, 5.0, 8.0, 40.0, 1000.0};
+    static const int32_t f90s[] = {0, 16384, ONE};
+    static const int32_t f0s[] = {0, 1311, 16384, 31130, ONE};
+    worst w;
+    long bad = 0;
+    size_t ip, i9, i0;
+    int32_t c;
+    memset(&w, 0, sizeof w);
+    for (ip = 0; ip < sizeof ps / sizeof ps[0]; ip++)
+        for (i9 = 0; i9 < 3; i9++)
+            for (i0 = 0; i0 < 5; i0++) {
+                fresnel_q16 p = fixed_q16(ps[ip]);
+                char what[64];
+                snprintf(what, sizeof what, "p %g F90 %d F0 %d", ps[ip], (int)f90s[i9], (int)f0s[i0]);
+                for (c = 0; c <= ONE; c++) {
+                    int32_t got = fresnel_schlick_gen_q15(f0s[i0], f90s[i9], p, c);
+                    double ref = ref_schlick_gen(f0s[i0] / 32768.0, f90s[i9] / 32768.0, p / 65536.0, c / 32768.0);
+                    bad += got < 0 || got > ONE;
+                    note_worst(&w, fabs(got / 32768.0 - ref) * 32768.0, what, c / 32768.0);
+                }
+            }
+    check_bound("schlick-gen, every p", &w, FRESNEL_Q15_BOUND_SCHLICK_GEN, bad);
+}
+
+/* The F0 helpers: from Q16.16 eta, kappa on the float test grid, and the
+ * medium adjustment for every F0 code. */
+static void check_f0_helpers(void)
+{
+    static const double media[] = {0.5, 1.0, 1.2, 1.33, 1.5, 2.42, 10.0};
+    worst w_ior, w_med;
+    long bad = 0;
+    int ie, ik;
+    size_t im;
+    int32_t f0;
+    memset(&w_ior, 0, sizeof w_ior);
+    memset(&w_med, 0, sizeof w_med);
+    for (ie = 0; ie < 49; ie++)
+        for (ik = 0; ik < 43; ik++) {
+            fresnel_q16 e = fixed_q16(0.01 * pow(1e4, ie / 48.0));
+            fresnel_q16 k = fixed_q16(ik == 0 ? 0.0 : 1e-3 * pow(1e5, (ik - 1) / 41.0));
+            int32_t got = fresnel_f0_from_ior_q15(e, k);
+            bad += got < 0 || got > ONE;
+            note_worst(&w_ior, fabs(got / 32768.0 - ref_f0_from_ior(e / 65536.0, k / 65536.0)) * 32768.0, "grid", 1.0);
+        }
+    check_bound("f0_from_ior", &w_ior, FRESNEL_Q15_BOUND_F0, bad);
+    bad = 0;
+    for (im = 0; im < sizeof media / sizeof media[0]; im++) {
+        fresnel_q16 e = fixed_q16(media[im]);
+        char what[32];
+        snprintf(what, sizeof what, "etaE %g F0", media[im]);
+        for (f0 = 0; f0 <= ONE; f0++) {
+            int32_t got = fresnel_f0_in_medium_q15(f0, e);
+            bad += got < 0 || got > ONE;
+            note_worst(&w_med, fabs(got / 32768.0 - ref_f0_in_medium(f0 / 32768.0, e / 65536.0)) * 32768.0, what,
+                       f0 / 32768.0);
+        }
+    }
+    check_bound("f0_in_medium", &w_med, FRESNEL_Q15_BOUND_F0_IN_MEDIUM, bad);
+}
+
+/* The run-time *_prepare functions from Q16.16 against the host's
+ * preparation from the same Q16.16 values in double: the two sets of
+ * constants must give results within one code of each other. */
+static void check_prepare(const test_material *mat, int nmat)
+{
+    int k, worst_ior = 0, worst_nk = 0, worst_lsk = 0, worst_g = 0, worst_r = 0;
+    for (k = 0; k < nmat; k++) {
+        fresnel_q16 e = fixed_q16(mat[k].eta), kk = fixed_q16(mat[k].kappa);
+        double ed = e / 65536.0, kd = kk / 65536.0, a, alpha, r, g;
+        fresnel_q15_ior ri, hi;
+        fresnel_q15_nk rn, hn;
+        fresnel_q15_lsk rl, hl;
+        fresnel_q15 gr, gg;
+        int32_t c;
+        if (e < FRESNEL_Q16_ETA_MIN)
+            continue;
+        ref_lsk_fit(ed, kd, &a, &alpha);
+        fresnel_q15_ior_prepare(e, kk, &ri);
+        fixed_ior(ed, kd, &hi);
+        fresnel_q15_nk_prepare(e, kk, &rn);
+        fixed_nk(ed, kd, &hn);
+        fresnel_q15_lsk_prepare(e, kk, fixed_q16(a), fixed_q16(alpha), &rl);
+        fixed_lsk(ed, kd, fixed_q16(a) / 65536.0, fixed_q16(alpha) / 65536.0, &hl);
+        for (c = 0; c <= ONE; c += 7) {
+            int d1 = abs(fresnel_conductor_q15(&ri, c) - fresnel_conductor_q15(&hi, c));
+            int d2 = abs(fresnel_approx_conductor_q15(&rn, c) - fresnel_approx_conductor_q15(&hn, c));
+            int d3 = abs(fresnel_lsk_comp_q15(&rl, c) - fresnel_lsk_comp_q15(&hl, c));
+            if (d1 > worst_ior)
+                worst_ior = d1;
+            if (d2 > worst_nk)
+                worst_nk = d2;
+            if (d3 > worst_lsk)
+                worst_lsk = d3;
+        }
+        fresnel_gulbrandsen_rg_q15(e, kk, &gr, &gg);
+        ref_gulbrandsen_rg(ed, kd, &r, &g);
+        if (abs((int)gr - fixed_q15(r)) > worst_r)
+            worst_r = abs((int)gr - fixed_q15(r));
+        if (abs((int)gg - fixed_q15(g)) > worst_g)
+            worst_g = abs((int)gg - fixed_q15(g));
+    }
+    NOTE("prepare from Q16.16 vs host: ior %d, nk %d, lsk %d codes; gulbrandsen_rg r %d g %d codes",
+         worst_ior, worst_nk, worst_lsk, worst_r, worst_g);
+    CHECK("fresnel_q15_ior_prepare matches the host preparation", worst_ior <= 1, "%d codes", worst_ior);
+    CHECK("fresnel_q15_nk_prepare matches the host preparation", worst_nk <= 1, "%d codes", worst_nk);
+    CHECK("fresnel_q15_lsk_prepare matches the host preparation", worst_lsk <= 1, "%d codes", worst_lsk);
+    CHECK("fresnel_gulbrandsen_rg_q15 within one code of the reference", worst_r <= 1 && worst_g <= 1,
+          "r %d g %d codes", worst_r, worst_g);
+}
+
+/* RGB forms are the scalar ones per channel; Gulbrandsen's per-call mapping
+ * equals the prepared one; the clamping policy of the arguments. */
+static void check_variants(const test_material *mat, int nmat)
+{
+    long mismatch = 0, clamp_bad = 0;
+    int k;
+    static const int32_t odd_c[] = {INT32_MIN, -1, ONE + 1, 65535, INT32_MAX};
+    for (k = 0; k + 2 < nmat; k += 3) {
+        fresnel_q15_ior ior[3];
+        fresnel_q15_nk nk[3];
+        fresnel_q15_lsk lsk[3];
+        fresnel_q15_rgb f0, f82, r, g, o;
+        int32_t c;
+        int j;
+        model_params mp[3];
+        for (j = 0; j < 3; j++) {
+            model_derive(mat[k + j].eta, mat[k + j].kappa, 1.0, 1.0, 5.0, &mp[j]);
+            fixed_ior(mp[j].eta, mp[j].kappa, &ior[j]);
+            fixed_nk(mp[j].eta, mp[j].kappa, &nk[j]);
+            fixed_lsk(mp[j].eta, mp[j].kappa, mp[j].a, mp[j].alpha, &lsk[j]);
+        }
+        f0.r = (fresnel_q15)fixed_q15(mp[0].f0), f0.g = (fresnel_q15)fixed_q15(mp[1].f0), f0.b = (fresnel_q15)fixed_q15(mp[2].f0);
+        f82.r = (fresnel_q15)fixed_q15(mp[0].f82), f82.g = (fresnel_q15)fixed_q15(mp[1].f82), f82.b = (fresnel_q15)fixed_q15(mp[2].f82);
+        r.r = (fresnel_q15)fixed_q15(mp[0].r), r.g = (fresnel_q15)fixed_q15(mp[1].r), r.b = (fresnel_q15)fixed_q15(mp[2].r);
+        g.r = (fresnel_q15)fixed_q15(mp[0].g), g.g = (fresnel_q15)fixed_q15(mp[1].g), g.b = (fresnel_q15)fixed_q15(mp[2].g);
+        for (c = 0; c <= ONE; c += 97) {
+            fresnel_q15_nk gnk;
+#define SAME3(rgb, fr, fg, fb) mismatch += (rgb).r != (fr) || (rgb).g != (fg) || (rgb).b != (fb)
+            o = fresnel_schlick_q15_rgb(f0, c);
+            SAME3(o, fresnel_schlick_q15(f0.r, c), fresnel_schlick_q15(f0.g, c), fresnel_schlick_q15(f0.b, c));
+            o = fresnel_schlick_gen_q15_rgb(f0, f82, 7 << 16, c);
+            SAME3(o, fresnel_schlick_gen_q15(f0.r, f82.r, 7 << 16, c), fresnel_schlick_gen_q15(f0.g, f82.g, 7 << 16, c),
+                  fresnel_schlick_gen_q15(f0.b, f82.b, 7 << 16, c));
+            o = fresnel_schlick_internal_q15_rgb(f0, &ior[0], c);
+            SAME3(o, fresnel_schlick_internal_q15(f0.r, &ior[0], c), fresnel_schlick_internal_q15(f0.g, &ior[0], c),
+                  fresnel_schlick_internal_q15(f0.b, &ior[0], c));
+            o = fresnel_lsk_q15_rgb(lsk, c);
+            SAME3(o, fresnel_lsk_q15(&lsk[0], c), fresnel_lsk_q15(&lsk[1], c), fresnel_lsk_q15(&lsk[2], c));
+            o = fresnel_lsk_comp_q15_rgb(lsk, c);
+            SAME3(o, fresnel_lsk_comp_q15(&lsk[0], c), fresnel_lsk_comp_q15(&lsk[1], c), fresnel_lsk_comp_q15(&lsk[2], c));
+            o = fresnel_f82_q15_rgb(f0, f82, c);
+            SAME3(o, fresnel_f82_q15(f0.r, f82.r, c), fresnel_f82_q15(f0.g, f82.g, c), fresnel_f82_q15(f0.b, f82.b, c));
+            o = fresnel_gulbrandsen_q15_rgb(r, g, c);
+            SAME3(o, fresnel_gulbrandsen_q15(r.r, g.r, c), fresnel_gulbrandsen_q15(r.g, g.g, c),
+                  fresnel_gulbrandsen_q15(r.b, g.b, c));
+            fresnel_gulbrandsen_nk_q15(r.r, g.r, &gnk);
+            mismatch += fresnel_gulbrandsen_q15(r.r, g.r, c) != fresnel_approx_conductor_q15(&gnk, c);
+            o = fresnel_approx_conductor_q15_rgb(nk, c);
+            SAME3(o, fresnel_approx_conductor_q15(&nk[0], c), fresnel_approx_conductor_q15(&nk[1], c),
+                  fresnel_approx_conductor_q15(&nk[2], c));
+            o = fresnel_cook_torrance_q15_rgb(f0, &ior[1], c);
+            SAME3(o, fresnel_cook_torrance_q15(f0.r, &ior[1], c), fresnel_cook_torrance_q15(f0.g, &ior[1], c),
+                  fresnel_cook_torrance_q15(f0.b, &ior[1], c));
+            o = fresnel_conductor_q15_rgb(ior, c);
+            SAME3(o, fresnel_conductor_q15(&ior[0], c), fresnel_conductor_q15(&ior[1], c), fresnel_conductor_q15(&ior[2], c));
+        }
+        /* arguments outside [0, one] behave as the nearest end */
+        for (j = 0; j < 5; j++) {
+            int32_t cc = odd_c[j] < 0 ? 0 : ONE;
+            clamp_bad += fresnel_schlick_q15(f0.r, odd_c[j]) != fresnel_schlick_q15(f0.r, cc);
+            clamp_bad += fresnel_conductor_q15(&ior[0], odd_c[j]) != fresnel_conductor_q15(&ior[0], cc);
+            clamp_bad += fresnel_f82_q15(f0.r, f82.r, odd_c[j]) != fresnel_f82_q15(f0.r, f82.r, cc);
+            clamp_bad += fresnel_schlick_q15(odd_c[j], 1000) != fresnel_schlick_q15(cc, 1000);
+            clamp_bad += fresnel_f82_q15(odd_c[j], odd_c[4 - j], 5000) > ONE;
+        }
+    }
+    CHECK("fixed RGB forms equal the scalar forms per channel; gulbrandsen_q15 equals the prepared n, k",
+          mismatch == 0, "%ld mismatches", mismatch);
+    CHECK("fixed arguments outside [0, one] evaluate as the nearest end", clamp_bad == 0, "%ld", clamp_bad);
+}
+
+/* ------------------------------------------------------------------ LUTs */
+
+static double ref_interp(const double *v, int n, double x)
+{
+    double pos = x * (n - 1), t;
+    int i = (int)pos;
+    if (i >= n - 1)
+        i = n - 2;
+    t = pos - i;
+    return v[i] + t * (v[i + 1] - v[i]);
+}
+
+static double sat_unit(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }
+
+/* Tables of the exact curve of a material, encoded the four ways, both
+ * spacings; the reference interpolates the decoded table in double at the
+ * same c. */
+static void check_luts(const test_material *mat, int nmat)
+{
+    static const int sizes[] = {2, 3, 5, 8, 16, 33, 64, 256, 1024};
+    static double dv[4][1024], rv[1024];
+    static uint16_t u16[1024 * 3];
+    static uint8_t u8[1024 * 3];
+    static int16_t s16[1024 * 3];
+    static int8_t s8[1024 * 3];
+    worst w;
+    long bad = 0, rgb_mismatch = 0;
+    int k, is, sp;
+    memset(&w, 0, sizeof w);
+    for (k = 0; k < nmat; k += 4)
+        for (is = 0; is < (int)(sizeof sizes / sizeof sizes[0]); is++)
+            for (sp = 0; sp < 2; sp++) {
+                int n = sizes[is], i, f16b = 15, f8b = 7;
+                double f0d = ref_f0_from_ior(mat[k].eta, mat[k].kappa), maxr = 0.0;
+                int32_t f0 = fixed_q15(f0d), c;
+                char what[96];
+                /* nodes: uniform in w = 1 - (1-c)^5, or in c */
+                for (i = 0; i < n; i++) {
+                    double x = i / (double)(n - 1);
+                    double cn = sp == 0 ? 1.0 - pow(1.0 - x, 0.2) : x;
+                    double gt = ref_conductor(mat[k].eta, mat[k].kappa, cn);
+                    double res = gt - ref_schlick(f0 / 32768.0, cn);
+                    u16[i] = (uint16_t)floor(gt * 32768.0 + 0.5);
+                    u8[i] = (uint8_t)floor(gt * 255.0 + 0.5);
+                    rv[i] = res;
+                    if (fabs(res) > maxr)
+                        maxr = fabs(res);
+                }
+                while (f16b < 30 && maxr * ldexp(1.0, f16b + 1) <= 32767.0)
+                    f16b++;
+                while (f8b < 22 && maxr * ldexp(1.0, f8b + 1) <= 127.0)
+                    f8b++;
+                for (i = 0; i < n; i++) {
+                    s16[i] = (int16_t)floor(rv[i] * ldexp(1.0, f16b) + 0.5);
+                    s8[i] = (int8_t)floor(rv[i] * ldexp(1.0, f8b) + 0.5);
+                    dv[0][i] = u16[i] / 32768.0;
+                    dv[1][i] = u8[i] / 255.0;
+                    dv[2][i] = ldexp(s16[i], -f16b);
+                    dv[3][i] = ldexp(s8[i], -f8b);
+                }
+                /* RGB copies: the same curve three times, the result per channel must match */
+                memcpy(u16 + n, u16, n * sizeof *u16), memcpy(u16 + 2 * n, u16, n * sizeof *u16);
+                memcpy(u8 + n, u8, n), memcpy(u8 + 2 * n, u8, n);
+                memcpy(s16 + n, s16, n * sizeof *s16), memcpy(s16 + 2 * n, s16, n * sizeof *s16);
+                memcpy(s8 + n, s8, n), memcpy(s8 + 2 * n, s8, n);
+                for (c = 0; c <= ONE; c++) {
+                    double cd = c / 32768.0, x = sp == 0 ? 1.0 - pow(1.0 - cd, 5.0) : cd;
+                    double sch = ref_schlick(f0 / 32768.0, cd), ref;
+                    int32_t got[4];
+                    int e;
+                    if (sp == 0) {
+                        got[0] = fresnel_lut_q15_u16(u16, n, c);
+                        got[1] = fresnel_lut_q15_u8(u8, n, c);
+                        got[2] = fresnel_lut_residual_q15_s16(f0, s16, n, f16b, c);
+                        got[3] = fresnel_lut_residual_q15_s8(f0, s8, n, f8b, c);
+                    } else {
+                        got[0] = fresnel_lut_linear_q15_u16(u16, n, c);
+                        got[1] = fresnel_lut_linear_q15_u8(u8, n, c);
+                        got[2] = fresnel_lut_linear_residual_q15_s16(f0, s16, n, f16b, c);
+                        got[3] = fresnel_lut_linear_residual_q15_s8(f0, s8, n, f8b, c);
+                    }
+                    for (e = 0; e < 4; e++) {
+                        ref = sat_unit(ref_interp(dv[e], n, x) + (e >= 2 ? sch : 0.0));
+                        double err = fabs(got[e] / 32768.0 - ref) * 32768.0;
+                        bad += got[e] < 0 || got[e] > ONE;
+                        if (err > w.err) {
+                            snprintf(what, sizeof what, "%.31s n %d %s %s", mat[k].name, n, sp ? "linear" : "schlick-w",
+                                     e == 0 ? "u16" : e == 1 ? "u8" : e == 2 ? "s16" : "s8");
+                            note_worst(&w, err, what, cd);
+                        }
+                    }
+                    if ((c & 255) == 0) {
+                        fresnel_q15_rgb f0rgb, o;
+                        f0rgb.r = f0rgb.g = f0rgb.b = (fresnel_q15)f0;
+                        o = sp == 0 ? fresnel_lut_q15_u16_rgb(u16, n, c) : fresnel_lut_linear_q15_u16_rgb(u16, n, c);
+                        rgb_mismatch += o.r != got[0] || o.g != got[0] || o.b != got[0];
+                        o = sp == 0 ? fresnel_lut_q15_u8_rgb(u8, n, c) : fresnel_lut_linear_q15_u8_rgb(u8, n, c);
+                        rgb_mismatch += o.r != got[1] || o.g != got[1] || o.b != got[1];
+                        o = sp == 0 ? fresnel_lut_residual_q15_s16_rgb(f0rgb, s16, n, f16b, c)
+                                    : fresnel_lut_linear_residual_q15_s16_rgb(f0rgb, s16, n, f16b, c);
+                        rgb_mismatch += o.r != got[2] || o.g != got[2] || o.b != got[2];
+                        o = sp == 0 ? fresnel_lut_residual_q15_s8_rgb(f0rgb, s8, n, f8b, c)
+                                    : fresnel_lut_linear_residual_q15_s8_rgb(f0rgb, s8, n, f8b, c);
+                        rgb_mismatch += o.r != got[3] || o.g != got[3] || o.b != got[3];
+                    }
+                }
+            }
+    check_bound("LUT (u16 u8 s16 s8, both spacings)", &w, FRESNEL_Q15_BOUND_LUT, bad);
+    CHECK("fixed LUT RGB forms equal the scalar forms", rgb_mismatch == 0, "%ld mismatches", rgb_mismatch);
+}
+
+int main(void)
+{
+    static test_material mat[TM_MAX];
+    int nmat = test_materials(mat);
+    if (nmat <= 0) {
+        CHECK("fixed test materials load from data/", 0, "spectrum_load failed");
+        return harness_exit();
+    }
+    NOTE("fixed-point bounds over %d materials x 32769 cos codes", nmat);
+    check_models(mat, nmat);
+    check_schlick_gen();
+    check_f0_helpers();
+    check_prepare(mat, nmat);
+    check_variants(mat, nmat);
+    check_luts(mat, nmat);
+    CHECK("every intermediate inside the range its FR__RANGE states", range_failures == 0,
+          "%ld violations, first: %s", range_failures, range_first);
+    return harness_exit();
+}
