@@ -72,7 +72,7 @@ test:
 
 install: $(BUILD)/libfresnel.a
 	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 644 include/fresnel.h $(DESTDIR)$(PREFIX)/include/
+	install -m 644 include/*.h $(DESTDIR)$(PREFIX)/include/
 	install -m 644 $(BUILD)/libfresnel.a $(DESTDIR)$(PREFIX)/lib/
 	v=`sed -n 's/^#define FRESNEL_VERSION "\(.*\)"/\1/p' include/fresnel.h`; \
 	printf 'prefix=%s\nincludedir=$${prefix}/include\nlibdir=$${prefix}/lib\n\nName: fresnel\nDescription: Fresnel reflectance for small devices\nVersion: %s\nCflags: -I$${includedir}\nLibs: -L$${libdir} -lfresnel -lm\n' \

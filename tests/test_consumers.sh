@@ -24,7 +24,7 @@ else
 fi
 
 mkdir -p "$t/vendor/fresnel"
-cp include/fresnel.h src/*.c src/*.h "$t/vendor/fresnel/"
+cp include/*.h src/*.c src/*.h "$t/vendor/fresnel/"
 if cc $W -I"$t/vendor/fresnel" tests/consumer/consumer.c "$t"/vendor/fresnel/*.c -lm -o "$t/vendored" 2>"$t/cc2" &&
     [ ! -s "$t/cc2" ]; then
     echo "PASS consumer builds warning-free from vendored include/ and src/ files"
