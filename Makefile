@@ -142,3 +142,55 @@ $(BUILD)/obj/rc/src/%.o: src/%.c
 $(BUILD)/tests/test_fixed_bounds: tests/test_fixed_bounds.c $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+
+# Cross builds (ports/, ports/cross.sh): the fixed-point conformance program
+# run under qemu on a Cortex-M0, a Cortex-M4F and an RV32IMC, compared bit for
+# bit with the host; symbol checks of the fixed-point-only Cortex-M0 build;
+# instructions per call; code size per model, type and target.
+#   make cross-test    what tests/test_cross.sh runs (PASS/FAIL lines)
+#   make cross-count   instructions per call (qemu -singlestep traces)
+#   make size          .text/.rodata per model and type, Cortex-M0/M4F, RV32IMC
+# cross-deps installs the Debian packages that are missing (needs apt-get).
+CROSS_PKGS := gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi \
+              gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf qemu-system-arm qemu-user-static
+.PHONY: cross-deps cross-data cross-test cross-count size
+cross-deps:
+	@missing=""; \
+	command -v arm-none-eabi-gcc >/dev/null || missing="$$missing gcc-arm-none-eabi binutils-arm-none-eabi"; \
+	[ -d /usr/lib/arm-none-eabi/newlib ] || missing="$$missing libnewlib-arm-none-eabi"; \
+	command -v riscv64-unknown-elf-gcc >/dev/null || missing="$$missing gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf"; \
+	command -v qemu-system-arm >/dev/null || missing="$$missing qemu-system-arm"; \
+	command -v qemu-riscv32 >/dev/null || command -v qemu-riscv32-static >/dev/null || missing="$$missing qemu-user-static"; \
+	if [ -n "$$missing" ]; then \
+	    echo "cross-deps: installing$$missing"; \
+	    { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing >/dev/null; } || \
+	        { echo "cross-deps: could not install$$missing (need: $(CROSS_PKGS))"; exit 1; }; \
+	fi
+
+$(BUILD)/cross/conform_data.c: $(BUILD)/tests/cross/conform_gen
+	@mkdir -p $(@D)
+	$< > $@.tmp && mv $@.tmp $@
+cross-data: $(BUILD)/cross/conform_data.c
+
+# Every cos code on the Cortex-M0 and the RV32IMC, every 4th on the
+# Cortex-M4F, in parallel (about a minute on two cores).
+cross-test: cross-deps cross-data
+	@d=$(BUILD)/cross; \
+	BUILD=$(BUILD) sh ports/cross.sh conform m0 1 >$$d/m0.log 2>&1 & \
+	BUILD=$(BUILD) sh ports/cross.sh conform m4f 4 >$$d/m4f.log 2>&1 & \
+	BUILD=$(BUILD) sh ports/cross.sh conform rv32 1 >$$d/rv32.log 2>&1 & \
+	wait; cat $$d/m0.log $$d/m4f.log $$d/rv32.log
+	@BUILD=$(BUILD) sh ports/cross.sh nm
+
+cross-count: cross-deps cross-data
+	@for t in m0 m4f rv32; do \
+	    echo "== $$t fixed point: instructions per call (mean, min, max over 33 cosines)"; \
+	    BUILD=$(BUILD) sh ports/cross.sh count $$t | awk -F'\t' '{ printf "%-28s %6d %6d %6d\n", $$1, $$2, $$3, $$4 }' || exit 1; \
+	done
+	@for t in m0 m4f; do \
+	    echo "== $$t binary32 and binary16 (newlib libm$$( [ $$t = m0 ] && echo ', soft-float'))"; \
+	    BUILD=$(BUILD) sh ports/cross.sh count $$t float | awk -F'\t' '{ printf "%-28s %6d %6d %6d\n", $$1, $$2, $$3, $$4 }' || exit 1; \
+	done
+
+size: cross-deps cross-data
+	@BUILD=$(BUILD) sh ports/cross.sh size

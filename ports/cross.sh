@@ -1,0 +1,255 @@
+#!/bin/sh
+# Cross builds of the fixed-point (and binary16, binary32) runtime for the
+# targets of ports/, their runs under qemu, instruction counts and sizes.
+# Called by the Makefile section of issue 4 (make cross, cross-conform,
+# cross-count, size); BUILD is the build directory, and $BUILD/cross/conform_data.c
+# (the material set prepared on the host) must exist.
+#
+#   cross.sh check                     toolchains and emulators present?
+#   cross.sh nm                        fixed-point-only Cortex-M0 build: symbol checks
+#   cross.sh conform TARGET STRIDE     conformance run vs the host, bit for bit
+#   cross.sh count TARGET              instructions per call (qemu trace)
+#   cross.sh size                      .text/.rodata per model, type and target
+#
+# TARGET is m0 (qemu -M microbit, Cortex-M0), m4f (qemu -M mps2-an386,
+# Cortex-M4F) or rv32 (qemu-riscv32 user mode, RV32IMC).
+set -u
+BUILD=${BUILD:-build}
+OUT=$BUILD/cross
+HOSTCC=${HOSTCC:-cc}
+W="-std=c99 -Wall -Wextra -Wpedantic -Werror"
+FIXED_SRC="src/fixed_math.c $(ls src/*_q15.c)"
+F16_SRC=$(ls src/*_f16.c)
+F32_SRC=$(ls src/*.c | grep -v -e '_q15\.c$' -e '_f16\.c$' -e 'fixed_math\.c$')
+FIXED_ONLY="-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16"
+PORT_COMMON="ports/common/port_print.c ports/common/mem.c"
+INC="-Iinclude -Iports/common -Itests/cross"
+
+target() { # sets CC CF LD PORT RUN NMT SZ AR for $1
+    case $1 in
+    m0 | m4f)
+        CC=arm-none-eabi-gcc NMT=arm-none-eabi-nm SZ=arm-none-eabi-size AR=arm-none-eabi-ar
+        PORT="ports/cortex-m/startup.c"
+        if [ "$1" = m0 ]; then
+            CF="-mcpu=cortex-m0 -mthumb -Os" MACHINE=microbit SCRIPT=ports/cortex-m0/microbit.ld
+        else
+            CF="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -O2" MACHINE=mps2-an386
+            SCRIPT=ports/cortex-m4f/mps2-an386.ld
+        fi
+        CF="$CF -mfp16-format=ieee"
+        LD="-nostdlib -nostartfiles -Wl,--gc-sections -Lports/cortex-m -T$SCRIPT"
+        RUN="qemu-system-arm -M $MACHINE -display none -monitor none -serial none -chardev stdio,id=sh -semihosting-config enable=on,target=native,chardev=sh -kernel"
+        ;;
+    rv32)
+        CC=riscv64-unknown-elf-gcc NMT=riscv64-unknown-elf-nm SZ=riscv64-unknown-elf-size AR=riscv64-unknown-elf-ar
+        CF="-march=rv32imc -mabi=ilp32 -Os"
+        PORT="ports/rv32imc/port.c ports/rv32imc/start.S"
+        LD="-nostdlib -nostartfiles -static -Wl,--gc-sections -Wl,--no-warn-rwx-segments"
+        RUN=$(command -v qemu-riscv32 || command -v qemu-riscv32-static)
+        ;;
+    *) echo "cross.sh: unknown target '$1'" >&2; exit 2 ;;
+    esac
+    CF="$CF -ffreestanding -ffunction-sections -fdata-sections"
+}
+
+need() { command -v "$1" >/dev/null 2>&1 || { echo "cross.sh: $1 not found (see ports/README.md for the Debian packages)" >&2; exit 3; }; }
+
+cmd_check() {
+    for t in arm-none-eabi-gcc riscv64-unknown-elf-gcc qemu-system-arm; do need $t; done
+    command -v qemu-riscv32 >/dev/null 2>&1 || need qemu-riscv32-static
+}
+
+# conform/bench ELF for target $1 with stride $2 -> $OUT/$1/<name>.elf
+build_prog() { # target prog stride
+    target "$1"
+    mkdir -p "$OUT/$1"
+    $CC $W $CF $FIXED_ONLY -DCONFORM_STRIDE="$3" $INC $LD tests/cross/$2.c "$OUT/conform_data.c" $PORT_COMMON $PORT \
+        $FIXED_SRC -lgcc -o "$OUT/$1/$2_$3.elf"
+}
+
+host_prog() { # prog stride -> $OUT/host/<prog>_<stride>
+    mkdir -p "$OUT/host"
+    $HOSTCC $W -O2 -DCONFORM_STRIDE="$2" $INC tests/cross/$1.c "$OUT/conform_data.c" ports/common/port_print.c \
+        ports/host/port.c $FIXED_SRC -o "$OUT/host/$1_$2"
+}
+
+cmd_conform() { # target stride: PASS/FAIL lines
+    t=$1 s=$2
+    if ! build_prog "$t" conform "$s" 2>"$OUT/conform_$t.err" || ! host_prog conform "$s" 2>>"$OUT/conform_$t.err"; then
+        echo "FAIL cross $t: conformance build: $(head -5 "$OUT/conform_$t.err")"
+        return
+    fi
+    "$OUT/host/conform_$s" >"$OUT/host/conform_$s.txt"
+    $RUN "$OUT/$t/conform_$s.elf" >"$OUT/$t/conform_$s.txt" 2>"$OUT/$t/conform_$s.err"
+    rc=$?
+    if [ $rc -eq 0 ] && cmp -s "$OUT/host/conform_$s.txt" "$OUT/$t/conform_$s.txt" &&
+        grep -q '^done$' "$OUT/$t/conform_$s.txt"; then
+        if [ "$s" = 1 ]; then every="every cos code"; else every="every ${s}th cos code"; fi
+        echo "PASS cross $t: fixed-point conformance under $(basename "${RUN%% *}"), $every x $(sed -n 's/^conformance: \([0-9]*\) materials.*/\1/p' "$OUT/$t/conform_$s.txt") materials x $(($(wc -l <"$OUT/$t/conform_$s.txt") - 2)) functions: bit-identical to the host"
+    else
+        echo "FAIL cross $t: conformance (exit $rc) differs from the host: $(diff "$OUT/host/conform_$s.txt" "$OUT/$t/conform_$s.txt" | head -6 | tr '\n' ' ') $(head -3 "$OUT/$t/conform_$s.err")"
+    fi
+}
+
+lib_bytes() { # elf -> total size of the library's symbols (fresnel_*, fr__*)
+    total=0
+    for h in $($NMT -S "$1" | awk '$NF ~ /^(fresnel_|fr__)/ && NF == 4 { print $2 }'); do
+        total=$((total + 0x$h))
+    done
+    echo $total
+}
+
+sym_size() { # elf symbol -> size in bytes (decimal)
+    h=$($NMT -S "$1" | awk -v s="$2" '$NF == s { print $2 }')
+    echo $((0x${h:-0}))
+}
+
+# The fixed-point-only Cortex-M0 build: the library, the conformance
+# firmware and a firmware that uses Schlick for one material.
+cmd_nm() {
+    target m0
+    d=$OUT/m0/fixed-only
+    mkdir -p "$d"
+    rm -f "$d"/*.o "$d/libfresnel_fixed.a"
+    for f in $FIXED_SRC; do
+        $CC $W $CF $FIXED_ONLY -Iinclude -c "$f" -o "$d/$(basename "$f" .c).o" || { echo "FAIL cross m0: $f does not build"; return; }
+    done
+    $AR rcs "$d/libfresnel_fixed.a" "$d"/*.o
+    $CC $W $CF $FIXED_ONLY $INC $LD tests/cross/schlick_only.c $PORT_COMMON $PORT "$d/libfresnel_fixed.a" -lgcc \
+        -o "$d/schlick_only.elf" 2>"$d/err" || { echo "FAIL cross m0: schlick_only: $(head -3 "$d/err")"; return; }
+    [ -f "$OUT/m0/conform_1.elf" ] || build_prog m0 conform 1 || { echo "FAIL cross m0: conformance firmware does not build"; return; }
+    for f in "$d/libfresnel_fixed.a" "$d/schlick_only.elf" "$OUT/m0/conform_1.elf"; do
+        bad=$($NMT "$f" | awk '{ print $NF }' | grep -E '^(__aeabi_[fd]|__aeabi_[iu]?l|__aeabi_[iu]?div|__aeabi_[iu]idiv|__aeabi_ldiv|__aeabi_lmul|__aeabi_llsl|__aeabi_llsr|__aeabi_lasr|__clz|__(add|sub|mul|div|fix|float|extend|trunc|cmp|eq|ne|lt|le|gt|ge|un)[sdht]f|sqrtf?$|powf?$|expf?$|logf?$|log1pf?$)' | sort -u | tr '\n' ' ')
+        if [ -z "$bad" ]; then
+            echo "PASS cross m0: $(basename "$f") (-mcpu=cortex-m0 -mthumb -Os, --gc-sections): no soft-float, int64, division, clz or libm symbol"
+        else
+            echo "FAIL cross m0: $(basename "$f") references $bad"
+        fi
+    done
+    ext=$($NMT -u "$d/libfresnel_fixed.a" | awk 'NF == 2 { print $2 }' | sort -u)
+    defined=$($NMT --defined-only "$d/libfresnel_fixed.a" | awk 'NF == 3 { print $3 }' | sort -u)
+    outside=$(printf '%s\n' "$ext" | grep -vxF "$defined" | grep -v '^$' | tr '\n' ' ')
+    case "$outside" in
+    "" | "memcpy " | "memset " | "memcpy memset ") echo "PASS cross m0: the fixed-point library needs nothing from outside but ${outside:-nothing}(struct copies)" ;;
+    *) echo "FAIL cross m0: the fixed-point library references $outside" ;;
+    esac
+    # Global symbols of the library in the firmware: Schlick's entry point
+    # only. Local ones are the static helpers of schlick_q15.c that -Os chose
+    # not to inline (fixed_internal.h), part of Schlick's own code.
+    lib=$($NMT "$d/schlick_only.elf" | awk '$2 ~ /^[A-Z]$/ && $NF ~ /^(fresnel_|fr__)/ { print $NF }' | sort -u | tr '\n' ' ')
+    helpers=$($NMT "$d/schlick_only.elf" | awk '$2 ~ /^[a-z]$/ && $NF ~ /^fr__/ { print $NF }' | sort -u | tr '\n' ' ')
+    if [ "$lib" = "fresnel_schlick_q15 " ]; then
+        echo "PASS cross m0: a firmware using Schlick for one material links only fresnel_schlick_q15 and its inline helpers ($helpers): $(lib_bytes "$d/schlick_only.elf") bytes of library code"
+    else
+        echo "FAIL cross m0: the Schlick-only firmware links $lib"
+    fi
+}
+
+cmd_count() { # target [float]: name<TAB>mean<TAB>min<TAB>max on stdout
+    t=$1
+    if [ "${2:-}" = float ]; then
+        # binary32 and binary16 runtimes with newlib's libm (Cortex-M only)
+        target "$t"
+        mkdir -p "$OUT/$t"
+        $CC $W $CF $INC $LD tests/cross/bench_float.c "$OUT/conform_data.c" $PORT_COMMON $PORT $F32_SRC $F16_SRC \
+            -lm -lc -lgcc -o "$OUT/$t/bench_1.elf" || exit 1
+    else
+        build_prog "$t" bench 1 || exit 1
+    fi
+    case $t in
+    rv32) $RUN -singlestep -d exec,nochain -D "$OUT/$t/trace.log" "$OUT/$t/bench_1.elf" >"$OUT/$t/bench.txt" ;;
+    *) $RUN "$OUT/$t/bench_1.elf" -singlestep -d exec,nochain -D "$OUT/$t/trace.log" >"$OUT/$t/bench.txt" ;;
+    esac
+    sh ports/count.sh "$NMT" "$OUT/$t/bench_1.elf" "$OUT/$t/trace.log" "$OUT/$t/bench.txt"
+    rm -f "$OUT/$t/trace.log" "$OUT/$t/trace.log.names"
+}
+
+# The runtime of one type compiled once per target into an archive, so
+# that each probe only compiles tests/cross/size_probe.c and links.
+size_lib() { # target type -> $OUT/$1/size_<type>.a
+    d=$OUT/$1/size_$2
+    rm -rf "$d" && mkdir -p "$d"
+    case $2 in fixed) src=$FIXED_SRC ;; f16) src=$F16_SRC ;; f32) src=$F32_SRC ;; esac
+    inc=""
+    [ "$1" = rv32 ] && [ "$2" = f32 ] && inc="-Iports/rv32imc/include"
+    for f in $src; do
+        $CC $W $CF $inc -Iinclude -c "$f" -o "$d/$(basename "$f" .c).o" || return 1
+    done
+    $AR rcs "$OUT/$1/size_$2.a" "$d"/*.o
+}
+
+# .text and .rodata of the probe for one model.
+probe_size() { # target kind(PROBE|PROBE_F32|PROBE_F16) id type -> "text ro" or "- -"
+    t=$1 kind=$2 id=$3 ty=$4
+    extra="" libs="-lgcc"
+    [ "$t" = rv32 ] && [ "$kind" = PROBE_F32 ] && extra="-Iports/rv32imc/include -Wl,--unresolved-symbols=ignore-all"
+    [ "$t" != rv32 ] && [ "$kind" != PROBE ] && libs="-lm -lc -lgcc"
+    $CC $W $CF -D$kind="$id" -Iinclude -nostdlib -nostartfiles -Wl,--gc-sections -Wl,-e,probe $extra \
+        tests/cross/size_probe.c "$OUT/$t/size_$ty.a" ports/common/mem.c $libs -o "$OUT/probe.elf" 2>"$OUT/probe.err" ||
+        { echo "- -"; return; }
+    $SZ -A "$OUT/probe.elf" | awk '$1 == ".text" { t = $2 } $1 == ".rodata" { r = $2 } END { printf "%d %d\n", t, r }'
+}
+
+cmd_size() {
+    models="schlick schlick-gen lsk lsk-comp f82 gulbrandsen approx-conductor cook-torrance exact-conductor exact-dielectric schlick-internal lut lut-residual"
+    mkdir -p "$OUT"
+    for t in m0 m4f rv32; do
+        target $t
+        mkdir -p "$OUT/$t"
+        for ty in fixed f16 f32; do
+            [ $t = rv32 ] && [ $ty = f16 ] && continue
+            size_lib $t $ty || { echo "cross.sh: $ty runtime does not build for $t" >&2; exit 1; }
+            case $ty in fixed) kind=PROBE ;; f16) kind=PROBE_F16 ;; f32) kind=PROBE_F32 ;; esac
+            set -- $(probe_size $t $kind 0 $ty)
+            eval "base_${t}_${ty}_t=$1 base_${t}_${ty}_r=$2"
+        done
+    done
+    printf '| model | type | Cortex-M0 -Os .text / .rodata | Cortex-M4F -O2 .text / .rodata | RV32IMC -Os .text / .rodata |\n'
+    printf '|---|---|---:|---:|---:|\n'
+    i=0
+    for m in $models; do
+        i=$((i + 1))
+        for ty in fixed f16 f32; do
+            case $ty in fixed) kind=PROBE ;; f16) kind=PROBE_F16 ;; f32) kind=PROBE_F32 ;; esac
+            row="| $m | $ty |"
+            for t in m0 m4f rv32; do
+                target $t
+                if [ $ty = f16 ] && [ $t = rv32 ]; then
+                    row="$row n/a |"
+                    continue
+                fi
+                set -- $(probe_size $t $kind $i $ty)
+                if [ "$1" = - ]; then
+                    row="$row build failed |"
+                    continue
+                fi
+                eval "bt=\$base_${t}_${ty}_t br=\$base_${t}_${ty}_r"
+                note=""
+                [ $t = rv32 ] && [ $ty = f32 ] && note=" + libm"
+                row="$row $(($1 - bt)) / $(($2 - br))$note |"
+            done
+            echo "$row"
+        done
+    done
+    echo
+    echo "Bytes the call of one model adds to an otherwise empty program (tests/cross/size_probe.c, --gc-sections), including the"
+    echo "libgcc soft-float helpers and newlib libm functions it pulls in (f32 and f16 on Cortex-M0; f16 on Cortex-M4F converts"
+    echo "in hardware); RV32 f32 excludes libm, which Debian's riscv64-unknown-elf toolchain does not ship; gcc 12 has no"
+    echo "_Float16 for RISC-V. lut = fresnel_lut*_u16 / fresnel_lut / fresnel_lut_f16; lut-residual = the s8 residual table."
+    target m0
+    d=$OUT/m0/fixed-only
+    [ -f "$d/schlick_only.elf" ] || cmd_nm >/dev/null
+    echo
+    echo "Schlick only, one material, fixed point, Cortex-M0 (tests/cross/schlick_only.c linked with start-up and semihosting):"
+    echo "library code linked: $(lib_bytes "$d/schlick_only.elf") bytes ($($NMT "$d/schlick_only.elf" | awk '$NF ~ /^(fresnel_|fr__)/ { print $NF }' | tr '\n' ' ')); the whole firmware:"
+    $SZ -A "$d/schlick_only.elf" | awk '$1 ~ /^\.(text|rodata|data|bss)$/ { printf "  %-8s %6d\n", $1, $2 }'
+}
+
+case ${1:-} in
+check) cmd_check ;;
+nm) cmd_check && cmd_nm ;;
+conform) cmd_check && cmd_conform "$2" "$3" ;;
+count) cmd_check && cmd_count "$2" "${3:-}" ;;
+size) cmd_check && cmd_size ;;
+*) sed -n '2,17p' "$0"; exit 2 ;;
+esac

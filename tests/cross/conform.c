@@ -1,0 +1,82 @@
+/* Fixed-point conformance on a target: every model of tests/cross/fixed_models.h
+ * over the material set and every cos code (every CONFORM_STRIDE-th), the
+ * results folded into one FNV-1a hash per model, and the run-time
+ * preparation from Q16.16 of every material. The same program built for the
+ * host prints the hashes the target must reproduce bit for bit
+ * (tests/test_cross.sh); the host's results are the ones
+ * tests/test_fixed_bounds.c holds to the double reference. No float, no
+ * libc: port.h only. */
+#include "fixed_models.h"
+#include "port.h"
+
+#ifndef CONFORM_STRIDE
+#define CONFORM_STRIDE 1
+#endif
+
+static uint32_t fnv(uint32_t h, uint32_t v)
+{
+    h = (h ^ (v & 0xffu)) * 16777619u;
+    return (h ^ (v >> 8)) * 16777619u;
+}
+
+static uint32_t fnv_qf(uint32_t h, fresnel_qf q) { return fnv(fnv(fnv(h, q.m), q.m >> 16), (uint32_t)q.e); }
+
+static void report(const char *name, uint32_t h)
+{
+    port_puts(name);
+    port_puts(" ");
+    port_put_hex(h);
+    port_puts("\n");
+}
+
+int main(void)
+{
+    int i, k;
+    uint32_t h;
+    port_puts("conformance: ");
+    port_put_dec((uint32_t)conform_material_count);
+    port_puts(" materials, stride ");
+    port_put_dec(CONFORM_STRIDE);
+    port_puts("\n");
+    for (i = 0; i < FIXED_MODEL_COUNT; i++) {
+        h = 2166136261u;
+        for (k = 0; k < (fixed_models[i].per_material ? conform_material_count : 1); k++) {
+            int32_t c;
+            for (c = 0; c <= 32768; c += CONFORM_STRIDE)
+                h = fnv(h, fixed_models[i].fn(&conform_materials[k], c));
+        }
+        report(fixed_models[i].name, h);
+    }
+    /* run-time preparation from Q16.16, and a conductor evaluated from it */
+    h = 2166136261u;
+    for (k = 0; k < conform_material_count; k++) {
+        const conform_material *m = &conform_materials[k];
+        fresnel_q15_ior ior;
+        fresnel_q15_nk nk;
+        fresnel_q15_lsk lsk;
+        fresnel_q15 r, g;
+        int32_t c;
+        fresnel_q15_ior_prepare(m->eta, m->kappa, &ior);
+        fresnel_q15_nk_prepare(m->eta, m->kappa, &nk);
+        fresnel_q15_lsk_prepare(m->eta, m->kappa, 65536, 7 << 16, &lsk);
+        fresnel_gulbrandsen_rg_q15(m->eta, m->kappa, &r, &g);
+        h = fnv(fnv(fnv(h, (uint32_t)ior.a0), (uint32_t)ior.a0 >> 16), (uint32_t)ior.shift);
+        h = fnv_qf(fnv_qf(fnv_qf(fnv_qf(h, ior.b), ior.n4), ior.t1_inv), ior.inv_eta2);
+        h = fnv_qf(fnv_qf(h, nk.n), nk.nk2);
+        h = fnv(fnv(fnv(h, lsk.f0), lsk.f0 >> 16), (uint32_t)lsk.alpha);
+        h = fnv(fnv(fnv_qf(h, lsk.a), r), g);
+        h = fnv(h, fresnel_f0_from_ior_q15(m->eta, m->kappa));
+        for (c = 0; c <= 32768; c += 97 * CONFORM_STRIDE)
+            h = fnv(h, fresnel_conductor_q15(&ior, c));
+    }
+    report("prepare-q16", h);
+    h = 2166136261u;
+    for (k = 0; k < 1 << 20; k += 7 * CONFORM_STRIDE) {
+        uint32_t x = (uint32_t)k * 4099u + 1u;
+        h = fnv(fnv(h, fresnel_isqrt_u32(x)), fresnel_isqrt_u32(x << 12));
+        h = fnv(h, (uint32_t)fresnel_recip_q16((fresnel_q16)(x | 4u)));
+    }
+    report("isqrt-recip", h);
+    port_puts("done\n");
+    return 0;
+}

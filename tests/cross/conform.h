@@ -1,0 +1,38 @@
+/* Data of the cross-target conformance and instruction-count programs:
+ * the material set of tests/test_fixed_bounds.c, prepared on the host
+ * exactly as that test prepares it (model_fixed_from_params), written out as
+ * C by tests/cross/conform_gen.c. */
+#ifndef FRESNEL_CONFORM_H
+#define FRESNEL_CONFORM_H
+
+#include <stdint.h>
+
+#include "fresnel_fixed.h"
+
+typedef struct conform_material {
+    int32_t f0, f82, f90, r, g; /* Q15 codes */
+    fresnel_q16 p;
+    fresnel_q15_ior ior, dior;
+    fresnel_q15_nk nk, gnk;
+    fresnel_q15_lsk lsk;
+    fresnel_q16 eta, kappa; /* Q16.16, for the run-time *_prepare functions */
+} conform_material;
+
+extern const conform_material conform_materials[];
+extern const int conform_material_count;
+extern const int conform_bench_material; /* index of copper at 550 nm */
+/* copper at 550 nm for the binary32 and binary16 benchmarks: eta, kappa,
+ * F0, F82, LSK a, alpha, Gulbrandsen r, g */
+extern const float conform_bench_float[8];
+
+/* One curve (gold at 550 nm, 64 nodes, nodes uniform in the Schlick weight
+ * and in c) in every LUT encoding. */
+#define CONFORM_LUT_N 64
+extern const uint16_t conform_lut_u16[2][CONFORM_LUT_N];
+extern const uint8_t conform_lut_u8[2][CONFORM_LUT_N];
+extern const int16_t conform_lut_s16[2][CONFORM_LUT_N];
+extern const int8_t conform_lut_s8[2][CONFORM_LUT_N];
+extern const int conform_lut_frac16, conform_lut_frac8;
+extern const int32_t conform_lut_f0;
+
+#endif

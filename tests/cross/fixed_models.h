@@ -1,0 +1,97 @@
+/* The fixed-point functions as one table of evaluators on prepared
+ * material data, for the cross-target programs (conform.c, bench.c). */
+#ifndef FRESNEL_CROSS_FIXED_MODELS_H
+#define FRESNEL_CROSS_FIXED_MODELS_H
+
+#include "conform.h"
+#include "fresnel_fixed.h"
+
+typedef fresnel_q15 (*fixed_eval)(const conform_material *m, int32_t c);
+
+static fresnel_q15 e_schlick(const conform_material *m, int32_t c) { return fresnel_schlick_q15(m->f0, c); }
+static fresnel_q15 e_schlick_gen(const conform_material *m, int32_t c)
+{
+    return fresnel_schlick_gen_q15(m->f0, m->f90, m->p, c);
+}
+static fresnel_q15 e_schlick_gen_half(const conform_material *m, int32_t c)
+{
+    return fresnel_schlick_gen_q15(m->f0, m->f82, 32768, c); /* p = 0.5, F90 = F82 */
+}
+static fresnel_q15 e_schlick_gen_37(const conform_material *m, int32_t c)
+{
+    return fresnel_schlick_gen_q15(m->f0, 16384, 242483, c); /* p = 3.7, F90 = 0.5 */
+}
+static fresnel_q15 e_lsk(const conform_material *m, int32_t c) { return fresnel_lsk_q15(&m->lsk, c); }
+static fresnel_q15 e_lsk_comp(const conform_material *m, int32_t c) { return fresnel_lsk_comp_q15(&m->lsk, c); }
+static fresnel_q15 e_f82(const conform_material *m, int32_t c) { return fresnel_f82_q15(m->f0, m->f82, c); }
+static fresnel_q15 e_gulbrandsen(const conform_material *m, int32_t c) { return fresnel_gulbrandsen_q15(m->r, m->g, c); }
+static fresnel_q15 e_cook_torrance(const conform_material *m, int32_t c)
+{
+    return fresnel_cook_torrance_q15(m->f0, &m->ior, c);
+}
+static fresnel_q15 e_conductor(const conform_material *m, int32_t c) { return fresnel_conductor_q15(&m->ior, c); }
+static fresnel_q15 e_dielectric(const conform_material *m, int32_t c) { return fresnel_dielectric_q15(&m->dior, c); }
+static fresnel_q15 e_approx(const conform_material *m, int32_t c) { return fresnel_approx_conductor_q15(&m->nk, c); }
+static fresnel_q15 e_internal(const conform_material *m, int32_t c)
+{
+    return fresnel_schlick_internal_q15(m->f0, &m->dior, c);
+}
+static fresnel_q15 e_f0_in_medium(const conform_material *m, int32_t c)
+{
+    return fresnel_f0_in_medium_q15(c, m->eta); /* every F0 code, the material's eta as the medium */
+}
+static fresnel_q15 e_lut_u16(const conform_material *m, int32_t c)
+{
+    (void)m;
+    return fresnel_lut_q15_u16(conform_lut_u16[0], CONFORM_LUT_N, c);
+}
+static fresnel_q15 e_lut_linear_u16(const conform_material *m, int32_t c)
+{
+    (void)m;
+    return fresnel_lut_linear_q15_u16(conform_lut_u16[1], CONFORM_LUT_N, c);
+}
+static fresnel_q15 e_lut_u8(const conform_material *m, int32_t c)
+{
+    (void)m;
+    return fresnel_lut_q15_u8(conform_lut_u8[0], CONFORM_LUT_N, c);
+}
+static fresnel_q15 e_lut_residual_s16(const conform_material *m, int32_t c)
+{
+    (void)m;
+    return fresnel_lut_residual_q15_s16(conform_lut_f0, conform_lut_s16[0], CONFORM_LUT_N, conform_lut_frac16, c);
+}
+static fresnel_q15 e_lut_linear_residual_s8(const conform_material *m, int32_t c)
+{
+    (void)m;
+    return fresnel_lut_linear_residual_q15_s8(conform_lut_f0, conform_lut_s8[1], CONFORM_LUT_N, conform_lut_frac8, c);
+}
+typedef struct fixed_model {
+    const char *name;
+    fixed_eval fn;
+    int per_material; /* 0: the LUTs, one table whatever the material */
+} fixed_model;
+
+static const fixed_model fixed_models[] = {
+    {"schlick", e_schlick, 1},
+    {"schlick-gen p=5", e_schlick_gen, 1},
+    {"schlick-gen p=0.5", e_schlick_gen_half, 1},
+    {"schlick-gen p=3.7", e_schlick_gen_37, 1},
+    {"lsk", e_lsk, 1},
+    {"lsk-comp", e_lsk_comp, 1},
+    {"f82", e_f82, 1},
+    {"gulbrandsen", e_gulbrandsen, 1},
+    {"cook-torrance", e_cook_torrance, 1},
+    {"exact-conductor", e_conductor, 1},
+    {"exact-dielectric", e_dielectric, 1},
+    {"approx-conductor", e_approx, 1},
+    {"schlick-internal", e_internal, 1},
+    {"f0-in-medium", e_f0_in_medium, 1},
+    {"lut u16", e_lut_u16, 0},
+    {"lut-linear u16", e_lut_linear_u16, 0},
+    {"lut u8", e_lut_u8, 0},
+    {"lut-residual s16", e_lut_residual_s16, 0},
+    {"lut-linear-residual s8", e_lut_linear_residual_s8, 0},
+};
+#define FIXED_MODEL_COUNT ((int)(sizeof fixed_models / sizeof fixed_models[0]))
+
+#endif
