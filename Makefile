@@ -13,7 +13,8 @@ DESTDIR ?=
 
 WARN       := -std=c99 -Wall -Wextra -Wpedantic -Werror
 CFLAGS_LIB := $(WARN) $(OPT) $(SAN) -Iinclude -MMD -MP
-CFLAGS_GEN := $(WARN) $(OPT) $(SAN) -D_POSIX_C_SOURCE=200809L -DFRESNEL_DATA_DIR=\"$(CURDIR)/data\" -Iinclude -Isrc -Igen -MMD -MP
+CFLAGS_GEN := $(WARN) $(OPT) $(SAN) -D_POSIX_C_SOURCE=200809L -DFRESNEL_DATA_DIR=\"$(CURDIR)/data\" \
+              -DFRESNEL_CFLAGS='"$(CC) $(OPT) $(SAN), no LTO"' -Iinclude -Isrc -Igen -MMD -MP
 LDLIBS     := -lm
 
 LIB_SRC  := $(wildcard src/*.c)
@@ -23,7 +24,7 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all main-job test test-bins install clean
+.PHONY: all main-job test test-bins install clean report bench
 .DELETE_ON_ERROR:
 
 all: $(BUILD)/libfresnel.a $(BUILD)/fresnel
@@ -69,6 +70,15 @@ test:
 	@$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1 -g" \
 	    SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" test-bins
 	@sh tests/run.sh build build/asan
+
+# Benchmarks, never tests: `make report` writes build/report/ (accuracy against
+# the spectral ground truth, time and instructions per evaluation, plots),
+# `make bench` prints time per evaluation.
+report: $(BUILD)/fresnel
+	$(BUILD)/fresnel report -o $(BUILD)/report
+
+bench: $(BUILD)/fresnel
+	$(BUILD)/fresnel bench
 
 install: $(BUILD)/libfresnel.a
 	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig

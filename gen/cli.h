@@ -38,6 +38,8 @@ int cmd_materials(int argc, char **argv);
 int cmd_accuracy(int argc, char **argv);
 int cmd_params(int argc, char **argv);
 int cmd_gen(int argc, char **argv);
+int cmd_report(int argc, char **argv);
+int cmd_bench(int argc, char **argv);
 int cmd_curve(int argc, char **argv);
 int cmd_extremes(int argc, char **argv);
 

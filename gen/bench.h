@@ -1,0 +1,26 @@
+/* Timing for `make bench` and the report's cost columns: never used by tests
+ * to assert anything about speed (DEVELOPERS.md: performance goals live in
+ * benchmarks). */
+#ifndef FRESNEL_BENCH_H
+#define FRESNEL_BENCH_H
+
+#include <stdint.h>
+
+/* Evaluate one model for one material on n cosines (given as binary32 and
+ * as Q1.15 codes, the same values), returning a checksum of the RGB results
+ * so that no evaluation can be optimised away. No stores: a fixed-point
+ * model is not charged for converting its results to float. */
+typedef double (*bench_batch)(const void *ctx, const float *cos_theta, const int32_t *cos_q15, int n);
+
+/* Median over `runs` runs of the time per cosine, in ns, for a batch of n
+ * fixed pseudo-random cosines in [0, 1] (the same every run and every
+ * model), after one untimed warm-up batch. runs = 0 runs only the warm-up
+ * (a fixed workload for instruction counting) and returns 0. The checksums
+ * go to a volatile sink. */
+double bench_ns_per_eval(bench_batch fn, const void *ctx, int n, int runs);
+
+/* "gcc 12.2.0, -O2 ..." : compiler and the runtime's flags (FRESNEL_CFLAGS
+ * from the Makefile). */
+const char *bench_compiler(void);
+
+#endif
