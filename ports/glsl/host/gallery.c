@@ -240,6 +240,35 @@ static int set_material_uniforms(GLuint prog, const struct material *m, int mode
     return 0;
 }
 
+/* One picture for README.md: chromium (Schlick's worst metal) as the
+ * reference, Schlick, the F82 model and a 16-node table, each downscaled 2x
+ * (a box filter on the linear values) so the uncompressed PNG stays small. */
+static int write_strip(const char *out_dir, float (*img)[SIZE * SIZE * 4])
+{
+    static const int shown[4] = {M_REF, M_SCHLICK, M_F82, M_LUT16};
+    enum { H = SIZE / 2, WS = 4 * H };
+    static unsigned char strip[H * WS * 3];
+    char path[1024];
+    int k, y, x, ch;
+    for (k = 0; k < 4; k++)
+        for (y = 0; y < H; y++)
+            for (x = 0; x < H; x++)
+                for (ch = 0; ch < 3; ch++) {
+                    const float *f = img[shown[k]];
+                    /* GL rows bottom to top; PNG rows top to bottom */
+                    int gy = SIZE - 2 - 2 * y, gx = 2 * x;
+                    float v = 0.25f * (f[(gy * SIZE + gx) * 4 + ch] + f[(gy * SIZE + gx + 1) * 4 + ch] +
+                                       f[((gy + 1) * SIZE + gx) * 4 + ch] + f[((gy + 1) * SIZE + gx + 1) * 4 + ch]);
+                    strip[(y * WS + k * H + x) * 3 + ch] = srgb8(v);
+                }
+    snprintf(path, sizeof path, "%s/readme-cr.png", out_dir);
+    if (png_write_rgb8(path, WS, H, strip) != 0) {
+        fprintf(stderr, "gallery: cannot write %s\n", path);
+        return 1;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     static float img[NMODELS][SIZE * SIZE * 4];
@@ -393,6 +422,8 @@ int main(int argc, char **argv)
         }
         fprintf(html, "</tr>\n");
         printf("\n");
+        if (!strcmp(m->id, "cr") && write_strip(out_dir, img) != 0)
+            return 1;
     }
     fprintf(html, "</table>\n<p>Parameters: <code>fresnel params --material ID</code>; ground truth: "
                   "<code>fresnel curve --material ID --samples 4097</code> (sRGB, Gaussian window 25 nm); "
