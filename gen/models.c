@@ -232,7 +232,9 @@ void model_params_round_fixed(model_params *m)
     m->f0 = fixed_q15(m->f0) / 32768.0;
     m->f82 = fixed_q15(m->f82) / 32768.0;
     m->f90 = fixed_q15(m->f90) / 32768.0;
-    m->r = fixed_q15(m->r) / 32768.0;
+    /* r at its code, and at the fixed-point clamp (32764, the largest code
+     * below fresnel.h's 0.9999) where the code is above it */
+    m->r = (fixed_q15(m->r) < FRESNEL_Q15_GULBRANDSEN_R_MAX ? fixed_q15(m->r) : FRESNEL_Q15_GULBRANDSEN_R_MAX) / 32768.0;
     m->g = fixed_q15(m->g) / 32768.0;
     m->p = fixed_q16(m->p) / 65536.0;
     m->alpha = fixed_q16(ref_clamp(m->alpha, 0.0, FRESNEL_ALPHA_MAX)) / 65536.0;

@@ -57,7 +57,8 @@ void model_derive(double eta, double kappa, double n1, double f90, double p, mod
  * the inputs the float one does and the difference is the runtime's error. */
 void model_params_round_f32(model_params *m);
 
-/* The same for the fixed-point runtime: F0, F82, F90, r, g to Q15 codes, p
+/* The same for the fixed-point runtime: F0, F82, F90, r, g to Q15 codes (r
+ * at most FRESNEL_Q15_GULBRANDSEN_R_MAX, the runtime's clamp), p
  * and alpha to Q16.16, a to its 31-bit mantissa, and eta to the
  * value whose eta^2 - 1 the prepared a0 (of eta, kappa 0) holds exactly (near a dielectric's
  * critical angle the reflectance is as sensitive to eta as the physics is:

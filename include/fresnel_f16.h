@@ -63,30 +63,33 @@
 #define FRESNEL_F16_P_MAX 64.0f
 
 /* Measured error bounds (see ERROR BOUNDS); measured maxima in brackets,
- * from `build/tests/test_f16_bounds`. Most models lose 2-7 half-ulps: the
+ * from `build/tests/test_f16_bounds`. Most models lose 2-8 half-ulps: the
  * rounding of 1 - c (ulp 2^-11 near 1) is multiplied by the slope of
- * (1-c)^5. The exact models, Cook-Torrance and Schlick internal have
- * an infinite slope at a dielectric's critical angle, where binary16's
- * rounding of (eta-1)(eta+1) + c^2 shows in full (binary32 needs exact
- * squares there, and the GLSL port evaluates these models in highp for
- * this reason); FRESNEL_F16_BOUND_NONCRITICAL is every model's error at
- * least 1/64 in c away from it. The LUT bound is the position pos = w (n-1)
- * rounded to half (ulp 1/8 for pos in [128, 256)) times the steepest table
+ * (1-c)^5. The exact models, Cook-Torrance and Schlick internal have no
+ * bound at all near a dielectric's critical angle (eta < 1, kappa 0): the
+ * reflectance's slope is infinite there, and binary16's rounding of
+ * (eta-1)(eta+1) + c^2 decides total reflection, so where the critical
+ * angle lies within a binary16 step of a cosine the result can be 1 for
+ * 0.5 (eta 0.0703 at c = 1 - 2^-11: 0.485 off). binary32 needs exact squares
+ * there, and the GLSL port evaluates these models in highp for this reason.
+ * FRESNEL_F16_BOUND_NONCRITICAL is every model's error at least 1/64 in c
+ * away from a critical angle. The LUT bound is the position w (n-1) rounded
+ * to half (ulp 1/8 for positions in [128, 256)) times the steepest table
  * step. */
 #define FRESNEL_F16_BOUND_SCHLICK 2.1e-3 /* [2.008e-3] */
 #define FRESNEL_F16_BOUND_SCHLICK_GEN 2.1e-3 /* [2.008e-3 at p 5; 6.63e-4 over p in [0.25, 40]] */
-#define FRESNEL_F16_BOUND_SCHLICK_INTERNAL 0.105 /* [0.1045, at the critical angle] */
+#define FRESNEL_F16_BOUND_SCHLICK_INTERNAL 1.0 /* no bound at a critical angle [0.113]; 4.45e-3 away */
 #define FRESNEL_F16_BOUND_F0 1.8e-3 /* [1.718e-3] */
 #define FRESNEL_F16_BOUND_F0_IN_MEDIUM 2.5e-3 /* [2.438e-3] */
 #define FRESNEL_F16_BOUND_LSK 2.8e-3 /* [2.797e-3] */
 #define FRESNEL_F16_BOUND_LSK_COMP 2.9e-3 /* [2.886e-3] */
-#define FRESNEL_F16_BOUND_F82 3.5e-3 /* [3.457e-3] */
+#define FRESNEL_F16_BOUND_F82 4.0e-3 /* [3.945e-3 on a 1/64 grid of F0, F82 pairs; 3.457e-3 on the materials] */
 #define FRESNEL_F16_BOUND_GULBRANDSEN 1.8e-3 /* [1.748e-3] */
 #define FRESNEL_F16_BOUND_APPROX_CONDUCTOR 1.6e-3 /* [1.584e-3] */
-#define FRESNEL_F16_BOUND_COOK_TORRANCE 0.12 /* [0.1189, at the critical angle] */
-#define FRESNEL_F16_BOUND_CONDUCTOR 0.12 /* [0.1189, at the critical angle] */
-#define FRESNEL_F16_BOUND_DIELECTRIC 0.37 /* [0.3636, at the critical angle] */
-#define FRESNEL_F16_BOUND_LUT 1.2e-2 /* [1.192e-2] */
+#define FRESNEL_F16_BOUND_COOK_TORRANCE 1.0 /* no bound at a critical angle [0.246]; 4.02e-3 away */
+#define FRESNEL_F16_BOUND_CONDUCTOR 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
+#define FRESNEL_F16_BOUND_DIELECTRIC 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
+#define FRESNEL_F16_BOUND_LUT 1.7e-2 /* [1.612e-2, a table with a total-reflection edge] */
 #define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3 /* [4.449e-3] */
 
 #if FRESNEL_HAS_F16

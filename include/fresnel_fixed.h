@@ -259,9 +259,12 @@ fresnel_q15_rgb fresnel_f82_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f82, int
 /* -------------------------------------------------------- gulbrandsen_q15.c */
 
 /* Gulbrandsen's r, g -> n, k (fresnel_gulbrandsen_nk), r clamped to
- * [0, FRESNEL_Q15_GULBRANDSEN_R_MAX], in qf with the factored k^2 of
- * fresnel.h; the result is prepared for fresnel_approx_conductor_q15.
- * Cost: ~12 qf ops, 3 qf div, 1 qf sqrt. */
+ * [0, FRESNEL_Q15_GULBRANDSEN_R_MAX], in qf; the result is prepared for
+ * fresnel_approx_conductor_q15, with n clamped below at fresnel.h's
+ * FRESNEL_ETA_MIN as fresnel_gulbrandsen does (r -> 1, g = 1 gives n -> 0). k^2 = q (q + 4 (1-g) sqrt(r) nmax / (1-r)),
+ * q = 2 g sqrt(r) / (1+r): fresnel.h's factored k^2 with its last difference
+ * (sqrt r (n+1) + n - 1, which cancels as r -> 1, g -> 1) expanded into
+ * positive terms. Cost: ~14 qf ops, 4 qf div, 1 qf sqrt. */
 void fresnel_gulbrandsen_nk_q15(int32_t r, int32_t g, fresnel_q15_nk *out);
 /* The inverse n, k (Q16.16) -> r, g (Q15), as fresnel_gulbrandsen_rg. */
 void fresnel_gulbrandsen_rg_q15(fresnel_q16 n, fresnel_q16 k, fresnel_q15 *r, fresnel_q15 *g);

@@ -1,5 +1,5 @@
-/* Gulbrandsen's edge tint in fixed point (fresnel_fixed.h): the same
- * factored, cancellation-free expressions as gulbrandsen.c, in fresnel_qf. */
+/* Gulbrandsen's edge tint in fixed point (fresnel_fixed.h), in fresnel_qf,
+ * with nmax in gulbrandsen.c's form and k^2 as a sum of positive terms. */
 #include "fixed_internal.h"
 
 #if FRESNEL_HAS_FIXED
@@ -15,26 +15,34 @@ static void fr__nmin_nmax(fresnel_qf sr, fresnel_qf omr, fresnel_qf opr, fresnel
 
 void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_q15_nk *out)
 {
+    /* k^2 = g (nmax - nmin)(sqrt r (n+1) + n - 1) / (1 + sqrt r) still
+     * subtracts 1 from a sum near 1 when r -> 1 and g -> 1 (silver: the
+     * difference is 6e-5 of its terms at r = 0.99988). The last factor is
+     * linear in n and n is linear in g, so with s = sqrt r it is the sum of
+     * its values at the two ends, g 2s(1-s)/(1+r) + (1-g) 4s/(1-s); with
+     * nmax - nmin = 2s(1+s) / ((1-s)(1+r)) all of k^2 becomes
+     *   k^2 = q (q + 4 (1-g) s nmax / (1-r)),  q = 2 g s / (1+r),
+     * products and sums of positive terms. */
     uint32_t r = fr__q15_arg(r_in), g = fr__q15_arg(g_in);
-    fresnel_qf one = fr__qf_one(), sr, nmin, nmax, n, gq, k2, t;
-    int below_one;
+    fresnel_qf s, omr, opr, nmin, nmax, gq, omg, q, k2;
     if (r > FRESNEL_Q15_GULBRANDSEN_R_MAX)
         r = FRESNEL_Q15_GULBRANDSEN_R_MAX;
-    sr = fr__qf_sqrt(fr__qf(r, -15));
+    s = fr__qf_sqrt(fr__qf(r, -15));
     /* R: 1 - r >= 4 and 1 + r < 2^16 in Q15, both exact */
-    fr__nmin_nmax(sr, fr__qf(FR__ONE_Q15 - r, -15), fr__qf(FR__ONE_Q15 + r, -15), &nmin, &nmax);
+    omr = fr__qf(FR__ONE_Q15 - r, -15);
+    opr = fr__qf(FR__ONE_Q15 + r, -15);
+    fr__nmin_nmax(s, omr, opr, &nmin, &nmax);
     gq = fr__qf(g, -15);
-    n = fr__qf_add(fr__qf_mul(gq, nmin), fr__qf_mul(fr__qf(FR__ONE_Q15 - g, -15), nmax));
-    /* k^2 = g (nmax - nmin)(sqrt r (n+1) + n - 1) / (1 + sqrt r); the last
-     * factor is sqrt r (n + 1) + n minus one, which is positive for n in
-     * [nmin, nmax] and may round below it at g = 1: then k = 0 as in
-     * fresnel_gulbrandsen_nk. */
-    t = fr__qf_sub(fr__qf_add(fr__qf_mul(sr, fr__qf_add(n, one)), n), one, &below_one);
-    if (below_one)
-        t = fr__qf(0, 0);
-    k2 = fr__qf_div(fr__qf_mul(fr__qf_mul(gq, fr__qf_sub(nmax, nmin, (int *)0)), t), fr__qf_add(one, sr));
-    out->n = n;
-    out->nk2 = fr__qf_add(fr__qf_mul(n, n), k2);
+    omg = fr__qf(FR__ONE_Q15 - g, -15);
+    out->n = fr__qf_add(fr__qf_mul(gq, nmin), fr__qf_mul(omg, nmax));
+    /* fresnel_gulbrandsen feeds n to fresnel_approx_conductor, which clamps
+     * it to fresnel.h's domain; r -> 1 with g = 1 gives n = nmin -> 0, so the
+     * same model needs the same clamp (FRESNEL_ETA_MIN = 1e-3f exactly) */
+    if (fr__qf_cmp(out->n, fr__qf(1099511680u, -40)) < 0)
+        out->n = fr__qf(1099511680u, -40);
+    q = fr__qf_div(fr__qf_scale(fr__qf_mul(gq, s), 1), opr);
+    k2 = fr__qf_mul(q, fr__qf_add(q, fr__qf_div(fr__qf_scale(fr__qf_mul(fr__qf_mul(omg, s), nmax), 2), omr)));
+    out->nk2 = fr__qf_add(fr__qf_mul(out->n, out->n), k2);
 }
 
 void fresnel_gulbrandsen_rg_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15 *r_out, fresnel_q15 *g_out)

@@ -65,6 +65,10 @@ static int test_materials(test_material *t)
     n = tm_add(t, n, "eta 12 kappa 12", 12.0, 12.0);
     n = tm_add(t, n, "eta 40 kappa 0", 40.0, 0.0);
     n = tm_add(t, n, "eta 2 kappa 50", 2.0, 50.0);
+    n = tm_add(t, n, "eta 0.17 kappa 1000", 0.17, 1000.0); /* r -> 1, g -> 1 */
+    n = tm_add(t, n, "eta 0.01 kappa 0", 0.01, 0.0);      /* critical angle at c = 0.99995 */
+    n = tm_add(t, n, "eta 0.0703 kappa 0", 0.0703, 0.0);  /* ... within a binary16 step of c = 1 */
+    n = tm_add(t, n, "eta 0.01 kappa 5", 0.01, 5.0);
     return n;
 }
 

@@ -109,6 +109,30 @@ static void check_schlick_gen(void)
     check_bound("schlick-gen, every p", &w, FRESNEL_Q15_BOUND_SCHLICK_GEN, bad);
 }
 
+/* F82 on a 1/16 grid of (F0, F82) pairs, far apart ones included (the
+ * materials only give pairs close together), every cos code. */
+static void check_f82_pairs(void)
+{
+    worst w;
+    long bad = 0;
+    int a, b;
+    int32_t c;
+    memset(&w, 0, sizeof w);
+    for (a = 0; a <= 16; a++)
+        for (b = 0; b <= 16; b++) {
+            int32_t f0 = a * 2048, f82 = b * 2048;
+            char what[40];
+            snprintf(what, sizeof what, "F0 %d/16 F82 %d/16", a, b);
+            for (c = 0; c <= ONE; c++) {
+                int32_t got = fresnel_f82_q15(f0, f82, c);
+                bad += got < 0 || got > ONE;
+                note_worst(&w, fabs(got / 32768.0 - ref_f82(f0 / 32768.0, f82 / 32768.0, c / 32768.0)) * 32768.0, what,
+                           c / 32768.0);
+            }
+        }
+    check_bound("f82, every F0/F82 pair", &w, FRESNEL_Q15_BOUND_F82, bad);
+}
+
 /* The F0 helpers: from Q16.16 eta, kappa on the float test grid, and the
  * medium adjustment for every F0 code. */
 static void check_f0_helpers(void)
@@ -388,6 +412,7 @@ int main(void)
     NOTE("fixed-point bounds over %d materials x 32769 cos codes", nmat);
     check_models(mat, nmat);
     check_schlick_gen();
+    check_f82_pairs();
     check_f0_helpers();
     check_prepare(mat, nmat);
     check_variants(mat, nmat);
