@@ -34,6 +34,7 @@ static fresnel_qf fr__two_t(const fresnel_q15_ior *m, uint32_t c)
 {
     int32_t a = fr__a(m, c);
     uint32_t abs_a = a < 0 ? (uint32_t)0 - (uint32_t)a : (uint32_t)a;
+    FR__RANGE("exact |A| fits int32", abs_a, 0, 0x7fffffffu);
     fresnel_qf aq = fr__qf(abs_a, m->shift - 30);
     fresnel_qf mq, big, u, cq, c2q, cu, ts, tp, q;
     if (c == 0)

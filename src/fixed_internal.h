@@ -58,6 +58,8 @@ static inline uint32_t fr__q15_arg(int32_t x)
  * (a>>15) b + (a & 0x7fff) b / 2^15. */
 static inline uint32_t fr__mul_q30_q15(uint32_t a, uint32_t b)
 {
+    FR__RANGE("mul_q30_q15 a", a, 0, 0x7fffffffu);
+    FR__RANGE("mul_q30_q15 b", b, 0, 1u << 15);
     return (a >> 15) * b + (((a & 0x7fffu) * b) >> 15);
 }
 
@@ -69,6 +71,8 @@ static inline uint32_t fr__mul_q30_q15(uint32_t a, uint32_t b)
 static inline uint32_t fr__mul_q30(uint32_t a, uint32_t b)
 {
     uint32_t ah = a >> 15, al = a & 0x7fffu, bh = b >> 15, bl = b & 0x7fffu;
+    FR__RANGE("mul_q30 a", a, 0, 0x7fffffffu);
+    FR__RANGE("mul_q30 b", b, 0, 1u << 30);
     return ah * bh + ((ah * bl + al * bh + ((al * bl) >> 15)) >> 15);
 }
 
@@ -79,6 +83,7 @@ static inline uint32_t fr__mul_q30(uint32_t a, uint32_t b)
 static inline uint32_t fr__pow5_q30(uint32_t x)
 {
     uint32_t x2 = x * x;
+    FR__RANGE("pow5 x", x, 0, 1u << 15);
     uint32_t x4 = fr__mul_q30(x2, x2);
     return fr__mul_q30_q15(x4, x);
 }
@@ -86,6 +91,7 @@ static inline uint32_t fr__pow5_q30(uint32_t x)
 /* Round a Q30 value in [0, 2^30] to Q15 (half up). R: v + 2^14 < 2^31. */
 static inline fresnel_q15 fr__q30_to_q15(uint32_t v)
 {
+    FR__RANGE("result in Q30", v, 0, 1u << 30);
     return (fresnel_q15)((v + (1u << 14)) >> 15);
 }
 
@@ -99,6 +105,8 @@ static inline fresnel_q15 fr__q30s_to_q15(int32_t v)
  * R: f0 2^15 <= 2^30 - (1 - f0) 2^15 ... the sum is <= f0 2^15 + (2^15 - f0) 2^15 = 2^30. */
 static inline uint32_t fr__schlick_q30(uint32_t f0, uint32_t x5)
 {
+    FR__RANGE("schlick f0", f0, 0, 1u << 15);
+    FR__RANGE("schlick weight", x5, 0, 1u << 30);
     return (f0 << 15) + fr__mul_q30_q15(x5, FR__ONE_Q15 - f0);
 }
 

@@ -11,7 +11,9 @@
 static uint32_t fr__lsk_q30(const fresnel_q15_lsk *m, uint32_t c)
 {
     uint32_t f0 = m->f0 > FR__ONE_Q30 ? FR__ONE_Q30 : m->f0;
-    return f0 + fr__mul_q30(FR__ONE_Q30 - f0, fr__pow5_q30(FR__ONE_Q15 - c));
+    uint32_t f = f0 + fr__mul_q30(FR__ONE_Q30 - f0, fr__pow5_q30(FR__ONE_Q15 - c));
+    FR__RANGE("lsk F", f, 0, 1u << 30);
+    return f;
 }
 
 fresnel_q15 fresnel_lsk_q15(const fresnel_q15_lsk *m, int32_t c)

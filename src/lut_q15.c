@@ -20,6 +20,7 @@ static fr__pos fr__position(uint32_t x, int n)
     fr__pos p;
     uint32_t nodes = (uint32_t)(n < 2 ? 1 : (n > 32768 ? 32767 : n - 1));
     uint32_t pos = (x >> 15) * nodes + (((x & 0x7fffu) * nodes + (1u << 14)) >> 15);
+    FR__RANGE("lut position", pos, 0, nodes << 15);
     p.i = (int)(pos >> 15);
     p.t = pos & 0x7fffu;
     if (p.i >= (int)nodes) {
