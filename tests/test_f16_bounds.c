@@ -8,14 +8,14 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "fixed_materials.h"
 #include "fresnel_f16.h"
 #include "harness.h"
-#include "models.h"
-#include "reference.h"
 
 #if FRESNEL_HAS_F16
 #include "f16_internal.h"
+#include "fixed_materials.h"
+#include "models.h"
+#include "reference.h"
 
 #define NC 15361 /* binary16 values 0x0000 .. 0x3c00: every half in [0, 1] */
 
