@@ -284,32 +284,66 @@ done:
 }
 
 /* "Which model for which budget": the models on the Pareto front of cost
- * against mean error over the metals, cheapest first. */
+ * against mean error over the metals, cheapest first, each with what it
+ * costs and buys over the previous one. Cost is host instructions
+ * (callgrind: deterministic) where measured, else time. */
 static void write_budget(report_run *r, FILE *f)
 {
-    int m, t, k, n = r->sc.model_count * report_type_count;
-    fprintf(f, "\n## Which model for which budget\n\nThe models no other model beats on both cost and mean error "
-               "over the metals (the Pareto front of pareto.svg), cheapest first, with what one more step "
-               "buys:\n\n");
+    int n = r->sc.model_count * report_type_count, k, j, nf = 0, a, b, use_instr = 1;
+    int *front = malloc((size_t)n * sizeof *front);
+    const double *cost;
+    if (!front)
+        return;
+    for (k = 0; k < n; k++)
+        if (isnan(r->instr[k]))
+            use_instr = 0;
+    cost = use_instr ? r->instr : r->ns;
     for (k = 0; k < n; k++) {
-        double ns_k = r->ns[k], mean_k, worst_k;
-        int dominated = 0, j;
-        m = k / report_type_count;
-        t = k % report_type_count;
-        if (isnan(ns_k))
+        double mean_k, worst_k;
+        int dominated = 0;
+        if (isnan(cost[k]))
             continue;
-        report_metal_summary(r, m, t, &mean_k, &worst_k);
+        report_metal_summary(r, k / report_type_count, k % report_type_count, &mean_k, &worst_k);
         for (j = 0; j < n && !dominated; j++) {
             double mean_j, worst_j;
-            if (j == k || isnan(r->ns[j]))
+            if (j == k || isnan(cost[j]))
                 continue;
             report_metal_summary(r, j / report_type_count, j % report_type_count, &mean_j, &worst_j);
-            dominated = r->ns[j] <= ns_k && mean_j <= mean_k && (r->ns[j] < ns_k || mean_j < mean_k);
+            dominated = cost[j] <= cost[k] && mean_j <= mean_k && (cost[j] < cost[k] || mean_j < mean_k);
         }
         if (!dominated)
-            fprintf(f, "- **%s (%s)**: %.2f ns per RGB evaluation, mean dE2000 %.3f, worst max %.3f over the metals.\n",
-                    r->sc.models[m], report_types[t].name, ns_k, mean_k, worst_k);
+            front[nf++] = k;
     }
+    for (a = 0; a < nf; a++)
+        for (b = a + 1; b < nf; b++)
+            if (cost[front[b]] < cost[front[a]]) {
+                int tmp = front[a];
+                front[a] = front[b];
+                front[b] = tmp;
+            }
+    fprintf(f, "\n## Which model for which budget\n\nThe models no other model beats on both cost (%s per RGB "
+               "evaluation on this host) and mean error over the metals, cheapest first, each with what it costs "
+               "and buys over the one before (pareto.svg draws the same front against time).\n\n",
+            use_instr ? "callgrind instructions" : "ns");
+    for (a = 0; a < nf; a++) {
+        double mean, worst, pm, pw;
+        int k0 = front[a];
+        report_metal_summary(r, k0 / report_type_count, k0 % report_type_count, &mean, &worst);
+        fprintf(f, "- **%s (%s)**: %.0f %s", r->sc.models[k0 / report_type_count], report_types[k0 % report_type_count].name,
+                cost[k0], use_instr ? "instructions" : "ns");
+        if (use_instr && !isnan(r->ns[k0]))
+            fprintf(f, ", %.2f ns", r->ns[k0]);
+        fprintf(f, "; mean dE2000 %.3f, worst max %.3f", mean, worst);
+        if (a > 0) {
+            report_metal_summary(r, front[a - 1] / report_type_count, front[a - 1] % report_type_count, &pm, &pw);
+            fprintf(f, " (%.1fx the cost of the previous, %.1fx lower mean error)", cost[k0] / cost[front[a - 1]],
+                    mean > 0.0 ? pm / mean : INFINITY);
+        }
+        fprintf(f, ".\n");
+    }
+    if (!nf)
+        fprintf(f, "(costs not measured in this run)\n");
+    free(front);
 }
 
 static void report_usage(FILE *out)
