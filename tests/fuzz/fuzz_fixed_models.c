@@ -26,12 +26,8 @@
 
 /* Findings reported to the lead (issue 7), not yet fixed in the runtime: the
  * measured error replaces the documented bound in exactly that region.
- *   F5 Gulbrandsen with r -> 1 and g = 1: k^2's factor sqrt(r)(n+1) + n - 1
- *      cancels (61.5 LSB at r = 32764, g = 32768). */
-static double known_f5(int32_t r, int32_t g, double documented)
-{
-    return r > 32440 && g >= 32768 ? 64.0 : documented;
-}
+ * (F5, Gulbrandsen at r -> 1, g = 1, 61.5 LSB, was fixed in eeae237; its
+ * input stays in the corpus.) */
 /*   F8 fresnel_schlick_gen_q15 with p > 64: 0.506 LSB against 0.501 (its
  *      documented relative error of the power, 2^-21 up to p = 1000, allows
  *      0.516).
@@ -152,8 +148,6 @@ static void fuzz_prepared(fuzz_bytes *b, int32_t c)
         double bound = m->q15_bound;
         if (!m->q15)
             continue;
-        if (!strcmp(m->name, "gulbrandsen"))
-            bound = known_f5(mf.r, mf.g, bound);
         if (!strcmp(m->name, "schlick-gen"))
             bound = known_f8(mf.p, bound);
         if (!strcmp(m->name, "cook-torrance"))
@@ -288,7 +282,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     check("fresnel_gulbrandsen_q15", fresnel_gulbrandsen_q15(r, g, c),
           ref_gulbrandsen(ref_clamp(unit_code(r), 0.0, FRESNEL_Q15_GULBRANDSEN_R_MAX / 32768.0), unit_code(g),
                           unit_code(c)),
-          known_f5(r, g, FRESNEL_Q15_BOUND_GULBRANDSEN), 1, args);
+          FRESNEL_Q15_BOUND_GULBRANDSEN, 1, args);
     /* eta below 1e-3 (codes 64, 65) is inside the Q15 clamp but below the reference's. */
     check("fresnel_f0_from_ior_q15", fresnel_f0_from_ior_q15(eta, kappa), ref_f0_from_ior(e, k), FRESNEL_Q15_BOUND_F0,
           in, args);
