@@ -46,19 +46,30 @@ static double kappa_dom(double x)
 
 void fixed_ior(double eta, double kappa, fresnel_q15_ior *out)
 {
-    double a0, mag;
-    int s = 0;
+    double eh, el, d, x, hi;
+    int s;
     eta = eta_dom(eta);
     kappa = kappa_dom(kappa);
-    /* (eta-1)(eta+1): no cancellation near eta = 1, the dielectric critical-angle case */
-    a0 = (eta - 1.0) * (eta + 1.0) - kappa * kappa;
-    while (s < 30 && !(fabs(a0) + 1.0 < ldexp(1.0, s + 1)))
-        s++;
-    mag = floor(fabs(a0) * ldexp(1.0, 30 - s) + 0.5);
-    if (mag > 2147483647.0)
-        mag = 2147483647.0;
+    /* D = eta^2 - kappa^2 - 1 with eta^2 exact in two doubles (fma): near
+     * eta = 1, the dielectric critical-angle case, D has all its digits */
+    eh = eta * eta;
+    el = fma(eta, eta, -eh);
+    d = ((eh - 1.0) + el) - kappa * kappa;
+    /* the smallest shift whose ROUNDED a0 leaves room for c^2 in int32 */
+    for (s = 0;; s++) {
+        x = fabs(d) * ldexp(1.0, 30 - s);
+        hi = floor(x + 0.5);
+        if (s == 30 || hi + ldexp(1.0, 30 - s) <= 2147483647.0)
+            break;
+    }
+    if (hi + ldexp(1.0, 30 - s) > 2147483647.0) { /* beyond the domain: saturate */
+        hi = 2147483646.0;
+        x = hi;
+    }
     out->shift = s;
-    out->a0 = a0 < 0.0 ? -(int32_t)mag : (int32_t)mag;
+    out->a0 = d < 0.0 ? -(int32_t)hi : (int32_t)hi;
+    /* x - hi is exact (both near each other), and at most 1/2 */
+    out->a0_lo = (int32_t)floor((x - hi) * 1073741824.0 + 0.5) * (d < 0.0 ? -1 : 1);
     out->b = fixed_qf(2.0 * eta * kappa);
     out->n4 = fixed_qf((eta * eta + kappa * kappa) * (eta * eta + kappa * kappa));
     out->t1_inv = fixed_qf(((eta + 1.0) * (eta + 1.0) + kappa * kappa) / (4.0 * eta));

@@ -227,7 +227,6 @@ void model_params_round_f32(model_params *m)
 
 void model_params_round_fixed(model_params *m)
 {
-    fresnel_q15_ior d;
     fresnel_qf a;
     m->f0 = fixed_q15(m->f0) / 32768.0;
     m->f82 = fixed_q15(m->f82) / 32768.0;
@@ -240,8 +239,6 @@ void model_params_round_fixed(model_params *m)
     m->alpha = fixed_q16(ref_clamp(m->alpha, 0.0, FRESNEL_ALPHA_MAX)) / 65536.0;
     a = fixed_qf(ref_clamp(m->a, 0.0, FRESNEL_A_MAX));
     m->a = fixed_qf_value(a);
-    fixed_ior(m->eta, 0.0, &d);
-    m->eta = sqrt(1.0 + ldexp((double)d.a0, d.shift - 30));
 }
 
 void model_fixed_from_params(const model_params *m, model_fixed *out)

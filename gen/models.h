@@ -58,14 +58,10 @@ void model_derive(double eta, double kappa, double n1, double f90, double p, mod
 void model_params_round_f32(model_params *m);
 
 /* The same for the fixed-point runtime: F0, F82, F90, r, g to Q15 codes (r
- * at most FRESNEL_Q15_GULBRANDSEN_R_MAX, the runtime's clamp), p
- * and alpha to Q16.16, a to its 31-bit mantissa, and eta to the
- * value whose eta^2 - 1 the prepared a0 (of eta, kappa 0) holds exactly (near a dielectric's
- * critical angle the reflectance is as sensitive to eta as the physics is:
- * comparing against another eta would measure the input, not the
- * arithmetic); the change is below 2^-31 relative, far below what any
- * conductor or approximate model could show. kappa is kept: the prepared
- * constants carry 31-bit mantissas. */
+ * at most FRESNEL_Q15_GULBRANDSEN_R_MAX, the runtime's clamp), p and alpha to
+ * Q16.16, a to its 31-bit mantissa. eta and kappa are kept: the prepared
+ * constants carry 31-bit mantissas, and eta^2 - kappa^2 - 1 two words, so
+ * their rounding is part of the error the tests measure. */
 void model_params_round_fixed(model_params *m);
 /* Prepared constants and codes from (rounded) parameters. */
 void model_fixed_from_params(const model_params *m, model_fixed *out);

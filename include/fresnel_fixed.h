@@ -108,17 +108,20 @@ typedef struct fresnel_q15_rgb {
 #define FRESNEL_Q15_GULBRANDSEN_R_MAX 32764    /* largest code below 0.9999 */
 
 /* Measured error bounds, LSB of Q15 (see ERROR BOUNDS). Rounding to the
- * nearest code is 0.5 LSB by itself: every model but the LUTs is within
- * 0.001 LSB of that (what shows of the 30-bit intermediates). The LUTs add
+ * nearest code is 0.5 LSB by itself: every model but the LUTs (and
+ * generalized Schlick beyond p = 64) is within 0.001 LSB of that (what
+ * shows of the 30-bit intermediates). The LUTs add
  * half a position step times the table's steepest node-to-node change
  * (0.5 LSB for a two-node table spanning [0, 1]). Measured maxima
  * (tests/test_fixed_bounds.c): Schlick 0.50003, generalized Schlick 0.50029
- * (p in [0.001, 1000]), internal 0.50004, F0 0.49992, F0 in medium 0.50004,
+ * for p <= 64 and 0.50090 for p in (64, 1000] (there (1-c)^p is ten
+ * squarings, and the bound is 0.5 plus the power's asserted relative error
+ * 2^-21 times 2^15: 0.516), internal 0.50007, F0 0.49992, F0 in medium 0.50004,
  * LSK 0.50002, LSK compensated 0.50004, F82 0.50074 (F0/F82 grid),
- * Gulbrandsen 0.50002, approximate conductor 0.50002, Cook-Torrance 0.50003, conductor 0.50043,
- * dielectric 0.50002, LUT 1.00000. */
+ * Gulbrandsen 0.50002, approximate conductor 0.50002, Cook-Torrance 0.50002,
+ * conductor 0.50002, dielectric 0.50002, LUT 1.00000. */
 #define FRESNEL_Q15_BOUND_SCHLICK 0.501
-#define FRESNEL_Q15_BOUND_SCHLICK_GEN 0.501
+#define FRESNEL_Q15_BOUND_SCHLICK_GEN 0.516 /* 0.501 for p <= 64; see below */
 #define FRESNEL_Q15_BOUND_SCHLICK_INTERNAL 0.501
 #define FRESNEL_Q15_BOUND_F0 0.501
 #define FRESNEL_Q15_BOUND_F0_IN_MEDIUM 0.501
@@ -142,16 +145,21 @@ typedef struct fresnel_q15_rgb {
  *     if m == 2^31 then { m = 2^30; e += 1; }       and x = 0 is {0, 0}.
  *
  * fresnel_q15_ior -- one complex index eta + i kappa relative to the incident
- * medium, for the exact models, Cook-Torrance and Schlick internal:
- *   shift   the smallest s in [0, 30] with |eta^2 - kappa^2 - 1| + 1 < 2^(s+1)
- *   a0      round((eta^2 - kappa^2 - 1) * 2^(30 - s)), int32 (|a0| < 2^31 - 2^(30-s))
+ * medium, for the exact models, Cook-Torrance and Schlick internal. With
+ * D = eta^2 - kappa^2 - 1 (formed without cancellation on the host:
+ * (eta-1)(eta+1) - kappa^2, the squares exact):
+ *   shift   the smallest s in [0, 30] with round(|D| 2^(30-s)) + 2^(30-s) <= 2^31 - 1
+ *           (a0 + c^2 must fit int32; choose s on the ROUNDED value)
+ *   a0      round(D 2^(30 - s))
+ *   a0_lo   round((D 2^(30 - s) - a0) 2^30), |a0_lo| <= 2^29: D's next 30
+ *           bits, which the exact models add to c^2 so that eta^2 - sin^2
+ *           keeps its digits at a critical angle (the slope of the reflectance
+ *           is unbounded there; one word of D showed as 3 LSB for eta 0.0156
+ *           + 2.2e-5 i)
  *   b       qf of 2 eta kappa                       (0 for a dielectric)
  *   n4      qf of (eta^2 + kappa^2)^2
  *   t1_inv  qf of ((eta+1)^2 + kappa^2) / (4 eta)   (Cook-Torrance: 1 / (1 - F(1)))
  *   inv_eta2 qf of 1 / eta^2                        (Schlick internal)
- * eta^2 - kappa^2 - 1 must be formed without cancellation on the host (it
- * is (eta-1)(eta+1) - kappa^2): near the critical angle of a dielectric seen
- * from inside, a0 + c^2 is the small difference whose square root is taken.
  *
  * fresnel_q15_nk -- n, k for the approximate conductor form (and Gulbrandsen):
  *   n    qf of n;   nk2  qf of n^2 + k^2
@@ -169,7 +177,7 @@ typedef struct fresnel_q15_rgb {
  * type); RGB tables are n red, n green, then n blue entries.
  */
 typedef struct fresnel_q15_ior {
-    int32_t a0;
+    int32_t a0, a0_lo;
     int32_t shift;
     fresnel_qf b, n4, t1_inv, inv_eta2;
 } fresnel_q15_ior;
@@ -212,10 +220,11 @@ fresnel_q15_rgb fresnel_schlick_q15_rgb(fresnel_q15_rgb f0, int32_t c);
  * 2^(-frac(p) L), L = -log2(1-c): log2 from a 64-entry reciprocal table and
  * the series of log(1 + d), |d| < 2^-7, to the cubic term; 2^-y from a
  * 64-entry table and the series of exp to the cubic term. Relative error
- * < 2^-24 for p <= 64, < 2^-21 up to p = 1000 (the squarings of x^1000)
- * (tests/test_fixed_math.c). Error <= FRESNEL_Q15_BOUND_SCHLICK_GEN LSB,
- * measured for p in {0.001, 0.25, 0.5, 1, 2, 3.7, 5, 8, 40, 1000}, F90 in
- * {0, 0.5, 1}. Cost: p = 5: 9 mul; else ~2 log2(p) qf mul + ~25 mul. */
+ * < 2^-24 for p <= 64, < 2^-21 up to p = 1000 (the squarings of x^1000;
+ * measured 2^-22.4) (tests/test_fixed_math.c). Error <=
+ * FRESNEL_Q15_BOUND_SCHLICK_GEN LSB (0.501 for p <= 64), measured for p in
+ * {0.001, 0.25, 0.5, 1, 2, 3.7, 5, 8, 40, 1000} and 500 p in (64, 1000], F90
+ * in {0, 0.5, 1}. Cost: p = 5: 9 mul; else ~2 log2(p) qf mul + ~25 mul. */
 fresnel_q15 fresnel_schlick_gen_q15(int32_t f0, int32_t f90, fresnel_q16 p, int32_t c);
 fresnel_q15_rgb fresnel_schlick_gen_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f90, fresnel_q16 p,
                                             int32_t c);

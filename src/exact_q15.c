@@ -13,43 +13,69 @@
  * are ratios of sums of non-negative terms, which fresnel_qf evaluates to
  * ~29 bits, and F = 1 - (Ts + Tp)/2 loses nothing in the subtraction that the
  * Q15 result could show. The one true cancellation is A = eta^2 - kappa^2 -
- * sin^2 near a dielectric's critical angle; A = a0 + c^2 is exact there
- * (shift 0, c^2 exact in Q30). */
+ * sin^2 near a critical angle (a dielectric, or a conductor with kappa << 1):
+ * there the reflectance's slope is unbounded, so A is carried in two words,
+ * a0 + c^2 exact to 2^-60 of its scale (fr__a_qf). */
 #include "fixed_internal.h"
 
 #if FRESNEL_HAS_FIXED
 
-/* A = a0 + c^2 at the prepared scale 2^-(30 - shift).
- * R: |a0| < 2^31 - 2^(30-shift) (prepared layout) and c^2 >> shift <= 2^(30-shift):
- * A fits int32. */
-static int32_t fr__a(const fresnel_q15_ior *m, uint32_t c)
+/* The prepared shift, held to the layout's [0, 30] so that a corrupt
+ * constant cannot make a shift count undefined. */
+static uint32_t fr__shift(const fresnel_q15_ior *m)
 {
-    uint32_t c2 = c * c; /* R: <= 2^30, exact */
     FR__RANGE("ior shift", m->shift, 0, 30);
-    return m->a0 + (int32_t)(m->shift ? (c2 + (1u << (m->shift - 1))) >> m->shift : c2);
+    return m->shift <= 0 ? 0u : (m->shift >= 30 ? 30u : (uint32_t)m->shift);
+}
+
+static uint32_t fr__mag(int32_t x) { return x < 0 ? 0u - (uint32_t)x : (uint32_t)x; }
+
+/* |A| and its sign, A = eta^2 - kappa^2 - sin^2 = a0 + c^2. At the prepared
+ * scale 2^-(30 - s),
+ *   A = (a0 + floor(c^2 / 2^s)) + (a0_lo + (c^2 mod 2^s) 2^(30 - s)) 2^-30:
+ * the high word is an exact int32 sum (R: |a0| + 2^(30-s) <= 2^31 - 1 by the
+ * layout, c^2 >> s <= 2^(30-s)); the low word is in units of 2^-30 of the
+ * high word's unit (R: |a0_lo| <= 2^29, (c^2 mod 2^s) 2^(30-s) < 2^30). Both
+ * sums are formed in uint32, so a constant outside the layout wraps rather
+ * than overflowing a signed int. */
+fresnel_qf fr__a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative)
+{
+    uint32_t s = fr__shift(m), c2 = c * c; /* R: c^2 <= 2^30, exact */
+    int32_t hi = (int32_t)((uint32_t)m->a0 + (c2 >> s));
+    int32_t lo = (int32_t)((uint32_t)m->a0_lo + ((c2 & ((1u << s) - 1u)) << (30u - s)));
+    fresnel_qf qh = fr__qf(fr__mag(hi), (int32_t)s - 30), ql = fr__qf(fr__mag(lo), (int32_t)s - 60);
+    int below;
+    FR__RANGE("exact a0_lo", m->a0_lo, -(1 << 29), 1 << 29);
+    if ((hi < 0) == (lo < 0) || hi == 0 || lo == 0) {
+        *negative = hi < 0 || (hi == 0 && lo < 0);
+        return fr__qf_add(qh, ql);
+    }
+    /* opposite signs: |lo| 2^-30 < 2 units of hi, so hi's sign wins unless
+     * hi is +-1 and the difference crosses zero */
+    qh = fr__qf_sub(qh, ql, &below);
+    *negative = (hi < 0) != (below != 0);
+    return qh;
 }
 
 /* Ts + Tp (= 2 T) as qf, and 0 under total internal reflection (u = 0). */
 static fresnel_qf fr__two_t(const fresnel_q15_ior *m, uint32_t c)
 {
-    int32_t a = fr__a(m, c);
-    uint32_t abs_a = a < 0 ? (uint32_t)0 - (uint32_t)a : (uint32_t)a;
-    FR__RANGE("exact |A| fits int32", abs_a, 0, 0x7fffffffu);
-    fresnel_qf aq = fr__qf(abs_a, m->shift - 30);
+    int a_negative;
+    fresnel_qf aq = fr__a_qf(m, c, &a_negative);
     fresnel_qf mq, big, u, cq, c2q, cu, ts, tp, q;
     if (c == 0)
         return fr__qf(0, 0); /* 4cu = 0: grazing incidence reflects everything */
     /* m = |w|^2 = sqrt(A^2 + b^2); big = sqrt((m + |A|)/2) is u for A >= 0
      * and v for A < 0; the other is b / (2 big) (u v = eta kappa = b/2). */
     if (m->b.m == 0) {
-        if (a < 0)
+        if (a_negative)
             return fr__qf(0, 0); /* dielectric past the critical angle: u = 0 */
         mq = aq;
         u = fr__qf_sqrt(aq);
     } else {
         mq = fr__qf_sqrt(fr__qf_add(fr__qf_mul(aq, aq), fr__qf_mul(m->b, m->b)));
         big = fr__qf_sqrt(fr__qf_scale(fr__qf_add(mq, aq), -1));
-        u = a >= 0 ? big : fr__qf_scale(fr__qf_div(m->b, big), -1);
+        u = a_negative ? fr__qf_scale(fr__qf_div(m->b, big), -1) : big;
     }
     if (u.m == 0)
         return u; /* A = 0 with b = 0: exactly at the critical angle */
@@ -70,7 +96,7 @@ static fresnel_q15 fr__reflectance(fresnel_qf two_t)
     return fr__q30_to_q15(FR__ONE_Q30 - fr__qf_to_q30_unit(fr__qf_scale(two_t, -1)));
 }
 
-static int fr__matched(const fresnel_q15_ior *m) { return m->a0 == 0 && m->b.m == 0; }
+static int fr__matched(const fresnel_q15_ior *m) { return m->a0 == 0 && m->a0_lo == 0 && m->b.m == 0; }
 
 fresnel_q15 fresnel_conductor_q15(const fresnel_q15_ior *m, int32_t c)
 {
@@ -89,20 +115,21 @@ fresnel_q15_rgb fresnel_conductor_q15_rgb(const fresnel_q15_ior m[3], int32_t c)
  * P = eta^2 c the two transmittances reduce to 4cu/(c+u)^2 and 4Pu/(P+u)^2. */
 fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c_in)
 {
-    uint32_t c = fr__q15_arg(c_in);
-    int32_t a;
-    fresnel_qf u, cq, p, ts, tp;
+    uint32_t c = fr__q15_arg(c_in), s = fr__shift(m);
+    int a_negative;
+    fresnel_qf aq, u, cq, p, ts, tp;
     if (m->b.m != 0)
         return fresnel_conductor_q15(m, c_in); /* not a dielectric after all */
-    if (m->a0 == 0)
-        return 0; /* matched index */
-    a = fr__a(m, c);
-    if (a <= 0 || c == 0)
+    if (fr__matched(m))
+        return 0;
+    aq = fr__a_qf(m, c, &a_negative);
+    if (a_negative || aq.m == 0 || c == 0)
         return FR__ONE_Q15; /* total internal reflection, or grazing */
-    u = fr__qf_sqrt(fr__qf((uint32_t)a, m->shift - 30));
+    u = fr__qf_sqrt(aq);
     cq = fr__qf(c, -15);
-    /* eta^2 = a0 + 1 at the prepared scale. R: a0 + 2^(30-shift) in (0, 2^31) */
-    p = fr__qf_mul(fr__qf((uint32_t)(m->a0 + (int32_t)(1u << (30 - m->shift))), m->shift - 30), cq);
+    /* eta^2 = a0 + 1 at the prepared scale (no cancellation: a0_lo is below
+     * what shows). R: a0 + 2^(30-s) in (0, 2^31) by the layout */
+    p = fr__qf_mul(fr__qf((uint32_t)m->a0 + (1u << (30u - s)), (int32_t)s - 30), cq);
     ts = fr__qf_add(cq, u);
     ts = fr__qf_div(fr__qf_scale(fr__qf_mul(cq, u), 2), fr__qf_mul(ts, ts));
     tp = fr__qf_add(p, u);
@@ -117,41 +144,82 @@ fresnel_qf fr__conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c)
     return fr__qf_scale(fr__two_t(m, c), -1);
 }
 
-/* From Q16.16: eta^2 - kappa^2 - 1 = (eta - 1)(eta + 1) - kappa^2, each
- * factor exact in Q16.16, so the cancellation near eta = 1 costs nothing
- * beyond the 2^-29 relative rounding of the two products. */
+/* a b as two 32-bit words, from 16-bit halves. R: each partial product
+ * < 2^32; mid < 3 2^16. */
+static void fr__mul_wide(uint32_t a, uint32_t b, uint32_t *hi, uint32_t *lo)
+{
+    uint32_t al = a & 0xffffu, ah = a >> 16, bl = b & 0xffffu, bh = b >> 16;
+    uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
+    uint32_t mid = (ll >> 16) + (lh & 0xffffu) + (hl & 0xffffu);
+    *lo = (ll & 0xffffu) | (mid << 16);
+    *hi = ah * bh + (lh >> 16) + (hl >> 16) + (mid >> 16);
+}
+
+/* From Q16.16: V = (eta^2 - kappa^2 - 1) 2^32 = +-(eta - 1)(eta + 1) - kappa^2,
+ * exactly, in two words (R: |eta - 1| < 2^31, eta + 1 < 2^32, kappa < 2^31:
+ * both products < 2^63, their difference too). Then the layout's a0, a0_lo
+ * and shift from V exactly, and the other constants in qf. */
 void fresnel_q15_ior_prepare(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_q15_ior *out)
 {
     uint32_t eta = eta_in <= FRESNEL_Q16_ETA_MIN ? (uint32_t)FRESNEL_Q16_ETA_MIN : (uint32_t)eta_in;
     uint32_t kappa = kappa_in <= 0 ? 0u : (uint32_t)kappa_in;
     uint32_t em1 = eta >= 65536u ? eta - 65536u : 65536u - eta;
+    uint32_t ph, pl, kh, kl, vh, vl;
+    int neg;
+    int32_t s;
     fresnel_qf e = fr__qf(eta, -16), k = fr__qf(kappa, -16), one = fr__qf_one();
     fresnel_qf ep1 = fr__qf(eta + 65536u, -16); /* R: < 2^31 + 2^16, unsigned */
     fresnel_qf k2 = fr__qf_mul(k, k), e2 = fr__qf_mul(e, e);
-    fresnel_qf prod = fr__qf_mul(fr__qf(em1, -16), ep1);
-    fresnel_qf a0, mag1;
-    int neg_prod = eta < 65536u, neg = 0;
-    int32_t shift;
-    /* a0 = +-prod - k2 */
-    if (neg_prod) {
-        a0 = fr__qf_add(prod, k2);
-        neg = a0.m != 0;
-    } else {
-        a0 = fr__qf_sub(prod, k2, &neg);
+    fr__mul_wide(em1, eta + 65536u, &ph, &pl);
+    fr__mul_wide(kappa, kappa, &kh, &kl);
+    if (eta < 65536u) { /* V = -(P + K) */
+        vl = pl + kl;
+        vh = ph + kh + (vl < pl);
+        neg = 1;
+    } else if (ph > kh || (ph == kh && pl >= kl)) { /* V = P - K >= 0 */
+        vl = pl - kl;
+        vh = ph - kh - (pl < kl);
+        neg = 0;
+    } else { /* V = -(K - P) */
+        vl = kl - pl;
+        vh = kh - ph - (kl < pl);
+        neg = 1;
     }
-    /* smallest shift with |a0| + 1 < 2^(shift+1): |a0| + 1 in [2^(e+30), 2^(e+31)) */
-    mag1 = fr__qf_add(a0, one);
-    shift = mag1.e + 30;
-    if (shift < 0)
-        shift = 0;
-    if (shift > 30)
-        shift = 30; /* outside the domain (eta or kappa above 46340) */
-    out->shift = shift;
-    {
-        uint32_t mag = fr__qf_to_fix(a0, 30 - shift);
-        if (mag > 0x7fffffffu)
-            mag = 0x7fffffffu;
-        out->a0 = neg ? -(int32_t)mag : (int32_t)mag;
+    /* a0 2^(30-s) = V / 2^(2+s): take the smallest s whose rounded quotient
+     * q leaves room for c^2, q + 2^(30-s) <= 2^31 - 1 (the layout) */
+    for (s = 0; s <= 30; s++) {
+        uint32_t k_bits = (uint32_t)s + 2u, q, low, half;
+        int32_t r;
+        if (k_bits < 32u && (vh >> k_bits) != 0)
+            continue; /* quotient above 32 bits */
+        q = k_bits == 32u ? vh : (vh << (32u - k_bits)) | (vl >> k_bits);
+        low = k_bits == 32u ? vl : vl & ((1u << k_bits) - 1u);
+        half = 1u << (k_bits - 1u);
+        if (low >= half) { /* round up; the remainder goes negative */
+            q++;
+            r = -(int32_t)((k_bits == 32u ? 0xffffffffu : (1u << k_bits) - 1u) - low) - 1;
+        } else {
+            r = (int32_t)low;
+        }
+        if (q > 0x7fffffffu - (1u << (30u - (uint32_t)s)))
+            continue;
+        /* a0_lo = r 2^30 / 2^(2+s) = r 2^(28-s); R: |r| <= 2^(1+s), so |a0_lo| <= 2^29 */
+        if (s <= 28) {
+            r *= (int32_t)(1u << (28u - (uint32_t)s));
+        } else {
+            uint32_t sh = (uint32_t)s - 28u, mag = fr__mag(r);
+            mag = (mag + (1u << (sh - 1u))) >> sh;
+            r = r < 0 ? -(int32_t)mag : (int32_t)mag;
+        }
+        out->a0 = neg ? -(int32_t)q : (int32_t)q;
+        out->a0_lo = neg ? -r : r;
+        out->shift = s;
+        break;
+    }
+    if (s > 30) { /* outside the domain (eta or kappa above ~46000): saturate */
+        out->shift = 30;
+        out->a0 = neg ? -0x7fffffff + 1 : 0x7fffffff - 1;
+        out->a0_lo = 0;
     }
     out->b = fr__qf_scale(fr__qf_mul(e, k), 1);
     out->n4 = fr__qf_add(e2, k2);

@@ -145,6 +145,9 @@ extern const uint32_t fr__exp2_t[64];
  * below 2^-24 for p <= 64, 2^-21 for p <= 1000 (fixed_math.c). */
 fresnel_qf fr__pow_q15(uint32_t x, uint32_t p);
 
+/* |eta^2 - kappa^2 - sin^2| of m at c with ~60 bits, and its sign (exact_q15.c). */
+fresnel_qf fr__a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative);
+
 /* 1 - exact Fresnel of m at c (exact_q15.c), in qf: Cook-Torrance's T(c). */
 fresnel_qf fr__conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c);
 

@@ -114,12 +114,16 @@ fresnel_qf fr__qf(uint32_t m, int32_t e)
     return r;
 }
 
-/* floor(a.m b.m / 2^30) from 16-bit halves: a.m, b.m < 2^31 so ah, bh < 2^15,
- * al, bl < 2^16. R: ah bh < 2^30, ah bl + al bh < 2 (2^15 - 1)(2^16 - 1) < 2^32,
- * + (al bl >> 16) < 2^32 - 2^17 + 2^16 < 2^32; the result is in [2^30, 2^32). */
+/* The product a.m b.m / 2^30 rounded to 31 bits, from 16-bit halves:
+ * a.m, b.m < 2^31 so ah, bh < 2^15, al, bl < 2^16. R: ah bh < 2^30,
+ * ah bl + al bh < 2 (2^15 - 1)(2^16 - 1) < 2^32, + (al bl >> 16) < 2^32;
+ * hi = floor(a.m b.m / 2^30) is in [2^30, 2^32). Rounded to nearest rather
+ * than truncated: x^1000 is ten squarings, and a truncation's bias would
+ * double with each. */
 fresnel_qf fr__qf_mul(fresnel_qf a, fresnel_qf b)
 {
     uint32_t ah, al, bh, bl, mid, hi;
+    int32_t e = a.e + b.e + 30;
     if (a.m == 0 || b.m == 0)
         return fr__qf(0, 0);
     FR__RANGE("qf mul a", a.m, 1u << 30, 0x7fffffffu);
@@ -130,7 +134,10 @@ fresnel_qf fr__qf_mul(fresnel_qf a, fresnel_qf b)
     bl = b.m & 0xffffu;
     mid = ah * bl + al * bh + ((al * bl) >> 16);
     hi = ((ah * bh) << 2) + (mid >> 14);
-    return fr__qf(hi, a.e + b.e + 30);
+    if (hi >= 0x80000000u) /* 32 bits: keep 31, rounding on the bit shifted out */
+        return fr__qf((hi >> 1) + (hi & 1u), e + 1);
+    /* 31 bits: round on the next bit of the product, bit 13 of mid */
+    return fr__qf(hi + ((mid >> 13) & 1u), e);
 }
 
 fresnel_qf fr__qf_add(fresnel_qf a, fresnel_qf b)

@@ -57,19 +57,20 @@ fresnel_q15_rgb fresnel_schlick_gen_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb 
 }
 
 /* (1 - ct)^5 in Q30 for Schlick internal, or 2^31 for total internal
- * reflection. ct^2 = (a0 + c^2) / eta^2; for eta < 1 (a0 < 0, kappa 0) the
- * prepared shift is 0, so a0 + c^2 is exact in Q30 (|a0| < 2^30). */
+ * reflection. ct^2 = (eta^2 - sin^2) / eta^2, the numerator from the two
+ * words of the prepared a0 (exact_q15.c), so that it keeps its digits near
+ * the critical angle where it is the small difference of two numbers. */
 static uint32_t fr__internal_weight_q30(const fresnel_q15_ior *m, uint32_t c)
 {
-    uint32_t c2 = c * c, ct, x, x2;
-    int32_t a;
-    if (m->a0 >= 0)
+    uint32_t ct, x, x2;
+    int negative;
+    fresnel_qf a;
+    if (m->a0 > 0 || (m->a0 == 0 && m->a0_lo >= 0))
         return fr__pow5_q30(FR__ONE_Q15 - c); /* eta >= 1: external, c as is */
-    /* R: a0 in (-2^31, 0) and c^2 >> shift <= 2^30: a in (-2^31, 2^30] */
-    a = m->a0 + (int32_t)(m->shift ? (c2 + (1u << (m->shift - 1))) >> m->shift : c2);
-    if (a <= 0)
+    a = fr__a_qf(m, c, &negative);
+    if (negative || a.m == 0)
         return 1u << 31; /* past the critical angle */
-    ct = fr__qf_to_q30_unit(fr__qf_sqrt(fr__qf_mul(fr__qf((uint32_t)a, m->shift - 30), m->inv_eta2)));
+    ct = fr__qf_to_q30_unit(fr__qf_sqrt(fr__qf_mul(a, m->inv_eta2)));
     x = FR__ONE_Q30 - ct;   /* R: [0, 2^30] */
     x2 = fr__mul_q30(x, x); /* R: <= 2^30 */
     return fr__mul_q30(fr__mul_q30(x2, x2), x);

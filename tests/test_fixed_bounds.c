@@ -52,7 +52,7 @@ static void check_bound(const char *name, const worst *w, double bound, long bad
     printf("NOTE %-22s max|err| %.5f LSB at %s\n", name, w->err, w->where);
     snprintf(label, sizeof label, "fixed %s results in [0, one]", name);
     CHECK(label, bad_range == 0, "%ld results outside [0, 32768]", bad_range);
-    snprintf(label, sizeof label, "fixed %s within %.2f LSB", name, bound);
+    snprintf(label, sizeof label, "fixed %s within %.3f LSB", name, bound);
     CHECK(label, w->err <= bound, "max|err| %.4f LSB exceeds the documented %.4f at %s", w->err, bound, w->where);
 }
 
@@ -90,6 +90,7 @@ static void check_schlick_gen(void)
     static const double ps[] = {0.001, 0.25, 0.5, 1.0, 2.0, 3.7, 5.0, 8.0, 40.0, 1000.0};
     static const int32_t f90s[] = {0, 16384, ONE};
     static const int32_t f0s[] = {0, 1311, 16384, 31130, ONE};
+    double worst64 = 0.0;
     worst w;
     long bad = 0;
     size_t ip, i9, i0;
@@ -104,11 +105,32 @@ static void check_schlick_gen(void)
                 for (c = 0; c <= ONE; c++) {
                     int32_t got = fresnel_schlick_gen_q15(f0s[i0], f90s[i9], p, c);
                     double ref = ref_schlick_gen(f0s[i0] / 32768.0, f90s[i9] / 32768.0, p / 65536.0, c / 32768.0);
+                    double err = fabs(got / 32768.0 - ref) * 32768.0;
                     bad += got < 0 || got > ONE;
-                    note_worst(&w, fabs(got / 32768.0 - ref) * 32768.0, what, c / 32768.0);
+                    note_worst(&w, err, what, c / 32768.0);
+                    if (ps[ip] <= 64.0 && err > worst64)
+                        worst64 = err;
                 }
             }
     check_bound("schlick-gen, every p", &w, FRESNEL_Q15_BOUND_SCHLICK_GEN, bad);
+    CHECK("fixed schlick-gen within 0.501 LSB for p <= 64", worst64 <= 0.501, "max|err| %.5f LSB", worst64);
+    /* large exponents, where (1-c)^p is ten squarings: 500 p in (64, 1000],
+     * the cosines where (1-c)^p is not negligible (c < 1/4) */
+    memset(&w, 0, sizeof w);
+    bad = 0;
+    for (ip = 0; ip < 500; ip++) {
+        fresnel_q16 p = (fresnel_q16)(64 * 65536 + (int32_t)((ip * 2654435761u) % (936u * 65536u)));
+        char what[64];
+        snprintf(what, sizeof what, "p %.5f", p / 65536.0);
+        for (i9 = 0; i9 < 3; i9 += 2)
+            for (c = 0; c <= 8192; c++) {
+                int32_t got = fresnel_schlick_gen_q15(0, f90s[i9], p, c);
+                double ref = ref_schlick_gen(0.0, f90s[i9] / 32768.0, p / 65536.0, c / 32768.0);
+                bad += got < 0 || got > ONE;
+                note_worst(&w, fabs(got / 32768.0 - ref) * 32768.0, what, c / 32768.0);
+            }
+    }
+    check_bound("schlick-gen, p in (64, 1000]", &w, FRESNEL_Q15_BOUND_SCHLICK_GEN, bad);
 }
 
 /* F82 on a 1/16 grid of (F0, F82) pairs, far apart ones included (the
@@ -171,12 +193,20 @@ static void check_f0_helpers(void)
     check_bound("f0_in_medium", &w_med, FRESNEL_Q15_BOUND_F0_IN_MEDIUM, bad);
 }
 
+/* The layout of fresnel_fixed.h: shift in [0, 30], |a0| + 2^(30-shift) <=
+ * 2^31 - 1 (a0 + c^2 fits int32), |a0_lo| <= 2^29. */
+static int ior_layout_ok(const fresnel_q15_ior *m)
+{
+    return m->shift >= 0 && m->shift <= 30 &&
+           fabs((double)m->a0) + ldexp(1.0, 30 - m->shift) <= 2147483647.0 && abs(m->a0_lo) <= (1 << 29);
+}
+
 /* The run-time *_prepare functions from Q16.16 against the host's
  * preparation from the same Q16.16 values in double: the two sets of
  * constants must give results within one code of each other. */
 static void check_prepare(const test_material *mat, int nmat)
 {
-    int k, worst_ior = 0, worst_nk = 0, worst_lsk = 0, worst_g = 0, worst_r = 0;
+    int k, worst_ior = 0, worst_nk = 0, worst_lsk = 0, worst_g = 0, worst_r = 0, layout_bad = 0;
     for (k = 0; k < nmat; k++) {
         fresnel_q16 e = fixed_q16(mat[k].eta), kk = fixed_q16(mat[k].kappa);
         double ed = e / 65536.0, kd = kk / 65536.0, a, alpha, r, g;
@@ -190,6 +220,12 @@ static void check_prepare(const test_material *mat, int nmat)
         ref_lsk_fit(ed, kd, &a, &alpha);
         fresnel_q15_ior_prepare(e, kk, &ri);
         fixed_ior(ed, kd, &hi);
+        layout_bad += !ior_layout_ok(&ri) + !ior_layout_ok(&hi);
+        {
+            fresnel_q15_ior dm;
+            fixed_ior(mat[k].eta, mat[k].kappa, &dm);
+            layout_bad += !ior_layout_ok(&dm);
+        }
         fresnel_q15_nk_prepare(e, kk, &rn);
         fixed_nk(ed, kd, &hn);
         fresnel_q15_lsk_prepare(e, kk, fixed_q16(a), fixed_q16(alpha), &rl);
@@ -215,6 +251,8 @@ static void check_prepare(const test_material *mat, int nmat)
     NOTE("prepare from Q16.16 vs host: ior %d, nk %d, lsk %d codes; gulbrandsen_rg r %d g %d codes",
          worst_ior, worst_nk, worst_lsk, worst_r, worst_g);
     CHECK("fresnel_q15_ior_prepare matches the host preparation", worst_ior <= 1, "%d codes", worst_ior);
+    CHECK("prepared a0, a0_lo, shift keep the layout (a0 + c^2 fits int32), host and run time", layout_bad == 0,
+          "%d structs break it", layout_bad);
     CHECK("fresnel_q15_nk_prepare matches the host preparation", worst_nk <= 1, "%d codes", worst_nk);
     CHECK("fresnel_q15_lsk_prepare matches the host preparation", worst_lsk <= 1, "%d codes", worst_lsk);
     CHECK("fresnel_gulbrandsen_rg_q15 within one code of the reference", worst_r <= 1 && worst_g <= 1,

@@ -61,6 +61,7 @@ int main(void)
         fresnel_q15_lsk_prepare(m->eta, m->kappa, 65536, 7 << 16, &lsk);
         fresnel_gulbrandsen_rg_q15(m->eta, m->kappa, &r, &g);
         h = fnv(fnv(fnv(h, (uint32_t)ior.a0), (uint32_t)ior.a0 >> 16), (uint32_t)ior.shift);
+        h = fnv(fnv(h, (uint32_t)ior.a0_lo), (uint32_t)ior.a0_lo >> 16);
         h = fnv_qf(fnv_qf(fnv_qf(fnv_qf(h, ior.b), ior.n4), ior.t1_inv), ior.inv_eta2);
         h = fnv_qf(fnv_qf(h, nk.n), nk.nk2);
         h = fnv(fnv(fnv(h, lsk.f0), lsk.f0 >> 16), (uint32_t)lsk.alpha);

@@ -14,7 +14,7 @@ static void qf(const char *name, fresnel_qf v) { printf(" .%s = {%uu, %d},", nam
 
 static void ior(const char *name, const fresnel_q15_ior *m)
 {
-    printf(" .%s = {%d, %d,", name, (int)m->a0, (int)m->shift);
+    printf(" .%s = {%d, %d, %d,", name, (int)m->a0, (int)m->a0_lo, (int)m->shift);
     printf(" {%uu, %d}, {%uu, %d}, {%uu, %d}, {%uu, %d}},", (unsigned)m->b.m, (int)m->b.e, (unsigned)m->n4.m,
            (int)m->n4.e, (unsigned)m->t1_inv.m, (int)m->t1_inv.e, (unsigned)m->inv_eta2.m, (int)m->inv_eta2.e);
 }

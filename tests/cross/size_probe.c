@@ -13,7 +13,7 @@ void probe(void);
 
 #if defined(PROBE)
 #include "fresnel_fixed.h"
-static const fresnel_q15_ior ior = {-1051966000, 3, {1073741824u, -28}, {1073741824u, -21}, {1073741824u, -29},
+static const fresnel_q15_ior ior = {-1051966000, 12345, 3, {1073741824u, -28}, {1073741824u, -21}, {1073741824u, -29},
                                     {1073741824u, -33}};
 static const fresnel_q15_nk nk = {{1073741824u, -30}, {1073741824u, -27}};
 static const fresnel_q15_lsk lsk = {700000000u, {1073741824u, -29}, 7 << 16};
