@@ -144,7 +144,7 @@ void ref_gulbrandsen_nk(double r, double g, double *n, double *k)
     nmax = (1.0 + sr) * (1.0 + sr) / (1.0 - r); /* = (1+sr)/(1-sr), see gulbrandsen.c */
     *n = g * nmin + (1.0 - g) * nmax;
     /* The paper's (r(n+1)^2 - (n-1)^2)/(1-r), factored: see gulbrandsen.c. */
-    k2 = g * (nmax - nmin) * (sr * (*n + 1.0) + *n - 1.0) / (1.0 + sr);
+    k2 = g * (nmax - nmin) * (*n * (1.0 + sr) - (1.0 - r) / (1.0 + sr)) / (1.0 + sr);
     *k = k2 > 0.0 ? sqrt(k2) : 0.0;
 }
 

@@ -17,8 +17,9 @@ fresnel_nk fresnel_gulbrandsen_nk(float r, float g)
     /* r (n+1)^2 - (n-1)^2 = (1 - sqrt r) g (nmax - nmin) (sqrt r (n+1) + n - 1):
      * dividing by 1 - r = (1 - sqrt r)(1 + sqrt r) leaves no difference of
      * large terms (the paper's form subtracts two numbers near 1.6e9 when
-     * r = 0.9999 and g = 0). */
-    k2 = g * (nmax - nmin) * (sr * (out.n + 1.0f) + out.n - 1.0f) / (1.0f + sr);
+     * r = 0.9999 and g = 0). The last factor is written
+     * n (1 + sqrt r) - (1 - r)/(1 + sqrt r), since sqrt r - 1 cancels too. */
+    k2 = g * (nmax - nmin) * (out.n * (1.0f + sr) - (1.0f - r) / (1.0f + sr)) / (1.0f + sr);
     out.k = k2 > 0.0f ? sqrtf(k2) : 0.0f;
     return out;
 }

@@ -58,6 +58,13 @@ float fresnel_f0_in_medium(float f0, float eta_e)
     eta_e = fr__eta(eta_e);
     f0 = fr__unit(f0);
     r = sqrtf(f0);
+    if (eta_e < 1.0f) {
+        /* s < 0: r - s and 1 - r s are sums of positive terms, and the
+         * direct form rounds least. */
+        float s = (eta_e - 1.0f) / (eta_e + 1.0f);
+        q = (r - s) / (1.0f - r * s);
+        return fr__unit(q * q);
+    }
     one_minus_s = 2.0f / (eta_e + 1.0f);
     one_minus_r = (1.0f - f0) / (1.0f + r);
     q = (one_minus_s - one_minus_r) / (one_minus_r + r * one_minus_s); /* denominator > 0 */

@@ -38,7 +38,10 @@ static void check_schlick_gen_exponents(float *cs, int nc)
           worst, (double)FRESNEL_BOUND_SCHLICK_GEN);
 }
 
-/* F0 helpers, outside the model table. */
+/* F0 helpers, outside the model table. F0 runs over 0..1 in 1/64 steps, down
+ * to 1e-8 in log steps (dielectrics in a denser medium) and up to 1 - 1e-6
+ * (silver-like metals); the medium's index over a 4x denser eta grid plus
+ * its lower end. */
 static void check_f0_helpers(void)
 {
     double w_ior = 0.0, w_med = 0.0;
@@ -49,14 +52,34 @@ static void check_f0_helpers(void)
             double err = fabs(fresnel_f0_from_ior(e, k) - ref_f0_from_ior(e, k));
             if (!(err <= w_ior))
                 w_ior = err;
-            for (i0 = 0; i0 <= 64; i0++) {
-                float f0 = (float)(i0 / 64.0);
-                err = fabs(fresnel_f0_in_medium(f0, e) - ref_f0_in_medium(f0, e));
-                if (!(err <= w_med))
-                    w_med = err;
-            }
         }
+    for (ie = -1; ie < 4 * GRID_ETA_N; ie++) {
+        float e = ie < 0 ? FRESNEL_ETA_MIN : (float)(0.01 * pow(1e4, ie / (4.0 * GRID_ETA_N - 4.0)));
+        for (i0 = 0; i0 <= 64 + 80 + 60; i0++) {
+            float f0 = i0 <= 64        ? (float)(i0 / 64.0)
+                       : i0 <= 64 + 80 ? (float)pow(10.0, -8.0 + (i0 - 64) / 10.0)
+                                       : (float)(1.0 - pow(10.0, -6.0 + (i0 - 144) / 15.0));
+            double err = fabs(fresnel_f0_in_medium(f0, e) - ref_f0_in_medium(f0, e));
+            if (!(err <= w_med))
+                w_med = err;
+        }
+    }
     NOTE("f0_from_ior max|err| %.3g, f0_in_medium max|err| %.3g", w_ior, w_med);
+    {
+        /* Gulbrandsen near r = 1, where n reaches 4e4: the region of fuzz finding F1 */
+        double w_g = 0.0;
+        int ir, ig, ic;
+        for (ir = 0; ir <= 200; ir++)
+            for (ig = 0; ig <= 64; ig++)
+                for (ic = 0; ic <= 256; ic++) {
+                    float r = 0.99f + ir * 5e-7f, g = (float)(ig / 64.0), c = (float)(ic / 256.0);
+                    double err = fabs(fresnel_gulbrandsen(r, g, c) - ref_gulbrandsen(r, g, c));
+                    if (!(err <= w_g))
+                        w_g = err;
+                }
+        NOTE("gulbrandsen for r in [0.99, 0.9999], every g: max|err| %.3g", w_g);
+        CHECK("gulbrandsen bound near r = 1", w_g <= FRESNEL_BOUND_GULBRANDSEN, "max %.3g", w_g);
+    }
     CHECK("f0_from_ior bound", w_ior <= FRESNEL_BOUND_F0, "max %.3g", w_ior);
     CHECK("f0_in_medium bound", w_med <= FRESNEL_BOUND_F0_IN_MEDIUM, "max %.3g", w_med);
 }
