@@ -34,8 +34,6 @@
  * While one stands, its check prints a NOTE "KNOWN FINDING ..." instead of
  * failing, for exactly the region below; everything else is asserted. Delete
  * an entry when its runtime is fixed: the test then asserts the bound there.
- *   F1 f32 fresnel_gulbrandsen, r -> 1 with g -> 1: the factor
- *      sqrt(r)(n+1) + n - 1 of k^2 cancels (1.3e-6 against 4e-7).
  *   F4 f16 exact forms for a dielectric seen from inside with eta/n1 < 0.1
  *      (critical angle within a binary16 step of c = 1): (eta-1)(eta+1) + c^2
  *      in binary16 decides total reflection at normal incidence (conductor
@@ -48,8 +46,6 @@
  *      measured on material-derived pairs only. */
 static const char *known_finding(const extreme_type *ty, const char *model, const model_params *p)
 {
-    if (!strcmp(ty->name, "f32") && !strcmp(model, "gulbrandsen") && p->r > 0.999 && p->g > 0.99)
-        return "F1";
     if (!strcmp(ty->name, "q15") && !strcmp(model, "gulbrandsen") && p->r > 0.99 && p->g >= 1.0)
         return "F5";
     /* exact-dielectric ignores kappa: it is a dielectric on every case */

@@ -22,21 +22,9 @@
  * ONE region by the error measured there, so the fuzzer keeps checking the
  * rest; delete an entry when the runtime is fixed (the crash inputs are in
  * the corpus and must then pass with the documented bound).
- *   F1 fresnel_gulbrandsen, r > 0.999 (clamped to 0.9999) and g near 1:
- *      k^2's factor sqrt(r)(n+1) + n - 1 cancels when n is near nmin (n ~
- *      5e-5, the sum ~ 5e-5 from terms ~ 1), so k is off by 6e-4 relative
- *      and R by up to 1.31e-6 (bound 4e-7 holds up to r = 0.99922).
- *      n (1 + sqrt r) - (1 - r)/(1 + sqrt r) is the same quantity without
- *      the cancellation (measured 3.2e-7 with it).
- *   F2 fresnel_f0_in_medium: 7.33e-7 measured at F0 5.84e-5, eta_e 0.01105
- *      (one_minus_s = 2/(eta_e+1) ~ 2 carries its rounding into a
- *      difference ~ 1), 4.9e-7 at F0 -> 1, eta_e ~ 15-100; the bound's grid
- *      had F0 = i/64 only. */
-static double known_gulbrandsen(float r, double documented)
-{
-    return ref_clamp(r, 0.0, 1.0) > 0.999 ? 1.4e-6 : documented;
-}
-#define KNOWN_F2_F0_IN_MEDIUM 8e-7 /* replaces FRESNEL_BOUND_F0_IN_MEDIUM while F2 stands */
+ *   (F1, Gulbrandsen near r = 1, and F2, F0 in a medium, are fixed in the
+ *   runtime; their inputs stay in the corpus and are held to the documented
+ *   bounds.) */
 
 /* The region of eta and kappa where fresnel.h says the bounds were measured. */
 static int measured_eta(float e)
@@ -219,7 +207,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     s0 = fresnel_f0_in_medium(f0, eta);
     if (eta_ok)
         check_bound("fresnel_f0_in_medium", s0, ref_f0_in_medium(f0, eta),
-                    KNOWN_F2_F0_IN_MEDIUM, in, 2);
+                    FRESNEL_BOUND_F0_IN_MEDIUM, in, 2);
     else
         check_range("fresnel_f0_in_medium", s0, in, 2);
 
@@ -259,7 +247,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     in[0] = r, in[1] = g, in[2] = c;
     s0 = fresnel_gulbrandsen(r, g, c);
     check_bound("fresnel_gulbrandsen", s0, ref_gulbrandsen(r, g, c),
-                known_gulbrandsen(r, FRESNEL_BOUND_GULBRANDSEN), in, 3);
+                FRESNEL_BOUND_GULBRANDSEN, in, 3);
     check_rgb("fresnel_gulbrandsen_rgb", fresnel_gulbrandsen_rgb(rgb3(r, g, f0), rgb3(g, r, f82), c), s0,
               fresnel_gulbrandsen(g, r, c), fresnel_gulbrandsen(f0, f82, c));
     nk = fresnel_gulbrandsen_nk(r, g);
