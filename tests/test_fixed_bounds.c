@@ -133,6 +133,23 @@ static void check_schlick_gen(void)
     check_bound("schlick-gen, p in (64, 1000]", &w, FRESNEL_Q15_BOUND_SCHLICK_GEN, bad);
 }
 
+/* Schlick for F0 on a 1/256 grid, every cos code. */
+static void check_schlick_f0(void)
+{
+    worst w;
+    long bad = 0;
+    int a;
+    int32_t c;
+    memset(&w, 0, sizeof w);
+    for (a = 0; a <= 256; a++)
+        for (c = 0; c <= ONE; c++) {
+            int32_t got = fresnel_schlick_q15(a * 128, c);
+            bad += got < 0 || got > ONE;
+            note_worst(&w, fabs(got / 32768.0 - ref_schlick(a / 256.0, c / 32768.0)) * 32768.0, "F0 grid", c / 32768.0);
+        }
+    check_bound("schlick, every F0", &w, FRESNEL_Q15_BOUND_SCHLICK, bad);
+}
+
 /* F82 on a 1/16 grid of (F0, F82) pairs, far apart ones included (the
  * materials only give pairs close together), every cos code. */
 static void check_f82_pairs(void)
@@ -452,6 +469,7 @@ int main(void)
     NOTE("fixed-point bounds over %d materials x 32769 cos codes", nmat);
     check_models(mat, nmat);
     check_schlick_gen();
+    check_schlick_f0();
     check_f82_pairs();
     check_f0_helpers();
     check_prepare(mat, nmat);
