@@ -18,5 +18,8 @@ typedef struct emit_input {
 } emit_input;
 
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
+/* One material's Q1.15 constants and tables (emit_fixed.c); prefix is
+ * fresnel_<scene>_<material>. */
+int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix);
 
 #endif

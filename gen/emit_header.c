@@ -11,6 +11,15 @@
 #include "emit.h"
 #include "scene.h"
 
+static int scene_has_type(const scene *sc, const char *type)
+{
+    int i;
+    for (i = 0; i < sc->type_count; i++)
+        if (!strcmp(sc->types[i], type))
+            return 1;
+    return 0;
+}
+
 static int scene_has(const scene *sc, const char *model)
 {
     int i;
@@ -142,7 +151,10 @@ int emit_header(FILE *f, const emit_input *in)
         fprintf(f, " * GLSL: paste after ports/glsl/fresnel.glsl, which defines FRESNEL_HIGHP.\n */\n"
                    "#ifndef FRESNEL_SCENE_%s_GLSL\n#define FRESNEL_SCENE_%s_GLSL\n", guard, guard);
     } else {
-        fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n\n", guard, guard);
+        fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n", guard, guard);
+        if (scene_has_type(sc, "q15"))
+            fprintf(f, "#include \"fresnel_fixed.h\"\n");
+        fputc('\n', f);
         fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
                    "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");
     }
@@ -152,6 +164,10 @@ int emit_header(FILE *f, const emit_input *in)
         char prefix[96];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
         fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
+        if (!glsl && scene_has_type(sc, "q15") && emit_fixed_material(f, in, i, prefix))
+            return CLI_BAD_INPUT;
+        if (!glsl && !scene_has_type(sc, "f32"))
+            continue;
         if (scene_has(sc, "schlick") || scene_has(sc, "f82") || scene_has(sc, "cook-torrance") ||
             scene_has_residual_lut(sc))
             emit_rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");

@@ -18,7 +18,7 @@ const char *const scene_model_names[] = {"schlick",        "lsk",  "lsk-comp",
                                          "exact-gaussian", "exact-point", "approx-conductor",
                                          NULL};
 /* Number types the generator can emit; a new type is one more entry here. */
-const char *const scene_type_names[] = {"f32", NULL};
+const char *const scene_type_names[] = {"f32", "q15", NULL};
 const char *const scene_lut_spacing_names[] = {"uniform", "grazing", NULL};
 
 enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
