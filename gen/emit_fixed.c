@@ -120,15 +120,6 @@ static int emit_lut_q15(FILE *f, const char *prefix, const char *model, const ma
     return 0;
 }
 
-static int has(const scene *sc, const char *model)
-{
-    int i;
-    for (i = 0; i < sc->model_count; i++)
-        if (!strcmp(sc->models[i], model))
-            return 1;
-    return 0;
-}
-
 int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefix)
 {
     const scene *sc = in->sc;
@@ -140,27 +131,27 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
         if (scene_model_lut_size(sc->models[m], &res) && res)
             residual_lut = 1;
     }
-    if (has(sc, "schlick") || has(sc, "f82") || has(sc, "cook-torrance") || residual_lut)
+    if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") || residual_lut)
         emit_q15_rgb(f, prefix, "f0", p->f0, "F0");
-    if (has(sc, "f82"))
+    if (scene_has_model(sc, "f82"))
         emit_q15_rgb(f, prefix, "f82", p->f82, "F82");
-    if (has(sc, "gulbrandsen")) {
+    if (scene_has_model(sc, "gulbrandsen")) {
         emit_q15_rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen r");
         emit_q15_rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen g");
     }
-    if (has(sc, "lsk"))
+    if (scene_has_model(sc, "lsk"))
         emit_lsk3(f, prefix, "lsk", p, 0);
-    if (has(sc, "lsk-comp"))
+    if (scene_has_model(sc, "lsk-comp"))
         emit_lsk3(f, prefix, "lsk_comp", p, 1);
-    if (has(sc, "exact"))
+    if (scene_has_model(sc, "exact"))
         emit_ior3(f, prefix, "ior", p->eta_fit, p->kappa_fit, "eta, kappa fitted to the ground truth");
-    if (has(sc, "exact-gaussian"))
+    if (scene_has_model(sc, "exact-gaussian"))
         emit_ior3(f, prefix, "ior_gaussian", p->eta_gauss, p->kappa_gauss, "Metzgar's Gaussian-window eta', kappa'");
-    if (has(sc, "exact-point"))
+    if (scene_has_model(sc, "exact-point"))
         emit_ior3(f, prefix, "ior_point", p->eta_point, p->kappa_point, "eta, kappa point-sampled");
-    if (has(sc, "approx-conductor"))
+    if (scene_has_model(sc, "approx-conductor"))
         emit_nk3(f, prefix, p);
-    if (has(sc, "cook-torrance")) {
+    if (scene_has_model(sc, "cook-torrance")) {
         fprintf(f, "/* Cook-Torrance's representative IOR (fresnel_cook_torrance_q15_rgb) */\n"
                    "static const fresnel_q15_ior %s_ct_ior_q15 FRESNEL_GEN_UNUSED = ",
                 prefix);

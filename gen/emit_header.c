@@ -11,24 +11,6 @@
 #include "emit.h"
 #include "scene.h"
 
-static int scene_has_type(const scene *sc, const char *type)
-{
-    int i;
-    for (i = 0; i < sc->type_count; i++)
-        if (!strcmp(sc->types[i], type))
-            return 1;
-    return 0;
-}
-
-static int scene_has(const scene *sc, const char *model)
-{
-    int i;
-    for (i = 0; i < sc->model_count; i++)
-        if (!strcmp(sc->models[i], model))
-            return 1;
-    return 0;
-}
-
 static int scene_has_residual_lut(const scene *sc)
 {
     int i, residual;
@@ -168,33 +150,33 @@ int emit_header(FILE *f, const emit_input *in)
             return CLI_BAD_INPUT;
         if (!glsl && !scene_has_type(sc, "f32"))
             continue;
-        if (scene_has(sc, "schlick") || scene_has(sc, "f82") || scene_has(sc, "cook-torrance") ||
+        if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") ||
             scene_has_residual_lut(sc))
             emit_rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");
-        if (scene_has(sc, "f82"))
+        if (scene_has_model(sc, "f82"))
             emit_rgb(f, prefix, "f82", p->f82, "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
-        if (scene_has(sc, "exact") || scene_has(sc, "lsk") || scene_has(sc, "lsk-comp") ||
-            scene_has(sc, "approx-conductor")) {
+        if (scene_has_model(sc, "exact") || scene_has_model(sc, "lsk") || scene_has_model(sc, "lsk-comp") ||
+            scene_has_model(sc, "approx-conductor")) {
             emit_rgb(f, prefix, "eta", p->eta_fit, "eta fitted to the ground truth (exact, lsk, approx-conductor)");
             emit_rgb(f, prefix, "kappa", p->kappa_fit, "kappa fitted to the ground truth");
         }
-        if (scene_has(sc, "lsk-comp")) {
+        if (scene_has_model(sc, "lsk-comp")) {
             emit_rgb(f, prefix, "lsk_a", p->lsk_a, "LSK compensation weight a (fresnel_lsk_comp_rgb)");
             emit_rgb(f, prefix, "lsk_alpha", p->lsk_alpha, "LSK compensation exponent alpha");
         }
-        if (scene_has(sc, "exact-gaussian")) {
+        if (scene_has_model(sc, "exact-gaussian")) {
             emit_rgb(f, prefix, "eta_gaussian", p->eta_gauss, "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
             emit_rgb(f, prefix, "kappa_gaussian", p->kappa_gauss, "Metzgar: kappa' in a Gaussian window");
         }
-        if (scene_has(sc, "exact-point")) {
+        if (scene_has_model(sc, "exact-point")) {
             emit_rgb(f, prefix, "eta_point", p->eta_point, "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
             emit_rgb(f, prefix, "kappa_point", p->kappa_point, "kappa point-sampled at the dominant wavelengths");
         }
-        if (scene_has(sc, "gulbrandsen")) {
+        if (scene_has_model(sc, "gulbrandsen")) {
             emit_rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
             emit_rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen edge tint g from F0 and the fitted eta");
         }
-        if (scene_has(sc, "cook-torrance")) {
+        if (scene_has_model(sc, "cook-torrance")) {
             emit_float(f, prefix, "ct_eta", p->ct_eta,
                        "Cook-Torrance representative IOR at the green wavelength (fresnel_cook_torrance_rgb)");
             emit_float(f, prefix, "ct_kappa", p->ct_kappa, "Cook-Torrance representative kappa");

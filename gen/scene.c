@@ -370,3 +370,21 @@ int scene_load(const char *path, scene *out)
                       "expected a 'models = name ...' line, the required key is missing");
     return 0;
 }
+
+int scene_has_model(const scene *sc, const char *model)
+{
+    int i;
+    for (i = 0; i < sc->model_count; i++)
+        if (!strcmp(sc->models[i], model))
+            return 1;
+    return 0;
+}
+
+int scene_has_type(const scene *sc, const char *type)
+{
+    int i;
+    for (i = 0; i < sc->type_count; i++)
+        if (!strcmp(sc->types[i], type))
+            return 1;
+    return 0;
+}

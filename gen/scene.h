@@ -95,4 +95,8 @@ int scene_model_lut_size(const char *model, int *residual);
 /* 1 if the model name is one the manifest accepts, else 0. */
 int scene_model_known(const char *model);
 
+/* 1 if the loaded scene names this model / number type, else 0. */
+int scene_has_model(const scene *sc, const char *model);
+int scene_has_type(const scene *sc, const char *type);
+
 #endif
