@@ -73,9 +73,9 @@
  * 0.5 (eta 0.0703 at c = 1 - 2^-11: 0.485 off). binary32 needs exact squares
  * there, and the GLSL port evaluates these models in highp for this reason.
  * FRESNEL_F16_BOUND_NONCRITICAL is every model's error at least 1/64 in c
- * away from a critical angle. The LUT bound is the position w (n-1) rounded
- * to half (ulp 1/8 for positions in [128, 256)) times the steepest table
- * step. */
+ * away from a critical angle. The LUT bound is the position's rounding
+ * times the steepest table step: sqrt(c) (n-1), the root and the product
+ * each rounded to half (ulp 1/8 for positions in [128, 256)). */
 #define FRESNEL_F16_BOUND_SCHLICK 2.6e-3 /* [2.527e-3 over every binary16 F0 (FRESNEL_TEST_EXHAUSTIVE=1); 2.16e-3 on the materials] */
 #define FRESNEL_F16_BOUND_SCHLICK_GEN 2.6e-3 /* [2.16e-3 at p 5 (Schlick's path); 6.63e-4 over p in [0.25, 40]] */
 #define FRESNEL_F16_BOUND_SCHLICK_INTERNAL 1.0 /* no bound at a critical angle [0.113]; 4.45e-3 away */
@@ -89,7 +89,7 @@
 #define FRESNEL_F16_BOUND_COOK_TORRANCE 1.0 /* no bound at a critical angle [0.246]; 4.02e-3 away */
 #define FRESNEL_F16_BOUND_CONDUCTOR 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
 #define FRESNEL_F16_BOUND_DIELECTRIC 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
-#define FRESNEL_F16_BOUND_LUT 1.7e-2 /* [1.612e-2, a table with a total-reflection edge] */
+#define FRESNEL_F16_BOUND_LUT 1.7e-2 /* [1.599e-2 nodes uniform in sqrt(c), a table with a total-reflection edge; 3.84e-3 uniform in c] */
 #define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3 /* [4.449e-3] */
 
 #if FRESNEL_HAS_F16
@@ -121,7 +121,8 @@ fresnel_f16 fresnel_approx_conductor_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f
 fresnel_f16 fresnel_cook_torrance_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);
-/* Lookup tables as fresnel_lut (nodes uniform in w = 1 - (1-c)^5) and
+/* Lookup tables as fresnel_lut (nodes uniform in sqrt(c), the position
+ * from the half root of c, as the GLSL port's fresnel_lut_pos) and
  * fresnel_lut_linear (uniform in c), plain and residual, binary16 nodes. */
 fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c);

@@ -111,15 +111,18 @@ typedef struct fresnel_q15_rgb {
  * nearest code is 0.5 LSB by itself: every model but the LUTs (and
  * generalized Schlick beyond p = 64) is within 0.001 LSB of that (what
  * shows of the 30-bit intermediates). The LUTs add
- * half a position step times the table's steepest node-to-node change
- * (0.5 LSB for a two-node table spanning [0, 1]). Measured maxima
+ * the position's error times the table's steepest node-to-node change: half
+ * a position step, 2^-16 of a segment (0.5 LSB for a two-node table spanning
+ * [0, 1]), and for nodes uniform in sqrt(c) the floor of sqrt(c) in Q30,
+ * (n-1) 2^-30 of a segment. Measured maxima
  * (tests/test_fixed_bounds.c): Schlick 0.50003, generalized Schlick 0.50029
  * for p <= 64 and 0.50090 for p in (64, 1000] (there (1-c)^p is ten
  * squarings, and the bound is 0.5 plus the power's asserted relative error
  * 2^-21 times 2^15: 0.516), internal 0.50007, F0 0.49992, F0 in medium 0.50004,
  * LSK 0.50002, LSK compensated 0.50004, F82 0.50074 (F0/F82 grid),
  * Gulbrandsen 0.50002, approximate conductor 0.50002, Cook-Torrance 0.50002,
- * conductor 0.50002, dielectric 0.50002, LUT 1.00000. */
+ * conductor 0.50002, dielectric 0.50002, LUT 0.98526 (nodes uniform in
+ * sqrt(c); a two-node water table) and 0.50004 (uniform in c). */
 #define FRESNEL_Q15_BOUND_SCHLICK 0.501
 #define FRESNEL_Q15_BOUND_SCHLICK_GEN 0.516 /* 0.501 for p <= 64; see below */
 #define FRESNEL_Q15_BOUND_SCHLICK_INTERNAL 0.501
@@ -171,7 +174,7 @@ typedef struct fresnel_q15_rgb {
  *   a      qf of the compensation weight a (0: no compensation)
  *   alpha  Q16.16 of the exponent alpha, round(alpha * 65536), [0, 1000 * 65536]
  *
- * LUT tables (see the LUT section): uint16_t round(F * 32768); uint8_t
+ * LUT tables (node positions in the LUT section): uint16_t round(F * 32768); uint8_t
  * round(F * 255); residual int16_t / int8_t round((GT - Schlick(F0)) * 2^frac)
  * with frac chosen by the generator (the table's largest |value| must fit the
  * type); RGB tables are n red, n green, then n blue entries.
@@ -337,10 +340,13 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c);
 
 /* Lookup tables (fresnel_lut and friends) in integers. table[i], i = 0..n-1,
  * 2 <= n <= 32768, is the reflectance at node i; the result interpolates
- * linearly between the two nodes around c. Node spacing:
- *   fresnel_lut_*        uniform in w = 1 - (1 - c)^5 (w in Q30 from the
- *                        Schlick path; node i at w = i/(n-1))
- *   fresnel_lut_linear_* uniform in c (node i at c = i/(n-1))
+ * linearly between the two nodes around c. Node spacing, as fresnel.h's
+ * (the tables of `fresnel gen` are read at the positions they were made for):
+ *   fresnel_lut_*        uniform in sqrt(c) (node i at c = (i/(n-1))^2): the
+ *                        position is sqrt(c) (n-1), sqrt(c) the exact floor
+ *                        in Q30 (fresnel_isqrt_u32 on c 2^15, then 15 more
+ *                        digits), rounded to a 15-bit fraction of a segment
+ *   fresnel_lut_linear_* uniform in c (node i at c = i/(n-1)), exact
  * Encodings:
  *   _u16  uint16_t, F = v / 32768 (v <= 32768)
  *   _u8   uint8_t,  F = v / 255   (each node decoded to Q15 first, +-0.5 LSB)
@@ -349,7 +355,10 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c);
  *   _s8   int8_t,  residual = v / 2^frac, frac in [7, 22]
  * Results are clamped to [0, one]. Error <= FRESNEL_Q15_BOUND_LUT LSB against
  * the same interpolation in double (the table's own error is the
- * generator's business). Cost: Schlick's 5 mul for w, 3 mul, no division. */
+ * generator's business). Cost: uniform in c, 3 mul, no division (~100
+ * instructions on Cortex-M0); uniform in sqrt(c), the square root's 31
+ * digit steps and 1 mul more (~400; ports/README.md). The _residual forms
+ * add Schlick's 8 mul. */
 fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c);
 fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c);
 fresnel_q15 fresnel_lut_q15_u8(const uint8_t *table, int n, int32_t c);

@@ -1,6 +1,9 @@
 /* Lookup tables in binary16 (fresnel_f16.h): lut.c's interpolation, with
  * the position, the fraction and the blend in half, as a shader computes
- * them (the index itself is exact: pos < 2048 has an exact integer part). */
+ * them (the index itself is exact: pos < 2048 has an exact integer part).
+ * fresnel_lut_*: nodes uniform in sqrt(c) as in lut.c and the GLSL port's
+ * fresnel_lut_pos, the root of the half cosine rounded to half, as a
+ * shader's sqrt. */
 #include "f16_internal.h"
 
 #if FRESNEL_HAS_F16
@@ -15,15 +18,9 @@ static fr__h fr__interp_h(const fr__h *table, int n, fr__h x)
     return fr__hadd(table[i], fr__hmul(t, fr__hsub(table[i + 1], table[i])));
 }
 
-static fr__h fr__weight_h(fr__h c)
-{
-    fr__h one = fr__hc(1.0f);
-    return fr__hsub(one, fr__hpow5(fr__hsub(one, c)));
-}
-
 fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c)
 {
-    return fr__hunit(fr__interp_h(table, n, fr__weight_h(fr__hunit(c))));
+    return fr__hunit(fr__interp_h(table, n, fr__hsqrt(fr__hunit(c))));
 }
 
 fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c)
@@ -34,7 +31,7 @@ fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 
 fresnel_f16 fresnel_lut_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c)
 {
     c = fr__hunit(c);
-    return fr__hunit(fr__hadd(fr__schlick_h(f0, c), fr__interp_h(table, n, fr__weight_h(c))));
+    return fr__hunit(fr__hadd(fr__schlick_h(f0, c), fr__interp_h(table, n, fr__hsqrt(c))));
 }
 
 fresnel_f16 fresnel_lut_linear_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c)

@@ -30,8 +30,39 @@ static fr__pos fr__position(uint32_t x, int n)
     return p;
 }
 
-/* w = 1 - (1 - c)^5 in Q30, or c in Q30 for linear spacing. */
-static uint32_t fr__schlick_w(int32_t c) { return FR__ONE_Q30 - fr__pow5_q30(FR__ONE_Q15 - fr__q15_arg(c)); }
+/* sqrt(c) in Q30 (fresnel_lut_*: nodes uniform in sqrt(c), as lut.c): with
+ * c the Q15 code, the exact floor(sqrt(c 2^45)). fresnel_isqrt_u32 gives
+ * the first 15 bits, the root r of c 2^15, and the remainder c 2^15 - r^2;
+ * the other 15 bits continue the same digit-by-digit method with zero digit
+ * pairs: r -> 2r + 1 when (2r + 1)^2 <= 4 (r^2 + rem), i.e. 4 rem >= 4r + 1,
+ * i.e. rem > r, leaving 4 rem - 4r - 1 = 4 (rem - r - 1) + 3. Fifteen bits
+ * would not do: the position sqrt(c) (n-1) must keep 15 fraction bits for
+ * 1024 nodes, and the floor costs at most (n-1) 2^-30 of a node (2^-20 for
+ * n <= 1024).
+ * R: c 2^15 <= 2^30, so r <= 2^15 and r^2 <= 2^30; rem <= 2r always (the
+ * remainder of a floor root) and r <= 2^30 at the end, so r <= 2^29 before
+ * the last step: 4 rem <= 4r <= 2^31 where rem <= r, and
+ * 4 (rem - r - 1) + 3 < 4r where rem > r. */
+static uint32_t fr__sqrt_w(int32_t c)
+{
+    uint32_t x = fr__q15_arg(c) << 15, r = fresnel_isqrt_u32(x), rem = x - r * r;
+    int k;
+    FR__RANGE("lut sqrt remainder", rem, 0, 2 * r);
+    for (k = 0; k < 15; k++) {
+        if (rem > r) {
+            rem = ((rem - r - 1u) << 2) + 3u;
+            r = (r << 1) + 1u;
+        } else {
+            rem <<= 2;
+            r <<= 1;
+        }
+    }
+    FR__RANGE("lut sqrt(c) in Q30", r, 0, FR__ONE_Q30);
+    FR__RANGE("lut sqrt final remainder", rem, 0, 2u * r);
+    return r;
+}
+
+/* c in Q30 for linear spacing. */
 static uint32_t fr__linear_w(int32_t c) { return fr__q15_arg(c) << 15; }
 
 /* Interpolate two values v0, v1 <= 2^15 with a 15-bit fraction: the result
@@ -112,7 +143,7 @@ static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int frac, 
 
 fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c)
 {
-    return fr__lut_u16(table, n, fr__schlick_w(c));
+    return fr__lut_u16(table, n, fr__sqrt_w(c));
 }
 fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c)
 {
@@ -120,7 +151,7 @@ fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c)
 }
 fresnel_q15 fresnel_lut_q15_u8(const uint8_t *table, int n, int32_t c)
 {
-    return fr__lut_u8(table, n, fr__schlick_w(c));
+    return fr__lut_u8(table, n, fr__sqrt_w(c));
 }
 fresnel_q15 fresnel_lut_linear_q15_u8(const uint8_t *table, int n, int32_t c)
 {
@@ -128,7 +159,7 @@ fresnel_q15 fresnel_lut_linear_q15_u8(const uint8_t *table, int n, int32_t c)
 }
 fresnel_q15 fresnel_lut_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s16(f0, table, n, frac, fr__schlick_w(c), c);
+    return fr__lut_s16(f0, table, n, frac, fr__sqrt_w(c), c);
 }
 fresnel_q15 fresnel_lut_linear_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
@@ -136,7 +167,7 @@ fresnel_q15 fresnel_lut_linear_residual_q15_s16(int32_t f0, const int16_t *table
 }
 fresnel_q15 fresnel_lut_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s8(f0, table, n, frac, fr__schlick_w(c), c);
+    return fr__lut_s8(f0, table, n, frac, fr__sqrt_w(c), c);
 }
 fresnel_q15 fresnel_lut_linear_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
@@ -146,7 +177,7 @@ fresnel_q15 fresnel_lut_linear_residual_q15_s8(int32_t f0, const int8_t *table, 
 /* RGB: n red nodes, then n green, then n blue. */
 fresnel_q15_rgb fresnel_lut_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
 {
-    uint32_t x = fr__schlick_w(c);
+    uint32_t x = fr__sqrt_w(c);
     FR__RGB_Q15(fr__lut_u16(table, n, x), fr__lut_u16(table + n, n, x), fr__lut_u16(table + 2 * n, n, x));
 }
 fresnel_q15_rgb fresnel_lut_linear_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
@@ -156,7 +187,7 @@ fresnel_q15_rgb fresnel_lut_linear_q15_u16_rgb(const uint16_t *table, int n, int
 }
 fresnel_q15_rgb fresnel_lut_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
 {
-    uint32_t x = fr__schlick_w(c);
+    uint32_t x = fr__sqrt_w(c);
     FR__RGB_Q15(fr__lut_u8(table, n, x), fr__lut_u8(table + n, n, x), fr__lut_u8(table + 2 * n, n, x));
 }
 fresnel_q15_rgb fresnel_lut_linear_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
@@ -167,7 +198,7 @@ fresnel_q15_rgb fresnel_lut_linear_q15_u8_rgb(const uint8_t *table, int n, int32
 fresnel_q15_rgb fresnel_lut_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n, int frac,
                                                  int32_t c)
 {
-    uint32_t x = fr__schlick_w(c);
+    uint32_t x = fr__sqrt_w(c);
     FR__RGB_Q15(fr__lut_s16(f0.r, table, n, frac, x, c), fr__lut_s16(f0.g, table + n, n, frac, x, c),
                 fr__lut_s16(f0.b, table + 2 * n, n, frac, x, c));
 }
@@ -181,7 +212,7 @@ fresnel_q15_rgb fresnel_lut_linear_residual_q15_s16_rgb(fresnel_q15_rgb f0, cons
 fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n, int frac,
                                                 int32_t c)
 {
-    uint32_t x = fr__schlick_w(c);
+    uint32_t x = fr__sqrt_w(c);
     FR__RGB_Q15(fr__lut_s8(f0.r, table, n, frac, x, c), fr__lut_s8(f0.g, table + n, n, frac, x, c),
                 fr__lut_s8(f0.b, table + 2 * n, n, frac, x, c));
 }

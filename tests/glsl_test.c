@@ -47,7 +47,7 @@
 #define MAXROWS 8
 #define LUT_N 32  /* nodes per channel of the test tables */
 #define LUT_W (3 * LUT_N)
-#define LUT_VARIANTS 4 /* Schlick-weight, uniform, and their residual forms */
+#define LUT_VARIANTS 4 /* uniform in sqrt(c), in c, and their residual forms */
 
 #define HIGHP_BOUND 1e-5 /* issue 6: highp against the C float runtime */
 

@@ -372,10 +372,10 @@ static void check_luts(const test_material *mat, int nmat)
     static uint8_t u8[1024 * 3];
     static int16_t s16[1024 * 3];
     static int8_t s8[1024 * 3];
-    worst w;
-    long bad = 0, rgb_mismatch = 0;
+    worst w[2];
+    long bad[2] = {0, 0}, rgb_mismatch = 0;
     int k, is, sp;
-    memset(&w, 0, sizeof w);
+    memset(w, 0, sizeof w);
     for (k = 0; k < nmat; k += 4)
         for (is = 0; is < (int)(sizeof sizes / sizeof sizes[0]); is++)
             for (sp = 0; sp < 2; sp++) {
@@ -383,10 +383,10 @@ static void check_luts(const test_material *mat, int nmat)
                 double f0d = ref_f0_from_ior(mat[k].eta, mat[k].kappa), maxr = 0.0;
                 int32_t f0 = fixed_q15(f0d), c;
                 char what[96];
-                /* nodes: uniform in w = 1 - (1-c)^5, or in c */
+                /* nodes: uniform in sqrt(c) (c = x^2), or in c */
                 for (i = 0; i < n; i++) {
                     double x = i / (double)(n - 1);
-                    double cn = sp == 0 ? 1.0 - pow(1.0 - x, 0.2) : x;
+                    double cn = sp == 0 ? x * x : x;
                     double gt = ref_conductor(mat[k].eta, mat[k].kappa, cn);
                     double res = gt - ref_schlick(f0 / 32768.0, cn);
                     u16[i] = (uint16_t)floor(gt * 32768.0 + 0.5);
@@ -413,7 +413,7 @@ static void check_luts(const test_material *mat, int nmat)
                 memcpy(s16 + n, s16, n * sizeof *s16), memcpy(s16 + 2 * n, s16, n * sizeof *s16);
                 memcpy(s8 + n, s8, n), memcpy(s8 + 2 * n, s8, n);
                 for (c = 0; c <= ONE; c++) {
-                    double cd = c / 32768.0, x = sp == 0 ? 1.0 - pow(1.0 - cd, 5.0) : cd;
+                    double cd = c / 32768.0, x = sp == 0 ? sqrt(cd) : cd;
                     double sch = ref_schlick(f0 / 32768.0, cd), ref;
                     int32_t got[4];
                     int e;
@@ -431,11 +431,11 @@ static void check_luts(const test_material *mat, int nmat)
                     for (e = 0; e < 4; e++) {
                         ref = sat_unit(ref_interp(dv[e], n, x) + (e >= 2 ? sch : 0.0));
                         double err = fabs(got[e] / 32768.0 - ref) * 32768.0;
-                        bad += got[e] < 0 || got[e] > ONE;
-                        if (err > w.err) {
-                            snprintf(what, sizeof what, "%.31s n %d %s %s", mat[k].name, n, sp ? "linear" : "schlick-w",
+                        bad[sp] += got[e] < 0 || got[e] > ONE;
+                        if (err > w[sp].err) {
+                            snprintf(what, sizeof what, "%.31s n %d %s %s", mat[k].name, n, sp ? "linear" : "sqrt",
                                      e == 0 ? "u16" : e == 1 ? "u8" : e == 2 ? "s16" : "s8");
-                            note_worst(&w, err, what, cd);
+                            note_worst(&w[sp], err, what, cd);
                         }
                     }
                     if ((c & 255) == 0) {
@@ -454,7 +454,18 @@ static void check_luts(const test_material *mat, int nmat)
                     }
                 }
             }
-    check_bound("LUT (u16 u8 s16 s8, both spacings)", &w, FRESNEL_Q15_BOUND_LUT, bad);
+    /* The position's square root is exact before its one rounding: on the
+     * two-node table {0, one} the result is sqrt(c) rounded to a code. */
+    {
+        static const uint16_t ramp[2] = {0, ONE};
+        long off = 0;
+        int32_t c;
+        for (c = 0; c <= ONE; c++)
+            off += fresnel_lut_q15_u16(ramp, 2, c) != (int32_t)floor(sqrt(c / 32768.0) * 32768.0 + 0.5);
+        CHECK("fixed LUT on {0, one} is round(sqrt(c) 2^15) for every code", off == 0, "%ld codes differ", off);
+    }
+    check_bound("LUT (u16 u8 s16 s8), nodes uniform in sqrt(c)", &w[0], FRESNEL_Q15_BOUND_LUT, bad[0]);
+    check_bound("LUT (u16 u8 s16 s8), nodes uniform in c", &w[1], FRESNEL_Q15_BOUND_LUT, bad[1]);
     CHECK("fixed LUT RGB forms equal the scalar forms", rgb_mismatch == 0, "%ld mismatches", rgb_mismatch);
 }
 

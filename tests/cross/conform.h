@@ -25,8 +25,8 @@ extern const int conform_bench_material; /* index of copper at 550 nm */
  * F0, F82, LSK a, alpha, Gulbrandsen r, g */
 extern const float conform_bench_float[8];
 
-/* One curve (gold at 550 nm, 64 nodes, nodes uniform in the Schlick weight
- * and in c) in every LUT encoding. */
+/* One curve (gold at 550 nm, 64 nodes, nodes uniform in sqrt(c) and in c)
+ * in every LUT encoding. */
 #define CONFORM_LUT_N 64
 extern const uint16_t conform_lut_u16[2][CONFORM_LUT_N];
 extern const uint8_t conform_lut_u8[2][CONFORM_LUT_N];

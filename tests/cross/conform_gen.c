@@ -63,7 +63,7 @@ int main(void)
     f0 = fixed_q15(ref_f0_from_ior(mat[k].eta, mat[k].kappa));
     for (sp = 0; sp < 2; sp++)
         for (i = 0; i < 64; i++) {
-            double x = i / 63.0, c = sp == 0 ? 1.0 - pow(1.0 - x, 0.2) : x;
+            double x = i / 63.0, c = sp == 0 ? x * x : x;
             gt[sp][i] = ref_conductor(mat[k].eta, mat[k].kappa, c);
             res[sp][i] = gt[sp][i] - ref_schlick(f0 / 32768.0, c);
             if (fabs(res[sp][i]) > maxr)

@@ -159,7 +159,7 @@ static void fuzz_prepared(fuzz_bytes *b, int32_t c)
 }
 
 /* Linear interpolation in double on the nodes lut_q15.c documents: uniform
- * in w = 1 - (1-c)^5, or in c. */
+ * in sqrt(c), or in c. */
 static double ref_interp(const double *v, int n, double x)
 {
     double pos = x * (n - 1);
@@ -189,8 +189,8 @@ static void fuzz_luts(fuzz_bytes *b, int32_t f0, int32_t c)
     double v16[LUT_MAX], v8[LUT_MAX], r16[LUT_MAX], r8[LUT_MAX];
     int n = 2 + fuzz_u8(b) % (LUT_MAX - 1), i;
     int frac16 = 15 + fuzz_u8(b) % 16, frac8 = 7 + fuzz_u8(b) % 16;
-    double cc = ref_clamp(unit_code(c), 0.0, 1.0), w = 1.0 - pow(1.0 - cc, 5.0), s = ref_schlick(unit_code(f0), cc);
-    double bound16, bound8, rbound16, rbound8;
+    double cc = ref_clamp(unit_code(c), 0.0, 1.0), w = sqrt(cc), s = ref_schlick(unit_code(f0), cc);
+    double bound16, bound8, rbound16, rbound8, step;
     char args[96];
     fresnel_q15_rgb rgb, f03;
     for (i = 0; i < 3 * n; i++) {
@@ -206,13 +206,16 @@ static void fuzz_luts(fuzz_bytes *b, int32_t f0, int32_t c)
         r16[i] = ldexp(s16[i], -frac16);
         r8[i] = ldexp(s8[i], -frac8);
     }
-    /* fresnel_fixed.h: 0.5 LSB rounding plus half a position step (2^-16 of a
-     * segment) times the steepest node-to-node change, 0.5 LSB per unit of
-     * reflectance (1.01 for a two-node table spanning [0, 1]). */
-    bound16 = 0.51 + 0.5 * lut_steepest(v16, n);
-    bound8 = 0.51 + 0.5 * lut_steepest(v8, n);
-    rbound16 = 0.51 + 0.5 * lut_steepest(r16, n);
-    rbound8 = 0.51 + 0.5 * lut_steepest(r8, n);
+    /* fresnel_fixed.h: 0.5 LSB rounding plus the position's error times the
+     * steepest node-to-node change: half a position step (2^-16 of a segment)
+     * and the floor of sqrt(c) in Q30 ((n-1) 2^-30 of a segment), that is
+     * 0.5 + (n-1) 2^-15 LSB per unit of reflectance (1.01 for a two-node
+     * table spanning [0, 1]). */
+    step = 0.5 + (n - 1) * LSB;
+    bound16 = 0.51 + step * lut_steepest(v16, n);
+    bound8 = 0.51 + step * lut_steepest(v8, n);
+    rbound16 = 0.51 + step * lut_steepest(r16, n);
+    rbound8 = 0.51 + step * lut_steepest(r8, n);
     snprintf(args, sizeof args, "n %d, f0 %d, c %d, frac %d/%d", n, (int)f0, (int)c, frac16, frac8);
     check("fresnel_lut_q15_u16", fresnel_lut_q15_u16(u16, n, c), ref_interp(v16, n, w), bound16, 1, args);
     check("fresnel_lut_linear_q15_u16", fresnel_lut_linear_q15_u16(u16, n, c), ref_interp(v16, n, cc), bound16, 1,
