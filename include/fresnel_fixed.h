@@ -55,11 +55,10 @@
  *   parameters (model_params_round_fixed): the Q15 inputs (F0, F82, F90, r,
  *   g) as the codes given, the Q16.16 ones (p, alpha) as the codes given,
  *   and eta, kappa as the double values the prepared constants were made
- *   from, so the rounding of the constants is part of the measured error;
- *   only eta moves, by less than 2^-31 relative, to the value whose
- *   eta^2 - 1 the prepared a0 holds exactly, because at a dielectric's
- *   critical angle the reflectance is as sensitive to eta as the physics
- *   makes it. F82 and generalized Schlick are also measured on grids of
+ *   from, so the rounding of the constants is part of the measured error
+ *   (eta is not adjusted: a0 and a0_lo hold eta^2 - kappa^2 - 1 to 60 bits,
+ *   enough also at a dielectric's critical angle, where the reflectance is
+ *   as sensitive to eta as the physics makes it). F82 and generalized Schlick are also measured on grids of
  *   their parameters, the LUTs on tables of 2 to 1024 nodes. Rounding the
  *   exact value to the nearest code is already 0.5 LSB. The test asserts
  *   each bound; `make test` prints the maxima. The same results, bit for
