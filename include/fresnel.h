@@ -60,6 +60,8 @@
 #ifndef FRESNEL_H
 #define FRESNEL_H
 
+#include "fresnel_config.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -102,6 +104,12 @@ extern "C" {
 typedef struct fresnel_rgb {
     float r, g, b;
 } fresnel_rgb;
+
+/* The functions below are left out by -DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT
+ * (fresnel_config.h), with their code in src/: a fixed-point-only build
+ * can compile all of src/ and contains no binary32 function. The limits,
+ * bounds and fresnel_rgb above stay, for code that only describes materials. */
+#if FRESNEL_HAS_FLOAT
 
 /* ---------------------------------------------------------------- schlick.c */
 
@@ -299,6 +307,8 @@ fresnel_rgb fresnel_lut_rgb(const float *table, int n, float c);
 fresnel_rgb fresnel_lut_linear_rgb(const float *table, int n, float c);
 fresnel_rgb fresnel_lut_residual_rgb(fresnel_rgb f0, const float *table, int n, float c);
 fresnel_rgb fresnel_lut_linear_residual_rgb(fresnel_rgb f0, const float *table, int n, float c);
+
+#endif /* FRESNEL_HAS_FLOAT */
 
 #ifdef __cplusplus
 }

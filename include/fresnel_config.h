@@ -9,10 +9,10 @@
  * when its feature is switched off, so a build can take all of src/ and still
  * contain only what it asked for.
  *
- *   FRESNEL_CFG_NO_FLOAT  no binary32 functions (fresnel.h). Honoured by the
- *                         binary32 files that include this header; the
- *                         fixed-point-only build (ports/, `make cross`) takes the
- *                         fixed-point files by name in any case.
+ *   FRESNEL_CFG_NO_FLOAT  no binary32 functions (fresnel.h's declarations,
+ *                         the other src/\*.c and src/internal.h). The
+ *                         fixed-point-only Cortex-M0 build (ports/cross.sh)
+ *                         compiles all of src/ with NO_FLOAT|NO_F16.
  *   FRESNEL_CFG_NO_F16    no _Float16 functions (fresnel_f16.h, src/\*_f16.c).
  *                         Implied when the compiler has no _Float16.
  *   FRESNEL_CFG_NO_FIXED  no fixed-point functions (fresnel_fixed.h,

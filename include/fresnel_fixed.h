@@ -6,8 +6,9 @@
  *   helper, no integer division instruction (divisions are bit-by-bit), no
  *   int64 anywhere. For microcontrollers without an FPU (Cortex-M0, RV32IMC).
  *   Sources: src/\*_q15.c and src/fixed_math.c. This header does not need
- *   fresnel.h; a fixed-point-only build compiles only those files
- *   (see fresnel_config.h, ports/README.md).
+ *   fresnel.h; a fixed-point-only build compiles those files, or all of src/
+ *   with -DFRESNEL_CONFIG='FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16', which
+ *   leaves the others empty (see fresnel_config.h, ports/README.md).
  *
  * USE
  *     #include "fresnel_fixed.h"

@@ -18,6 +18,10 @@ BUILD=${BUILD:-build}
 OUT=$BUILD/cross
 HOSTCC=${HOSTCC:-cc}
 W="-std=c99 -Wall -Wextra -Wpedantic -Werror"
+# The fixed-point-only builds take all of src/ and let the configuration
+# leave the binary32 and binary16 files empty (fresnel_config.h), as a
+# firmware project that vendors src/ would.
+ALL_SRC=$(ls src/*.c)
 FIXED_SRC="src/fixed_math.c $(ls src/*_q15.c)"
 F16_SRC=$(ls src/*_f16.c)
 F32_SRC=$(ls src/*.c | grep -v -e '_q15\.c$' -e '_f16\.c$' -e 'fixed_math\.c$')
@@ -64,13 +68,13 @@ build_prog() { # target prog stride
     target "$1"
     mkdir -p "$OUT/$1"
     $CC $W $CF $FIXED_ONLY -DCONFORM_STRIDE="$3" $INC $LD tests/cross/$2.c "$OUT/conform_data.c" $PORT_COMMON $PORT \
-        $FIXED_SRC -lgcc -o "$OUT/$1/$2_$3.elf"
+        $ALL_SRC -lgcc -o "$OUT/$1/$2_$3.elf"
 }
 
 host_prog() { # prog stride -> $OUT/host/<prog>_<stride>
     mkdir -p "$OUT/host"
-    $HOSTCC $W -O2 -DCONFORM_STRIDE="$2" $INC tests/cross/$1.c "$OUT/conform_data.c" ports/common/port_print.c \
-        ports/host/port.c $FIXED_SRC -o "$OUT/host/$1_$2"
+    $HOSTCC $W -O2 $FIXED_ONLY -DCONFORM_STRIDE="$2" $INC tests/cross/$1.c "$OUT/conform_data.c" \
+        ports/common/port_print.c ports/host/port.c $ALL_SRC -o "$OUT/host/$1_$2"
 }
 
 cmd_conform() { # target stride: PASS/FAIL lines
@@ -104,17 +108,28 @@ sym_size() { # elf symbol -> size in bytes (decimal)
     echo $((0x${h:-0}))
 }
 
-# The fixed-point-only Cortex-M0 build: the library, the conformance
-# firmware and a firmware that uses Schlick for one material.
+# The fixed-point-only Cortex-M0 build: the library (every file of src/,
+# compiled with FIXED_ONLY), the conformance firmware and a firmware that
+# uses Schlick for one material.
 cmd_nm() {
     target m0
     d=$OUT/m0/fixed-only
     mkdir -p "$d"
     rm -f "$d"/*.o "$d/libfresnel_fixed.a"
-    for f in $FIXED_SRC; do
+    for f in $ALL_SRC; do
         $CC $W $CF $FIXED_ONLY -Iinclude -c "$f" -o "$d/$(basename "$f" .c).o" || { echo "FAIL cross m0: $f does not build"; return; }
     done
     $AR rcs "$d/libfresnel_fixed.a" "$d"/*.o
+    # The configuration, not the file list, keeps binary32 and binary16 out:
+    # every global the library defines is a fixed-point one.
+    other=$($NMT --defined-only "$d/libfresnel_fixed.a" | awk 'NF == 3 && $2 ~ /^[A-Z]$/ { print $3 }' |
+        grep -v -e '_q15' -e '^fr__' -e '^fresnel_isqrt_u32$' -e '^fresnel_udiv_frac_u32$' -e '^fresnel_recip_q16$' | sort -u | tr '\n' ' ')
+    q15=$($NMT --defined-only "$d/libfresnel_fixed.a" | awk '$3 == "fresnel_schlick_q15" { print $3 }')
+    if [ -z "$other" ] && [ -n "$q15" ]; then
+        echo "PASS cross m0: all $(echo $ALL_SRC | wc -w) files of src/ with $FIXED_ONLY define only fixed-point symbols (fresnel_schlick_q15, no fresnel_schlick)"
+    else
+        echo "FAIL cross m0: the fixed-only build of src/ defines ${other:-no fresnel_schlick_q15}"
+    fi
     $CC $W $CF $FIXED_ONLY $INC $LD tests/cross/schlick_only.c $PORT_COMMON $PORT "$d/libfresnel_fixed.a" -lgcc \
         -o "$d/schlick_only.elf" 2>"$d/err" || { echo "FAIL cross m0: schlick_only: $(head -3 "$d/err")"; return; }
     [ -f "$OUT/m0/conform_1.elf" ] || build_prog m0 conform 1 || { echo "FAIL cross m0: conformance firmware does not build"; return; }

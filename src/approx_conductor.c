@@ -2,6 +2,8 @@
  * and Metzgar. */
 #include "internal.h"
 
+#if FRESNEL_HAS_FLOAT
+
 float fresnel_approx_conductor(float n, float k, float c)
 {
     float kc, rs, rp, nk2;
@@ -22,3 +24,7 @@ fresnel_rgb fresnel_approx_conductor_rgb(fresnel_rgb n, fresnel_rgb k, float c)
     FR__RGB(fresnel_approx_conductor(n.r, k.r, c), fresnel_approx_conductor(n.g, k.g, c),
             fresnel_approx_conductor(n.b, k.b, c));
 }
+
+#else
+typedef int fr__approx_conductor_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+#endif

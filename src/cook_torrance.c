@@ -1,6 +1,8 @@
 /* Cook and Torrance's colour interpolation, in Hoffman's modified form [Hof20]. */
 #include "internal.h"
 
+#if FRESNEL_HAS_FLOAT
+
 float fresnel_cook_torrance(float f0, float eta, float kappa, float c)
 {
     float d, t;
@@ -29,3 +31,7 @@ fresnel_rgb fresnel_cook_torrance_rgb(fresnel_rgb f0, float eta, float kappa, fl
     FR__RGB(fr__unit(f0.r + (1.0f - f0.r) * t), fr__unit(f0.g + (1.0f - f0.g) * t),
             fr__unit(f0.b + (1.0f - f0.b) * t));
 }
+
+#else
+typedef int fr__cook_torrance_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+#endif

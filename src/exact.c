@@ -7,8 +7,10 @@
  * half its digits in binary32). Here a = u and b = v are the real and
  * imaginary parts of sqrt((eta + i kappa)^2 - sin^2), and the smaller of the
  * two is taken from u v = eta kappa instead. */
-#include <math.h>
 #include "internal.h"
+
+#if FRESNEL_HAS_FLOAT
+#include <math.h>
 
 /* u + iv = sqrt((eta + i kappa)^2 - sin^2 theta) on the decaying branch, and
  * m = u^2 + v^2. */
@@ -104,3 +106,7 @@ float fresnel_dielectric(float eta, float c)
     rp = (e2c - w) / (e2c + w);
     return fr__unit(0.5f * (rs * rs + rp * rp));
 }
+
+#else
+typedef int fr__exact_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+#endif

@@ -8,11 +8,13 @@
 #ifndef FRESNEL_F16_INTERNAL_H
 #define FRESNEL_F16_INTERNAL_H
 
-#include <math.h>
-
 #include "fresnel_f16.h"
 
+/* FRESNEL_CFG_NO_F16: nothing, not even <math.h>, which a freestanding
+ * fixed-point-only toolchain may lack. */
 #if FRESNEL_HAS_F16
+
+#include <math.h>
 
 typedef fresnel_f16 fr__h;
 

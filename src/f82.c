@@ -2,6 +2,8 @@
  * reflectance at c = 1/7 [Hof20]. */
 #include "internal.h"
 
+#if FRESNEL_HAS_FLOAT
+
 float fresnel_f82(float f0, float f82, float c)
 {
     float x, x5, a;
@@ -19,3 +21,7 @@ fresnel_rgb fresnel_f82_rgb(fresnel_rgb f0, fresnel_rgb f82, float c)
 {
     FR__RGB(fresnel_f82(f0.r, f82.r, c), fresnel_f82(f0.g, f82.g, c), fresnel_f82(f0.b, f82.b, c));
 }
+
+#else
+typedef int fr__f82_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+#endif

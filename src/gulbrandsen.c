@@ -1,6 +1,8 @@
 /* Gulbrandsen's reflectivity/edge-tint parameterisation [Gul14]. */
-#include <math.h>
 #include "internal.h"
+
+#if FRESNEL_HAS_FLOAT
+#include <math.h>
 
 fresnel_nk fresnel_gulbrandsen_nk(float r, float g)
 {
@@ -51,3 +53,7 @@ fresnel_rgb fresnel_gulbrandsen_rgb(fresnel_rgb r, fresnel_rgb g, float c)
     FR__RGB(fresnel_gulbrandsen(r.r, g.r, c), fresnel_gulbrandsen(r.g, g.g, c),
             fresnel_gulbrandsen(r.b, g.b, c));
 }
+
+#else
+typedef int fr__gulbrandsen_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+#endif

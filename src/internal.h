@@ -2,11 +2,15 @@
 #ifndef FRESNEL_INTERNAL_H
 #define FRESNEL_INTERNAL_H
 
+#include "fresnel.h"
+
+/* FRESNEL_CFG_NO_FLOAT: nothing here, so that a fixed-point-only build of
+ * all of src/ does not need <math.h> (freestanding toolchains without libm). */
+#if FRESNEL_HAS_FLOAT
+
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
-
-#include "fresnel.h"
 
 /* The error-free squares below rely on the IEEE binary32 layout. */
 typedef char fr__binary32_check[(FLT_MANT_DIG == 24 && FLT_MAX_EXP == 128) ? 1 : -1];
@@ -89,4 +93,6 @@ static inline float fr__pow_one_minus(float c, float p)
 /* 1 - fresnel_conductor(eta, kappa, c), computed directly so that it keeps
  * its relative precision when the reflectance is close to 1 (exact.c). */
 float fr__conductor_transmittance(float eta, float kappa, float c);
+
+#endif /* FRESNEL_HAS_FLOAT */
 #endif

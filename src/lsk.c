@@ -1,7 +1,9 @@
 /* Lazanyi and Szirmay-Kalos: Schlick rescaled for kappa, and its error
  * compensation -a c (1-c)^alpha [LS05]. */
-#include <math.h>
 #include "internal.h"
+
+#if FRESNEL_HAS_FLOAT
+#include <math.h>
 
 float fresnel_lsk(float n, float k, float c)
 {
@@ -37,3 +39,7 @@ fresnel_rgb fresnel_lsk_comp_rgb(fresnel_rgb n, fresnel_rgb k, fresnel_rgb a, fr
     FR__RGB(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
             fresnel_lsk_comp(n.b, k.b, a.b, alpha.b, c));
 }
+
+#else
+typedef int fr__lsk_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+#endif

@@ -1,7 +1,8 @@
 /* Lookup tables of reflectance curves, interpolated linearly (see fresnel.h). */
-#include <math.h>
-
 #include "internal.h"
+
+#if FRESNEL_HAS_FLOAT
+#include <math.h>
 
 /* Interpolate table at position x in [0, 1] along its n nodes. */
 static float fr__interp(const float *table, int n, float x)
@@ -60,3 +61,7 @@ fresnel_rgb fresnel_lut_linear_residual_rgb(fresnel_rgb f0, const float *table, 
             fresnel_lut_linear_residual(f0.g, table + n, n, c),
             fresnel_lut_linear_residual(f0.b, table + 2 * n, n, c));
 }
+
+#else
+typedef int fr__lut_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+#endif

@@ -1,6 +1,8 @@
 /* Schlick's approximation and the F0 helpers that go with it [Sch94, Hof20]. */
-#include <math.h>
 #include "internal.h"
+
+#if FRESNEL_HAS_FLOAT
+#include <math.h>
 
 float fresnel_schlick(float f0, float c)
 {
@@ -81,3 +83,7 @@ float fresnel_f0_from_ior(float eta, float kappa)
     den = (eta + 1.0f) * (eta + 1.0f) + k2;
     return fr__unit(num / den);
 }
+
+#else
+typedef int fr__schlick_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+#endif

@@ -45,4 +45,35 @@ for cc in gcc clang; do
     else
         echo "FAIL $cc: stripped files still define:$syms $(head -3 "$t/err2" 2>/dev/null)"
     fi
+    # FRESNEL_CFG_NO_FLOAT strips the binary32 API and code: all of src/
+    # builds (warning-free, no empty translation unit) and defines the
+    # fixed-point and binary16 functions only
+    cat >"$t/float.c" <<'C'
+#include "fresnel.h"
+float use(float c) { return fresnel_schlick(0.04f, c); }
+C
+    if $cc $W -DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT -c "$t/float.c" -o "$t/o.o" 2>"$t/err"; then
+        echo "FAIL $cc: FRESNEL_CFG_NO_FLOAT leaves fresnel_schlick declared"
+    elif grep -q 'fresnel_schlick' "$t/err"; then
+        echo "PASS $cc: FRESNEL_CFG_NO_FLOAT hides fresnel_schlick (fresnel.h)"
+    else
+        echo "FAIL $cc: FRESNEL_CFG_NO_FLOAT failed without naming fresnel_schlick: $(head -3 "$t/err")"
+    fi
+    defs="" errs=""
+    : >"$t/err3"
+    for f in src/*.c; do
+        if $cc $W -DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT -c "$f" -o "$t/s.o" 2>>"$t/err3"; then
+            defs="$defs $(nm --defined-only "$t/s.o" | awk '$2 ~ /^[TDRB]$/ { print $3 }' | tr '\n' ' ')"
+        else
+            errs="$errs $f"
+        fi
+    done
+    float_defs=$(printf '%s\n' $defs | grep '^fresnel_' | grep -v -e '_q15' -e '_f16$' \
+        -e '^fresnel_isqrt_u32$' -e '^fresnel_udiv_frac_u32$' -e '^fresnel_recip_q16$' | tr '\n' ' ')
+    if [ -z "$errs" ] && [ -z "$float_defs" ] && printf '%s\n' $defs | grep -qx fresnel_schlick_q15 &&
+        ! printf '%s\n' $defs | grep -qx fresnel_schlick; then
+        echo "PASS $cc: FRESNEL_CFG_NO_FLOAT on all of src/: fresnel_schlick_q15 defined, no binary32 fresnel_* symbol"
+    else
+        echo "FAIL $cc: FRESNEL_CFG_NO_FLOAT on src/: errors in:${errs:- none}; binary32 symbols: ${float_defs:-none} $(head -3 "$t/err3")"
+    fi
 done
