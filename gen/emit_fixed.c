@@ -84,15 +84,11 @@ static void emit_lsk3(FILE *f, const char *prefix, const char *name, const mater
 static int emit_lut_q15(FILE *f, const char *prefix, const char *model, const material_params *p,
                         const spectrum *s, const gen_context *g, lut_spacing spacing)
 {
-    int residual = 0, n = scene_model_lut_size(model, &residual), i, frac = 15;
-    double *t = malloc(3 * (size_t)n * sizeof *t), big = 0.0;
+    int residual, n, i, frac = 15;
     char name[32];
+    double big = 0.0, *t = emit_lut_table(model, p, s, g, spacing, &n, &residual, name);
     if (!t)
         return cli_error("fresnel gen", "out of memory");
-    encode_lut(s, g, p, spacing, n, residual, t);
-    for (i = 0; model[i] && i < (int)sizeof name - 1; i++)
-        name[i] = model[i] == '-' ? '_' : model[i];
-    name[i] = '\0';
     if (residual) {
         /* as many fraction bits as int16 holds for the largest residual */
         for (i = 0; i < 3 * n; i++)

@@ -61,18 +61,29 @@ static void emit_float(FILE *f, const char *prefix, const char *name, double v, 
     fputs(";\n", f);
 }
 
+double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
+                       lut_spacing spacing, int *n, int *residual, char name[32])
+{
+    double *t;
+    int i;
+    *n = scene_model_lut_size(model, residual);
+    if (!(t = malloc(3 * (size_t)*n * sizeof *t)))
+        return NULL;
+    encode_lut(s, g, p, spacing, *n, *residual, t);
+    for (i = 0; model[i] && i < 31; i++)
+        name[i] = model[i] == '-' ? '_' : model[i];
+    name[i] = '\0';
+    return t;
+}
+
 static int emit_lut(FILE *f, const char *prefix, const char *model, const material_params *p, const spectrum *s,
                     const gen_context *g, lut_spacing spacing)
 {
-    int residual = 0, n = scene_model_lut_size(model, &residual), i;
-    double *t = malloc(3 * (size_t)n * sizeof *t);
+    int residual, n, i;
     char name[32];
+    double *t = emit_lut_table(model, p, s, g, spacing, &n, &residual, name);
     if (!t)
         return cli_error("fresnel gen", "out of memory");
-    encode_lut(s, g, p, spacing, n, residual, t);
-    for (i = 0; model[i] && i < (int)sizeof name - 1; i++)
-        name[i] = model[i] == '-' ? '_' : model[i];
-    name[i] = '\0';
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s.\n", model, n,
             spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal");
     if (glsl) {
