@@ -20,9 +20,9 @@ typedef struct emit_input {
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
 /* A LUT model's table for one material (3n values, malloc'd; NULL when out
  * of memory) and the model's name as a C identifier part (lut16-residual ->
- * lut16_residual) in name[32]; *n and *residual describe the table. */
+ * lut16_residual) in name[32]; *n and *form describe the table. */
 double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
-                       lut_spacing spacing, int *n, int *residual, char name[32]);
+                       lut_spacing spacing, int *n, lut_form *form, char name[32]);
 
 /* One material's Q1.15 constants and tables (emit_fixed.c); prefix is
  * fresnel_<scene>_<material>. */

@@ -85,10 +85,12 @@ static int emit_lut_q15(FILE *f, const char *prefix, const char *model, const ma
                         const spectrum *s, const gen_context *g, lut_spacing spacing)
 {
     int residual, n, i, frac = 15;
+    lut_form form;
     char name[32];
-    double big = 0.0, *t = emit_lut_table(model, p, s, g, spacing, &n, &residual, name);
+    double big = 0.0, *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
     if (!t)
         return cli_error("fresnel gen", "out of memory");
+    residual = form == LUT_RESIDUAL;
     if (residual) {
         /* as many fraction bits as int16 holds for the largest residual */
         for (i = 0; i < 3 * n; i++)
@@ -106,7 +108,7 @@ static int emit_lut_q15(FILE *f, const char *prefix, const char *model, const ma
         fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1). Evaluate with\n"
                    " * fresnel_lut_%sq15_u16_rgb(table, %d, c). */\n"
                    "static const uint16_t %s_%s_q15[%d] FRESNEL_GEN_UNUSED = {",
-                model, spacing == LUT_UNIFORM ? "linear_" : "", n, prefix, name, 3 * n);
+                model, form == LUT_CUBIC ? "cubic_" : (spacing == LUT_UNIFORM ? "linear_" : ""), n, prefix, name, 3 * n);
     }
     for (i = 0; i < 3 * n; i++)
         fprintf(f, "%s%ld%s", i % 12 == 0 ? "\n    " : " ",
@@ -123,8 +125,8 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
     lut_spacing spacing = strcmp(sc->lut_spacing, "uniform") ? LUT_GRAZING : LUT_UNIFORM;
     int m, residual_lut = 0;
     for (m = 0; m < sc->model_count; m++) {
-        int res = 0;
-        if (scene_model_lut_size(sc->models[m], &res) && res)
+        int form = LUT_PLAIN;
+        if (scene_model_lut_size(sc->models[m], &form) && form == LUT_RESIDUAL)
             residual_lut = 1;
     }
     if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") || residual_lut)

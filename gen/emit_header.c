@@ -13,9 +13,9 @@
 
 static int scene_has_residual_lut(const scene *sc)
 {
-    int i, residual;
+    int i, form;
     for (i = 0; i < sc->model_count; i++)
-        if (scene_model_lut_size(sc->models[i], &residual) && residual)
+        if (scene_model_lut_size(sc->models[i], &form) && form == LUT_RESIDUAL)
             return 1;
     return 0;
 }
@@ -62,14 +62,18 @@ static void emit_float(FILE *f, const char *prefix, const char *name, double v, 
 }
 
 double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
-                       lut_spacing spacing, int *n, int *residual, char name[32])
+                       lut_spacing spacing, int *n, lut_form *form, char name[32])
 {
     double *t;
-    int i;
-    *n = scene_model_lut_size(model, residual);
+    int i, f = LUT_PLAIN;
+    *n = scene_model_lut_size(model, &f);
+    *form = (lut_form)f;
     if (!(t = malloc(3 * (size_t)*n * sizeof *t)))
         return NULL;
-    encode_lut(s, g, p, spacing, *n, *residual, t);
+    if (encode_lut(s, g, p, spacing, *n, *form, t)) {
+        free(t);
+        return NULL;
+    }
     for (i = 0; model[i] && i < 31; i++)
         name[i] = model[i] == '-' ? '_' : model[i];
     name[i] = '\0';
@@ -79,22 +83,27 @@ double *emit_lut_table(const char *model, const material_params *p, const spectr
 static int emit_lut(FILE *f, const char *prefix, const char *model, const material_params *p, const spectrum *s,
                     const gen_context *g, lut_spacing spacing)
 {
-    int residual, n, i;
+    int n, i, residual;
+    lut_form form;
     char name[32];
-    double *t = emit_lut_table(model, p, s, g, spacing, &n, &residual, name);
+    double *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
+    const char *suffix = form == LUT_RESIDUAL ? "_residual" : (form == LUT_CUBIC ? "_cubic" : "");
     if (!t)
         return cli_error("fresnel gen", "out of memory");
-    fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s.\n", model, n,
-            spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal");
+    residual = form == LUT_RESIDUAL;
+    fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
+               " * fitted to the ground truth through %s interpolation.\n",
+            model, n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
+            form == LUT_CUBIC ? "Catmull-Rom" : "linear");
     if (glsl) {
         fprintf(f, " * Evaluate with FRESNEL_%s%s_ARRAY_RGB(%s%s_%s, %d, c) (GLSL ES 3.00, GLSL 3.30; for\n"
                    " * ES 1.00 upload the same values as a texture strip, see fresnel.glsl). */\n",
-                spacing == LUT_UNIFORM ? "LUT_LINEAR" : "LUT", residual ? "_RESIDUAL" : "", residual ? "f0, " : "",
-                prefix, name, n);
+                spacing == LUT_UNIFORM ? "LUT_LINEAR" : "LUT", residual ? "_RESIDUAL" : (form == LUT_CUBIC ? "_CUBIC" : ""),
+                residual ? "f0, " : "", prefix, name, n);
         fprintf(f, "const FRESNEL_HIGHP float %s_%s[%d] = float[%d](", prefix, name, 3 * n, 3 * n);
     } else {
         fprintf(f, " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n", spacing == LUT_UNIFORM ? "lut_linear" : "lut",
-                residual ? "_residual" : "", residual ? "f0, " : "", n);
+                suffix, residual ? "f0, " : "", n);
         fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
     }
     for (i = 0; i < 3 * n; i++) {

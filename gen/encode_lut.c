@@ -1,9 +1,20 @@
-/* Step 7: reflectance curves sampled at the LUT nodes the runtime expects
- * (include/fresnel.h, src/lut.c). */
+/* Step 7: the LUT tables the runtime interpolates (include/fresnel.h,
+ * src/lut.c). The node values are not the curve sampled at the nodes: they
+ * are the least-squares fit, through the runtime's own interpolation, of the
+ * clamped ground truth at every 0.05 degrees from 0 to 90 (the report
+ * measures every degree). Sampling at the nodes puts all of the error between
+ * them; the fit spreads it, and for 16 nodes on Hoffman's metals it lowers
+ * the worst max CIEDE2000 by about a third (linear) and lets a Catmull-Rom
+ * cubic reach 0.02 (`fresnel report`, the LUT section). */
 #include <math.h>
+#include <stdlib.h>
 
 #include "generator.h"
 #include "reference.h"
+
+#define FIT_STEPS 1800 /* samples at theta = k 90/FIT_STEPS degrees */
+
+static const double half_pi = 1.57079632679489661923;
 
 double lut_node_cos(lut_spacing spacing, int i, int n)
 {
@@ -11,14 +22,145 @@ double lut_node_cos(lut_spacing spacing, int i, int n)
     return spacing == LUT_UNIFORM ? w : w * w; /* grazing: uniform in sqrt(c) */
 }
 
-void encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing,
-                int n, int residual, double *table)
+/* The runtime's interpolation as weights on (at most) four nodes: idx[k]
+ * gets weight w[k]. Linear uses two; Catmull-Rom four, the outer ones
+ * clamped to the table's ends (src/lut.c). */
+static void lut_weights(lut_spacing spacing, lut_form form, int n, double c, int idx[4], double w[4])
 {
-    int i, ch;
-    for (i = 0; i < n; i++) {
-        double c = lut_node_cos(spacing, i, n), rgb[3];
-        ground_truth_clamped(s, g, p->n1, c, rgb);
-        for (ch = 0; ch < 3; ch++)
-            table[ch * n + i] = residual ? rgb[ch] - ref_schlick(p->f0[ch], c) : rgb[ch];
+    double pos = (spacing == LUT_UNIFORM ? c : sqrt(c)) * (n - 1), t;
+    int j = (int)pos, k;
+    if (j >= n - 1)
+        j = n - 2;
+    t = pos - j;
+    for (k = 0; k < 4; k++) {
+        int q = j - 1 + k;
+        idx[k] = q < 0 ? 0 : (q > n - 1 ? n - 1 : q);
     }
+    if (form == LUT_CUBIC) {
+        w[0] = 0.5 * t * (-1.0 + t * (2.0 - t));
+        w[1] = 1.0 + t * t * (-2.5 + 1.5 * t);
+        w[2] = 0.5 * t * (1.0 + t * (4.0 - 3.0 * t));
+        w[3] = 0.5 * t * t * (t - 1.0);
+    } else {
+        w[0] = w[3] = 0.0;
+        w[1] = 1.0 - t;
+        w[2] = t;
+    }
+}
+
+/* Solve the symmetric positive definite a x = b (n x n, row-major) in place
+ * by Cholesky; b becomes x. */
+static void solve_spd(double *a, double *b, int n)
+{
+    int i, j, k;
+    for (j = 0; j < n; j++) {
+        double d = a[j * n + j];
+        for (k = 0; k < j; k++)
+            d -= a[j * n + k] * a[j * n + k];
+        d = sqrt(d > 0.0 ? d : 1e-300);
+        a[j * n + j] = d;
+        for (i = j + 1; i < n; i++) {
+            double s = a[i * n + j];
+            for (k = 0; k < j; k++)
+                s -= a[i * n + k] * a[j * n + k];
+            a[i * n + j] = s / d;
+        }
+    }
+    for (i = 0; i < n; i++) {
+        for (k = 0; k < i; k++)
+            b[i] -= a[i * n + k] * b[k];
+        b[i] /= a[i * n + i];
+    }
+    for (i = n - 1; i >= 0; i--) {
+        for (k = i + 1; k < n; k++)
+            b[i] -= a[k * n + i] * b[k];
+        b[i] /= a[i * n + i];
+    }
+}
+
+/* One sample of the fit: its weights and the three channels' targets. */
+typedef struct fit_sample {
+    int idx[4];
+    double w[4], y[3];
+} fit_sample;
+
+static void sample_at(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing,
+                      lut_form form, int n, double c, fit_sample *out)
+{
+    int ch;
+    ground_truth_clamped(s, g, p->n1, c, out->y);
+    for (ch = 0; ch < 3; ch++)
+        if (form == LUT_RESIDUAL)
+            out->y[ch] -= ref_schlick(p->f0[ch], c);
+    lut_weights(spacing, form, n, c, out->idx, out->w);
+}
+
+int encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing, int n,
+               lut_form form, double *table)
+{
+    /* The theta grid, plus every node itself, so that each node has a
+     * sample of its own however many nodes crowd between two angles. */
+    int count = FIT_STEPS + 1 + n, k, ch, a, b;
+    fit_sample *sm = malloc((size_t)count * sizeof *sm);
+    double *ata = malloc((size_t)n * n * sizeof *ata), *atb = malloc((size_t)n * sizeof *atb);
+    double *fixed = malloc((size_t)n * sizeof *fixed); /* held node values; < 0: free */
+    if (!sm || !ata || !atb || !fixed) {
+        free(sm);
+        free(ata);
+        free(atb);
+        free(fixed);
+        return -1;
+    }
+    for (k = 0; k <= FIT_STEPS; k++) {
+        double c = k == FIT_STEPS ? 0.0 : cos(k * half_pi / FIT_STEPS);
+        sample_at(s, g, p, spacing, form, n, c, &sm[k]);
+    }
+    for (k = 0; k < n; k++)
+        sample_at(s, g, p, spacing, form, n, lut_node_cos(spacing, k, n), &sm[FIT_STEPS + 1 + k]);
+    for (ch = 0; ch < 3; ch++) {
+        /* A curve's nodes must stay reflectances: the fit overshoots 1 at
+         * grazing incidence for some metals. Nodes that leave [0, 1] are
+         * held at the bound and the rest refitted, until none leaves. */
+        int held = 0, again = 1;
+        for (k = 0; k < n; k++)
+            fixed[k] = -1.0;
+        while (again) {
+            for (k = 0; k < n * n; k++)
+                ata[k] = 0.0;
+            for (k = 0; k < n; k++) {
+                atb[k] = fixed[k] >= 0.0 ? fixed[k] : 0.0;
+                if (fixed[k] >= 0.0)
+                    ata[k * n + k] = 1.0;
+            }
+            for (k = 0; k < count; k++) {
+                double y = sm[k].y[ch];
+                for (b = 0; b < 4; b++)
+                    if (fixed[sm[k].idx[b]] >= 0.0)
+                        y -= sm[k].w[b] * fixed[sm[k].idx[b]];
+                for (a = 0; a < 4; a++) {
+                    if (fixed[sm[k].idx[a]] >= 0.0)
+                        continue;
+                    atb[sm[k].idx[a]] += sm[k].w[a] * y;
+                    for (b = 0; b < 4; b++)
+                        if (fixed[sm[k].idx[b]] < 0.0)
+                            ata[sm[k].idx[a] * n + sm[k].idx[b]] += sm[k].w[a] * sm[k].w[b];
+                }
+            }
+            solve_spd(ata, atb, n);
+            again = 0;
+            for (k = 0; k < n && form != LUT_RESIDUAL && held < n; k++)
+                if (fixed[k] < 0.0 && (atb[k] < 0.0 || atb[k] > 1.0)) {
+                    fixed[k] = atb[k] < 0.0 ? 0.0 : 1.0;
+                    held++;
+                    again = 1;
+                }
+        }
+        for (k = 0; k < n; k++)
+            table[ch * n + k] = atb[k];
+    }
+    free(sm);
+    free(ata);
+    free(atb);
+    free(fixed);
+    return 0;
 }

@@ -4,7 +4,7 @@
  *
  *   derive_parameters.c   F0, F82, RGB eta/kappa (Gaussian window and fit),
  *                         LSK a/alpha, Gulbrandsen r/g, Cook-Torrance IOR
- *   encode_lut.c          reflectance curves sampled at LUT nodes
+ *   encode_lut.c          LUT node values fitted to the ground truth
  *   emit_header.c         the scene's const arrays, nothing else
  *
  * OUT-OF-GAMUT POLICY. A material's spectral ground truth can leave [0, 1]
@@ -66,9 +66,16 @@ int derive_parameters(const gen_context *g, const char *id, double sigma, double
 typedef enum lut_spacing { LUT_GRAZING, LUT_UNIFORM } lut_spacing;
 /* cos theta of node i of n. */
 double lut_node_cos(lut_spacing spacing, int i, int n);
-/* table[ch * n + i]: clamped ground truth at node i, minus Schlick(F0) when
- * residual. */
-void encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing,
-                int n, int residual, double *table);
+/* The runtime's LUT forms: linear interpolation of the curve (fresnel_lut),
+ * of its residual from Schlick(F0) (fresnel_lut_residual), Catmull-Rom of
+ * the curve (fresnel_lut_cubic). */
+typedef enum lut_form { LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC } lut_form;
+/* table[ch * n + i]: node i of channel ch, least-squares fitted through the
+ * form's interpolation to the clamped ground truth (minus Schlick(F0) for
+ * LUT_RESIDUAL) at theta every 0.05 degrees and at the nodes; curve nodes
+ * that would leave [0, 1] are held at the bound and the others refitted.
+ * 0, or -1 when out of memory. */
+int encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing, int n,
+               lut_form form, double *table);
 
 #endif

@@ -14,7 +14,8 @@
 #include "report.h"
 #include "scene.h"
 
-enum kind { K_SCHLICK, K_LSK, K_LSK_COMP, K_F82, K_GULB, K_CT, K_EXACT, K_APPROX, K_LUT, K_LUT_LIN, K_LUT_RES, K_LUT_LIN_RES };
+enum kind { K_SCHLICK, K_LSK, K_LSK_COMP, K_F82, K_GULB, K_CT, K_EXACT, K_APPROX, K_LUT, K_LUT_LIN, K_LUT_RES, K_LUT_LIN_RES,
+            K_LUT_CUBIC };
 
 struct report_prepared {
     enum kind kind;
@@ -62,9 +63,11 @@ report_prepared *report_prepare(const scene_model *m, const material_params *p)
     int ch, i;
     if (!q)
         return NULL;
-    if (m->lut_n)
-        q->kind = m->spacing == LUT_UNIFORM ? (m->residual ? K_LUT_LIN_RES : K_LUT_LIN)
-                                            : (m->residual ? K_LUT_RES : K_LUT);
+    if (m->lut_n && m->form == LUT_CUBIC)
+        q->kind = K_LUT_CUBIC; /* scene_load admits it with grazing spacing only */
+    else if (m->lut_n)
+        q->kind = m->spacing == LUT_UNIFORM ? (m->form == LUT_RESIDUAL ? K_LUT_LIN_RES : K_LUT_LIN)
+                                            : (m->form == LUT_RESIDUAL ? K_LUT_RES : K_LUT);
     else if (!strcmp(m->name, "schlick"))
         q->kind = K_SCHLICK;
     else if (!strcmp(m->name, "lsk"))
@@ -183,6 +186,7 @@ static fresnel_rgb eval_f32_rgb(const report_prepared *q, float c)
     case K_LUT: return fresnel_lut_rgb(q->table, q->n, c);
     case K_LUT_LIN: return fresnel_lut_linear_rgb(q->table, q->n, c);
     case K_LUT_RES: return fresnel_lut_residual_rgb(q->f0, q->table, q->n, c);
+    case K_LUT_CUBIC: return fresnel_lut_cubic_rgb(q->table, q->n, c);
     default: return fresnel_lut_linear_residual_rgb(q->f0, q->table, q->n, c);
     }
 }
@@ -203,6 +207,7 @@ static fresnel_q15_rgb eval_q15_rgb(const report_prepared *q, int32_t c)
     case K_LUT: return fresnel_lut_q15_u16_rgb(q->q_table, q->n, c);
     case K_LUT_LIN: return fresnel_lut_linear_q15_u16_rgb(q->q_table, q->n, c);
     case K_LUT_RES: return fresnel_lut_residual_q15_s16_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
+    case K_LUT_CUBIC: return fresnel_lut_cubic_q15_u16_rgb(q->q_table, q->n, c);
     default: return fresnel_lut_linear_residual_q15_s16_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
     }
     return o;
@@ -224,6 +229,7 @@ static fresnel_f16 eval_f16_channel(const report_prepared *q, int ch, fresnel_f1
     case K_LUT: return fresnel_lut_f16(q->h_table + ch * q->n, q->n, c);
     case K_LUT_LIN: return fresnel_lut_linear_f16(q->h_table + ch * q->n, q->n, c);
     case K_LUT_RES: return fresnel_lut_residual_f16(q->h_f0[ch], q->h_table + ch * q->n, q->n, c);
+    case K_LUT_CUBIC: return fresnel_lut_cubic_f16(q->h_table + ch * q->n, q->n, c);
     default: return fresnel_lut_linear_residual_f16(q->h_f0[ch], q->h_table + ch * q->n, q->n, c);
     }
 }
@@ -297,15 +303,18 @@ BATCHES(K_LUT)
 BATCHES(K_LUT_LIN)
 BATCHES(K_LUT_RES)
 BATCHES(K_LUT_LIN_RES)
+BATCHES(K_LUT_CUBIC)
 
 static const bench_batch f32_batches[] = {batch_f32_K_SCHLICK, batch_f32_K_LSK,     batch_f32_K_LSK_COMP,
                                           batch_f32_K_F82,     batch_f32_K_GULB,    batch_f32_K_CT,
                                           batch_f32_K_EXACT,   batch_f32_K_APPROX,  batch_f32_K_LUT,
-                                          batch_f32_K_LUT_LIN, batch_f32_K_LUT_RES, batch_f32_K_LUT_LIN_RES};
+                                          batch_f32_K_LUT_LIN, batch_f32_K_LUT_RES, batch_f32_K_LUT_LIN_RES,
+                                          batch_f32_K_LUT_CUBIC};
 static const bench_batch q15_batches[] = {batch_q15_K_SCHLICK, batch_q15_K_LSK,     batch_q15_K_LSK_COMP,
                                           batch_q15_K_F82,     batch_q15_K_GULB,    batch_q15_K_CT,
                                           batch_q15_K_EXACT,   batch_q15_K_APPROX,  batch_q15_K_LUT,
-                                          batch_q15_K_LUT_LIN, batch_q15_K_LUT_RES, batch_q15_K_LUT_LIN_RES};
+                                          batch_q15_K_LUT_LIN, batch_q15_K_LUT_RES, batch_q15_K_LUT_LIN_RES,
+                                          batch_q15_K_LUT_CUBIC};
 
 #if FRESNEL_HAS_F16
 static double batch_f16(const void *x, const float *c, const int32_t *cq, int n)

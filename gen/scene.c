@@ -10,6 +10,7 @@
 #include <sys/types.h>
 
 #include "cli.h"
+#include "generator.h"
 #include "spectral.h"
 
 const char *const scene_model_names[] = {"schlick",        "lsk",  "lsk-comp",
@@ -130,10 +131,10 @@ static char *next_token(char **cursor)
     return start;
 }
 
-int scene_model_lut_size(const char *model, int *residual)
+int scene_model_lut_size(const char *model, int *form)
 {
     const char *p;
-    int n = 0, digits = 0;
+    int n = 0, digits = 0, f;
     if (model == NULL || strncmp(model, "lut", 3) != 0)
         return 0;
     p = model + 3;
@@ -146,17 +147,17 @@ int scene_model_lut_size(const char *model, int *residual)
     }
     if (digits == 0 || n < SCENE_LUT_MIN || n > SCENE_LUT_MAX)
         return 0;
-    if (*p == '\0') {
-        if (residual)
-            *residual = 0;
-        return n;
-    }
-    if (strcmp(p, "-residual") == 0) {
-        if (residual)
-            *residual = 1;
-        return n;
-    }
-    return 0;
+    if (*p == '\0')
+        f = LUT_PLAIN;
+    else if (strcmp(p, "-residual") == 0)
+        f = LUT_RESIDUAL;
+    else if (strcmp(p, "-cubic") == 0)
+        f = LUT_CUBIC;
+    else
+        return 0;
+    if (form)
+        *form = f;
+    return n;
 }
 
 int scene_model_known(const char *model)
@@ -209,11 +210,11 @@ static int parse_models(const char *path, int line, char *value, scene *s)
         if (!scene_model_known(model)) {
             if (strncmp(model, "lut", 3) == 0)
                 return report(path, line,
-                              "expected lutN or lutN-residual with N an integer in %d..%d "
+                              "expected lutN, lutN-residual or lutN-cubic with N an integer in %d..%d "
                               "(no leading zeros), got '%s'",
                               SCENE_LUT_MIN, SCENE_LUT_MAX, model);
             return report(path, line,
-                          "expected a model (one of %s, lutN, lutN-residual), got '%s'",
+                          "expected a model (one of %s, lutN, lutN-residual, lutN-cubic), got '%s'",
                           table_list(scene_model_names, names, sizeof names), model);
         }
         if (find_in(s->models, s->model_count, model) >= 0)
@@ -368,6 +369,15 @@ int scene_load(const char *path, scene *out)
     if (out->models_line == 0)
         return report(path, line > 0 ? line : 1,
                       "expected a 'models = name ...' line, the required key is missing");
+    if (strcmp(out->lut_spacing, "uniform") == 0) {
+        int m, form;
+        for (m = 0; m < out->model_count; m++)
+            if (scene_model_lut_size(out->models[m], &form) && form == LUT_CUBIC)
+                return report(path, out->models_line,
+                              "expected lut_spacing grazing with '%s' (the cubic reads nodes uniform in "
+                              "sqrt(cos theta)), lut_spacing is uniform at line %d",
+                              out->models[m], out->lut_spacing_line);
+    }
     return 0;
 }
 

@@ -16,9 +16,11 @@
  *   models       required. Whitespace-separated, no duplicates, each one of
  *                scene_model_names[] (schlick, lsk, lsk-comp, f82, gulbrandsen,
  *                cook-torrance, exact, exact-gaussian, exact-point, approx-conductor) or a
- *                lookup table `lutN` / `lutN-residual` with N an integer in
- *                SCENE_LUT_MIN..SCENE_LUT_MAX written without leading zeros
- *                (lut16, lut32-residual). At most SCENE_MAX_MODELS entries.
+ *                lookup table `lutN` / `lutN-residual` / `lutN-cubic` with N an
+ *                integer in SCENE_LUT_MIN..SCENE_LUT_MAX written without
+ *                leading zeros (lut16, lut32-residual, lut16-cubic). At most
+ *                SCENE_MAX_MODELS entries. lutN-cubic needs lut_spacing
+ *                grazing (the runtime's cubic reads nodes uniform in sqrt(c)).
  *   space        optional, default srgb; one of colour_space_ids[] in
  *                spectral.h (srgb, display-p3, dci-p3, adobe-rgb, rec2020,
  *                acescg).
@@ -87,10 +89,10 @@ typedef struct scene {
  * keep the file's order. */
 int scene_load(const char *path, scene *out);
 
-/* N for "lutN" or "lutN-residual" (N in SCENE_LUT_MIN..SCENE_LUT_MAX, no
- * leading zeros), setting *residual (if not NULL) to 1 for the residual
- * variant and 0 otherwise; 0 for every other string. */
-int scene_model_lut_size(const char *model, int *residual);
+/* N for "lutN", "lutN-residual" or "lutN-cubic" (N in
+ * SCENE_LUT_MIN..SCENE_LUT_MAX, no leading zeros), setting *form (if not
+ * NULL) to its lut_form (generator.h: LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC); 0 for every other string. */
+int scene_model_lut_size(const char *model, int *form);
 
 /* 1 if the model name is one the manifest accepts, else 0. */
 int scene_model_known(const char *model);

@@ -22,7 +22,7 @@ static fresnel_rgb rgb_of(const double v[3])
 int scene_model_prepare(const char *name, lut_spacing spacing, const spectrum *s, const gen_context *g,
                         const material_params *p, scene_model *m)
 {
-    int residual = 0, n = scene_model_lut_size(name, &residual), i;
+    int form = LUT_PLAIN, n = scene_model_lut_size(name, &form), i;
     memset(m, 0, sizeof *m);
     if (!scene_model_known(name) || strlen(name) >= sizeof m->name)
         return cli_error("scene model", "unknown model '%s'", name);
@@ -35,11 +35,14 @@ int scene_model_prepare(const char *name, lut_spacing spacing, const spectrum *s
         scene_model_free(m);
         return cli_error("scene model", "out of memory");
     }
-    encode_lut(s, g, p, spacing, n, residual, m->table_d);
+    if (encode_lut(s, g, p, spacing, n, (lut_form)form, m->table_d)) {
+        scene_model_free(m);
+        return cli_error("scene model", "out of memory");
+    }
     for (i = 0; i < 3 * n; i++)
         m->table[i] = (float)m->table_d[i];
     m->lut_n = n;
-    m->residual = residual;
+    m->form = (lut_form)form;
     m->spacing = spacing;
     return 0;
 }
@@ -57,7 +60,9 @@ void scene_model_eval(const scene_model *m, const material_params *p, float c, f
     fresnel_rgb f0 = rgb_of(p->f0), r;
     const char *name = m->name;
     if (m->lut_n) {
-        if (m->residual)
+        if (m->form == LUT_CUBIC)
+            r = fresnel_lut_cubic_rgb(m->table, m->lut_n, c);
+        else if (m->form == LUT_RESIDUAL)
             r = m->spacing == LUT_UNIFORM ? fresnel_lut_linear_residual_rgb(f0, m->table, m->lut_n, c)
                                           : fresnel_lut_residual_rgb(f0, m->table, m->lut_n, c);
         else
@@ -91,14 +96,21 @@ void scene_model_eval(const scene_model *m, const material_params *p, float c, f
 
 static double f32(double x) { return (double)(float)x; }
 
-/* Linear interpolation of a LUT in double, at the float-rounded node values. */
-static double ref_lut(const float *t, int n, double x)
+/* A LUT's interpolation in double, at the float-rounded node values. */
+static double ref_lut(const float *t, int n, lut_form form, double x)
 {
-    double pos = x * (n - 1);
+    double pos = x * (n - 1), u, p0, p1, p2, p3;
     int i = (int)pos;
     if (i >= n - 1)
         i = n - 2;
-    return (double)t[i] + (pos - i) * ((double)t[i + 1] - (double)t[i]);
+    u = pos - i;
+    p1 = t[i];
+    p2 = t[i + 1];
+    if (form != LUT_CUBIC)
+        return p1 + u * (p2 - p1);
+    p0 = t[i > 0 ? i - 1 : 0];
+    p3 = t[i + 2 < n ? i + 2 : n - 1];
+    return p1 + 0.5 * u * ((p2 - p0) + u * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + u * (3.0 * (p1 - p2) + p3 - p0)));
 }
 
 void scene_model_eval_ref(const scene_model *m, const material_params *p, double c, double out[3])
@@ -111,7 +123,7 @@ void scene_model_eval_ref(const scene_model *m, const material_params *p, double
         if (m->lut_n) {
             const float *t = m->table + ch * m->lut_n;
             double x = m->spacing == LUT_UNIFORM ? c : sqrt(c);
-            v = ref_lut(t, m->lut_n, x) + (m->residual ? ref_schlick(f0, c) : 0.0);
+            v = ref_lut(t, m->lut_n, m->form, x) + (m->form == LUT_RESIDUAL ? ref_schlick(f0, c) : 0.0);
         } else if (!strcmp(name, "schlick"))
             v = ref_schlick(f0, c);
         else if (!strcmp(name, "lsk"))

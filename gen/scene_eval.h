@@ -10,7 +10,8 @@
 /* A model with its LUT, if it has one (encode_lut, rounded to float). */
 typedef struct scene_model {
     char name[24];
-    int lut_n, residual; /* lut_n = 0 for analytic models */
+    int lut_n; /* 0 for analytic models */
+    lut_form form;
     lut_spacing spacing;
     float *table;    /* 3 * lut_n values, malloc'd; scene_model_free */
     double *table_d; /* the same before rounding to binary32 */

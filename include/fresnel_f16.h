@@ -89,6 +89,7 @@
 #define FRESNEL_F16_BOUND_COOK_TORRANCE 1.0 /* no bound at a critical angle [0.246]; 4.02e-3 away */
 #define FRESNEL_F16_BOUND_CONDUCTOR 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
 #define FRESNEL_F16_BOUND_DIELECTRIC 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
+#define FRESNEL_F16_BOUND_LUT_CUBIC 1.6e-3 /* [1.51e-3 on reflectance curves, n <= 256; tests/test_lut_cubic] */
 #define FRESNEL_F16_BOUND_LUT 1.7e-2 /* [1.599e-2 nodes uniform in sqrt(c), a table with a total-reflection edge; 3.84e-3 uniform in c] */
 #define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3 /* [4.449e-3] */
 
@@ -128,6 +129,9 @@ fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);
+/* fresnel_lut_cubic (Catmull-Rom on fresnel_lut's nodes), one half rounding
+ * per operation as a mediump shader computes it. */
+fresnel_f16 fresnel_lut_cubic_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 
 #ifdef __cplusplus
 }

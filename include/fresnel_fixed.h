@@ -137,6 +137,7 @@ typedef struct fresnel_q15_rgb {
 #define FRESNEL_Q15_BOUND_CONDUCTOR 0.501
 #define FRESNEL_Q15_BOUND_DIELECTRIC 0.501
 #define FRESNEL_Q15_BOUND_LUT 1.01
+#define FRESNEL_Q15_BOUND_LUT_CUBIC 2.2 /* [2.1917 on any table: weights rounded to Q15; tests/test_lut_cubic] */
 
 #if FRESNEL_HAS_FIXED
 
@@ -381,6 +382,16 @@ fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t
                                                 int frac, int32_t c);
 fresnel_q15_rgb fresnel_lut_linear_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table,
                                                        int n, int frac, int32_t c);
+
+/* fresnel_lut_cubic (fresnel.h) on uint16_t nodes: the position as
+ * fresnel_lut_q15_u16, Catmull-Rom weights in Q15 (shared by the three
+ * channels of the _rgb form), a 4-term sum in Q30, rounded and clamped.
+ * Tables must be fitted for the cubic (lutN-cubic). Error <=
+ * FRESNEL_Q15_BOUND_LUT_CUBIC LSB against the same cubic in double at the
+ * table's values. Cost: the position of fresnel_lut_q15_u16, 7 mul for the
+ * weights, 4 per channel. */
+fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n, int32_t c);
+fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n, int32_t c);
 
 /* ------------------------------------------------------------- fixed_math.c */
 

@@ -16,6 +16,36 @@ static float fr__interp(const float *table, int n, float x)
     return table[i] + t * (table[i + 1] - table[i]);
 }
 
+/* Catmull-Rom through the four nodes around x, the outer ones clamped to the
+ * table's ends, in Horner form: p1 + t/2 (d1 + t (d2 + t d3)). */
+static float fr__cubic(const float *table, int n, float x)
+{
+    float pos = x * (float)(n - 1);
+    int i = (int)pos;
+    float t, p0, p1, p2, p3;
+    if (i >= n - 1)
+        i = n - 2;
+    t = pos - (float)i;
+    p0 = table[i > 0 ? i - 1 : 0];
+    p1 = table[i];
+    p2 = table[i + 1];
+    p3 = table[i + 2 < n ? i + 2 : n - 1];
+    return p1 + 0.5f * t *
+                    ((p2 - p0) + t * ((2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) + t * (3.0f * (p1 - p2) + p3 - p0)));
+}
+
+float fresnel_lut_cubic(const float *table, int n, float c)
+{
+    return fr__unit(fr__cubic(table, n, sqrtf(fr__unit(c))));
+}
+
+fresnel_rgb fresnel_lut_cubic_rgb(const float *table, int n, float c)
+{
+    float x = sqrtf(fr__unit(c));
+    FR__RGB(fr__unit(fr__cubic(table, n, x)), fr__unit(fr__cubic(table + n, n, x)),
+            fr__unit(fr__cubic(table + 2 * n, n, x)));
+}
+
 float fresnel_lut(const float *table, int n, float c)
 {
     return fr__unit(fr__interp(table, n, sqrtf(fr__unit(c))));

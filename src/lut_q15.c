@@ -141,6 +141,50 @@ static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int frac, 
     return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 7, 22)));
 }
 
+/* Catmull-Rom weights in Q15 for a fraction t in [0, 2^15], s = 1 - t:
+ *   w0 = -t s^2/2, w3 = -t^2 s/2, w2 = t + t s (3t - 1)/2, w1 = 1 - w0 - w2 - w3
+ * (w1 = s + t s (3s - 1)/2 up to rounding: taking it from the sum keeps a
+ * constant table constant). The negative weights are kept as magnitudes.
+ * R: t s <= 2^28 -> ts <= 2^13; ts s, ts t <= 2^28; 3 ts t <= 3 2^28. */
+typedef struct fr__cubic_w {
+    int32_t w0, w1, w2, w3; /* w0, w3: magnitudes of the negative weights */
+} fr__cubic_w;
+
+static fr__cubic_w fr__cubic_weights(uint32_t t)
+{
+    fr__cubic_w w;
+    uint32_t s = FR__ONE_Q15 - t, ts = (t * s + (1u << 14)) >> 15;
+    w.w0 = (int32_t)((ts * s + (1u << 15)) >> 16);
+    w.w3 = (int32_t)((ts * t + (1u << 15)) >> 16);
+    w.w2 = (int32_t)(t + ((3u * ts * t + (1u << 15)) >> 16)) - (int32_t)((ts + 1u) >> 1);
+    w.w1 = (int32_t)FR__ONE_Q15 + w.w0 + w.w3 - w.w2;
+    return w;
+}
+
+/* R: node values <= 2^15; |w| sum <= 1.25 2^15 + 4, so |sum| < 1.3 2^30. */
+static fresnel_q15 fr__cubic_u16(const uint16_t *table, int n, fr__pos p, fr__cubic_w w)
+{
+    int last = n < 2 ? 1 : n - 1;
+    int32_t v0 = (int32_t)fr__u16_q15(table[p.i > 0 ? p.i - 1 : 0]);
+    int32_t v1 = (int32_t)fr__u16_q15(table[p.i]), v2 = (int32_t)fr__u16_q15(table[p.i + 1]);
+    int32_t v3 = (int32_t)fr__u16_q15(table[p.i + 2 <= last ? p.i + 2 : last]);
+    return fr__q30s_to_q15(w.w1 * v1 + w.w2 * v2 - w.w0 * v0 - w.w3 * v3);
+}
+
+fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n, int32_t c)
+{
+    fr__pos p = fr__position(fr__sqrt_w(c), n);
+    return fr__cubic_u16(table, n, p, fr__cubic_weights(p.t));
+}
+
+fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
+{
+    fr__pos p = fr__position(fr__sqrt_w(c), n);
+    fr__cubic_w w = fr__cubic_weights(p.t);
+    FR__RGB_Q15(fr__cubic_u16(table, n, p, w), fr__cubic_u16(table + n, n, p, w),
+                fr__cubic_u16(table + 2 * n, n, p, w));
+}
+
 fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c)
 {
     return fr__lut_u16(table, n, fr__sqrt_w(c));

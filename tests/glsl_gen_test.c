@@ -43,15 +43,18 @@ static fresnel_rgb c_model(int which, float c)
         return fresnel_lut_rgb(fresnel_default_cu_lut32, 32, c);
     if (which == 1)
         return fresnel_f82_rgb(fresnel_default_au_f0, fresnel_default_au_f82, c);
+    if (which == 3)
+        return fresnel_lut_cubic_rgb(fresnel_default_cr_lut16_cubic, 16, c);
     return fresnel_conductor_rgb(fresnel_default_al_eta, fresnel_default_al_kappa, c);
 }
 
 int main(int argc, char **argv)
 {
-    static const char *const exprs[3] = {"FRESNEL_LUT_ARRAY_RGB(fresnel_default_cu_lut32, 32, c)",
+    static const char *const exprs[4] = {"FRESNEL_LUT_ARRAY_RGB(fresnel_default_cu_lut32, 32, c)",
                                          "fresnel_f82_rgb(fresnel_default_au_f0, fresnel_default_au_f82, c)",
-                                         "fresnel_conductor_rgb(fresnel_default_al_eta, fresnel_default_al_kappa, c)"};
-    static const char *const names[3] = {"copper lut32", "gold f82", "aluminium exact"};
+                                         "fresnel_conductor_rgb(fresnel_default_al_eta, fresnel_default_al_kappa, c)",
+                                         "FRESNEL_LUT_CUBIC_ARRAY_RGB(fresnel_default_cr_lut16_cubic, 16, c)"};
+    static const char *const names[4] = {"copper lut32", "gold f82", "aluminium exact", "chromium lut16-cubic"};
     static const struct {
         const char *prelude;
         int es, version;
@@ -76,7 +79,7 @@ int main(int argc, char **argv)
     for (d = 0; d < 2; d++) {
         snprintf(path, sizeof path, "%s/%s", argv[1], dialects[d].prelude);
         prelude = glctx_read_file(path);
-        for (m = 0; m < 3; m++) {
+        for (m = 0; m < 4; m++) {
             static float out[W * 4];
             char name[160];
             double worst = 0.0;

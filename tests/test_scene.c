@@ -212,7 +212,8 @@ static void test_lut_names(void)
                  {"lut", 0, 0},           {"lut-residual", 0, 0},      {"lut16-res", 0, 0},
                  {"lut16x", 0, 0},        {"lut+16", 0, 0},            {"lut 16", 0, 0},
                  {"lut00016", 0, 0},      {"lut99999999999", 0, 0},    {"LUT16", 0, 0},
-                 {"exact", 0, 0},         {"lut16-residual-residual", 0, 0}};
+                 {"exact", 0, 0},         {"lut16-residual-residual", 0, 0},
+                 {"lut16-cubic", 16, 2},  {"lut16-cubic-residual", 0, 0}, {"lut16-cubi", 0, 0}};
     size_t i;
     int residual;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
@@ -276,6 +277,8 @@ static void test_errors(void)
                  "'fresnel'");
     expect_error("scene error: lut too small", "models = lut3\n", 1, "4..256");
     expect_error("scene error: lut too large", "models = lut257-residual\n", 1, "4..256");
+    expect_error("scene error: cubic LUT with uniform spacing, at the models line",
+                 "materials = au\nmodels = schlick lut16-cubic\nlut_spacing = uniform\n", 2, "lut_spacing grazing");
     expect_error("scene error: lut leading zero", "models = lut016\n", 1, "leading zeros");
     expect_error("scene error: lut bad suffix", "models = lut16-res\n", 1, "'lut16-res'");
     expect_error("scene error: unknown type", "types = f32 f64\n", 1, "'f64'");

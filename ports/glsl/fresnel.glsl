@@ -659,4 +659,16 @@ vec3 fresnel_lut_linear_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRE
 #define FRESNEL_LUT_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
 #define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
 
+/* fresnel_lut_cubic (src/lut.c): Catmull-Rom through the four nodes around
+ * sqrt(c), the outer ones clamped to the table's ends; tables fitted for it
+ * (lutN-cubic). Arrays only (ES 3.00, GLSL 3.30), n an int. */
+FRESNEL_HIGHP float fresnel_lut_cubic_blend(FRESNEL_HIGHP float p0, FRESNEL_HIGHP float p1, FRESNEL_HIGHP float p2,
+                                            FRESNEL_HIGHP float p3, FRESNEL_HIGHP float t)
+{
+    return p1 + 0.5 * t * ((p2 - p0) + t * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + t * (3.0 * (p1 - p2) + p3 - p0)));
+}
+#define FRESNEL_I_LUT_CUBIC_AT(table, base, n, p) fresnel_lut_cubic_blend((table)[(base) + max(int((p).x) - 1, 0)], (table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (table)[(base) + min(int((p).x) + 2, (n) - 1)], (p).y)
+#define FRESNEL_LUT_CUBIC_ARRAY(table, n, c) clamp(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), 0.0, 1.0)
+#define FRESNEL_LUT_CUBIC_ARRAY_RGB(table, n, c) clamp(vec3(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, (n), (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, 2 * (n), (n), fresnel_lut_pos(float(n), (c)))), 0.0, 1.0)
+
 #endif /* FRESNEL_GLSL */
