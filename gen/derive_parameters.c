@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli.h"
+#include "colour_difference.h"
 #include "fit.h"
 #include "generator.h"
 #include "reference.h"
@@ -29,7 +30,9 @@ void ground_truth_clamped(const spectrum *s, const gen_context *g, double n1, do
 int derive_parameters(const gen_context *g, const char *id, double sigma, double n1, spectrum *s,
                       material_params *p)
 {
-    double cosines[GEN_FIT_ANGLES], target[3][GEN_FIT_ANGLES], rgb[3], green[3], eta[3], kappa[3];
+    double cosines[GEN_FIT_ANGLES], target[3][GEN_FIT_ANGLES], weight[3][GEN_FIT_ANGLES], rgb[3], green[3], eta[3],
+        kappa[3];
+    lab_space ls;
     int i, ch;
     memset(p, 0, sizeof *p);
     if (material_lookup(g->dir, id, &p->info, "material") || spectrum_load(g->dir, id, s))
@@ -59,17 +62,29 @@ int derive_parameters(const gen_context *g, const char *id, double sigma, double
     p->ct_eta = eta[1] / n1;
     p->ct_kappa = kappa[1] / n1;
 
+    /* The fit minimises colour error, not reflectance error: each sample's
+     * residual is weighted by how much CIEDE2000 one unit of reflectance in
+     * that channel costs there (dark curves and blue are cheap in
+     * reflectance and dear in dE). Hoffman's table measures RMS dE. */
+    lab_space_init(&ls, &g->cs);
     for (i = 0; i < GEN_FIT_ANGLES; i++) {
         cosines[i] = cos(i * (3.14159265358979323846 / 180.0));
         ground_truth_clamped(s, g, n1, cosines[i], rgb);
-        for (ch = 0; ch < 3; ch++)
+        for (ch = 0; ch < 3; ch++) {
+            double moved[3], lab0[3], lab1[3], h = rgb[ch] > 0.5 ? -1e-4 : 1e-4;
+            memcpy(moved, rgb, sizeof moved);
+            moved[ch] += h;
+            lab_space_lab(&ls, rgb, lab0);
+            lab_space_lab(&ls, moved, lab1);
             target[ch][i] = rgb[ch];
+            weight[ch][i] = fmax(ciede2000(lab0, lab1) / 1e-4, 1e-3);
+        }
     }
     ground_truth_clamped(s, g, n1, 0.15, green); /* LSK's matching point */
     for (ch = 0; ch < 3; ch++) {
         fit_report rep;
-        if (fit_eta_kappa_report(cosines, target[ch], GEN_FIT_ANGLES, &p->eta_fit[ch], &p->kappa_fit[ch],
-                                 &rep))
+        if (fit_eta_kappa_weighted(cosines, target[ch], weight[ch], GEN_FIT_ANGLES, &p->eta_fit[ch],
+                                   &p->kappa_fit[ch], &rep))
             return cli_error(id, "fitting eta, kappa to the ground truth failed");
         p->fit_rms[ch] = rep.rms;
         ref_lsk_fit_target(p->eta_fit[ch], p->kappa_fit[ch], green[ch], &p->lsk_a[ch], &p->lsk_alpha[ch]);

@@ -63,7 +63,7 @@
 #define DIELECTRIC_KEEP 3
 
 typedef struct problem {
-    const double *c, *t;
+    const double *c, *t, *w; /* w: per-sample weights, or NULL for 1 */
     int n;
     double lo[2], hi[2]; /* bounds of log eta and q = kappa^2 */
     long evaluations;
@@ -71,12 +71,14 @@ typedef struct problem {
     int starts;
 } problem;
 
+static double weight(const problem *pb, int i) { return pb->w ? pb->w[i] : 1.0; }
+
 static double sum_sq(problem *pb, const double p[2])
 {
     double s = 0.0, eta = exp(p[0]), kappa = sqrt(p[1]);
     int i;
     for (i = 0; i < pb->n; i++) {
-        double d = ref_conductor(eta, kappa, pb->c[i]) - pb->t[i];
+        double d = (ref_conductor(eta, kappa, pb->c[i]) - pb->t[i]) * weight(pb, i);
         s += d * d;
     }
     pb->evaluations += pb->n;
@@ -119,7 +121,9 @@ static double refine(problem *pb, double p[2])
             double up = ref_conductor(eta, kappa_up, c);
             double other = ref_conductor(eta, kappa_other, c);
             double d1 = (central ? up - other : 4.0 * up - 3.0 * here - other) / (2.0 * hq);
-            double r = here - pb->t[i];
+            double r = (here - pb->t[i]) * weight(pb, i);
+            d0 *= weight(pb, i);
+            d1 *= weight(pb, i);
             a00 += d0 * d0;
             a01 += d0 * d1;
             a11 += d1 * d1;
@@ -383,8 +387,8 @@ static void fit_dielectric(problem *pb, double best[3])
     }
 }
 
-int fit_eta_kappa_report(const double *cos_theta, const double *target, int n, double *eta,
-                         double *kappa, fit_report *report)
+int fit_eta_kappa_weighted(const double *cos_theta, const double *target, const double *w, int n, double *eta,
+                           double *kappa, fit_report *report)
 {
     problem pb;
     double cost[GRID_KAPPA + 1][GRID_ETA];
@@ -394,11 +398,12 @@ int fit_eta_kappa_report(const double *cos_theta, const double *target, int n, d
     if (cos_theta == NULL || target == NULL || eta == NULL || kappa == NULL || n < 1)
         return -1;
     for (s = 0; s < n; s++)
-        if (!isfinite(cos_theta[s]) || !isfinite(target[s]))
+        if (!isfinite(cos_theta[s]) || !isfinite(target[s]) || (w && !(w[s] > 0.0 && isfinite(w[s]))))
             return -1;
 
     pb.c = cos_theta;
     pb.t = target;
+    pb.w = w;
     pb.n = n;
     pb.lo[0] = log(FIT_ETA_MIN);
     pb.hi[0] = log(FIT_ETA_MAX);
@@ -437,12 +442,22 @@ int fit_eta_kappa_report(const double *cos_theta, const double *target, int n, d
     *eta = best[1];
     *kappa = best[2];
     if (report) {
-        report->rms = sqrt(best[0] / n);
+        double p[2];
+        p[0] = log(best[1]);
+        p[1] = best[2] * best[2];
+        pb.w = NULL; /* the plain RMS, whatever the weights */
+        report->rms = sqrt(sum_sq(&pb, p) / n);
         report->starts = pb.starts;
         report->iterations = pb.iterations;
         report->evaluations = pb.evaluations;
     }
     return 0;
+}
+
+int fit_eta_kappa_report(const double *cos_theta, const double *target, int n, double *eta, double *kappa,
+                         fit_report *report)
+{
+    return fit_eta_kappa_weighted(cos_theta, target, NULL, n, eta, kappa, report);
 }
 
 int fit_eta_kappa(const double *cos_theta, const double *target, int n, double *eta,

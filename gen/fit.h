@@ -34,5 +34,9 @@ int fit_eta_kappa(const double *cos_theta, const double *target, int n, double *
 /* The same, also describing the fit in *report (may be NULL). */
 int fit_eta_kappa_report(const double *cos_theta, const double *target, int n, double *eta,
                          double *kappa, fit_report *report);
+/* The same minimising sum (w[i] (R_i - target[i]))^2 (w NULL: all 1; else
+ * every w[i] finite and > 0). report->rms stays the unweighted RMS. */
+int fit_eta_kappa_weighted(const double *cos_theta, const double *target, const double *w, int n, double *eta,
+                           double *kappa, fit_report *report);
 
 #endif
