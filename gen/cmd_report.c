@@ -16,10 +16,7 @@
 
 /* Hoffman's "Schlick" and "Fitted eta, kappa" columns [Hof20, course notes,
  * ACEScg with a D60 white], metals in his order with our ids. */
-static const struct {
-    const char *id, *his_name;
-    double schlick, fitted, point_sampled;
-} hoffman[] = {
+const report_hoffman_row report_hoffman[REPORT_HOFFMAN] = {
     {"ag", "Silver", 0.27, 0.02, 0.99},  {"cu", "Copper", 0.69, 0.03, 8.49},
     {"au", "Gold", 0.69, 0.05, 6.05},    {"commercial_bronze", "Bronze", 0.78, 0.02, 9.47},
     {"brass", "Brass", 1.04, 0.04, 5.49}, {"al", "Aluminum", 1.12, 0.01, 1.09},
@@ -28,7 +25,16 @@ static const struct {
     {"pt", "Platinum", 2.08, 0.02, 3.01}, {"fe", "Iron", 2.42, 0.01, 0.65},
     {"zn", "Zinc", 2.44, 0.08, 8.67},     {"cr", "Chromium", 2.90, 0.02, 0.36},
 };
-#define N_HOFFMAN ((int)(sizeof hoffman / sizeof hoffman[0]))
+#define hoffman report_hoffman
+
+int report_material_index(const report_run *r, const char *id)
+{
+    int i;
+    for (i = 0; i < r->sc.material_count; i++)
+        if (!strcmp(r->mats[i].p.info.id, id))
+            return i;
+    return -1;
+}
 
 report_cell *report_cell_at(report_run *r, int mat, int model, int type)
 {
@@ -235,7 +241,7 @@ static void write_approaches(report_run *r, FILE *f)
 
 /* Hoffman's table recomputed in ACEScg: Schlick, fitted eta/kappa and point
  * sampling, RMS CIEDE2000 over 91 angles. */
-static int write_hoffman(report_run *r, FILE *f)
+static int compute_hoffman(report_run *r)
 {
     gen_context *g = malloc(sizeof *g);
     spectrum *s = malloc(sizeof *s);
@@ -248,20 +254,15 @@ static int write_hoffman(report_run *r, FILE *f)
     if ((status = gen_context_load(r->g->dir, "acescg", g)))
         goto done;
     lab_space_init(&ls, &g->cs);
-    fprintf(f, "\n## Reproducing Hoffman's table (ACEScg)\n\n"
-               "RMS CIEDE2000 over theta = 0..90 deg (1 deg steps) in ACEScg, ours beside Hoffman's published "
-               "numbers [Hof20]. Differences have known causes: he lit with a D60 SPD, we light with D65 and adapt "
-               "to the ACES white with Bradford (data/ has no D60); several metals come from other measurements "
-               "than his (dataset column; e.g. our zinc is REELS data the data pack flags as too reflective); "
-               "his angle sampling and fitting error are not stated; our fit minimises reflectance RMS, not dE.\n\n"
-               "| metal | dataset | Schlick (ours) | Schlick (Hoffman) | fitted eta,kappa (ours) | fitted (Hoffman) | "
-               "point-sampled (ours) | point-sampled (Hoffman) |\n|---|---|---:|---:|---:|---:|---:|---:|\n");
-    for (i = 0; i < N_HOFFMAN; i++) {
+    for (i = 0; i < REPORT_HOFFMAN; i++) {
         material_params p;
         double gt[REPORT_ANGLES][3], sch[REPORT_ANGLES][3], fit[REPORT_ANGLES][3], ps[REPORT_ANGLES][3];
-        double mean, rms_s, rms_f, rms_p, max;
+        double mean, max;
         if ((status = derive_parameters(g, hoffman[i].id, 25.0, 1.0, s, &p)))
             goto done;
+        r->hoffman_in_gamut[i] = 1;
+        for (ch = 0; ch < 3; ch++)
+            r->hoffman_in_gamut[i] &= p.f0_unclamped[ch] >= 0.0 && p.f0_unclamped[ch] <= 1.0;
         for (a = 0; a < REPORT_ANGLES; a++) {
             double c = report_cos(a);
             ground_truth_clamped(s, g, 1.0, c, gt[a]);
@@ -271,16 +272,31 @@ static int write_hoffman(report_run *r, FILE *f)
                 ps[a][ch] = ref_conductor(p.eta_point[ch], p.kappa_point[ch], c);
             }
         }
-        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])sch, &mean, &rms_s, &max);
-        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])fit, &mean, &rms_f, &max);
-        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])ps, &mean, &rms_p, &max);
-        fprintf(f, "| %s (%s) | %s | %.2f | %.2f | %.3f | %.2f | %.2f | %.2f |\n", hoffman[i].his_name, hoffman[i].id,
-                p.info.dataset, rms_s, hoffman[i].schlick, rms_f, hoffman[i].fitted, rms_p, hoffman[i].point_sampled);
+        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])sch, &mean, &r->hoffman_rms[i][0], &max);
+        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])fit, &mean, &r->hoffman_rms[i][1], &max);
+        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])ps, &mean, &r->hoffman_rms[i][2], &max);
     }
 done:
     free(g);
     free(s);
     return status;
+}
+
+static void write_hoffman(report_run *r, FILE *f)
+{
+    int i;
+    fprintf(f, "\n## Reproducing Hoffman's table (ACEScg)\n\n"
+               "RMS CIEDE2000 over theta = 0..90 deg (1 deg steps) in ACEScg, ours beside Hoffman's published "
+               "numbers [Hof20]. Differences have known causes: he lit with a D60 SPD, we light with D65 and adapt "
+               "to the ACES white with Bradford (data/ has no D60); several metals come from other measurements "
+               "than his (e.g. our zinc is REELS data the data pack flags as too reflective); "
+               "his angle sampling and fitting error are not stated; our fit minimises reflectance RMS, not dE.\n\n"
+               "| metal | Schlick (ours) | Schlick (Hoffman) | fitted eta,kappa (ours) | fitted (Hoffman) | "
+               "point-sampled (ours) | point-sampled (Hoffman) |\n|---|---:|---:|---:|---:|---:|---:|\n");
+    for (i = 0; i < REPORT_HOFFMAN; i++)
+        fprintf(f, "| %s (%s) | %.2f | %.2f | %.3f | %.2f | %.2f | %.2f |\n", hoffman[i].his_name, hoffman[i].id,
+                r->hoffman_rms[i][0], hoffman[i].schlick, r->hoffman_rms[i][1], hoffman[i].fitted,
+                r->hoffman_rms[i][2], hoffman[i].point_sampled);
 }
 
 /* "Which model for which budget": the models on the Pareto front of cost
@@ -348,13 +364,16 @@ static void write_budget(report_run *r, FILE *f)
 
 static void report_usage(FILE *out)
 {
-    fprintf(out, "usage: fresnel report [--scene FILE] [-o DIR] [--data DIR] [--no-timing] [--no-instructions]\n\n"
+    fprintf(out, "usage: fresnel report [--scene FILE] [-o DIR] [--data DIR] [--cross FILE] [--no-timing]\n"
+                 "                      [--no-instructions]\n\n"
                  "Measures every material x model x number type of the scene (default\n"
                  "data/scenes/report.scene) against the spectral ground truth and writes\n"
                  "DIR/report.md, DIR/pareto.svg, DIR/sigma.svg and DIR/curves/<material>.svg\n"
                  "(default DIR build/report). Timing: median of 5 batches of 2^20 evaluations;\n"
                  "instructions: valgrind --tool=callgrind (skipped when valgrind is missing).\n"
-                 "--no-timing and --no-instructions skip those (for tests).\n");
+                 "--no-timing and --no-instructions skip those (for tests). --cross FILE: the\n"
+                 "output of `make cross-count` and `make size`, for the targets table's Cortex-M0\n"
+                 "rows (make report passes it).\n");
 }
 
 int cmd_report(int argc, char **argv)
@@ -379,6 +398,8 @@ int cmd_report(int argc, char **argv)
             scene_path = argv[++i];
         } else if (i + 1 < argc && !strcmp(argv[i], "-o")) {
             r.out_dir = argv[++i];
+        } else if (i + 1 < argc && !strcmp(argv[i], "--cross")) {
+            r.cross_path = argv[++i];
         } else if (i + 1 < argc && !strcmp(argv[i], "--data")) {
             dir_option = argv[++i];
         } else {
@@ -450,6 +471,8 @@ int cmd_report(int argc, char **argv)
                         report_types[t].name, r.ns[k], r.instr[k]);
         }
     sigma_sweep(&r, sig_de, sig_err);
+    if ((status = compute_hoffman(&r)))
+        goto done;
 
     mkdir(r.out_dir, 0777);
     snprintf(path, sizeof path, "%s/curves", r.out_dir);
@@ -460,13 +483,11 @@ int cmd_report(int argc, char **argv)
                    "(`make report`). Colour space %s, Gaussian window sigma %g nm, incident medium n1 %g; "
                    "ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs, clamped to [0, 1] per channel.\n\n",
             scene_path, r.sc.space, r.sc.sigma, r.sc.n1);
+    report_targets(&r, out.f);
     write_accuracy_tables(&r, out.f);
     write_sigma(&r, out.f, sig_de, sig_err);
     write_approaches(&r, out.f);
-    if ((status = write_hoffman(&r, out.f))) {
-        cli_out_abort(&out);
-        goto done;
-    }
+    write_hoffman(&r, out.f);
     write_budget(&r, out.f);
     if ((status = commit_out(&out)))
         goto done;

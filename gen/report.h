@@ -4,6 +4,8 @@
 #ifndef FRESNEL_REPORT_H
 #define FRESNEL_REPORT_H
 
+#include <stdio.h>
+
 #include "colour_difference.h"
 #include "generator.h"
 #include "scene.h"
@@ -11,6 +13,7 @@
 
 #define REPORT_ANGLES 91 /* theta = 0, 1, ..., 90 degrees */
 #define REPORT_MAX_TYPES 4
+#define REPORT_HOFFMAN 14 /* metals in Hoffman's table */
 
 double report_cos(int angle); /* cos of angle degrees; exactly 0 at 90 */
 
@@ -58,7 +61,23 @@ typedef struct report_run {
     double *ns;         /* [model][type] ns per RGB evaluation; NaN when not measured */
     double *instr;      /* [model][type] host instructions per RGB evaluation (callgrind); NaN when not measured */
     int timed_material; /* the material timings use */
+    double hoffman_rms[REPORT_HOFFMAN][3]; /* ours in ACEScg: Schlick, fitted eta/kappa, point-sampled */
+    int hoffman_in_gamut[REPORT_HOFFMAN];  /* F0 inside ACEScg, unclamped */
+    const char *cross_path;                /* make cross-count + make size output, or NULL */
 } report_run;
+
+/* Hoffman's table [Hof20]: his 14 metals with our ids and his RMS CIEDE2000
+ * columns (ACEScg). */
+typedef struct report_hoffman_row {
+    const char *id, *his_name;
+    double schlick, fitted, point_sampled;
+} report_hoffman_row;
+extern const report_hoffman_row report_hoffman[REPORT_HOFFMAN];
+/* Index of material id in the run, or -1. */
+int report_material_index(const report_run *r, const char *id);
+/* Issue 8's targets: each with its measured value and a pass/miss mark
+ * (report_targets.c). Needs hoffman_rms filled. */
+void report_targets(report_run *r, FILE *f);
 
 report_cell *report_cell_at(report_run *r, int mat, int model, int type);
 int report_is_metal(const report_material *rm);
