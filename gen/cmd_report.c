@@ -290,7 +290,8 @@ static void write_hoffman(report_run *r, FILE *f)
                "numbers [Hof20]. Differences have known causes: he lit with a D60 SPD, we light with D65 and adapt "
                "to the ACES white with Bradford (data/ has no D60); several metals come from other measurements "
                "than his (e.g. our zinc is REELS data the data pack flags as too reflective); "
-               "his angle sampling and fitting error are not stated; our fit minimises reflectance RMS, not dE.\n\n"
+               "his angle sampling and fitting error are not stated; our fit, per channel, weights each "
+               "reflectance residual by its dE sensitivity, which ignores how the channels combine in dE.\n\n"
                "| metal | Schlick (ours) | Schlick (Hoffman) | fitted eta,kappa (ours) | fitted (Hoffman) | "
                "point-sampled (ours) | point-sampled (Hoffman) |\n|---|---:|---:|---:|---:|---:|---:|\n");
     for (i = 0; i < REPORT_HOFFMAN; i++)

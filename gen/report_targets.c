@@ -149,7 +149,7 @@ static void hoffman_target(report_run *r, FILE *f)
         hi = fmax(hi, r->hoffman_rms[i][1]);
     }
     target(f, "Fitted RGB eta, kappa (exact Fresnel), RMS dE2000 in ACEScg",
-           "<= Hoffman's \"Fitted\" column per metal (in-gamut F0)", beaten == counted ? PASS : MISS,
+           "<= Hoffman's \"Fitted\" column per metal with F0 in gamut (his two decimals: <= his + 0.005)", beaten == counted ? PASS : MISS,
            "%d of %d metals at or below his value (ours %.3f-%.3f, his 0.01-0.08)%s%s", beaten, counted, lo, hi,
            *misses ? "; above:" : "", misses);
 }

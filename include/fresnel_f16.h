@@ -89,7 +89,7 @@
 #define FRESNEL_F16_BOUND_COOK_TORRANCE 1.0 /* no bound at a critical angle [0.246]; 4.02e-3 away */
 #define FRESNEL_F16_BOUND_CONDUCTOR 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
 #define FRESNEL_F16_BOUND_DIELECTRIC 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
-#define FRESNEL_F16_BOUND_LUT_CUBIC 1.6e-3 /* [1.51e-3 on reflectance curves, n <= 256; tests/test_lut_cubic] */
+#define FRESNEL_F16_BOUND_LUT_CUBIC 9.0e-4 /* [8.68e-4 on reflectance curves, n <= 256; tests/test_lut_cubic] */
 #define FRESNEL_F16_BOUND_LUT 1.7e-2 /* [1.599e-2 nodes uniform in sqrt(c), a table with a total-reflection edge; 3.84e-3 uniform in c] */
 #define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3 /* [4.449e-3] */
 

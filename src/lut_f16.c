@@ -18,10 +18,14 @@ static fr__h fr__interp_h(const fr__h *table, int n, fr__h x)
     return fr__hadd(table[i], fr__hmul(t, fr__hsub(table[i + 1], table[i])));
 }
 
-/* lut.c's Catmull-Rom, one half rounding per operation, in the same order. */
+/* lut.c's Catmull-Rom as a Hermite cubic on node differences, one half
+ * rounding per operation: F = p1 + t (m1 + t (3d - 2 m1 - m2 + t (m1 + m2 -
+ * 2d))), d = p2 - p1, m1 = (p2 - p0)/2, m2 = (p3 - p1)/2. Every term is the
+ * size of a step between nodes, where lut.c's coefficients (2p0 - 5p1 + ...)
+ * are the size of 5 p1, whose half ulp near 4.5 is 4e-3. */
 static fr__h fr__cubic_h(const fr__h *table, int n, fr__h x)
 {
-    fr__h pos = fr__hmul(x, (fr__h)(float)(n - 1)), t, half = fr__hc(0.5f), p0, p1, p2, p3, d1, d2, d3;
+    fr__h pos = fr__hmul(x, (fr__h)(float)(n - 1)), t, half = fr__hc(0.5f), p0, p1, p2, p3, d, m1, m2, k2, k3;
     int i = (int)(float)pos;
     if (i >= n - 1)
         i = n - 2;
@@ -30,11 +34,12 @@ static fr__h fr__cubic_h(const fr__h *table, int n, fr__h x)
     p1 = table[i];
     p2 = table[i + 1];
     p3 = table[i + 2 < n ? i + 2 : n - 1];
-    d1 = fr__hsub(p2, p0);
-    d2 = fr__hsub(fr__hadd(fr__hsub(fr__hmul(fr__hc(2.0f), p0), fr__hmul(fr__hc(5.0f), p1)), fr__hmul(fr__hc(4.0f), p2)),
-                  p3);
-    d3 = fr__hsub(fr__hadd(fr__hmul(fr__hc(3.0f), fr__hsub(p1, p2)), p3), p0);
-    return fr__hadd(p1, fr__hmul(fr__hmul(half, t), fr__hadd(d1, fr__hmul(t, fr__hadd(d2, fr__hmul(t, d3))))));
+    d = fr__hsub(p2, p1);
+    m1 = fr__hmul(half, fr__hsub(p2, p0));
+    m2 = fr__hmul(half, fr__hsub(p3, p1));
+    k2 = fr__hsub(fr__hsub(fr__hmul(fr__hc(3.0f), d), fr__hmul(fr__hc(2.0f), m1)), m2);
+    k3 = fr__hsub(fr__hadd(m1, m2), fr__hmul(fr__hc(2.0f), d));
+    return fr__hadd(p1, fr__hmul(t, fr__hadd(m1, fr__hmul(t, fr__hadd(k2, fr__hmul(t, k3))))));
 }
 
 fresnel_f16 fresnel_lut_cubic_f16(const fresnel_f16 *table, int n, fresnel_f16 c)
