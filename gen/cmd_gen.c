@@ -26,7 +26,7 @@ static void gen_usage(FILE *out)
                  "  models = schlick f82 lut32 required; one or more of:");
     for (i = 0; scene_model_names[i]; i++)
         fprintf(out, " %s", scene_model_names[i]);
-    fprintf(out, " lutN lutN-residual (N = %d..%d)\n"
+    fprintf(out, " lutN lutN-residual lutN-cubic (N = %d..%d)\n"
                  "  space = srgb              display-p3 dci-p3 adobe-rgb rec2020 acescg\n"
                  "  sigma = 25                Gaussian window, nm (0 = point sampling)\n"
                  "  n1 = 1                    index of the incident medium\n"

@@ -212,7 +212,7 @@ static void write_approaches(report_run *r, FILE *f)
 {
     static const char *const order[] = {"exact-gaussian", "exact-point", "schlick", "f82", "exact", "gulbrandsen",
                                         "lsk", "lsk-comp", "cook-torrance", "approx-conductor", "lut8", "lut16",
-                                        "lut32", "lut16-residual", NULL};
+                                        "lut32", "lut16-residual", "lut16-cubic", "lut32-cubic", NULL};
     int i, k;
     fprintf(f, "\n## The approaches the papers argue about, side by side\n\n"
                "Mean CIEDE2000 per material (f32): Metzgar's exact Fresnel on Gaussian-window eta', kappa' "

@@ -71,5 +71,7 @@ int main(void)
           fresnel_lut_residual_q15_s16_rgb(fresnel_fx_cu_f0_q15, fresnel_fx_cu_lut16_residual_q15, 16,
                                            fresnel_fx_cu_lut16_residual_frac, c),
           fresnel_lut_residual_rgb(fresnel_fx_cu_f0, fresnel_fx_cu_lut16_residual, 16, cf), lsb2);
+    MODEL("au lut16-cubic", fresnel_lut_cubic_q15_u16_rgb(fresnel_fx_au_lut16_cubic_q15, 16, c),
+          fresnel_lut_cubic_rgb(fresnel_fx_au_lut16_cubic, 16, cf), lsb2);
     return failures ? 1 : 0;
 }
