@@ -19,6 +19,13 @@ typedef double (*bench_batch)(const void *ctx, const float *cos_theta, const int
  * go to a volatile sink. */
 double bench_ns_per_eval(bench_batch fn, const void *ctx, int n, int runs);
 
+/* k batch functions timed in rounds on the same inputs as bench_ns_per_eval:
+ * one untimed warm-up call of each, then runs rounds, each timing every
+ * function once, back to back, so that a change in machine load falls on
+ * all of them alike. ns[j] = the median over the rounds of fns[j]'s time per
+ * cosine (0 when runs = 0). Returns 0, or -1 when out of memory. */
+int bench_ns_per_eval_rounds(const bench_batch *fns, const void *const *ctxs, int k, int n, int runs, double *ns);
+
 /* "gcc 12.2.0, -O2 ..." : compiler and the runtime's flags (FRESNEL_CFLAGS
  * from the Makefile). */
 const char *bench_compiler(void);

@@ -1,21 +1,44 @@
 /* fresnel bench: time per RGB evaluation of each model and number type for
  * one material (`make bench`); with --runs 0 it is the fixed workload the
  * report hands to callgrind for instruction counts. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "bench.h"
+#include "bench_targets.h"
 #include "cli.h"
 #include "report.h"
 
 #define WHERE "fresnel bench"
 
+/* --targets: one row per line. */
+static int bench_targets_print(int count, int runs)
+{
+    bench_target_row rows[BENCH_TARGET_ROWS];
+    int n = bench_speed_targets_run(rows, BENCH_TARGET_ROWS, count, runs), i;
+    if (n < 0)
+        return cli_error(WHERE, "out of memory");
+    printf("name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n");
+    for (i = 0; i < n; i++) {
+        printf("%s,%.3f,%.2f,%.3g,", rows[i].name, rows[i].ns, rows[i].ratio_to_schlick, rows[i].max_abs_err);
+        if (rows[i].matched_c0 == -1.0) /* not a conductor row */
+            printf("-,-\n");
+        else if (isnan(rows[i].matched_c0)) /* printf's NaN may carry a sign */
+            printf("nan,%.9g\n", rows[i].matched_c1e4);
+        else
+            printf("%.9g,%.9g\n", rows[i].matched_c0, rows[i].matched_c1e4);
+    }
+    return 0;
+}
+
 int cmd_bench(int argc, char **argv)
 {
     const char *scene_path = "data/scenes/report.scene", *material = "au", *only_model = NULL, *only_type = NULL,
                *dir_option = NULL;
-    int count = 1 << 20, runs = 5, i, m, t, status = 0;
+    int count = 1 << 20, runs = 5, i, m, t, status = 0, targets = 0, count_set = 0, runs_set = 0,
+        scene_options = 0;
     scene sc;
     gen_context *g = NULL;
     spectrum *s = NULL;
@@ -24,16 +47,32 @@ int cmd_bench(int argc, char **argv)
         const char *o = argv[i];
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
             printf("usage: fresnel bench [--scene FILE] [--material ID] [--model NAME] [--type f32|q15|f16]\n"
-                   "                     [--count N] [--runs R] [--data DIR]\n\n"
+                   "                     [--count N] [--runs R] [--data DIR]\n"
+                   "       fresnel bench --targets [--count N] [--runs R]\n\n"
                    "Prints CSV model,type,ns_per_rgb_eval: the median of R timed batches (default 5) of N\n"
                    "evaluations (default 2^20) over fixed pseudo-random cosines, for each model of the\n"
                    "scene (default data/scenes/report.scene) and material ID (default au). --runs 0\n"
-                   "runs one untimed batch (the callgrind workload of `make report`).\n%s\n",
-                   bench_compiler());
+                   "runs one untimed batch (the callgrind workload of `make report`).\n\n"
+                   "--targets: issue 8's speed targets, CSV\n"
+                   "  name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n"
+                   "one channel of copper at 650 nm (eta 0.24, kappa 3.63), every row timed back to back\n"
+                   "in R rounds (default %d) of N cosines (default %d), the median; ratio to the\n"
+                   "schlick row of the same run; max_abs_err against the double reference on the grid\n"
+                   "gen/bench_targets.h describes; matched_*: the result at eta = 1, kappa = 0 (exact: 0;\n"
+                   "'-': not a conductor row).\n"
+                   "mitsuba-style and pbrt-style are this project's binary32 re-implementations of those\n"
+                   "renderers' published algorithms (gen/bench_compare.c), compiled out of line as the\n"
+                   "runtime's functions are.\n%s\n",
+                   BENCH_TARGETS_RUNS, BENCH_TARGETS_COUNT, bench_compiler());
             return 0;
+        }
+        if (!strcmp(o, "--targets")) {
+            targets = 1;
+            continue;
         }
         if (i + 1 >= argc)
             return cli_error(WHERE, "option '%s' needs a value (see fresnel bench --help)", o);
+        scene_options += strcmp(o, "--count") && strcmp(o, "--runs");
         if (!strcmp(o, "--scene"))
             scene_path = argv[++i];
         else if (!strcmp(o, "--material"))
@@ -47,11 +86,18 @@ int cmd_bench(int argc, char **argv)
         else if (!strcmp(o, "--count")) {
             if (cli_parse_int(argv[++i], 1, 1 << 26, &count))
                 return cli_error(WHERE, "--count expects an integer 1..2^26, got '%s'", argv[i]);
+            count_set = 1;
         } else if (!strcmp(o, "--runs")) {
             if (cli_parse_int(argv[++i], 0, 101, &runs))
                 return cli_error(WHERE, "--runs expects an integer 0..101, got '%s'", argv[i]);
+            runs_set = 1;
         } else
             return cli_error(WHERE, "unknown option '%s' (see fresnel bench --help)", o);
+    }
+    if (targets) {
+        if (scene_options)
+            return cli_error(WHERE, "--targets takes only --count and --runs (see fresnel bench --help)");
+        return bench_targets_print(count_set ? count : BENCH_TARGETS_COUNT, runs_set ? runs : BENCH_TARGETS_RUNS);
     }
     if ((status = scene_load(scene_path, &sc)))
         return status;

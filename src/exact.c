@@ -6,7 +6,9 @@
  * nearly equal numbers (gold in the red: eta 0.15, kappa 3.5 loses about
  * half its digits in binary32). Here a = u and b = v are the real and
  * imaginary parts of sqrt((eta + i kappa)^2 - sin^2), and the smaller of the
- * two is taken from u v = eta kappa instead. */
+ * two is taken from u v = eta kappa instead. Since issue 8 that division is
+ * folded into the ratios and Rs + Rp is one division (fr__exact_f), and a
+ * material may be prepared once for many cosines (fresnel_conductor_prepare). */
 #include "internal.h"
 
 #if FRESNEL_HAS_FLOAT
@@ -34,30 +36,161 @@ static inline struct fr__root fr__transmitted(float eta, float kappa, float c)
     return w;
 }
 
+/* The rest of the exact form once A = eta^2 - kappa^2 - sin^2 is known, in
+ * the a^2 + b^2 / 2ac arrangement of the textbook (Moeller, Optics) with u
+ * taken where it has its digits:
+ *   m = |A + 2i eta kappa| = u^2 + v^2,  t = (m + |A|)/2,  B = sqrt(t),
+ *   u = B if A >= 0, else eta kappa / B (u v = eta kappa: no cancellation),
+ *   Rs = (m + c^2 - 2cu) / (m + c^2 + 2cu),
+ *   Rp = Rs P,  P = (c^2 m + s^4 - 2cu s^2) / (c^2 m + s^4 + 2cu s^2),  s^2 = 1 - c^2,
+ *   F = (Rs + Rp)/2 = Rs (1 + P)/2.
+ * The division for u is folded into the ratios: with X = 1, Y = B (A >= 0)
+ * or X = B, Y = eta kappa (A < 0), X u = Y, and numerator and denominator of
+ * Rs and of P are multiplied by X. The differences in the numerators lose
+ * digits only where Rs or P is small: an absolute error of a few ulp of the
+ * denominator, as with sums of squares. m + c^2 >= 2cu always, and m and u
+ * carry a rounding or two of their own, since A does (see
+ * fr__eta2_minus_sin2 and fresnel_conductor_prepare).
+ * ONE_DIV: F = Ns (Dp + Np) / (2 Ds Dp). For eta kappa >= 2^-30,
+ * Ds >= (eta kappa)^1.5, Dp >= sqrt(eta kappa) min(eta kappa, 1/4) and
+ * Ds Dp <= ~(|n|^2 + 2)^3: normal and finite in binary32 over the whole
+ * domain. Smaller eta kappa (FR__COND2) divides twice, kappa = 0 (FR__DIEL)
+ * has m = t = |A| (A^2 could underflow), u = B or 0: one square root. */
+enum { FR__MATCHED, FR__DIEL, FR__COND1, FR__COND2 };
+
+static inline float fr__exact_f(float a, float c, float ch, float ek, float ek4, int kind)
+{
+    const int diel = kind == FR__DIEL;
+    float m = diel ? fabsf(a) : sqrtf(a * a + ek4);
+    float t = diel ? m : 0.5f * (m + fabsf(a));
+    float b = sqrtf(t);
+    float x = a >= 0.0f ? 1.0f : b;
+    float y = a >= 0.0f ? b : ek;
+    float s2 = (1.0f - c) * (1.0f + c);
+    float c2y = (c + c) * y;
+    float xs = x * (m + ch);
+    float xp = x * (ch * m + s2 * s2);
+    float ns = xs - c2y, ds = xs + c2y;
+    float np = xp - c2y * s2, dp = xp + c2y * s2;
+    float f = kind == FR__COND2 ? 0.5f * (ns / ds) * (1.0f + np / dp) : (ns * (dp + np)) / (ds * (dp + dp));
+    /* Rounding can take F a few ulp below 0 where Rs or Rp is 0 (eta near 1)
+     * and above 1 where both are 1: clamp. */
+    return fr__unit(f);
+}
+
+/* Which form a material takes (eta, kappa clamped). */
+static inline int fr__conductor_kind(float eta, float kappa)
+{
+    if (kappa == 0.0f)
+        return eta == 1.0f ? FR__MATCHED : FR__DIEL;
+    return eta * kappa >= 0x1p-30f ? FR__COND1 : FR__COND2;
+}
+
 float fresnel_conductor(float eta, float kappa, float c)
 {
-    struct fr__root w;
-    float p, q, num_s, den_s, num_p, den_p, rs, rp;
+    float ek, a;
+    int kind;
     eta = fr__eta(eta);
     kappa = fr__kappa(kappa);
     c = fr__unit(c);
+    kind = fr__conductor_kind(eta, kappa);
     /* Matched index: no interface, nothing reflected, at every c including
      * c = 0 where the limit depends on the direction of approach (and where
      * c^2 underflows for c < 1e-19, so it must not be computed from c). */
-    if (eta == 1.0f && kappa == 0.0f)
+    if (kind == FR__MATCHED)
         return 0.0f;
-    w = fr__transmitted(eta, kappa, c);
-    /* (eta + i kappa)^2 c = p + i q */
-    p = c * ((eta - kappa) * (eta + kappa));
-    q = 2.0f * eta * kappa * c;
-    num_s = (c - w.u) * (c - w.u) + w.v * w.v;
-    den_s = (c + w.u) * (c + w.u) + w.v * w.v;
-    num_p = (p - w.u) * (p - w.u) + (q - w.v) * (q - w.v);
-    den_p = (p + w.u) * (p + w.u) + (q + w.v) * (q + w.v);
-    /* Denominators are >= m > 0 away from matched index. */
-    rs = den_s > 0.0f ? num_s / den_s : 0.0f;
-    rp = den_p > 0.0f ? num_p / den_p : 0.0f;
-    return fr__unit(0.5f * (rs + rp));
+    ek = eta * kappa;
+    a = fr__eta2_minus_sin2(eta, c, kappa * kappa);
+    if (kind == FR__DIEL)
+        return fr__exact_f(a, c, c * c, 0.0f, 0.0f, FR__DIEL);
+    if (kind == FR__COND1)
+        return fr__exact_f(a, c, c * c, ek, 4.0f * ek * ek, FR__COND1);
+    return fr__exact_f(a, c, c * c, ek, 4.0f * ek * ek, FR__COND2);
+}
+
+/* x + y = s + err exactly, s = fl(x + y) (Knuth's TwoSum). */
+static inline float fr__two_sum_err(float x, float y, float s)
+{
+    float t = s - x;
+    return (x - (s - t)) + (y - t);
+}
+
+fresnel_conductor_prep fresnel_conductor_prepare(float eta, float kappa)
+{
+    fresnel_conductor_prep p;
+    float eh, el, kh, kl, s, d, lo;
+    eta = fr__eta(eta);
+    kappa = fr__kappa(kappa);
+    p.kind = fr__conductor_kind(eta, kappa);
+    /* eta^2 - kappa^2 - 1 = a0 + a0_lo to about 2^-48 of its size: exact
+     * squares, two TwoSums, the low parts summed last. */
+    fr__square_exact(eta, &eh, &el);
+    fr__square_exact(kappa, &kh, &kl);
+    s = eh - 1.0f;
+    d = s - kh;
+    lo = ((fr__two_sum_err(eh, -1.0f, s) + fr__two_sum_err(s, -kh, d)) + el) - kl;
+    p.a0 = d + lo;
+    p.a0_lo = lo - (p.a0 - d); /* Fast2Sum: |d| >= |lo| */
+    p.ek = eta * kappa;
+    p.ek4 = 4.0f * p.ek * p.ek;
+    return p;
+}
+
+/* A = eta^2 - kappa^2 - sin^2 = (a0 + c^2) + (a0_lo + c^2 low part): a0 + c^2
+ * is exact where it cancels (Sterbenz), so A keeps its digits at a critical
+ * angle as in fr__eta2_minus_sin2. */
+static inline float fr__prepared_a(const fresnel_conductor_prep *p, float c)
+{
+    float ch, cl;
+    fr__square_exact(c, &ch, &cl);
+    return (p->a0 + ch) + (p->a0_lo + cl);
+}
+
+#define FR__PREPARED(p, c, kind) fr__exact_f(fr__prepared_a(p, c), c, (c) * (c), (p)->ek, (p)->ek4, kind)
+
+float fresnel_conductor_prepared(const fresnel_conductor_prep *p, float c)
+{
+    c = fr__unit(c);
+    switch (p->kind) {
+    case FR__DIEL: return FR__PREPARED(p, c, FR__DIEL);
+    case FR__COND1: return FR__PREPARED(p, c, FR__COND1);
+    case FR__COND2: return FR__PREPARED(p, c, FR__COND2);
+    default: return 0.0f; /* matched index */
+    }
+}
+
+/* One loop per kind, with no branch inside (the selects compile to
+ * conditional moves or blends), in blocks of FR__BLOCK with a fixed trip
+ * count: the shape gcc's -O2 vectoriser accepts (very-cheap cost model).
+ * It does vectorise them when sqrtf need not set errno (-fno-math-errno)
+ * and compares may be if-converted (-fno-trapping-math); with the default
+ * flags the loops stay scalar. */
+#define FR__BLOCK 8
+#define FR__BATCH_LOOP(kind)                                 \
+    for (i = 0; i + FR__BLOCK <= n; i += FR__BLOCK) {        \
+        int j;                                               \
+        for (j = 0; j < FR__BLOCK; j++) {                    \
+            float cj = fr__unit(c[i + j]);                   \
+            out[i + j] = FR__PREPARED(&q, cj, kind);         \
+        }                                                    \
+    }                                                        \
+    for (; i < n; i++) {                                     \
+        float ci = fr__unit(c[i]);                           \
+        out[i] = FR__PREPARED(&q, ci, kind);                 \
+    }
+
+void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restrict c, float *restrict out, int n)
+{
+    const fresnel_conductor_prep q = *p;
+    int i;
+    switch (q.kind) {
+    case FR__DIEL: FR__BATCH_LOOP(FR__DIEL) break;
+    case FR__COND1: FR__BATCH_LOOP(FR__COND1) break;
+    case FR__COND2: FR__BATCH_LOOP(FR__COND2) break;
+    default:
+        for (i = 0; i < n; i++)
+            out[i] = 0.0f; /* matched index */
+    }
 }
 
 fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c)

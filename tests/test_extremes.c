@@ -452,6 +452,138 @@ static void test_gulbrandsen(void)
     }
 }
 
+/* fresnel_conductor_prepared and fresnel_conductor_batch (issue 8) on every
+ * extreme case and cosine, the binary32 input policy included: results in
+ * [0, 1]; c < 0, -0, NaN, -Inf exactly f(0) and c > 1, +Inf exactly f(1);
+ * the batch bit for bit the prepared function; matched index 0 at every c;
+ * within FRESNEL_BOUND_CONDUCTOR_PREPARED of ref_conductor where the bound
+ * was measured, and across each critical angle; out-of-domain eta, kappa
+ * (NaN, +-Inf, negative, huge, tiny) prepared as their clamped values; the
+ * two-division form (eta kappa < 2^-30) and the domain's corners. */
+static void test_conductor_prepared(void)
+{
+    static float grid[GRID_MAX], out[GRID_MAX];
+    float cs[32];
+    int ng = extreme_cos_grid(grid, GRID_MAX), ncs = extreme_cosine_count, ei, i;
+    long bad_range = 0, bad_subst = 0, differ = 0, matched_bad = 0, over = 0, crit_over = 0;
+    double worst = 0.0, worst_out = 0.0, worst_crit = 0.0;
+    char first[256] = "";
+    for (i = 0; i < ncs; i++)
+        cs[i] = extreme_cosines[i].c;
+    for (ei = 0; ei < extreme_case_count; ei++) {
+        const extreme_case *e = &extreme_cases[ei];
+        model_params mp;
+        fresnel_conductor_prep p;
+        float at0, at1, eta, kappa;
+        extreme_params(e, &mp);
+        eta = (float)mp.eta;
+        kappa = (float)mp.kappa;
+        p = fresnel_conductor_prepare(eta, kappa);
+        at0 = fresnel_conductor_prepared(&p, 0.0f);
+        at1 = fresnel_conductor_prepared(&p, 1.0f);
+        fresnel_conductor_batch(&p, cs, out, ncs);
+        for (i = 0; i < ncs; i++) {
+            float c = cs[i], got = fresnel_conductor_prepared(&p, c);
+            if (!(got >= 0.0f && got <= 1.0f)) {
+                bad_range++;
+                if (!*first)
+                    snprintf(first, sizeof first, "%s at c = %s: %g", e->name, extreme_cosines[i].label, got);
+            }
+            if ((!(c >= 0.0f && c <= 1.0f) || (c == 0.0f && signbit(c))) && got != (c > 1.0f ? at1 : at0))
+                bad_subst++;
+            differ += memcmp(&got, &out[i], sizeof got) != 0;
+            if (mp.eta == 1.0 && mp.kappa == 0.0)
+                matched_bad += got != 0.0f;
+        }
+        fresnel_conductor_batch(&p, grid, out, ng);
+        for (i = 0; i < ng; i++) {
+            double err = fabs(out[i] - ref_conductor(eta, kappa, grid[i]));
+            if (extreme_in_measured_domain(&mp)) {
+                if (!(err <= worst))
+                    worst = err;
+                over += !(err <= FRESNEL_BOUND_CONDUCTOR_PREPARED);
+            } else if (!(err <= worst_out))
+                worst_out = err;
+        }
+        if (kappa == 0.0f && eta < 1.0f) { /* 2000 consecutive cosines across the critical one */
+            double cc = sqrt((1.0 - eta) * (1.0 + eta));
+            float x = nextafterf((float)cc, 0.0f);
+            int k;
+            for (k = 0; k < 1000; k++)
+                x = nextafterf(x, 0.0f);
+            for (k = 0; k < 2000; k++, x = nextafterf(x, 2.0f)) {
+                double err = fabs(fresnel_conductor_prepared(&p, x) - ref_conductor(eta, kappa, x));
+                if (!(err <= worst_crit))
+                    worst_crit = err;
+                crit_over += !(err <= FRESNEL_BOUND_CONDUCTOR_PREPARED);
+            }
+        }
+    }
+    CHECK("extremes f32: conductor-prepared and -batch give a number in [0, 1] on every case and cosine",
+          bad_range == 0, "%ld bad, first %s", bad_range, first);
+    CHECK("extremes f32: conductor-prepared: c < 0, -0, NaN, -Inf give exactly f(0); c > 1, +Inf exactly f(1)",
+          bad_subst == 0, "%ld differ", bad_subst);
+    CHECK("extremes f32: conductor-batch gives the prepared function's results bit for bit", differ == 0,
+          "%ld differ", differ);
+    CHECK("extremes f32: conductor-prepared: matched index gives 0 at every c, c = 0 included", matched_bad == 0,
+          "%ld non-zero", matched_bad);
+    NOTE("extremes f32: conductor-prepared max|err| %.3g in the measured range, %.3g outside it; %.3g across the "
+         "critical angles (2000 consecutive cosines each)", worst, worst_out, worst_crit);
+    CHECK("extremes f32: conductor-prepared within its bound where it was measured", over == 0, "%ld over, max %.3g",
+          over, worst);
+    CHECK("extremes f32: conductor-prepared within its bound across each critical angle", crit_over == 0,
+          "%ld over, max %.3g", crit_over, worst_crit);
+    {
+        /* out-of-domain material parameters are prepared as their clamped values */
+        static const float bad[] = {NAN, INFINITY, -INFINITY, -1.0f, 0.0f, 1e-30f, 1e30f};
+        long wrong = 0, range = 0;
+        int a, b, k;
+        for (a = 0; a < 7; a++)
+            for (b = 0; b < 7; b++) {
+                float e = bad[a], kp = bad[b];
+                float ce = e > FRESNEL_ETA_MIN ? (e < FRESNEL_ETA_MAX ? e : FRESNEL_ETA_MAX) : FRESNEL_ETA_MIN;
+                float ck = kp >= FRESNEL_KAPPA_TINY ? (kp < FRESNEL_KAPPA_MAX ? kp : FRESNEL_KAPPA_MAX) : 0.0f;
+                fresnel_conductor_prep p = fresnel_conductor_prepare(e, kp), q = fresnel_conductor_prepare(ce, ck);
+                for (k = 0; k < ncs; k++) {
+                    float r = fresnel_conductor_prepared(&p, cs[k]);
+                    wrong += r != fresnel_conductor_prepared(&q, cs[k]);
+                    range += !(r >= 0.0f && r <= 1.0f);
+                }
+            }
+        CHECK("extremes f32: conductor-prepare of NaN, +-Inf, < 0, 0, tiny, huge eta and kappa: the clamped values, "
+              "results in [0, 1]",
+              wrong == 0 && range == 0, "%ld differ, %ld outside", wrong, range);
+    }
+    {
+        /* the two-division form (eta kappa < 2^-30), near-dielectrics, and the domain's corners */
+        static const float mat[][2] = {{0.5f, 1e-12f}, {1.0001f, 1e-15f}, {2.0f, 1e-18f}, {0.9f, 1e-10f},
+                                       {0.9999999f, 1e-12f}, {1.0f, 1e-18f}, {1e-3f, 1e-6f}, {0.01f, 1e-7f},
+                                       {1e5f, 1e5f}, {1e5f, 1e-3f}, {1e-3f, 1e5f}, {1e5f, 0.0f}, {1e-3f, 0.0f}};
+        double w_in = 0.0, w_out = 0.0;
+        long range = 0;
+        int m, k;
+        for (m = 0; m < (int)(sizeof mat / sizeof mat[0]); m++) {
+            fresnel_conductor_prep p = fresnel_conductor_prepare(mat[m][0], mat[m][1]);
+            int in = mat[m][0] >= 0.01f && mat[m][0] <= 100.0f && mat[m][1] <= 1000.0f;
+            fresnel_conductor_batch(&p, grid, out, ng);
+            for (k = 0; k < ng; k++) {
+                double err = fabs(out[k] - ref_conductor(mat[m][0], mat[m][1], grid[k]));
+                range += !(out[k] >= 0.0f && out[k] <= 1.0f);
+                if (in ? !(err <= w_in) : !(err <= w_out)) {
+                    if (in)
+                        w_in = err;
+                    else
+                        w_out = err;
+                }
+            }
+        }
+        NOTE("extremes f32: conductor-prepared on tiny kappa (two divisions below eta kappa = 2^-30): max|err| %.3g "
+             "for eta in [0.01, 100]; %.3g at the domain's corners (eta or kappa 1e-3 or 1e5)", w_in, w_out);
+        CHECK("extremes f32: conductor-prepared on tiny kappa within its bound, results in [0, 1] at the corners",
+              w_in <= FRESNEL_BOUND_CONDUCTOR_PREPARED && range == 0, "max %.3g, %ld outside", w_in, range);
+    }
+}
+
 int main(void)
 {
     int ti;
@@ -466,6 +598,7 @@ int main(void)
     test_q15_codes();
     test_reflectances();
     test_gulbrandsen();
+    test_conductor_prepared();
     CHECK("extremes: the runtime's number types are all covered (f32, q15, and f16 where the compiler has it)",
           extreme_type_count == 2 + FRESNEL_HAS_F16, "%d types", extreme_type_count);
     return harness_exit();

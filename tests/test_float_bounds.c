@@ -84,6 +84,62 @@ static void check_f0_helpers(void)
     CHECK("f0_in_medium bound", w_med <= FRESNEL_BOUND_F0_IN_MEDIUM, "max %.3g", w_med);
 }
 
+/* fresnel_conductor_prepared and fresnel_conductor_batch (one prepared
+ * material, issue 8) on the same grid as the model table: every eta, kappa
+ * (kappa = 0 included: the prepared form covers dielectrics too) and n1,
+ * against ref_conductor. The batch runs over the whole cosine array and must
+ * give exactly the prepared function's results; short batches check its
+ * tail loop. */
+static void check_conductor_prepared(const float *cs, int nc)
+{
+    static float out[2048];
+    struct worst w;
+    long bad_range = 0, differ = 0, count = 0;
+    int ie, ik, in, ic, k;
+    memset(&w, 0, sizeof w);
+    for (in = 0; in < GRID_N1_N; in++)
+        for (ie = 0; ie < GRID_ETA_N; ie++)
+            for (ik = 0; ik < GRID_KAPPA_N; ik++) {
+                float eta = (float)(grid_eta(ie) / grid_n1[in]), kappa = (float)(grid_kappa(ik) / grid_n1[in]);
+                fresnel_conductor_prep p = fresnel_conductor_prepare(eta, kappa);
+                fresnel_conductor_batch(&p, cs, out, nc);
+                for (ic = 0; ic < nc; ic++) {
+                    float got = fresnel_conductor_prepared(&p, cs[ic]);
+                    double ref = ref_conductor(eta, kappa, cs[ic]);
+                    double err = fabs((double)got - ref);
+                    count++;
+                    if (!(got >= 0.0f && got <= 1.0f))
+                        bad_range++;
+                    if (memcmp(&got, &out[ic], sizeof got))
+                        differ++;
+                    if (!(err <= w.err)) {
+                        w.err = err;
+                        w.eta = eta;
+                        w.kappa = kappa;
+                        w.n1 = grid_n1[in];
+                        w.c = cs[ic];
+                        w.ref = ref;
+                        w.got = got;
+                    }
+                }
+                for (k = 0; k <= 17 && ie % 8 == 0 && ik % 8 == 0; k++) {
+                    int j;
+                    out[k] = -1.0f;
+                    fresnel_conductor_batch(&p, cs + 100, out, k);
+                    for (j = 0; j < k; j++)
+                        differ += out[j] != fresnel_conductor_prepared(&p, cs[100 + j]);
+                    differ += out[k] != -1.0f; /* nothing written past n */
+                }
+            }
+    printf("NOTE %-18s max|err| %.3g at eta %.4g kappa %.4g n1 %.3g c %.9g (ref %.9g got %.9g), %ld points\n",
+           "conductor-prepared", w.err, w.eta, w.kappa, w.n1, w.c, w.ref, (double)w.got, count);
+    CHECK("conductor-prepared and -batch: results in [0, 1]", bad_range == 0, "%ld outside or NaN", bad_range);
+    CHECK("conductor-prepared and -batch bound", w.err <= FRESNEL_BOUND_CONDUCTOR_PREPARED,
+          "max|err| %.3g exceeds %.3g", w.err, (double)FRESNEL_BOUND_CONDUCTOR_PREPARED);
+    CHECK("conductor-batch: the prepared function's results, bit for bit, any n (tails 0..17)", differ == 0,
+          "%ld differ", differ);
+}
+
 int main(void)
 {
     float cs[2048];
@@ -127,5 +183,6 @@ int main(void)
     }
     check_schlick_gen_exponents(cs, nc);
     check_f0_helpers();
+    check_conductor_prepared(cs, nc);
     return harness_exit();
 }
