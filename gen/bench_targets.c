@@ -22,7 +22,7 @@ typedef struct targets_ctx {
     int32_t f0q;
     fresnel_conductor_prep prep;
     float lut16[16], lut32[32], lin16[16];
-    uint16_t q16[16], q32[32], qlin16[16];
+    uint16_t q16[16], q32[32], qlin16[16]; /* lut16, lut32 also serve the cubic rows */
 } targets_ctx;
 
 /* ---- timed batches: one evaluation per cosine, results summed (bench.h).
@@ -86,6 +86,8 @@ SCALAR_BATCH(batch_lut16_linear, fresnel_lut_linear(t->lin16, 16, c[i]))
 Q15_BATCH(batch_lut16_q15, fresnel_lut_q15_u16(t->q16, 16, cq[i]))
 Q15_BATCH(batch_lut32_q15, fresnel_lut_q15_u16(t->q32, 32, cq[i]))
 Q15_BATCH(batch_lut16_linear_q15, fresnel_lut_linear_q15_u16(t->qlin16, 16, cq[i]))
+SCALAR_BATCH(batch_lut16_cubic, fresnel_lut_cubic(t->lut16, 16, c[i]))
+Q15_BATCH(batch_lut16_cubic_q15, fresnel_lut_cubic_q15_u16(t->q16, 16, cq[i]))
 
 /* The batch API in chunks, each chunk's results summed: per cosine this
  * charges the batch one store and one load more than the scalar rows. */
@@ -121,6 +123,8 @@ enum {
     R_LUT32_Q15,
     R_LUT16_LIN,
     R_LUT16_LIN_Q15,
+    R_LUT16_CUBIC,
+    R_LUT16_CUBIC_Q15,
     R_COUNT
 };
 
@@ -142,6 +146,8 @@ static const struct {
     {"lut32-q15", batch_lut32_q15},
     {"lut16-linear-f32", batch_lut16_linear},
     {"lut16-linear-q15", batch_lut16_linear_q15},
+    {"lut16-cubic-f32", batch_lut16_cubic},
+    {"lut16-cubic-q15", batch_lut16_cubic_q15},
 };
 
 typedef char targets_rows_fit[R_COUNT <= BENCH_TARGET_ROWS ? 1 : -1];
@@ -247,6 +253,8 @@ static void measure_errors(double *err)
                 worse(&err[R_LUT16_Q15], fresnel_lut_q15_u16(t.q16, 16, cq) / 32768.0, ref_q);
                 worse(&err[R_LUT32_Q15], fresnel_lut_q15_u16(t.q32, 32, cq) / 32768.0, ref_q);
                 worse(&err[R_LUT16_LIN_Q15], fresnel_lut_linear_q15_u16(t.qlin16, 16, cq) / 32768.0, ref_q);
+                worse(&err[R_LUT16_CUBIC], fresnel_lut_cubic(t.lut16, 16, c[i]), ref[i]);
+                worse(&err[R_LUT16_CUBIC_Q15], fresnel_lut_cubic_q15_u16(t.q16, 16, cq) / 32768.0, ref_q);
             }
         }
 }

@@ -26,7 +26,7 @@ typedef struct bench_target_row {
     double matched_c0, matched_c1e4;
 } bench_target_row;
 
-#define BENCH_TARGET_ROWS 16 /* at most this many rows */
+#define BENCH_TARGET_ROWS 20 /* at most this many rows */
 
 /* Default workload: BENCH_TARGETS_COUNT cosines per batch (fits in L2),
  * median of BENCH_TARGETS_RUNS rounds. */

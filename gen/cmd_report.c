@@ -409,6 +409,7 @@ int cmd_report(int argc, char **argv)
     }
     if ((status = scene_load(scene_path, &r.sc)))
         return status;
+    r.timing = timing;
     r.g = malloc(sizeof *r.g);
     r.mats = calloc((size_t)r.sc.material_count, sizeof *r.mats);
     r.cells = calloc((size_t)r.sc.material_count * r.sc.model_count * report_type_count, sizeof *r.cells);

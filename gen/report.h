@@ -64,6 +64,7 @@ typedef struct report_run {
     double hoffman_rms[REPORT_HOFFMAN][3]; /* ours in ACEScg: Schlick, fitted eta/kappa, point-sampled */
     int hoffman_in_gamut[REPORT_HOFFMAN];  /* F0 inside ACEScg, unclamped */
     const char *cross_path;                /* make cross-count + make size output, or NULL */
+    int timing;                            /* 0: --no-timing */
 } report_run;
 
 /* Hoffman's table [Hof20]: his 14 metals with our ids and his RMS CIEDE2000

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "bench_targets.h"
 #include "fixed_params.h"
 #include "fresnel_fixed.h"
 #include "report.h"
@@ -169,6 +170,63 @@ static void write_ablation(FILE *f, const lut_result *o)
                 o[v].gold_max);
 }
 
+/* ---- host speed (bench_targets.c), one channel per evaluation */
+
+static const bench_target_row *speed_row(const bench_target_row *rows, int n, const char *name)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (!strcmp(rows[i].name, name))
+            return &rows[i];
+    return NULL;
+}
+
+static void speed_targets(FILE *f, int timing)
+{
+    bench_target_row rows[BENCH_TARGET_ROWS];
+    const bench_target_row *mit, *pbrt, *best = NULL;
+    static const char *const ours[] = {"conductor", "conductor-prepared", "conductor-batch"};
+    static const char *const luts[][2] = {{"lut16-cubic-f32", "lut16-cubic-q15"}, {"lut32-f32", "lut32-q15"}};
+    int n = timing ? bench_speed_targets(rows, BENCH_TARGET_ROWS) : -1, k;
+    char list[256] = "";
+    if (n <= 0) {
+        target(f, "Exact conductor f32 against Mitsuba's algorithm", "<= 1.2x its time, <= 1e-6 abs error",
+               UNMEASURED, "timing off in this run");
+        return;
+    }
+    mit = speed_row(rows, n, "mitsuba-style");
+    pbrt = speed_row(rows, n, "pbrt-style");
+    for (k = 0; k < 3; k++) {
+        const bench_target_row *o = speed_row(rows, n, ours[k]);
+        if (!o)
+            continue;
+        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s %.2fx Schlick, err %.1e", *list ? "; " : "",
+                 o->name, o->ratio_to_schlick, o->max_abs_err);
+        if (o->max_abs_err <= 1e-6 && (!best || o->ns < best->ns))
+            best = o;
+    }
+    if (mit && best)
+        target(f, "Exact conductor f32 (ours) against Mitsuba 3's algorithm (ours written from it, same run)",
+               "<= 1.2x its time, <= 1e-6 abs error", best->ns <= 1.2 * mit->ns ? PASS : MISS,
+               "best %s: %.2fx Mitsuba's time; Mitsuba-style %.2fx Schlick, err %.1e, matched index at c = 1e-4: "
+               "%.3g; ours: %s",
+               best->name, best->ns / mit->ns, mit->ratio_to_schlick, mit->max_abs_err, mit->matched_c1e4, list);
+    if (pbrt && best)
+        target(f, "Exact conductor f32 (ours) against pbrt-v4's FrComplex algorithm", ">= 2x faster",
+               pbrt->ns >= 2.0 * best->ns ? PASS : MISS, "%.2fx faster (%s); pbrt-style %.2fx Schlick, err %.1e",
+               pbrt->ns / best->ns, best->name, pbrt->ratio_to_schlick, pbrt->max_abs_err);
+    for (k = 0; k < 2; k++) {
+        const bench_target_row *a = speed_row(rows, n, luts[k][0]), *b = speed_row(rows, n, luts[k][1]);
+        char what[96];
+        if (!a || !b)
+            continue;
+        snprintf(what, sizeof what, "LUT evaluation, %s and %s", luts[k][0], luts[k][1]);
+        target(f, what, "<= 1.5x Schlick (f32, one channel)",
+               a->ratio_to_schlick <= 1.5 && b->ratio_to_schlick <= 1.5 ? PASS : MISS, "f32 %.2fx, Q1.15 %.2fx",
+               a->ratio_to_schlick, b->ratio_to_schlick);
+    }
+}
+
 void report_targets(report_run *r, FILE *f)
 {
     lut_result luts[N_VARIANTS];
@@ -190,6 +248,7 @@ void report_targets(report_run *r, FILE *f)
                    : MISS,
                "lut16-cubic %.4f / %.4f, lut32 %.4f / %.4f", luts[V_LUT16_CUBIC].gold_mean,
                luts[V_LUT16_CUBIC].gold_max, luts[V_LUT32].gold_mean, luts[V_LUT32].gold_max);
+    speed_targets(f, r->timing);
     write_ablation(f, luts);
     fprintf(f, "\n");
 }

@@ -17,21 +17,25 @@ static float fr__interp(const float *table, int n, float x)
 }
 
 /* Catmull-Rom through the four nodes around x, the outer ones clamped to the
- * table's ends, in Horner form: p1 + t/2 (d1 + t (d2 + t d3)). */
+ * table's ends, as a Hermite cubic on node differences (lut_f16.c explains
+ * why differences): F = p1 + t (m1 + t (3d - 2 m1 - m2 + t (m1 + m2 - 2d))),
+ * d = p2 - p1, m1 = (p2 - p0)/2, m2 = (p3 - p1)/2. */
 static float fr__cubic(const float *table, int n, float x)
 {
-    float pos = x * (float)(n - 1);
+    float pos = x * (float)(n - 1), t, p0, p1, p2, p3, d, m1, m2;
     int i = (int)pos;
-    float t, p0, p1, p2, p3;
-    if (i >= n - 1)
+    if (i > n - 2)
         i = n - 2;
     t = pos - (float)i;
-    p0 = table[i > 0 ? i - 1 : 0];
-    p1 = table[i];
-    p2 = table[i + 1];
-    p3 = table[i + 2 < n ? i + 2 : n - 1];
-    return p1 + 0.5f * t *
-                    ((p2 - p0) + t * ((2.0f * p0 - 5.0f * p1 + 4.0f * p2 - p3) + t * (3.0f * (p1 - p2) + p3 - p0)));
+    table += i;
+    p1 = table[0];
+    p2 = table[1];
+    p0 = i > 0 ? table[-1] : p1;
+    p3 = i < n - 2 ? table[2] : p2;
+    d = p2 - p1;
+    m1 = 0.5f * (p2 - p0);
+    m2 = 0.5f * (p3 - p1);
+    return p1 + t * (m1 + t * ((3.0f * d - 2.0f * m1 - m2) + t * (m1 + m2 - 2.0f * d)));
 }
 
 float fresnel_lut_cubic(const float *table, int n, float c)

@@ -665,7 +665,8 @@ vec3 fresnel_lut_linear_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRE
 FRESNEL_HIGHP float fresnel_lut_cubic_blend(FRESNEL_HIGHP float p0, FRESNEL_HIGHP float p1, FRESNEL_HIGHP float p2,
                                             FRESNEL_HIGHP float p3, FRESNEL_HIGHP float t)
 {
-    return p1 + 0.5 * t * ((p2 - p0) + t * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + t * (3.0 * (p1 - p2) + p3 - p0)));
+    FRESNEL_HIGHP float d = p2 - p1, m1 = 0.5 * (p2 - p0), m2 = 0.5 * (p3 - p1);
+    return p1 + t * (m1 + t * ((3.0 * d - 2.0 * m1 - m2) + t * (m1 + m2 - 2.0 * d)));
 }
 #define FRESNEL_I_LUT_CUBIC_AT(table, base, n, p) fresnel_lut_cubic_blend((table)[(base) + max(int((p).x) - 1, 0)], (table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (table)[(base) + min(int((p).x) + 2, (n) - 1)], (p).y)
 #define FRESNEL_LUT_CUBIC_ARRAY(table, n, c) clamp(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), 0.0, 1.0)
