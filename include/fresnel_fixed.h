@@ -415,4 +415,168 @@ fresnel_q16 fresnel_recip_q16(fresnel_q16 x);
 #ifdef __cplusplus
 }
 #endif
+/* ================================================================ fast paths
+ *
+ * Inline fixed-point evaluations for a Cortex-M0-class core, traded against
+ * the functions above: fewer instructions (ports/README.md, `make
+ * cross-count`), a larger but measured error, and preconditions instead of
+ * clamps. Integer only like the rest of this header (int32/uint32, no int64,
+ * no division, no float); C99 static inline, so a firmware that uses one of
+ * them links no library code for it.
+ *
+ * PRECONDITIONS (not checked; outside them the result is unspecified):
+ *   c, f0, f82 in [0, FRESNEL_Q15_ONE]; LUT entries in [0, FRESNEL_Q15_ONE]
+ *   and 2 <= n <= 1024.
+ * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them.
+ * ERROR BOUNDS (LSB of Q15, FRESNEL_Q15_BOUND_*_FAST) are the largest
+ * |result/32768 - reference| measured by tests/test_fixed_fast.c, against
+ * the same double references as tests/test_fixed_bounds.c, over every cos
+ * code 0..32768 (see each function for the parameter sets).
+ *
+ * Where the error comes from: x^5 = (1 - c)^5 is formed with 32-bit products
+ * of ~16-bit factors (x^2 and x^4 rounded to Q16), about 1.5 units of 2^-16
+ * against 2^-30 in fresnel_schlick_q15; that is the price of 4 multiplies
+ * instead of 8 and no 15-bit halves.
+ */
+#if FRESNEL_HAS_FIXED
+
+/* Forced inline under GCC and Clang: at -Os they would otherwise keep a
+ * helper used twice (fresnel_fast__pow5_q16) out of line, a call per use. */
+#if defined(__GNUC__)
+#define FRESNEL_FAST__INLINE static inline __attribute__((always_inline))
+#else
+#define FRESNEL_FAST__INLINE static inline
+#endif
+
+#define FRESNEL_Q15_BOUND_SCHLICK_FAST 1.55    /* measured 1.51924 (every 16th F0) */
+#define FRESNEL_Q15_BOUND_F82_FAST 3.2         /* measured 3.13333 (1/32 grid), 2.36336 (materials) */
+#define FRESNEL_Q15_BOUND_LUT_FAST 1.0         /* 2 <= n <= 64; measured 0.98962 */
+#define FRESNEL_Q15_BOUND_LUT_FAST_1024 2.8    /* n <= 1024; measured 2.76231 (1024-node TIR table) */
+
+/* x^5 in Q16 (<= 2^16) for x in Q15, 0 <= x <= 2^15. x^2 truncated to Q16
+ * (<= 2^16; one less at x = 1, so that its square fits 32 bits), x^4 and
+ * x^5 rounded to Q16. */
+FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5_q16(uint32_t x)
+{
+    uint32_t a = (x * x) >> 14, x4;
+    a -= a >> 16;
+    x4 = (a * a + 65535u) >> 16;
+    return (x4 * x + 16384u) >> 15;
+}
+
+/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 and c in [0, one]: the weight of
+ * fresnel_fast__pow5_q16 and one rounding. Error <=
+ * FRESNEL_Q15_BOUND_SCHLICK_FAST LSB (every 16th F0 code, every c code;
+ * every F0 code with FRESNEL_TEST_EXHAUSTIVE=1). c = 0 gives exactly one,
+ * c = one exactly F0. Cost: 4 mul. */
+FRESNEL_FAST__INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
+{
+    uint32_t f = (uint32_t)f0, w = fresnel_fast__pow5_q16(32768u - (uint32_t)c);
+    return (fresnel_q15)(((f << 16) + (32768u - f) * w + 32768u) >> 16);
+}
+
+/* Hoffman's F82 model (fresnel_f82_q15), f0, f82 and c in [0, one]:
+ *   F = F0 + (1 - F0) P(c) - (F0 - F82) Q(c),
+ *   Q = K1 c x^6 in [0, 1] (K1 = 7^7/6^6), P = x^5 - (K2/K1) Q (K2 = 49/6),
+ * both in Q16; F in Q31 offset by 1/2 and computed modulo 2^32 (F before
+ * the clamp lies in [-0.08, 1.13], inside the window [-1/2, 3/2)), then
+ * clamped to [0, 1] as fresnel_f82 does. Error <= FRESNEL_Q15_BOUND_F82_FAST
+ * LSB (F0 and F82 on a 1/32 grid, every c code); K1 c amplifies the error
+ * of x^6, so the bound is reached only where |F0 - F82| is large. Cost: 9 mul. */
+FRESNEL_FAST__INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t f82, int32_t c)
+{
+    uint32_t cc = (uint32_t)c, x = 32768u - cc, f = (uint32_t)f0;
+    uint32_t w = fresnel_fast__pow5_q16(x);
+    uint32_t y = (((x * x) >> 14) * x + 16384u) >> 15;            /* x^3, Q16 */
+    uint32_t g = ((cc * y + 1024u) >> 11) * 36150u;               /* K1 c x^3, Q31, <= 1.86 2^31 */
+    uint32_t q = (((g + 32768u) >> 16) * y + 16384u) >> 15;       /* K1 c x^6, Q16 */
+    uint32_t p = w - ((q * 30321u + 32768u) >> 16);               /* K2/K1 = 30321 2^-16 */
+    uint32_t v = (f << 16) + (32768u - f) * p - (f - (uint32_t)f82) * q + (1u << 30);
+    if (v < (1u << 30))
+        return 0;
+    v -= 1u << 30;
+    return v >= (1u << 31) ? (fresnel_q15)FRESNEL_Q15_ONE : (fresnel_q15)((v + 32768u) >> 16);
+}
+
+/* sqrt(j/128) in Q22 for j = 32..129, and 2^16 / (r_j + r_(j+1)) for
+ * j = 32..128 (the chord slope of each segment): 586 bytes of flash in the
+ * translation unit that uses fresnel_lut_q15_u16_fast. */
+static const uint32_t fresnel_fast__sqrt_r[98] = {
+    2097152u, 2129668u, 2161695u, 2193254u, 2224366u, 2255048u, 2285318u, 2315193u,
+    2344687u, 2373815u, 2402589u, 2431023u, 2459129u, 2486916u, 2514397u, 2541580u,
+    2568476u, 2595093u, 2621440u, 2647525u, 2673355u, 2698938u, 2724280u, 2749389u,
+    2774271u, 2798932u, 2823377u, 2847613u, 2871644u, 2895475u, 2919112u, 2942559u,
+    2965821u, 2988901u, 3011805u, 3034536u, 3057098u, 3079495u, 3101730u, 3123806u,
+    3145728u, 3167498u, 3189119u, 3210595u, 3231928u, 3253121u, 3274178u, 3295099u,
+    3315888u, 3336548u, 3357081u, 3377489u, 3397775u, 3417940u, 3437986u, 3457917u,
+    3477733u, 3497437u, 3517031u, 3536516u, 3555894u, 3575168u, 3594337u, 3613406u,
+    3632374u, 3651243u, 3670016u, 3688693u, 3707276u, 3725766u, 3744165u, 3762474u,
+    3780695u, 3798827u, 3816874u, 3834836u, 3852714u, 3870510u, 3888224u, 3905858u,
+    3923412u, 3940888u, 3958288u, 3975611u, 3992858u, 4010032u, 4027133u, 4044161u,
+    4061117u, 4078004u, 4094820u, 4111568u, 4128248u, 4144861u, 4161407u, 4177888u,
+    4194304u, 4210656u
+};
+static const uint16_t fresnel_fast__sqrt_k[97] = {
+    65032u, 64054u, 63119u, 62223u, 61365u, 60541u, 59749u, 58988u, 58255u, 57549u, 56868u, 56211u,
+    55575u, 54961u, 54367u, 53792u, 53234u, 52694u, 52169u, 51660u, 51166u, 50685u, 50218u, 49764u,
+    49321u, 48891u, 48471u, 48062u, 47663u, 47274u, 46894u, 46523u, 46161u, 45808u, 45462u, 45124u,
+    44793u, 44470u, 44153u, 43843u, 43540u, 43243u, 42952u, 42666u, 42386u, 42112u, 41843u, 41579u,
+    41320u, 41066u, 40816u, 40571u, 40330u, 40093u, 39861u, 39633u, 39408u, 39187u, 38970u, 38757u,
+    38547u, 38340u, 38136u, 37936u, 37739u, 37545u, 37354u, 37166u, 36981u, 36798u, 36618u, 36441u,
+    36266u, 36094u, 35924u, 35756u, 35591u, 35428u, 35268u, 35109u, 34953u, 34798u, 34646u, 34496u,
+    34347u, 34201u, 34056u, 33913u, 33772u, 33633u, 33496u, 33360u, 33225u, 33093u, 32962u, 32832u,
+    32704u
+};
+
+/* sqrt(c / 2^15) in Q22 for c in [1, 32768]. c is scaled by 4^m into
+ * [2^13, 2^15] (m = 0 for c >= 2^13, up to 7 for c = 1). On segment
+ * j = c >> 8, with d = c & 255 and delta = sqrt(c) - r_j, which solves
+ * delta = (d + delta (dh - delta)) k  (dh = r_(j+1) - r_j, k the chord slope):
+ * delta1 = d k (the chord), delta2 = (d + delta1 (dh - delta1)) k (one
+ * fixed-point step, contraction dh/(r_j + r_(j+1)) <= 2^-7). Every term is
+ * non-negative (delta1 <= dh). Measured |error| <= 2^-20.7 (test_fixed_fast). */
+FRESNEL_FAST__INLINE uint32_t fresnel_fast__sqrt_q22(uint32_t c)
+{
+    uint32_t m = 0, j, d, k, r0, dh, d1;
+    while (c < 8192u) {
+        c <<= 2;
+        m++;
+    }
+    j = (c >> 8) - 32u;
+    d = c & 255u;
+    k = fresnel_fast__sqrt_k[j];
+    r0 = fresnel_fast__sqrt_r[j];
+    dh = fresnel_fast__sqrt_r[j + 1] - r0;
+    d1 = (d * k) >> 9;
+    return (r0 + ((((d << 7) + ((d1 * (dh - d1)) >> 22)) * k) >> 16)) >> m;
+}
+
+/* fresnel_lut_q15_u16 (nodes uniform in sqrt(c), node i at c = (i/(n-1))^2)
+ * with the position from fresnel_fast__sqrt_q22 instead of the exact root:
+ * pos = round(sqrt(c) (n-1) 2^15), segment i = (pos - 1) >> 15 (so c = one
+ * reads nodes n-2 and n-1 with weight one), linear interpolation rounded.
+ * Preconditions: 2 <= n <= 1024, entries <= 32768, c in [0, one]. Error
+ * against the double interpolation at the exact sqrt(c) (tables of 2 to
+ * 1024 nodes as in test_fixed_bounds.c) <= FRESNEL_Q15_BOUND_LUT_FAST LSB for
+ * n <= 64 and FRESNEL_Q15_BOUND_LUT_FAST_1024 up to 1024 nodes: the
+ * position's own error is below 2^-20.7 (n - 1) of a segment, which shows
+ * times the steepest node-to-node step (a 1024-node table across a critical
+ * angle). Cost: 5 mul
+ * (plus 2 shifts per halving of c below 1/4). */
+FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, int n, int32_t c)
+{
+    uint32_t pos, i, t;
+    int32_t v0, v1;
+    if (c == 0)
+        return table[0];
+    pos = (fresnel_fast__sqrt_q22((uint32_t)c) * (uint32_t)(n - 1) + 64u) >> 7;
+    i = (pos - 1u) >> 15;
+    t = pos - (i << 15);
+    v0 = table[i];
+    v1 = table[i + 1];
+    return (fresnel_q15)((v0 * 32768 + (v1 - v0) * (int32_t)t + 16384) >> 15);
+}
+
+#endif /* FRESNEL_HAS_FIXED: fast paths */
+
 #endif /* FRESNEL_FIXED_H */

@@ -194,12 +194,12 @@ size_lib() { # target type -> $OUT/$1/size_<type>.a
 }
 
 # .text and .rodata of the probe for one model.
-probe_size() { # target kind(PROBE|PROBE_F32|PROBE_F16) id type -> "text ro" or "- -"
-    t=$1 kind=$2 id=$3 ty=$4
+probe_size() { # target kind(PROBE|PROBE_F32|PROBE_F16) id type [-Dextra] -> "text ro" or "- -"
+    t=$1 kind=$2 id=$3 ty=$4 def=${5:-}
     extra="" libs="-lgcc"
     [ "$t" = rv32 ] && [ "$kind" = PROBE_F32 ] && extra="-Iports/rv32imc/include -Wl,--unresolved-symbols=ignore-all"
     [ "$t" != rv32 ] && [ "$kind" != PROBE ] && libs="-lm -lc -lgcc"
-    $CC $W $CF -D$kind="$id" -Iinclude -nostdlib -nostartfiles -Wl,--gc-sections -Wl,-e,probe $extra \
+    $CC $W $CF -D$kind="$id" $def -Iinclude -nostdlib -nostartfiles -Wl,--gc-sections -Wl,-e,probe $extra \
         tests/cross/size_probe.c "$OUT/$t/size_$ty.a" ports/common/mem.c $libs -o "$OUT/probe.elf" 2>"$OUT/probe.err" ||
         { echo "- -"; return; }
     $SZ -A "$OUT/probe.elf" | awk '$1 == ".text" { t = $2 } $1 == ".rodata" { r = $2 } END { printf "%d %d\n", t, r }'
@@ -246,12 +246,37 @@ cmd_size() {
             echo "$row"
         done
     done
+    # The inline fast paths of fresnel_fixed.h ("fast paths"), fixed point only.
+    j=15
+    for m in schlick-fast f82-fast lut-u16-fast; do
+        j=$((j + 1))
+        row="| $m | fixed |"
+        for t in m0 m4f rv32; do
+            target $t
+            set -- $(probe_size $t PROBE $j fixed)
+            eval "bt=\$base_${t}_fixed_t br=\$base_${t}_fixed_r"
+            if [ "$1" = - ]; then row="$row build failed |"; else row="$row $(($1 - bt)) / $(($2 - br)) |"; fi
+        done
+        echo "$row"
+    done
     echo
     echo "Bytes the call of one model adds to an otherwise empty program (tests/cross/size_probe.c, --gc-sections), including the"
     echo "libgcc soft-float helpers and newlib libm functions it pulls in (f32 and f16 on Cortex-M0; f16 on Cortex-M4F converts"
     echo "in hardware); RV32 f32 excludes libm, which Debian's riscv64-unknown-elf toolchain does not ship; gcc 12 has no"
     echo "_Float16 for RISC-V. lut = fresnel_lut*_u16 / fresnel_lut / fresnel_lut_f16; lut-residual = the s8 residual table."
     target m0
+    # A Schlick-only fixed scene on the fast path: one material, and the
+    # increment per further material (2 -> 4 materials, halved).
+    set -- $(probe_size m0 PROBE 19 fixed -DSCENE_N=1)
+    s1t=$(($1 - base_m0_fixed_t)) s1r=$(($2 - base_m0_fixed_r))
+    set -- $(probe_size m0 PROBE 19 fixed -DSCENE_N=2)
+    s2t=$1 s2r=$2
+    set -- $(probe_size m0 PROBE 19 fixed -DSCENE_N=4)
+    echo
+    echo "Cortex-M0 -Os, fresnel_schlick_q15_fast (tests/cross/size_probe.c PROBE=19, SCENE_N materials' F0 in a const table):"
+    echo "schlick-only fixed scene: .text $s1t B, .rodata $s1r B (one material); per further material: .text $((($1 - s2t) / 2)) B, .rodata $((($2 - s2r) / 2)) B"
+    wt=$($SZ -t "$OUT/m0/size_fixed.a" | awk '$NF ~ /TOTALS/ { print $1 }')
+    echo "whole fixed runtime (libfresnel fixed objects): .text $wt B (Cortex-M0 -Os, src/fixed_math.c and src/*_q15.c, before --gc-sections)"
     d=$OUT/m0/fixed-only
     [ -f "$d/schlick_only.elf" ] || cmd_nm >/dev/null
     echo

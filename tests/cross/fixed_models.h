@@ -65,6 +65,15 @@ static fresnel_q15 e_lut_linear_residual_s8(const conform_material *m, int32_t c
     (void)m;
     return fresnel_lut_linear_residual_q15_s8(conform_lut_f0, conform_lut_s8[1], CONFORM_LUT_N, conform_lut_frac8, c);
 }
+/* The fast paths (fresnel_fixed.h, "fast paths"): their preconditions hold
+ * here (c, F0, F82 in [0, one]; a 64-node table). */
+static fresnel_q15 e_schlick_fast(const conform_material *m, int32_t c) { return fresnel_schlick_q15_fast(m->f0, c); }
+static fresnel_q15 e_f82_fast(const conform_material *m, int32_t c) { return fresnel_f82_q15_fast(m->f0, m->f82, c); }
+static fresnel_q15 e_lut_u16_fast(const conform_material *m, int32_t c)
+{
+    (void)m;
+    return fresnel_lut_q15_u16_fast(conform_lut_u16[0], CONFORM_LUT_N, c);
+}
 typedef struct fixed_model {
     const char *name;
     fixed_eval fn;
@@ -91,6 +100,9 @@ static const fixed_model fixed_models[] = {
     {"lut u8", e_lut_u8, 0},
     {"lut-residual s16", e_lut_residual_s16, 0},
     {"lut-linear-residual s8", e_lut_linear_residual_s8, 0},
+    {"schlick fast", e_schlick_fast, 1},
+    {"f82 fast", e_f82_fast, 1},
+    {"lut u16 fast", e_lut_u16_fast, 0},
 };
 #define FIXED_MODEL_COUNT ((int)(sizeof fixed_models / sizeof fixed_models[0]))
 

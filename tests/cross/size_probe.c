@@ -13,6 +13,9 @@ void probe(void);
 
 #if defined(PROBE)
 #include "fresnel_fixed.h"
+#ifndef SCENE_N
+#define SCENE_N 1
+#endif
 static const fresnel_q15_ior ior = {-1051966000, 12345, 3, {1073741824u, -28}, {1073741824u, -21}, {1073741824u, -29},
                                     {1073741824u, -33}};
 static const fresnel_q15_nk nk = {{1073741824u, -30}, {1073741824u, -27}};
@@ -53,6 +56,18 @@ void probe(void)
         fresnel_q15_ior out;
         fresnel_q15_ior_prepare(f * 4, c * 4, &out);
         probe_out = (uint32_t)out.a0;
+    }
+#elif PROBE == 16
+    probe_out = fresnel_schlick_q15_fast(f, c);
+#elif PROBE == 17
+    probe_out = fresnel_f82_q15_fast(f, f + 100, c);
+#elif PROBE == 18
+    probe_out = fresnel_lut_q15_u16_fast(t16, 8, c);
+#elif PROBE == 19
+    {
+        /* a Schlick-only fixed scene of SCENE_N materials (F0 per material) */
+        static const fresnel_q15 scene_f0[SCENE_N] = {25937};
+        probe_out = fresnel_schlick_q15_fast(scene_f0[(uint32_t)f % SCENE_N], c);
     }
 #elif PROBE == 15
     probe_out = fresnel_schlick_q15_rgb((fresnel_q15_rgb){(fresnel_q15)f, (fresnel_q15)(f + 1), (fresnel_q15)(f + 2)}, c).g;

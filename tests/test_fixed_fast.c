@@ -1,0 +1,194 @@
+/* The fast paths of fresnel_fixed.h (its "fast paths" section) against the
+ * double reference, on every cos code 0..32768: results in [0, one] and
+ * within the FRESNEL_Q15_BOUND_*_FAST each documents. Parameter sets:
+ * Schlick, every 16th F0 code (every F0 code with FRESNEL_TEST_EXHAUSTIVE=1);
+ * F82, F0 and F82 on a 1/32 grid and the (F0, F82) of every test material;
+ * the LUT, the tables of test_fixed_bounds.c (exact conductor curves of
+ * every 4th material, 2 to 1024 nodes uniform in sqrt(c)), against the
+ * double interpolation at the exact sqrt(c). The position's square root is
+ * checked on its own on every code. The maxima are printed (NOTE lines). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixed_materials.h"
+#include "fixed_params.h"
+#include "fresnel_fixed.h"
+#include "harness.h"
+#include "models.h"
+#include "reference.h"
+
+#define ONE 32768
+
+typedef struct worst {
+    double err;
+    char where[128];
+} worst;
+
+static void note_worst(worst *w, double err, const char *what, int32_t c)
+{
+    if (err > w->err) {
+        w->err = err;
+        snprintf(w->where, sizeof w->where, "%.100s c %d", what, (int)c);
+    }
+}
+
+static void check_bound(const char *name, const worst *w, double bound, long bad_range)
+{
+    char label[128];
+    printf("NOTE %-32s max|err| %.5f LSB at %s\n", name, w->err, w->where);
+    snprintf(label, sizeof label, "fixed fast %s results in [0, one]", name);
+    CHECK(label, bad_range == 0, "%ld results outside [0, 32768]", bad_range);
+    snprintf(label, sizeof label, "fixed fast %s within %.3f LSB", name, bound);
+    CHECK(label, w->err <= bound, "max|err| %.5f LSB exceeds the documented %.3f at %s", w->err, bound, w->where);
+}
+
+static void check_schlick(void)
+{
+    const char *ex = getenv("FRESNEL_TEST_EXHAUSTIVE");
+    int step = ex && ex[0] == '1' ? 1 : 16;
+    worst w;
+    long bad = 0, ends = 0;
+    int32_t f0, c;
+    memset(&w, 0, sizeof w);
+    for (f0 = 0; f0 <= ONE; f0 += step) {
+        char what[40];
+        snprintf(what, sizeof what, "F0 %d", (int)f0);
+        for (c = 0; c <= ONE; c++) {
+            int32_t got = fresnel_schlick_q15_fast(f0, c);
+            bad += got < 0 || got > ONE;
+            note_worst(&w, fabs(got / 32768.0 - ref_schlick(f0 / 32768.0, c / 32768.0)) * 32768.0, what, c);
+        }
+        ends += fresnel_schlick_q15_fast(f0, 0) != ONE || fresnel_schlick_q15_fast(f0, ONE) != f0;
+    }
+    check_bound(step == 1 ? "schlick, every F0" : "schlick, every 16th F0", &w, FRESNEL_Q15_BOUND_SCHLICK_FAST,
+                bad);
+    CHECK("fixed fast schlick: c = 0 gives one, c = one gives F0", ends == 0, "%ld F0 codes differ", ends);
+}
+
+static void check_f82(const test_material *mat, int nmat)
+{
+    worst w;
+    long bad = 0;
+    int a, b, k;
+    int32_t c;
+    memset(&w, 0, sizeof w);
+    for (a = 0; a <= 32; a++)
+        for (b = 0; b <= 32; b++) {
+            int32_t f0 = a * 1024, f82 = b * 1024;
+            char what[40];
+            snprintf(what, sizeof what, "F0 %d/32 F82 %d/32", a, b);
+            for (c = 0; c <= ONE; c++) {
+                int32_t got = fresnel_f82_q15_fast(f0, f82, c);
+                bad += got < 0 || got > ONE;
+                note_worst(&w, fabs(got / 32768.0 - ref_f82(f0 / 32768.0, f82 / 32768.0, c / 32768.0)) * 32768.0,
+                           what, c);
+            }
+        }
+    check_bound("f82, F0/F82 on a 1/32 grid", &w, FRESNEL_Q15_BOUND_F82_FAST, bad);
+    memset(&w, 0, sizeof w);
+    bad = 0;
+    for (k = 0; k < nmat; k++) {
+        model_params mp;
+        model_fixed mf;
+        model_derive(mat[k].eta, mat[k].kappa, 1.0, 1.0, 5.0, &mp);
+        model_params_round_fixed(&mp);
+        model_fixed_from_params(&mp, &mf);
+        for (c = 0; c <= ONE; c++) {
+            int32_t got = fresnel_f82_q15_fast(mf.f0, mf.f82, c);
+            bad += got < 0 || got > ONE;
+            note_worst(&w, fabs(got / 32768.0 - ref_f82(mf.f0 / 32768.0, mf.f82 / 32768.0, c / 32768.0)) * 32768.0,
+                       mat[k].name, c);
+        }
+    }
+    check_bound("f82, test materials", &w, FRESNEL_Q15_BOUND_F82_FAST, bad);
+}
+
+/* The position's root on every code: |S 2^-22 - sqrt(c 2^-15)|. */
+static void check_sqrt(void)
+{
+    double worst_e = 0.0;
+    int32_t c, at = 0;
+    for (c = 1; c <= ONE; c++) {
+        double e = fabs(fresnel_fast__sqrt_q22((uint32_t)c) / 4194304.0 - sqrt(c / 32768.0));
+        if (e > worst_e)
+            worst_e = e, at = c;
+    }
+    printf("NOTE fast sqrt(c) in Q22: max|err| 2^%.2f at c %d\n", log2(worst_e), (int)at);
+    CHECK("fixed fast sqrt(c) within 2^-20.7 on every code", worst_e <= ldexp(1.0, -20) / 1.6245,
+          "max|err| 2^%.3f at c %d", log2(worst_e), (int)at);
+}
+
+static double ref_interp(const double *v, int n, double x)
+{
+    double pos = x * (n - 1), t;
+    int i = (int)pos;
+    if (i >= n - 1)
+        i = n - 2;
+    t = pos - i;
+    return v[i] + t * (v[i + 1] - v[i]);
+}
+
+static void check_lut(const test_material *mat, int nmat)
+{
+    static const int sizes[] = {2, 3, 5, 8, 16, 33, 64, 256, 1024};
+    static double dv[1024];
+    static uint16_t u16[1024];
+    worst w, w64;
+    long bad = 0, differ = 0, evals = 0;
+    int k, is;
+    memset(&w, 0, sizeof w);
+    memset(&w64, 0, sizeof w64);
+    for (k = 0; k < nmat; k += 4)
+        for (is = 0; is < (int)(sizeof sizes / sizeof sizes[0]); is++) {
+            int n = sizes[is], i;
+            int32_t c;
+            char what[64];
+            for (i = 0; i < n; i++) {
+                double x = i / (double)(n - 1);
+                u16[i] = (uint16_t)floor(ref_conductor(mat[k].eta, mat[k].kappa, x * x) * 32768.0 + 0.5);
+                dv[i] = u16[i] / 32768.0;
+            }
+            snprintf(what, sizeof what, "%.31s n %d", mat[k].name, n);
+            for (c = 0; c <= ONE; c++) {
+                int32_t got = fresnel_lut_q15_u16_fast(u16, n, c);
+                double err = fabs(got / 32768.0 - ref_interp(dv, n, sqrt(c / 32768.0))) * 32768.0;
+                bad += got < 0 || got > ONE;
+                differ += got != fresnel_lut_q15_u16(u16, n, c);
+                evals++;
+                note_worst(&w, err, what, c);
+                if (n <= 64)
+                    note_worst(&w64, err, what, c);
+            }
+        }
+    {
+        static const uint16_t ramp[2] = {0, ONE};
+        int32_t c;
+        for (c = 0; c <= ONE; c++) {
+            int32_t got = fresnel_lut_q15_u16_fast(ramp, 2, c);
+            bad += got < 0 || got > ONE;
+            double err = fabs(got / 32768.0 - sqrt(c / 32768.0)) * 32768.0;
+            note_worst(&w, err, "ramp {0, one}", c);
+            note_worst(&w64, err, "ramp {0, one}", c);
+        }
+    }
+    printf("NOTE fast LUT differs from fresnel_lut_q15_u16 in %ld of %ld results\n", differ, evals);
+    check_bound("LUT u16, sqrt(c) nodes, n <= 64", &w64, FRESNEL_Q15_BOUND_LUT_FAST, bad);
+    check_bound("LUT u16, sqrt(c) nodes, n <= 1024", &w, FRESNEL_Q15_BOUND_LUT_FAST_1024, bad);
+}
+
+int main(void)
+{
+    static test_material mat[TM_MAX];
+    int nmat = test_materials(mat);
+    if (nmat <= 0) {
+        CHECK("fixed test materials load from data/", 0, "spectrum_load failed");
+        return harness_exit();
+    }
+    check_schlick();
+    check_f82(mat, nmat);
+    check_sqrt();
+    check_lut(mat, nmat);
+    return harness_exit();
+}
