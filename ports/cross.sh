@@ -275,6 +275,12 @@ cmd_size() {
     echo
     echo "Cortex-M0 -Os, fresnel_schlick_q15_fast (tests/cross/size_probe.c PROBE=19, SCENE_N materials' F0 in a const table):"
     echo "schlick-only fixed scene: .text $s1t B, .rodata $s1r B (one material); per further material: .text $((($1 - s2t) / 2)) B, .rodata $((($2 - s2r) / 2)) B"
+    set -- $(probe_size m0 PROBE 20 fixed -DSCENE_N=1)
+    s1t=$(($1 - base_m0_fixed_t)) s1r=$(($2 - base_m0_fixed_r))
+    set -- $(probe_size m0 PROBE 20 fixed -DSCENE_N=2)
+    s2t=$1 s2r=$2
+    set -- $(probe_size m0 PROBE 20 fixed -DSCENE_N=4)
+    echo "schlick-only fixed scene, RGB (fresnel_schlick_q15_rgb_fast, PROBE=20): .text $s1t B, .rodata $s1r B (one material); per further material: .text $((($1 - s2t) / 2)) B, .rodata $((($2 - s2r) / 2)) B"
     wt=$($SZ -t "$OUT/m0/size_fixed.a" | awk '$NF ~ /TOTALS/ { print $1 }')
     echo "whole fixed runtime (libfresnel fixed objects): .text $wt B (Cortex-M0 -Os, src/fixed_math.c and src/*_q15.c, before --gc-sections)"
     d=$OUT/m0/fixed-only

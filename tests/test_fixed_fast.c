@@ -178,6 +178,18 @@ static void check_lut(const test_material *mat, int nmat)
     check_bound("LUT u16, sqrt(c) nodes, n <= 1024", &w, FRESNEL_Q15_BOUND_LUT_FAST_1024, bad);
 }
 
+static void check_schlick_rgb(void)
+{
+    int32_t c, ok = 1;
+    for (c = 0; c <= 32768; c++) {
+        fresnel_q15_rgb f0 = {(fresnel_q15)(c % 32769), (fresnel_q15)(32768 - c), (fresnel_q15)((c * 7) % 32769)};
+        fresnel_q15_rgb r = fresnel_schlick_q15_rgb_fast(f0, c);
+        ok &= r.r == fresnel_schlick_q15_fast(f0.r, c) && r.g == fresnel_schlick_q15_fast(f0.g, c) &&
+              r.b == fresnel_schlick_q15_fast(f0.b, c);
+    }
+    CHECK("fresnel_schlick_q15_rgb_fast equals the scalar fast path per channel", ok, "differs");
+}
+
 int main(void)
 {
     static test_material mat[TM_MAX];
@@ -190,5 +202,6 @@ int main(void)
     check_f82(mat, nmat);
     check_sqrt();
     check_lut(mat, nmat);
+    check_schlick_rgb();
     return harness_exit();
 }

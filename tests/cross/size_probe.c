@@ -69,6 +69,13 @@ void probe(void)
         static const fresnel_q15 scene_f0[SCENE_N] = {25937};
         probe_out = fresnel_schlick_q15_fast(scene_f0[(uint32_t)f % SCENE_N], c);
     }
+#elif PROBE == 20
+    {
+        /* the same scene in RGB: an F0 triple per material, as fresnel gen emits it */
+        static const fresnel_q15_rgb scene_f0[SCENE_N] = {{31784, 25937, 11907}};
+        fresnel_q15_rgb r = fresnel_schlick_q15_rgb_fast(scene_f0[(uint32_t)f % SCENE_N], c);
+        probe_out = (fresnel_q15)(r.r ^ r.g ^ r.b);
+    }
 #elif PROBE == 15
     probe_out = fresnel_schlick_q15_rgb((fresnel_q15_rgb){(fresnel_q15)f, (fresnel_q15)(f + 1), (fresnel_q15)(f + 2)}, c).g;
 #endif
