@@ -227,6 +227,101 @@ static void speed_targets(FILE *f, int timing)
     }
 }
 
+/* ---- Cortex-M0 (make cross-count, make size output) */
+
+/* Mean instructions of row `name` in the "== m0 fixed point" section: the
+ * row is the name, spaces, then mean, min and max. NaN when absent. */
+static double m0_count(const char *path, const char *name)
+{
+    FILE *in = fopen(path, "r");
+    char line[512];
+    int in_m0 = 0;
+    double v = NAN;
+    size_t len = strlen(name);
+    if (!in)
+        return NAN;
+    while (fgets(line, sizeof line, in)) {
+        if (!strncmp(line, "== ", 3))
+            in_m0 = !strncmp(line, "== m0 fixed point", 17);
+        else if (in_m0 && !strncmp(line, name, len) && line[len] == ' ') {
+            char *end;
+            double x = strtod(line + len, &end);
+            if (end != line + len)
+                v = x;
+        }
+    }
+    fclose(in);
+    return v;
+}
+
+/* The numbers after ".text " and ".rodata " on the line starting with
+ * prefix; -1 when absent. */
+static void size_line(const char *path, const char *prefix, long *text, long *rodata, long *more_text,
+                      long *more_rodata)
+{
+    FILE *in = fopen(path, "r");
+    char line[512];
+    *text = *rodata = *more_text = *more_rodata = -1;
+    if (!in)
+        return;
+    while (fgets(line, sizeof line, in))
+        if (!strncmp(line, prefix, strlen(prefix))) {
+            char *p = strstr(line, ".text "), *q;
+            if (p)
+                *text = strtol(p + 6, NULL, 10);
+            if ((q = strstr(line, ".rodata ")))
+                *rodata = strtol(q + 8, NULL, 10);
+            if ((p = strstr(line, "per further material: .text ")))
+                *more_text = strtol(p + 28, NULL, 10);
+            if (p && (q = strstr(p, ".rodata ")))
+                *more_rodata = strtol(q + 8, NULL, 10);
+        }
+    fclose(in);
+}
+
+static void m0_targets(const report_run *r, FILE *f)
+{
+    static const struct {
+        const char *what, *row, *library_row;
+        double goal;
+    } counts[] = {{"Schlick", "schlick fast", "schlick", 20},
+                  {"LUT (u16, nodes uniform in sqrt(c), 64 nodes)", "lut u16 fast", "lut u16", 30},
+                  {"F82", "f82 fast", "f82", 35},
+                  {"exact conductor", "exact-conductor fast", "exact-conductor", 150}};
+    long t, ro, mt, mr;
+    int k;
+    if (!r->cross_path) {
+        target(f, "Cortex-M0 instructions and sizes", "", UNMEASURED, "run through `make report` (--cross)");
+        return;
+    }
+    for (k = 0; k < 4; k++) {
+        double fast = m0_count(r->cross_path, counts[k].row), lib = m0_count(r->cross_path, counts[k].library_row);
+        char what[96], goal[32];
+        snprintf(what, sizeof what, "Cortex-M0 fixed point, %s: instructions per evaluation (qemu trace)",
+                 counts[k].what);
+        snprintf(goal, sizeof goal, "<= %.0f", counts[k].goal);
+        if (isnan(fast) && isnan(lib))
+            target(f, what, goal, UNMEASURED, "not in the cross-count output");
+        else if (isnan(fast))
+            target(f, what, goal, lib <= counts[k].goal ? PASS : MISS, "%.0f (library function; no fast path)", lib);
+        else
+            target(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (library function %.0f)",
+                   fast, lib);
+    }
+    size_line(r->cross_path, "schlick-only fixed scene:", &t, &ro, &mt, &mr);
+    if (t >= 0)
+        target(f, "Cortex-M0 -Os, a Schlick-only fixed scene, one channel per material", "<= 64 B .text, <= 8 B .rodata per material",
+               t <= 64 && mr <= 8 ? PASS : MISS, ".text %ld B; .rodata %ld B per further material", t, mr);
+    size_line(r->cross_path, "schlick-only fixed scene, RGB", &t, &ro, &mt, &mr);
+    if (t >= 0)
+        target(f, "Cortex-M0 -Os, the same scene in RGB (an F0 triple per material)", "<= 64 B .text, <= 8 B .rodata per material",
+               t <= 64 && mr <= 8 ? PASS : MISS, ".text %ld B; .rodata %ld B per further material", t, mr);
+    size_line(r->cross_path, "whole fixed runtime", &t, &ro, &mt, &mr);
+    if (t >= 0)
+        target(f, "Cortex-M0 -Os, the whole fixed-point runtime (every model's Q15 code)", "<= 2048 B .text",
+               t <= 2048 ? PASS : MISS, ".text %ld B", t);
+}
+
 void report_targets(report_run *r, FILE *f)
 {
     lut_result luts[N_VARIANTS];
@@ -249,6 +344,7 @@ void report_targets(report_run *r, FILE *f)
                "lut16-cubic %.4f / %.4f, lut32 %.4f / %.4f", luts[V_LUT16_CUBIC].gold_mean,
                luts[V_LUT16_CUBIC].gold_max, luts[V_LUT32].gold_mean, luts[V_LUT32].gold_max);
     speed_targets(f, r->timing);
+    m0_targets(r, f);
     write_ablation(f, luts);
     fprintf(f, "\n");
 }
