@@ -88,6 +88,7 @@ Q15_BATCH(batch_lut32_q15, fresnel_lut_q15_u16(t->q32, 32, cq[i]))
 Q15_BATCH(batch_lut16_linear_q15, fresnel_lut_linear_q15_u16(t->qlin16, 16, cq[i]))
 SCALAR_BATCH(batch_lut16_cubic, fresnel_lut_cubic(t->lut16, 16, c[i]))
 Q15_BATCH(batch_lut16_cubic_q15, fresnel_lut_cubic_q15_u16(t->q16, 16, cq[i]))
+Q15_BATCH(batch_lut32_q15_fast, fresnel_lut_q15_u16_fast(t->q32, 32, cq[i]))
 
 /* The batch API in chunks, each chunk's results summed: per cosine this
  * charges the batch one store and one load more than the scalar rows. */
@@ -125,6 +126,7 @@ enum {
     R_LUT16_LIN_Q15,
     R_LUT16_CUBIC,
     R_LUT16_CUBIC_Q15,
+    R_LUT32_Q15_FAST,
     R_COUNT
 };
 
@@ -148,6 +150,7 @@ static const struct {
     {"lut16-linear-q15", batch_lut16_linear_q15},
     {"lut16-cubic-f32", batch_lut16_cubic},
     {"lut16-cubic-q15", batch_lut16_cubic_q15},
+    {"lut32-q15-fast", batch_lut32_q15_fast},
 };
 
 typedef char targets_rows_fit[R_COUNT <= BENCH_TARGET_ROWS ? 1 : -1];
@@ -255,6 +258,7 @@ static void measure_errors(double *err)
                 worse(&err[R_LUT16_LIN_Q15], fresnel_lut_linear_q15_u16(t.qlin16, 16, cq) / 32768.0, ref_q);
                 worse(&err[R_LUT16_CUBIC], fresnel_lut_cubic(t.lut16, 16, c[i]), ref[i]);
                 worse(&err[R_LUT16_CUBIC_Q15], fresnel_lut_cubic_q15_u16(t.q16, 16, cq) / 32768.0, ref_q);
+                worse(&err[R_LUT32_Q15_FAST], fresnel_lut_q15_u16_fast(t.q32, 32, cq) / 32768.0, ref_q);
             }
         }
 }

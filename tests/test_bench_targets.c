@@ -15,7 +15,7 @@ int main(void)
     static const char *const names[] = {"schlick", "schlick-q15", "conductor", "conductor-prepared",
                                         "conductor-batch", "mitsuba-style", "pbrt-style", "careful-f7f9c7c",
                                         "lut16-f32", "lut32-f32", "lut16-q15", "lut32-q15",
-                                        "lut16-linear-f32", "lut16-linear-q15", "lut16-cubic-f32", "lut16-cubic-q15"};
+                                        "lut16-linear-f32", "lut16-linear-q15", "lut16-cubic-f32", "lut16-cubic-q15", "lut32-q15-fast"};
     enum { ROWS = (int)(sizeof names / sizeof names[0]) };
     bench_target_row rows[BENCH_TARGET_ROWS];
     int n = bench_speed_targets_run(rows, BENCH_TARGET_ROWS, 64, 0), i, named = 1;
