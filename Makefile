@@ -21,7 +21,7 @@ CFLAGS_LIB := $(WARN) $(OPT) $(MATH_FLAGS) $(SAN) -Iinclude -MMD -MP
 # --targets`: compiled with the same math flags, so the race is fair.
 $(BUILD)/obj/gen/bench_compare.o: CFLAGS_GEN += $(MATH_FLAGS)
 CFLAGS_GEN := $(WARN) $(OPT) $(SAN) -D_POSIX_C_SOURCE=200809L -DFRESNEL_DATA_DIR=\"$(CURDIR)/data\" \
-              -DFRESNEL_CFLAGS='"$(CC) $(OPT) $(SAN), no LTO"' -Iinclude -Isrc -Igen -MMD -MP
+              -DFRESNEL_CFLAGS='"$(CC) $(OPT) $(MATH_FLAGS) $(SAN), no LTO"' -Iinclude -Isrc -Igen -MMD -MP
 LDLIBS     := -lm
 
 LIB_SRC  := $(wildcard src/*.c)
