@@ -299,7 +299,7 @@ static void m0_targets(const report_run *r, FILE *f)
     }
     for (k = 0; k < 4; k++) {
         double fast = m0_count(r->cross_path, counts[k].row), lib = m0_count(r->cross_path, counts[k].library_row);
-        char what[96], goal[32];
+        char what[160], goal[32];
         snprintf(what, sizeof what, "Cortex-M0 fixed point, %s: instructions per evaluation (qemu trace)",
                  counts[k].what);
         snprintf(goal, sizeof goal, "<= %.0f", counts[k].goal);
