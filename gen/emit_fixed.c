@@ -131,8 +131,17 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
     }
     if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") || residual_lut)
         emit_q15_rgb(f, prefix, "f0", p->f0, "F0");
-    if (scene_has_model(sc, "f82"))
+    if (scene_has_model(sc, "f82")) {
+        int ch;
         emit_q15_rgb(f, prefix, "f82", p->f82, "F82");
+        fprintf(f, "/* F82's a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) times 4096, from the Q1.15 F0 and F82\n"
+                   " * (fresnel_f82_q15_fast(f0.r, a[0], c)) */\n"
+                   "static const int32_t %s_f82_a_q12[3] FRESNEL_GEN_UNUSED = {",
+                prefix);
+        for (ch = 0; ch < 3; ch++)
+            fprintf(f, "%ld%s", (long)fixed_f82_a_q12(fixed_q15(p->f0[ch]), fixed_q15(p->f82[ch])),
+                    ch < 2 ? ", " : "};\n");
+    }
     if (scene_has_model(sc, "gulbrandsen")) {
         emit_q15_rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen r");
         emit_q15_rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen g");

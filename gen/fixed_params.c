@@ -90,3 +90,10 @@ void fixed_lsk(double n, double k, double a, double alpha, fresnel_q15_lsk *out)
     out->a = fixed_qf(ref_clamp(a, 0.0, FRESNEL_A_MAX));
     out->alpha = fixed_q16(ref_clamp(alpha, 0.0, FRESNEL_ALPHA_MAX));
 }
+
+int32_t fixed_f82_a_q12(int32_t f0, int32_t f82)
+{
+    double F0 = (f0 < 0 ? 0 : (f0 > 32768 ? 32768 : f0)) / 32768.0;
+    double F82 = (f82 < 0 ? 0 : (f82 > 32768 ? 32768 : f82)) / 32768.0;
+    return (int32_t)lround(4096.0 * ((823543.0 / 46656.0) * (F0 - F82) + (49.0 / 6.0) * (1.0 - F0)));
+}

@@ -15,5 +15,8 @@ void fixed_ior(double eta, double kappa, fresnel_q15_ior *out);
 void fixed_nk(double n, double k, fresnel_q15_nk *out);
 void fixed_lsk(double n, double k, double a, double alpha, fresnel_q15_lsk *out);
 double fixed_qf_value(fresnel_qf x);    /* m 2^e */
+/* fresnel_f82_q15_fast's a_q12 for the Q15 codes f0, f82 (clamped to [0, one]):
+ * round(4096 ((7^7/6^6)(F0 - F82) + (49/6)(1 - F0))). */
+int32_t fixed_f82_a_q12(int32_t f0, int32_t f82);
 
 #endif

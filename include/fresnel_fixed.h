@@ -425,89 +425,88 @@ fresnel_q16 fresnel_recip_q16(fresnel_q16 x);
  * them links no library code for it.
  *
  * PRECONDITIONS (not checked; outside them the result is unspecified):
- *   c, f0, f82 in [0, FRESNEL_Q15_ONE]; LUT entries in [0, FRESNEL_Q15_ONE]
- *   and 2 <= n <= 1024.
+ *   c, f0 in [0, FRESNEL_Q15_ONE]; F82's a_q12 as fresnel_f82_q15_fast says;
+ *   LUT entries in [0, FRESNEL_Q15_ONE] and 2 <= n <= 1024.
  * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them.
  * ERROR BOUNDS (LSB of Q15, FRESNEL_Q15_BOUND_*_FAST) are the largest
  * |result/32768 - reference| measured by tests/test_fixed_fast.c, against
  * the same double references as tests/test_fixed_bounds.c, over every cos
  * code 0..32768 (see each function for the parameter sets).
  *
- * Where the error comes from: x^5 = (1 - c)^5 is formed with 32-bit products
- * of ~16-bit factors (x^2 and x^4 rounded to Q16), about 1.5 units of 2^-16
- * against 2^-30 in fresnel_schlick_q15; that is the price of 4 multiplies
- * instead of 8 and no 15-bit halves.
+ * Where the error comes from: x^5 = (1 - c)^5 is three Q15 products with a
+ * single rounding constant (on a Cortex-M0 each costs instructions), about
+ * 2.8 LSB;
+ * fresnel_schlick_q15 keeps 30 bits with split products for 0.5 LSB at
+ * 3.5x the instructions. Both are far inside Schlick's own model error.
  */
 #if FRESNEL_HAS_FIXED
 
 /* Forced inline under GCC and Clang: at -Os they would otherwise keep a
- * helper used twice (fresnel_fast__pow5_q16) out of line, a call per use. */
+ * helper used twice (fresnel_fast__pow5) out of line, a call per use. */
 #if defined(__GNUC__)
 #define FRESNEL_FAST__INLINE static inline __attribute__((always_inline))
 #else
 #define FRESNEL_FAST__INLINE static inline
 #endif
 
-#define FRESNEL_Q15_BOUND_SCHLICK_FAST 1.55    /* measured 1.51924 (every 16th F0) */
-#define FRESNEL_Q15_BOUND_F82_FAST 3.2         /* measured 3.13333 (1/32 grid), 2.36336 (materials) */
+#define FRESNEL_Q15_BOUND_SCHLICK_FAST 2.9     /* measured 2.87615 (every 16th F0) */
+#define FRESNEL_Q15_BOUND_F82_FAST 5.8         /* measured 5.72677 (1/32 grid), 5.58885 (materials) */
 #define FRESNEL_Q15_BOUND_LUT_FAST 1.0         /* 2 <= n <= 64; measured 0.98962 */
 #define FRESNEL_Q15_BOUND_LUT_FAST_1024 2.8    /* n <= 1024; measured 2.76231 (1024-node TIR table) */
 
-/* x^5 in Q16 (<= 2^16) for x in Q15, 0 <= x <= 2^15. x^2 truncated to Q16
- * (<= 2^16; one less at x = 1, so that its square fits 32 bits), x^4 and
- * x^5 rounded to Q16. */
-FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5_q16(uint32_t x)
+/* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
+ * truncated, so that the errors straddle zero with one constant (every
+ * product <= 2^30; x = one gives one exactly). */
+FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5(uint32_t x)
 {
-    uint32_t a = (x * x) >> 14, x4;
-    a -= a >> 16;
-    x4 = (a * a + 65535u) >> 16;
-    return (x4 * x + 16384u) >> 15;
+    uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15;
+    return (x4 * x) >> 15;
 }
 
-/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 and c in [0, one]: the weight of
- * fresnel_fast__pow5_q16 and one rounding. Error <=
+/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 and c in [0, one]: x^5 as
+ * fresnel_fast__pow5 and a truncated blend. Error <=
  * FRESNEL_Q15_BOUND_SCHLICK_FAST LSB (every 16th F0 code, every c code;
  * every F0 code with FRESNEL_TEST_EXHAUSTIVE=1). c = 0 gives exactly one,
  * c = one exactly F0. Cost: 4 mul. */
 FRESNEL_FAST__INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 {
-    uint32_t f = (uint32_t)f0, w = fresnel_fast__pow5_q16(32768u - (uint32_t)c);
-    return (fresnel_q15)(((f << 16) + (32768u - f) * w + 32768u) >> 16);
+    uint32_t f = (uint32_t)f0, x5 = fresnel_fast__pow5(32768u - (uint32_t)c);
+    return (fresnel_q15)(f + (((32768u - f) * x5) >> 15));
 }
 
-/* The same for three channels: the weight once, three blends; each channel
- * equals fresnel_schlick_q15_fast's. Cost: 6 mul. */
+/* The same for three channels: x^5 once, three blends; each channel equals
+ * fresnel_schlick_q15_fast's. Cost: 6 mul. */
 FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
 {
-    uint32_t w = fresnel_fast__pow5_q16(32768u - (uint32_t)c);
+    uint32_t x5 = fresnel_fast__pow5(32768u - (uint32_t)c);
     fresnel_q15_rgb r;
-    r.r = (fresnel_q15)((((uint32_t)f0.r << 16) + (32768u - f0.r) * w + 32768u) >> 16);
-    r.g = (fresnel_q15)((((uint32_t)f0.g << 16) + (32768u - f0.g) * w + 32768u) >> 16);
-    r.b = (fresnel_q15)((((uint32_t)f0.b << 16) + (32768u - f0.b) * w + 32768u) >> 16);
+    r.r = (fresnel_q15)(f0.r + (((32768u - f0.r) * x5) >> 15));
+    r.g = (fresnel_q15)(f0.g + (((32768u - f0.g) * x5) >> 15));
+    r.b = (fresnel_q15)(f0.b + (((32768u - f0.b) * x5) >> 15));
     return r;
 }
 
-/* Hoffman's F82 model (fresnel_f82_q15), f0, f82 and c in [0, one]:
- *   F = F0 + (1 - F0) P(c) - (F0 - F82) Q(c),
- *   Q = K1 c x^6 in [0, 1] (K1 = 7^7/6^6), P = x^5 - (K2/K1) Q (K2 = 49/6),
- * both in Q16; F in Q31 offset by 1/2 and computed modulo 2^32 (F before
- * the clamp lies in [-0.08, 1.13], inside the window [-1/2, 3/2)), then
- * clamped to [0, 1] as fresnel_f82 does. Error <= FRESNEL_Q15_BOUND_F82_FAST
- * LSB (F0 and F82 on a 1/32 grid, every c code); K1 c amplifies the error
- * of x^6, so the bound is reached only where |F0 - F82| is large. Cost: 9 mul. */
-FRESNEL_FAST__INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t f82, int32_t c)
+/* Hoffman's F82 model, F = F0 + (1 - F0) x^5 - a c x^6, with the
+ * per-material a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) prepared on the host
+ * as a_q12 = round(4096 a) (`fresnel gen` emits it for scenes with f82 and
+ * q15; any F0, F82 in [0, 1] give a in [-9.5, 17.7], so |a_q12| <= 73000).
+ * Schlick as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
+ * error matters: a c multiplies it), c x^6 in Q18 (<= 14870), the sum in
+ * units of 2^-30 (|a_q12 c x^6| < 2^30.1, Schlick 2^30), clamped to [0, one]
+ * as fresnel_f82 clamps. a multiplies the error of x^6, so the bound is
+ * reached only at unphysical corners (F0 = 1, F82 = 0: a = 17.7). Error <= FRESNEL_Q15_BOUND_F82_FAST LSB (F0 and F82 on a 1/32 grid
+ * and the test materials, every c code, against ref_f82 at the unrounded
+ * a). Cost: 7 mul. */
+FRESNEL_FAST__INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
-    uint32_t cc = (uint32_t)c, x = 32768u - cc, f = (uint32_t)f0;
-    uint32_t w = fresnel_fast__pow5_q16(x);
-    uint32_t y = (((x * x) >> 14) * x + 16384u) >> 15;            /* x^3, Q16 */
-    uint32_t g = ((cc * y + 1024u) >> 11) * 36150u;               /* K1 c x^3, Q31, <= 1.86 2^31 */
-    uint32_t q = (((g + 32768u) >> 16) * y + 16384u) >> 15;       /* K1 c x^6, Q16 */
-    uint32_t p = w - ((q * 30321u + 32768u) >> 16);               /* K2/K1 = 30321 2^-16 */
-    uint32_t v = (f << 16) + (32768u - f) * p - (f - (uint32_t)f82) * q + (1u << 30);
-    if (v < (1u << 30))
+    uint32_t f = (uint32_t)f0, x = 32768u - (uint32_t)c;
+    uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
+    uint32_t cx6 = ((uint32_t)c * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
+    int32_t v = (int32_t)((f + (((32768u - f) * x5) >> 15)) << 15) - a_q12 * (int32_t)cx6;
+    uint32_t r = (uint32_t)v >> 15;
+    if (v <= 0)
         return 0;
-    v -= 1u << 30;
-    return v >= (1u << 31) ? (fresnel_q15)FRESNEL_Q15_ONE : (fresnel_q15)((v + 32768u) >> 16);
+    return (fresnel_q15)(r > 32768u ? 32768u : r);
 }
 
 /* sqrt(j/128) in Q22 for j = 32..129, and 2^16 / (r_j + r_(j+1)) for

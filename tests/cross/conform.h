@@ -16,6 +16,7 @@ typedef struct conform_material {
     fresnel_q15_nk nk, gnk;
     fresnel_q15_lsk lsk;
     fresnel_q16 eta, kappa; /* Q16.16, for the run-time *_prepare functions */
+    int32_t f82_a;          /* fresnel_f82_q15_fast's a_q12 */
 } conform_material;
 
 extern const conform_material conform_materials[];

@@ -48,7 +48,8 @@ int main(void)
         qf("nk2", mf.gnk.nk2);
         printf("}, .lsk = {%uu, {%uu, %d}, %d},", (unsigned)mf.lsk.f0, (unsigned)mf.lsk.a.m, (int)mf.lsk.a.e,
                (int)mf.lsk.alpha);
-        printf(" .eta = %d, .kappa = %d},\n", (int)fixed_q16(mat[k].eta), (int)fixed_q16(mat[k].kappa));
+        printf(" .eta = %d, .kappa = %d, .f82_a = %d},\n", (int)fixed_q16(mat[k].eta), (int)fixed_q16(mat[k].kappa),
+               (int)fixed_f82_a_q12(mf.f0, mf.f82));
         if (!strcmp(mat[k].name, "cu 550")) {
             bench = k;
             bench_mp = mp;

@@ -68,7 +68,7 @@ static fresnel_q15 e_lut_linear_residual_s8(const conform_material *m, int32_t c
 /* The fast paths (fresnel_fixed.h, "fast paths"): their preconditions hold
  * here (c, F0, F82 in [0, one]; a 64-node table). */
 static fresnel_q15 e_schlick_fast(const conform_material *m, int32_t c) { return fresnel_schlick_q15_fast(m->f0, c); }
-static fresnel_q15 e_f82_fast(const conform_material *m, int32_t c) { return fresnel_f82_q15_fast(m->f0, m->f82, c); }
+static fresnel_q15 e_f82_fast(const conform_material *m, int32_t c) { return fresnel_f82_q15_fast(m->f0, m->f82_a, c); }
 static fresnel_q15 e_lut_u16_fast(const conform_material *m, int32_t c)
 {
     (void)m;

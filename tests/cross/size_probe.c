@@ -60,7 +60,7 @@ void probe(void)
 #elif PROBE == 16
     probe_out = fresnel_schlick_q15_fast(f, c);
 #elif PROBE == 17
-    probe_out = fresnel_f82_q15_fast(f, f + 100, c);
+    probe_out = fresnel_f82_q15_fast(f, f + 100, c); /* f + 100 stands for a_q12 */
 #elif PROBE == 18
     probe_out = fresnel_lut_q15_u16_fast(t16, 8, c);
 #elif PROBE == 19
