@@ -316,3 +316,16 @@ double ref_dielectric(double eta, double c)
     rp = e2c + w > 0.0 ? (e2c - w) / (e2c + w) : 0.0;
     return unit(0.5 * (rs * rs + rp * rp));
 }
+
+double ref_lut(const double *v, int n, int cubic, double x)
+{
+    double pos = x * (n - 1), t;
+    int i = (int)pos;
+    if (i >= n - 1)
+        i = n - 2;
+    t = pos - i;
+    if (!cubic)
+        return v[i] + t * (v[i + 1] - v[i]);
+    return v[i > 0 ? i - 1 : 0] * 0.5 * t * (-1.0 + t * (2.0 - t)) + v[i] * (1.0 + t * t * (1.5 * t - 2.5)) +
+           v[i + 1] * 0.5 * t * (1.0 + t * (4.0 - 3.0 * t)) + v[i + 2 < n ? i + 2 : n - 1] * 0.5 * t * t * (t - 1.0);
+}

@@ -96,22 +96,6 @@ void scene_model_eval(const scene_model *m, const material_params *p, float c, f
 
 static double f32(double x) { return (double)(float)x; }
 
-/* A LUT's interpolation in double, at the float-rounded node values. */
-static double ref_lut(const float *t, int n, lut_form form, double x)
-{
-    double pos = x * (n - 1), u, p0, p1, p2, p3;
-    int i = (int)pos;
-    if (i >= n - 1)
-        i = n - 2;
-    u = pos - i;
-    p1 = t[i];
-    p2 = t[i + 1];
-    if (form != LUT_CUBIC)
-        return p1 + u * (p2 - p1);
-    p0 = t[i > 0 ? i - 1 : 0];
-    p3 = t[i + 2 < n ? i + 2 : n - 1];
-    return p1 + 0.5 * u * ((p2 - p0) + u * ((2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3) + u * (3.0 * (p1 - p2) + p3 - p0)));
-}
 
 void scene_model_eval_ref(const scene_model *m, const material_params *p, double c, double out[3])
 {
@@ -121,9 +105,11 @@ void scene_model_eval_ref(const scene_model *m, const material_params *p, double
     for (ch = 0; ch < 3; ch++) {
         double f0 = f32(p->f0[ch]), eta = f32(p->eta_fit[ch]), kappa = f32(p->kappa_fit[ch]), v;
         if (m->lut_n) {
-            const float *t = m->table + ch * m->lut_n;
-            double x = m->spacing == LUT_UNIFORM ? c : sqrt(c);
-            v = ref_lut(t, m->lut_n, m->form, x) + (m->form == LUT_RESIDUAL ? ref_schlick(f0, c) : 0.0);
+            double x = m->spacing == LUT_UNIFORM ? c : sqrt(c), nodes[SCENE_LUT_MAX];
+            int i;
+            for (i = 0; i < m->lut_n; i++) /* at the float-rounded node values */
+                nodes[i] = m->table[ch * m->lut_n + i];
+            v = ref_lut(nodes, m->lut_n, m->form == LUT_CUBIC, x) + (m->form == LUT_RESIDUAL ? ref_schlick(f0, c) : 0.0);
         } else if (!strcmp(name, "schlick"))
             v = ref_schlick(f0, c);
         else if (!strcmp(name, "lsk"))

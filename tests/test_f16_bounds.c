@@ -11,6 +11,7 @@
 
 #include "fresnel_f16.h"
 #include "harness.h"
+#include "worst.h"
 
 #if FRESNEL_HAS_F16
 #include "f16_internal.h"
@@ -30,27 +31,9 @@ static fresnel_f16 half_from_bits(unsigned bits)
     return v.h;
 }
 
-typedef struct worst {
-    double err;
-    char where[128];
-} worst;
-
-static void note_worst(worst *w, double err, const char *what, double c)
+static void check_bound(const char *name, const worst *w, double bound, long bad_range)
 {
-    if (err > w->err || err != err) {
-        w->err = err != err ? 1e9 : err;
-        snprintf(w->where, sizeof w->where, "%.90s c %.6g", what, c);
-    }
-}
-
-static void check_bound(const char *name, const worst *w, double bound, long bad)
-{
-    char label[96];
-    printf("NOTE f16 %-20s max|err| %.3e at %s\n", name, w->err, w->where);
-    snprintf(label, sizeof label, "f16 %s results in [0, 1]", name);
-    CHECK(label, bad == 0, "%ld results outside [0, 1] or NaN", bad);
-    snprintf(label, sizeof label, "f16 %s within %.2e", name, bound);
-    CHECK(label, w->err <= bound, "max|err| %.3e exceeds the documented %.3e at %s", w->err, bound, w->where);
+    check_worst("f16", name, w, bound, bad_range, 0);
 }
 
 static int in_f16_domain(const test_material *t)
@@ -231,16 +214,6 @@ static void check_f0_helpers(void)
     check_bound("f0_in_medium", &wm, FRESNEL_F16_BOUND_F0_IN_MEDIUM, bad);
 }
 
-static double ref_interp(const double *v, int n, double x)
-{
-    double pos = x * (n - 1), t;
-    int i = (int)pos;
-    if (i >= n - 1)
-        i = n - 2;
-    t = pos - i;
-    return v[i] + t * (v[i + 1] - v[i]);
-}
-
 static void check_luts(const test_material *mat, int nmat)
 {
     static const int sizes[] = {2, 5, 16, 64, 256};
@@ -273,8 +246,8 @@ static void check_luts(const test_material *mat, int nmat)
                     g1 = (double)(sp == 0 ? fresnel_lut_f16(tab, n, c) : fresnel_lut_linear_f16(tab, n, c));
                     g2 = (double)(sp == 0 ? fresnel_lut_residual_f16(f0, res, n, c)
                                           : fresnel_lut_linear_residual_f16(f0, res, n, c));
-                    r1 = ref_clamp(ref_interp(dtab, n, x), 0.0, 1.0);
-                    r2 = ref_clamp(ref_schlick((double)f0, cd) + ref_interp(dres, n, x), 0.0, 1.0);
+                    r1 = ref_clamp(ref_lut(dtab, n, 0, x), 0.0, 1.0);
+                    r2 = ref_clamp(ref_schlick((double)f0, cd) + ref_lut(dres, n, 0, x), 0.0, 1.0);
                     bad[sp] += !(g1 >= 0.0 && g1 <= 1.0) + !(g2 >= 0.0 && g2 <= 1.0);
                     note_worst(&w[sp], fabs(g1 - r1), what, cd);
                     note_worst(&w[sp], fabs(g2 - r2), what, cd);

@@ -17,6 +17,7 @@
 #define FRESNEL_RANGE_CHECK /* the inline helpers in this file check too */
 #include "fixed_internal.h"
 #include "harness.h"
+#include "worst.h"
 #include "models.h"
 #include "reference.h"
 
@@ -33,27 +34,9 @@ void fr__range_fail(const char *what, long long value)
         snprintf(range_first, sizeof range_first, "%s = %lld", what, value);
 }
 
-typedef struct worst {
-    double err;
-    char where[128];
-} worst;
-
-static void note_worst(worst *w, double err, const char *what, double c)
-{
-    if (err > w->err) {
-        w->err = err;
-        snprintf(w->where, sizeof w->where, "%.100s c %.6f", what, c);
-    }
-}
-
 static void check_bound(const char *name, const worst *w, double bound, long bad_range)
 {
-    char label[96];
-    printf("NOTE %-22s max|err| %.5f LSB at %s\n", name, w->err, w->where);
-    snprintf(label, sizeof label, "fixed %s results in [0, one]", name);
-    CHECK(label, bad_range == 0, "%ld results outside [0, 32768]", bad_range);
-    snprintf(label, sizeof label, "fixed %s within %.3f LSB", name, bound);
-    CHECK(label, w->err <= bound, "max|err| %.4f LSB exceeds the documented %.4f at %s", w->err, bound, w->where);
+    check_worst("fixed", name, w, bound, bad_range, 1);
 }
 
 /* Every model of the table, every material, every code. */
@@ -349,16 +332,6 @@ static void check_variants(const test_material *mat, int nmat)
 
 /* ------------------------------------------------------------------ LUTs */
 
-static double ref_interp(const double *v, int n, double x)
-{
-    double pos = x * (n - 1), t;
-    int i = (int)pos;
-    if (i >= n - 1)
-        i = n - 2;
-    t = pos - i;
-    return v[i] + t * (v[i + 1] - v[i]);
-}
-
 static double sat_unit(double x) { return x < 0.0 ? 0.0 : (x > 1.0 ? 1.0 : x); }
 
 /* Tables of the exact curve of a material, encoded the four ways, both
@@ -429,7 +402,7 @@ static void check_luts(const test_material *mat, int nmat)
                         got[3] = fresnel_lut_linear_residual_q15_s8(f0, s8, n, f8b, c);
                     }
                     for (e = 0; e < 4; e++) {
-                        ref = sat_unit(ref_interp(dv[e], n, x) + (e >= 2 ? sch : 0.0));
+                        ref = sat_unit(ref_lut(dv[e], n, 0, x) + (e >= 2 ? sch : 0.0));
                         double err = fabs(got[e] / 32768.0 - ref) * 32768.0;
                         bad[sp] += got[e] < 0 || got[e] > ONE;
                         if (err > w[sp].err) {

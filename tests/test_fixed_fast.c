@@ -16,32 +16,15 @@
 #include "fixed_params.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
+#include "worst.h"
 #include "models.h"
 #include "reference.h"
 
 #define ONE 32768
 
-typedef struct worst {
-    double err;
-    char where[128];
-} worst;
-
-static void note_worst(worst *w, double err, const char *what, int32_t c)
-{
-    if (err > w->err) {
-        w->err = err;
-        snprintf(w->where, sizeof w->where, "%.100s c %d", what, (int)c);
-    }
-}
-
 static void check_bound(const char *name, const worst *w, double bound, long bad_range)
 {
-    char label[128];
-    printf("NOTE %-32s max|err| %.5f LSB at %s\n", name, w->err, w->where);
-    snprintf(label, sizeof label, "fixed fast %s results in [0, one]", name);
-    CHECK(label, bad_range == 0, "%ld results outside [0, 32768]", bad_range);
-    snprintf(label, sizeof label, "fixed fast %s within %.3f LSB", name, bound);
-    CHECK(label, w->err <= bound, "max|err| %.5f LSB exceeds the documented %.3f at %s", w->err, bound, w->where);
+    check_worst("fixed fast", name, w, bound, bad_range, 1);
 }
 
 static void check_schlick(void)
@@ -120,16 +103,6 @@ static void check_sqrt(void)
           "max|err| 2^%.3f at c %d", log2(worst_e), (int)at);
 }
 
-static double ref_interp(const double *v, int n, double x)
-{
-    double pos = x * (n - 1), t;
-    int i = (int)pos;
-    if (i >= n - 1)
-        i = n - 2;
-    t = pos - i;
-    return v[i] + t * (v[i + 1] - v[i]);
-}
-
 static void check_lut(const test_material *mat, int nmat)
 {
     static const int sizes[] = {2, 3, 5, 8, 16, 33, 64, 256, 1024};
@@ -153,7 +126,7 @@ static void check_lut(const test_material *mat, int nmat)
             snprintf(what, sizeof what, "%.31s n %d", mat[k].name, n);
             for (c = 0; c <= ONE; c++) {
                 int32_t got = fresnel_lut_q15_u16_fast(u16, n, c);
-                double err = fabs(got / 32768.0 - ref_interp(dv, n, sqrt(c / 32768.0))) * 32768.0;
+                double err = fabs(got / 32768.0 - ref_lut(dv, n, 0, sqrt(c / 32768.0))) * 32768.0;
                 bad += got < 0 || got > ONE;
                 differ += got != fresnel_lut_q15_u16(u16, n, c);
                 evals++;

@@ -18,23 +18,6 @@ static const char *const metals[] = {"ag", "cu", "au", "commercial_bronze", "bra
  * squared error over theta every 0.05 degrees and the nodes, in double at
  * the double node values. */
 #define FIT_STEPS 1800
-static double interp(const double *t, int n, int cubic, double c)
-{
-    double pos = sqrt(c) * (n - 1), u, p0, p1, p2, p3;
-    int i = (int)pos;
-    if (i >= n - 1)
-        i = n - 2;
-    u = pos - i;
-    p1 = t[i];
-    p2 = t[i + 1];
-    if (!cubic)
-        return p1 + u * (p2 - p1);
-    p0 = t[i > 0 ? i - 1 : 0];
-    p3 = t[i + 2 < n ? i + 2 : n - 1];
-    /* Catmull-Rom as weights (src/lut.c has the Horner form) */
-    return p0 * 0.5 * u * (-1 + u * (2 - u)) + p1 * (1 + u * u * (1.5 * u - 2.5)) +
-           p2 * 0.5 * u * (1 + u * (4 - 3 * u)) + p3 * 0.5 * u * u * (u - 1);
-}
 
 static double sq_error(const double *t, int n, int cubic, const double (*gt)[3], const double *cs, int count)
 {
@@ -42,7 +25,7 @@ static double sq_error(const double *t, int n, int cubic, const double (*gt)[3],
     int k, ch;
     for (k = 0; k < count; k++)
         for (ch = 0; ch < 3; ch++) {
-            double d = interp(t + ch * n, n, cubic, cs[k]) - gt[k][ch];
+            double d = ref_lut(t + ch * n, n, cubic, sqrt(cs[k])) - gt[k][ch];
             e += d * d;
         }
     return e;

@@ -16,19 +16,7 @@
 
 static double cubic_ref(const double *t, int n, double c)
 {
-    double pos = sqrt(c) * (n - 1), u, p0, p1, p2, p3, v;
-    int i = (int)pos;
-    if (i >= n - 1)
-        i = n - 2;
-    u = pos - i;
-    p0 = t[i > 0 ? i - 1 : 0];
-    p1 = t[i];
-    p2 = t[i + 1];
-    p3 = t[i + 2 < n ? i + 2 : n - 1];
-    /* the weights form, not src/lut.c's Horner form */
-    v = p0 * 0.5 * u * (-1 + u * (2 - u)) + p1 * (1 + u * u * (1.5 * u - 2.5)) + p2 * 0.5 * u * (1 + u * (4 - 3 * u)) +
-        p3 * 0.5 * u * u * (u - 1);
-    return v < 0.0 ? 0.0 : (v > 1.0 ? 1.0 : v);
+    return ref_clamp(ref_lut(t, n, 1, sqrt(c)), 0.0, 1.0); /* the weights form, not src/lut.c's */
 }
 
 static uint32_t rng = 12345u;
