@@ -52,6 +52,25 @@ void resample(const nk_table *t, spectrum *s)
  * measured point strictly inside 360-830 nm would turn into a constant n, k
  * that nobody measured, so it is an error. Data row i is on line i + 2 of
  * the file (header first, no blank lines between rows: load_nk's rules). */
+/* Whether path was warned about before in this process (a report loads a
+ * material more than once; one warning per file is enough). Host code: the
+ * runtime's no-mutable-state rule does not apply here. */
+static int warned_before(const char *path)
+{
+    static unsigned long seen[256];
+    static int count;
+    unsigned long h = 2166136261ul;
+    int i;
+    for (; *path; path++)
+        h = ((h ^ (unsigned char)*path) * 16777619ul) & 0xfffffffful;
+    for (i = 0; i < count; i++)
+        if (seen[i] == h)
+            return 1;
+    if (count < 256)
+        seen[count++] = h;
+    return 0;
+}
+
 static int coverage(const char *path, const nk_table *t)
 {
     int last = t->rows - 1;
@@ -62,7 +81,7 @@ static int coverage(const char *path, const nk_table *t)
         return cli_error(where, "the table covers %.10g-%.10g nm, expected it to reach into %g-%g nm",
                          t->wl[0], t->wl[last], SPEC_LO_NM, SPEC_HI_NM);
     }
-    if (t->wl[0] > SPEC_LO_NM || t->wl[last] < SPEC_HI_NM) {
+    if ((t->wl[0] > SPEC_LO_NM || t->wl[last] < SPEC_HI_NM) && !warned_before(path)) {
         int line = t->wl[0] > SPEC_LO_NM ? 2 : last + 2;
         snprintf(where, sizeof where, "%s:%d", path, line);
         fprintf(stderr, "%s: warning: measured %.10g-%.10g nm, n and k held at the end values over the rest of %g-%g nm\n",
