@@ -101,6 +101,9 @@ int cmd_bench(int argc, char **argv)
     }
     if ((status = scene_load(scene_path, &sc)))
         return status;
+    if (scene_lut_spacing(&sc) == LUT_GRAZING_PL)
+        return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `fresnel bench --targets` and "
+                                     "`make cross-count` time fresnel_lut_q15_u16_pl_fast");
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
         status = cli_error(WHERE, "out of memory");
         goto done;
@@ -115,7 +118,7 @@ int cmd_bench(int argc, char **argv)
         report_prepared *q;
         if (only_model && strcmp(only_model, sc.models[m]))
             continue;
-        if ((status = scene_model_prepare(sc.models[m], strcmp(sc.lut_spacing, "uniform") ? LUT_GRAZING : LUT_UNIFORM,
+        if ((status = scene_model_prepare(sc.models[m], scene_lut_spacing(&sc),
                                           s, g, &p, &sm)))
             goto done;
         if (!(q = report_prepare(&sm, &p))) {

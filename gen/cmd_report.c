@@ -410,6 +410,9 @@ int cmd_report(int argc, char **argv)
     if ((status = scene_load(scene_path, &r.sc)))
         return status;
     r.timing = timing;
+    if (scene_lut_spacing(&r.sc) == LUT_GRAZING_PL)
+        return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only and the report measures every number "
+                                     "type; its targets table measures them itself");
     r.g = malloc(sizeof *r.g);
     r.mats = calloc((size_t)r.sc.material_count, sizeof *r.mats);
     r.cells = calloc((size_t)r.sc.material_count * r.sc.model_count * report_type_count, sizeof *r.cells);
@@ -439,7 +442,7 @@ int cmd_report(int argc, char **argv)
             goto done;
         report_ground_truth(r.g, &r.ls, rm);
         for (m = 0; m < r.sc.model_count; m++) {
-            lut_spacing sp = strcmp(r.sc.lut_spacing, "uniform") ? LUT_GRAZING : LUT_UNIFORM;
+            lut_spacing sp = scene_lut_spacing(&r.sc);
             if ((status = scene_model_prepare(r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
                 goto done;
             if (!(rm->prepared[m] = report_prepare(&rm->models[m], &rm->p))) {

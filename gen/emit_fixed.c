@@ -105,10 +105,18 @@ static int emit_lut_q15(FILE *f, const char *prefix, const char *model, const ma
                 model, frac, spacing == LUT_UNIFORM ? "linear_" : "", n, prefix, name, prefix, name, frac, prefix,
                 name, 3 * n);
     } else {
-        fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1). Evaluate with\n"
-                   " * fresnel_lut_%sq15_u16_rgb(table, %d, c). */\n"
-                   "static const uint16_t %s_%s_q15[%d] FRESNEL_GEN_UNUSED = {",
-                model, form == LUT_CUBIC ? "cubic_" : (spacing == LUT_UNIFORM ? "linear_" : ""), n, prefix, name, 3 * n);
+        if (spacing == LUT_GRAZING_PL)
+            fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_fixed.h's\n"
+                       " * piecewise-linear sqrt(c). Evaluate per channel with\n"
+                       " * fresnel_lut_q15_u16_pl_fast(table + ch * %d, %d, c). */\n"
+                       "static const uint16_t %s_%s_q15[%d] FRESNEL_GEN_UNUSED = {",
+                    model, n, n, prefix, name, 3 * n);
+        else
+            fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1). Evaluate with\n"
+                       " * fresnel_lut_%sq15_u16_rgb(table, %d, c). */\n"
+                       "static const uint16_t %s_%s_q15[%d] FRESNEL_GEN_UNUSED = {",
+                    model, form == LUT_CUBIC ? "cubic_" : (spacing == LUT_UNIFORM ? "linear_" : ""), n, prefix, name,
+                    3 * n);
     }
     for (i = 0; i < 3 * n; i++)
         fprintf(f, "%s%ld%s", i % 12 == 0 ? "\n    " : " ",
@@ -122,7 +130,7 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
 {
     const scene *sc = in->sc;
     const material_params *p = &in->params[mi];
-    lut_spacing spacing = strcmp(sc->lut_spacing, "uniform") ? LUT_GRAZING : LUT_UNIFORM;
+    lut_spacing spacing = scene_lut_spacing(sc);
     int m, residual_lut = 0;
     for (m = 0; m < sc->model_count; m++) {
         int form = LUT_PLAIN;

@@ -121,7 +121,7 @@ int emit_header(FILE *f, const emit_input *in)
 {
     const scene *sc = in->sc;
     const gen_context *g = in->g;
-    lut_spacing spacing = strcmp(sc->lut_spacing, "uniform") ? LUT_GRAZING : LUT_UNIFORM;
+    lut_spacing spacing = scene_lut_spacing(sc);
     char guard[96];
     int i, m;
     glsl = in->glsl;

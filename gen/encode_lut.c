@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "fresnel_fixed.h"
 #include "generator.h"
 #include "reference.h"
 
@@ -16,10 +17,33 @@
 
 static const double half_pi = 1.57079632679489661923;
 
+/* The runtime's position P(c) for LUT_GRAZING_PL in double: the knots of
+ * fresnel_fast__sqrt_pl, linear between them. */
+static double pl_position(double c)
+{
+    double u = c * 64.0;
+    int k = (int)u;
+    if (k > 63)
+        k = 63;
+    return (fresnel_fast__sqrt_pl[k] + (fresnel_fast__sqrt_pl[k + 1] - fresnel_fast__sqrt_pl[k]) * (u - k)) / 32768.0;
+}
+
+static double lut_position(lut_spacing spacing, double c)
+{
+    return spacing == LUT_UNIFORM ? c : (spacing == LUT_GRAZING ? sqrt(c) : pl_position(c));
+}
+
 double lut_node_cos(lut_spacing spacing, int i, int n)
 {
-    double w = (double)i / (n - 1);
-    return spacing == LUT_UNIFORM ? w : w * w; /* grazing: uniform in sqrt(c) */
+    double w = (double)i / (n - 1), y = w * 32768.0;
+    int k = 0;
+    if (spacing != LUT_GRAZING_PL)
+        return spacing == LUT_UNIFORM ? w : w * w; /* grazing: uniform in sqrt(c) */
+    if (i == n - 1)
+        return 1.0;
+    while (k < 63 && fresnel_fast__sqrt_pl[k + 1] <= y)
+        k++;
+    return (k + (y - fresnel_fast__sqrt_pl[k]) / (fresnel_fast__sqrt_pl[k + 1] - fresnel_fast__sqrt_pl[k])) / 64.0;
 }
 
 /* The runtime's interpolation as weights on (at most) four nodes: idx[k]
@@ -27,7 +51,7 @@ double lut_node_cos(lut_spacing spacing, int i, int n)
  * clamped to the table's ends (src/lut.c). */
 static void lut_weights(lut_spacing spacing, lut_form form, int n, double c, int idx[4], double w[4])
 {
-    double pos = (spacing == LUT_UNIFORM ? c : sqrt(c)) * (n - 1), t;
+    double pos = lut_position(spacing, c) * (n - 1), t;
     int j = (int)pos, k;
     if (j >= n - 1)
         j = n - 2;

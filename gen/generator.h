@@ -63,7 +63,10 @@ int derive_parameters(const gen_context *g, const char *id, double sigma, double
                       material_params *out);
 
 /* ---- encode_lut.c: LUT node positions and values (fresnel.h, lut.c). */
-typedef enum lut_spacing { LUT_GRAZING, LUT_UNIFORM } lut_spacing;
+/* LUT_GRAZING: nodes uniform in sqrt(c); LUT_UNIFORM: in c; LUT_GRAZING_PL:
+ * uniform in fresnel_fixed.h's 64-piece linear stand-in for sqrt(c), the
+ * position of fresnel_lut_q15_u16_pl_fast. */
+typedef enum lut_spacing { LUT_GRAZING, LUT_UNIFORM, LUT_GRAZING_PL } lut_spacing;
 /* cos theta of node i of n. */
 double lut_node_cos(lut_spacing spacing, int i, int n);
 /* The runtime's LUT forms: linear interpolation of the curve (fresnel_lut),

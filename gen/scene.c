@@ -20,7 +20,7 @@ const char *const scene_model_names[] = {"schlick",        "lsk",  "lsk-comp",
                                          NULL};
 /* Number types the generator can emit; a new type is one more entry here. */
 const char *const scene_type_names[] = {"f32", "q15", NULL};
-const char *const scene_lut_spacing_names[] = {"uniform", "grazing", NULL};
+const char *const scene_lut_spacing_names[] = {"uniform", "grazing", "grazing-pl", NULL};
 
 enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
                  KEY_LUT_SPACING, KEY_COUNT };
@@ -369,6 +369,19 @@ int scene_load(const char *path, scene *out)
     if (out->models_line == 0)
         return report(path, line > 0 ? line : 1,
                       "expected a 'models = name ...' line, the required key is missing");
+    if (strcmp(out->lut_spacing, "grazing-pl") == 0) {
+        int m, form, n;
+        if (out->type_count != 1 || strcmp(out->types[0], "q15") != 0)
+            return report(path, out->lut_spacing_line ? out->lut_spacing_line : 1,
+                          "expected types = q15 with lut_spacing grazing-pl (its tables are for "
+                          "fresnel_lut_q15_u16_pl_fast only)");
+        for (m = 0; m < out->model_count; m++)
+            if ((n = scene_model_lut_size(out->models[m], &form)) && (form != LUT_PLAIN || n > 64))
+                return report(path, out->models_line,
+                              "expected lutN with N <= 64 and no -cubic or -residual with lut_spacing grazing-pl, "
+                              "got '%s'",
+                              out->models[m]);
+    }
     if (strcmp(out->lut_spacing, "uniform") == 0) {
         int m, form;
         for (m = 0; m < out->model_count; m++)
@@ -388,6 +401,12 @@ int scene_has_model(const scene *sc, const char *model)
         if (!strcmp(sc->models[i], model))
             return 1;
     return 0;
+}
+
+lut_spacing scene_lut_spacing(const scene *sc)
+{
+    return !strcmp(sc->lut_spacing, "uniform") ? LUT_UNIFORM
+                                                : (!strcmp(sc->lut_spacing, "grazing-pl") ? LUT_GRAZING_PL : LUT_GRAZING);
 }
 
 int scene_has_type(const scene *sc, const char *type)

@@ -31,8 +31,11 @@
  *   types        optional, default f32; whitespace-separated number types
  *                from scene_type_names[], no duplicates.
  *   lut_spacing  optional, default grazing; one of scene_lut_spacing_names[]:
- *                uniform (LUT nodes uniform in cos theta) or grazing (nodes
- *                denser towards cos theta = 0).
+ *                uniform (LUT nodes uniform in cos theta), grazing (nodes
+ *                uniform in sqrt(cos theta), denser towards cos theta = 0) or
+ *                grazing-pl (uniform in a 64-piece linear stand-in for
+ *                sqrt(cos theta), read by fresnel_lut_q15_u16_pl_fast
+ *                without a square root: types = q15 only, lutN with N <= 64).
  *
  *   Example:
  *       # metals for the demo scene
@@ -51,6 +54,8 @@
  *   added. An unreadable file gives "path: cannot read: <reason>". */
 #ifndef FRESNEL_SCENE_H
 #define FRESNEL_SCENE_H
+
+#include "generator.h"
 
 #define SCENE_MAX_MATERIALS 64
 #define SCENE_ID_SIZE 32 /* material id, NUL included: matches material_info.id */
@@ -100,5 +105,7 @@ int scene_model_known(const char *model);
 /* 1 if the loaded scene names this model / number type, else 0. */
 int scene_has_model(const scene *sc, const char *model);
 int scene_has_type(const scene *sc, const char *type);
+/* The loaded scene's LUT spacing. */
+lut_spacing scene_lut_spacing(const scene *sc);
 
 #endif

@@ -453,6 +453,8 @@ fresnel_q16 fresnel_recip_q16(fresnel_q16 x);
 #define FRESNEL_Q15_BOUND_F82_FAST 5.8         /* measured 5.72677 (1/32 grid), 5.58885 (materials) */
 #define FRESNEL_Q15_BOUND_LUT_FAST 1.0         /* 2 <= n <= 64; measured 0.98962 */
 #define FRESNEL_Q15_BOUND_LUT_FAST_1024 2.8    /* n <= 1024; measured 2.76231 (1024-node TIR table) */
+#define FRESNEL_Q15_BOUND_LUT_PL_FAST 3.4      /* n <= 64; measured 3.35845 */
+#define FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge; measured 15.16331 */
 
 /* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
  * truncated, so that the errors straddle zero with one constant (every
@@ -586,6 +588,38 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table,
     v0 = table[i];
     v1 = table[i + 1];
     return (fresnel_q15)((v0 * 32768 + (v1 - v0) * (int32_t)t + 16384) >> 15);
+}
+
+/* Tables whose nodes are uniform in P(c), a 64-piece linear stand-in for
+ * sqrt(c) (lut_spacing = grazing-pl in a scene; `fresnel gen` fits the node
+ * values through exactly this position): P is the linear interpolation of
+ * fresnel_fast__sqrt_pl[k] = round(32768 sqrt(k/64)) between c = k/64 and
+ * (k+1)/64, so it needs no root, and still crowds the nodes toward grazing
+ * incidence (the first piece is 1/8 of the range, 1/64 of c).
+ *   p = S[j] + ((S[j+1] - S[j]) (c mod 512)) >> 9, j = c >> 9  (c = one read
+ *       as one - 2^-15, so that p < one and the last segment is n-2)
+ *   pos = p (n-1), node i = pos >> 15, linear interpolation, truncated.
+ * Preconditions: 2 <= n <= 64 (P has 15 bits: its truncation moves the
+ * position by up to (n-1) 2^-15 of a segment), entries <= 32768, c in [0,
+ * one]. Error <= FRESNEL_Q15_BOUND_LUT_PL_FAST LSB against the same
+ * interpolation in double at the same P, FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR
+ * across a total-reflection edge (a step of up to one between two nodes)
+ * (tests/test_fixed_fast.c). Cost: 3 mul, 4 loads, no branch. */
+static const uint16_t fresnel_fast__sqrt_pl[65] = {
+    0u,     4096u,  5793u,  7094u,  8192u,  9159u,  10033u, 10837u, 11585u, 12288u, 12953u, 13585u, 14189u,
+    14768u, 15326u, 15864u, 16384u, 16888u, 17378u, 17854u, 18318u, 18770u, 19212u, 19644u, 20066u, 20480u,
+    20886u, 21283u, 21674u, 22058u, 22435u, 22806u, 23170u, 23530u, 23884u, 24232u, 24576u, 24915u, 25249u,
+    25580u, 25905u, 26227u, 26545u, 26859u, 27170u, 27477u, 27780u, 28081u, 28378u, 28672u, 28963u, 29251u,
+    29537u, 29819u, 30099u, 30377u, 30652u, 30924u, 31194u, 31462u, 31727u, 31991u, 32252u, 32511u, 32768u};
+
+FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *table, int n, int32_t c)
+{
+    uint32_t x = (uint32_t)c - ((uint32_t)c >> 15);
+    const uint16_t *s = fresnel_fast__sqrt_pl + (x >> 9), *v;
+    uint32_t p = s[0] + (((uint32_t)(s[1] - s[0]) * (x & 511u)) >> 9);
+    uint32_t pos = p * (uint32_t)(n - 1), t = pos & 32767u;
+    v = table + (pos >> 15);
+    return (fresnel_q15)((v[0] * 32768 + (v[1] - v[0]) * (int32_t)t) >> 15);
 }
 
 #endif /* FRESNEL_HAS_FIXED: fast paths */

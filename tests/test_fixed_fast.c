@@ -14,6 +14,7 @@
 
 #include "fixed_materials.h"
 #include "fixed_params.h"
+#include "generator.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
 #include "worst.h"
@@ -151,6 +152,66 @@ static void check_lut(const test_material *mat, int nmat)
     check_bound("LUT u16, sqrt(c) nodes, n <= 1024", &w, FRESNEL_Q15_BOUND_LUT_FAST_1024, bad);
 }
 
+/* P(c) of fresnel_lut_q15_u16_pl_fast in double: the same knots and clamp,
+ * no truncation. */
+static double pl_position(int32_t c)
+{
+    int32_t x = c - (c >> 15), j = x >> 9;
+    double s0 = fresnel_fast__sqrt_pl[j], s1 = fresnel_fast__sqrt_pl[j + 1];
+    return (s0 + (s1 - s0) * (x & 511) / 512.0) / 32768.0;
+}
+
+static void check_lut_pl(const test_material *mat, int nmat)
+{
+    static const int sizes[] = {2, 3, 5, 8, 16, 32, 33, 64};
+    static double dv[64];
+    static uint16_t u16[64];
+    worst w, tir;
+    long bad = 0;
+    int k, is, knots_ok = 1;
+    memset(&w, 0, sizeof w);
+    memset(&tir, 0, sizeof tir);
+    for (k = 0; k <= 64; k++)
+        knots_ok &= fresnel_fast__sqrt_pl[k] == (uint16_t)floor(32768.0 * sqrt(k / 64.0) + 0.5);
+    CHECK("fixed fast LUT pl: knots are round(32768 sqrt(k/64))", knots_ok, "a knot differs");
+    for (k = 0; k < nmat; k += 4)
+        for (is = 0; is < (int)(sizeof sizes / sizeof sizes[0]); is++) {
+            int n = sizes[is], i;
+            int32_t c;
+            char what[64];
+            for (i = 0; i < n; i++) { /* any table will do: the curve at the P nodes' cosines */
+                double x = i / (double)(n - 1);
+                u16[i] = (uint16_t)floor(ref_conductor(mat[k].eta, mat[k].kappa, x * x) * 32768.0 + 0.5);
+                dv[i] = u16[i] / 32768.0;
+            }
+            snprintf(what, sizeof what, "%.31s n %d", mat[k].name, n);
+            for (c = 0; c <= ONE; c++) {
+                int32_t got = fresnel_lut_q15_u16_pl_fast(u16, n, c);
+                double err = fabs(got / 32768.0 - ref_lut(dv, n, 0, pl_position(c))) * 32768.0;
+                bad += got < 0 || got > ONE;
+                /* a total-reflection edge: a step of up to one between two nodes */
+                note_worst(mat[k].kappa == 0.0 && mat[k].eta < 1.0 ? &tir : &w, err, what, c);
+            }
+        }
+    {
+        /* the generator's node cosines are where the runtime's position hits the nodes */
+        static uint16_t ramp[32];
+        double far = 0.0;
+        for (k = 0; k < 32; k++)
+            ramp[k] = (uint16_t)(k * 1024);
+        for (k = 0; k < 32; k++) {
+            double at = fresnel_lut_q15_u16_pl_fast(ramp, 32, fixed_q15(lut_node_cos(LUT_GRAZING_PL, k, 32))) / 1024.0;
+            if (fabs(at - k) > far)
+                far = fabs(at - k);
+        }
+        CHECK("fixed fast LUT pl: generator node cosines land on the runtime's nodes (within 0.02 node)", far <= 0.02,
+              "%.4f node", far);
+    }
+    check_bound("LUT u16, grazing-pl nodes, n <= 64", &w, FRESNEL_Q15_BOUND_LUT_PL_FAST, bad);
+    check_bound("LUT u16, grazing-pl nodes, n <= 64, a total-reflection edge", &tir, FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR,
+                bad);
+}
+
 static void check_schlick_rgb(void)
 {
     int32_t c, ok = 1;
@@ -176,5 +237,6 @@ int main(void)
     check_sqrt();
     check_lut(mat, nmat);
     check_schlick_rgb();
+    check_lut_pl(mat, nmat);
     return harness_exit();
 }

@@ -277,6 +277,12 @@ static void test_errors(void)
                  "'fresnel'");
     expect_error("scene error: lut too small", "models = lut3\n", 1, "4..256");
     expect_error("scene error: lut too large", "models = lut257-residual\n", 1, "4..256");
+    expect_error("scene error: grazing-pl spacing needs types = q15 only",
+                 "materials = au\nmodels = lut32\nlut_spacing = grazing-pl\n", 3, "types = q15");
+    expect_error("scene error: grazing-pl spacing with a cubic table",
+                 "materials = au\nmodels = lut16-cubic\ntypes = q15\nlut_spacing = grazing-pl\n", 2, "N <= 64");
+    expect_error("scene error: grazing-pl spacing with 128 nodes",
+                 "materials = au\nmodels = lut128\ntypes = q15\nlut_spacing = grazing-pl\n", 2, "N <= 64");
     expect_error("scene error: cubic LUT with uniform spacing, at the models line",
                  "materials = au\nmodels = schlick lut16-cubic\nlut_spacing = uniform\n", 2, "lut_spacing grazing");
     expect_error("scene error: lut leading zero", "models = lut016\n", 1, "leading zeros");

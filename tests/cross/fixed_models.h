@@ -74,6 +74,11 @@ static fresnel_q15 e_lut_u16_fast(const conform_material *m, int32_t c)
     (void)m;
     return fresnel_lut_q15_u16_fast(conform_lut_u16[0], CONFORM_LUT_N, c);
 }
+static fresnel_q15 e_lut_u16_pl_fast(const conform_material *m, int32_t c)
+{
+    (void)m;
+    return fresnel_lut_q15_u16_pl_fast(conform_lut_u16[0], CONFORM_LUT_N, c);
+}
 typedef struct fixed_model {
     const char *name;
     fixed_eval fn;
@@ -103,6 +108,7 @@ static const fixed_model fixed_models[] = {
     {"schlick fast", e_schlick_fast, 1},
     {"f82 fast", e_f82_fast, 1},
     {"lut u16 fast", e_lut_u16_fast, 0},
+    {"lut u16 pl fast", e_lut_u16_pl_fast, 0},
 };
 #define FIXED_MODEL_COUNT ((int)(sizeof fixed_models / sizeof fixed_models[0]))
 
