@@ -34,7 +34,7 @@ static void gen_usage(FILE *out)
             SCENE_LUT_MIN, SCENE_LUT_MAX);
     for (i = 0; scene_type_names[i]; i++)
         fprintf(out, " %s", scene_type_names[i]);
-    fprintf(out, "\n  lut_spacing = grazing     or uniform\n");
+    fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_q15_u16_pl_fast)\n");
 }
 
 /* The scene's C name: the manifest's file name without directory and

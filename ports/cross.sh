@@ -247,9 +247,8 @@ cmd_size() {
         done
     done
     # The inline fast paths of fresnel_fixed.h ("fast paths"), fixed point only.
-    j=15
-    for m in schlick-fast f82-fast lut-u16-fast; do
-        j=$((j + 1))
+    for mj in schlick-fast:16 f82-fast:17 lut-u16-fast:18 lut-u16-pl-fast:21; do
+        m=${mj%:*} j=${mj#*:}
         row="| $m | fixed |"
         for t in m0 m4f rv32; do
             target $t

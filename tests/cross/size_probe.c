@@ -63,6 +63,8 @@ void probe(void)
     probe_out = fresnel_f82_q15_fast(f, f + 100, c); /* f + 100 stands for a_q12 */
 #elif PROBE == 18
     probe_out = fresnel_lut_q15_u16_fast(t16, 8, c);
+#elif PROBE == 21
+    probe_out = fresnel_lut_q15_u16_pl_fast(t16, 8, c);
 #elif PROBE == 19
     {
         /* a Schlick-only fixed scene of SCENE_N materials (F0 per material) */
