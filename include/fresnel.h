@@ -332,9 +332,9 @@ float fresnel_dielectric(float eta, float c);
  * fresnel_lut: nodes uniform in sqrt(c), c_i = (i/(n-1))^2: they crowd
  *   toward grazing incidence, where Fresnel curves bend (the first interval
  *   is 1/(n-1)^2 wide), and still cover normal incidence. Node 0 is c = 0
- *   (90 degrees), node n-1 is c = 1. On the 14 metals of Hoffman's table it
- *   halves the mean colour error of nodes uniform in c and cuts the worst by
- *   8x (README: the generator).
+ *   (90 degrees), node n-1 is c = 1. On the 14 metals of Hoffman's table,
+ *   16 fitted nodes, it cuts the worst mean colour error of nodes uniform in
+ *   c by 3x and the worst maximum by 11x (`make report`, the LUT ablation).
  * fresnel_lut_linear: nodes uniform in c, c_i = i/(n-1).
  * The _residual forms add the table to Schlick: F = fresnel_schlick(f0, c) +
  *   interpolated (GT - Schlick(F0)), so the table holds only what Schlick
