@@ -465,6 +465,12 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5(uint32_t x)
     return (x4 * x) >> 15;
 }
 
+/* F0 + (1 - F0) x5 for f0, x5 in [0, one], truncated. */
+FRESNEL_FAST__INLINE uint32_t fresnel_fast__blend(uint32_t f0, uint32_t x5)
+{
+    return f0 + (((32768u - f0) * x5) >> 15);
+}
+
 /* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 and c in [0, one]: x^5 as
  * fresnel_fast__pow5 and a truncated blend. Error <=
  * FRESNEL_Q15_BOUND_SCHLICK_FAST LSB (every 16th F0 code, every c code;
@@ -472,8 +478,7 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5(uint32_t x)
  * c = one exactly F0. Cost: 4 mul. */
 FRESNEL_FAST__INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 {
-    uint32_t f = (uint32_t)f0, x5 = fresnel_fast__pow5(32768u - (uint32_t)c);
-    return (fresnel_q15)(f + (((32768u - f) * x5) >> 15));
+    return (fresnel_q15)fresnel_fast__blend((uint32_t)f0, fresnel_fast__pow5(32768u - (uint32_t)c));
 }
 
 /* The same for three channels: x^5 once, three blends; each channel equals
@@ -482,9 +487,9 @@ FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rg
 {
     uint32_t x5 = fresnel_fast__pow5(32768u - (uint32_t)c);
     fresnel_q15_rgb r;
-    r.r = (fresnel_q15)(f0.r + (((32768u - f0.r) * x5) >> 15));
-    r.g = (fresnel_q15)(f0.g + (((32768u - f0.g) * x5) >> 15));
-    r.b = (fresnel_q15)(f0.b + (((32768u - f0.b) * x5) >> 15));
+    r.r = (fresnel_q15)fresnel_fast__blend(f0.r, x5);
+    r.g = (fresnel_q15)fresnel_fast__blend(f0.g, x5);
+    r.b = (fresnel_q15)fresnel_fast__blend(f0.b, x5);
     return r;
 }
 
@@ -501,10 +506,10 @@ FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rg
  * a). Cost: 7 mul. */
 FRESNEL_FAST__INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
-    uint32_t f = (uint32_t)f0, x = 32768u - (uint32_t)c;
+    uint32_t x = 32768u - (uint32_t)c;
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
     uint32_t cx6 = ((uint32_t)c * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
-    int32_t v = (int32_t)((f + (((32768u - f) * x5) >> 15)) << 15) - a_q12 * (int32_t)cx6;
+    int32_t v = (int32_t)(fresnel_fast__blend((uint32_t)f0, x5) << 15) - a_q12 * (int32_t)cx6;
     uint32_t r = (uint32_t)v >> 15;
     if (v <= 0)
         return 0;

@@ -104,6 +104,18 @@ static void check_sqrt(void)
           "max|err| 2^%.3f at c %d", log2(worst_e), (int)at);
 }
 
+/* n nodes of the material's exact curve at c = (i/(n-1))^2 in Q15 codes, and
+ * the same codes as doubles. */
+static void conductor_table(const test_material *m, int n, uint16_t *u16, double *dv)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        double x = i / (double)(n - 1);
+        u16[i] = (uint16_t)floor(ref_conductor(m->eta, m->kappa, x * x) * 32768.0 + 0.5);
+        dv[i] = u16[i] / 32768.0;
+    }
+}
+
 static void check_lut(const test_material *mat, int nmat)
 {
     static const int sizes[] = {2, 3, 5, 8, 16, 33, 64, 256, 1024};
@@ -116,14 +128,10 @@ static void check_lut(const test_material *mat, int nmat)
     memset(&w64, 0, sizeof w64);
     for (k = 0; k < nmat; k += 4)
         for (is = 0; is < (int)(sizeof sizes / sizeof sizes[0]); is++) {
-            int n = sizes[is], i;
+            int n = sizes[is];
             int32_t c;
             char what[64];
-            for (i = 0; i < n; i++) {
-                double x = i / (double)(n - 1);
-                u16[i] = (uint16_t)floor(ref_conductor(mat[k].eta, mat[k].kappa, x * x) * 32768.0 + 0.5);
-                dv[i] = u16[i] / 32768.0;
-            }
+            conductor_table(&mat[k], n, u16, dv);
             snprintf(what, sizeof what, "%.31s n %d", mat[k].name, n);
             for (c = 0; c <= ONE; c++) {
                 int32_t got = fresnel_lut_q15_u16_fast(u16, n, c);
@@ -176,14 +184,10 @@ static void check_lut_pl(const test_material *mat, int nmat)
     CHECK("fixed fast LUT pl: knots are round(32768 sqrt(k/64))", knots_ok, "a knot differs");
     for (k = 0; k < nmat; k += 4)
         for (is = 0; is < (int)(sizeof sizes / sizeof sizes[0]); is++) {
-            int n = sizes[is], i;
+            int n = sizes[is];
             int32_t c;
             char what[64];
-            for (i = 0; i < n; i++) { /* any table will do: the curve at the P nodes' cosines */
-                double x = i / (double)(n - 1);
-                u16[i] = (uint16_t)floor(ref_conductor(mat[k].eta, mat[k].kappa, x * x) * 32768.0 + 0.5);
-                dv[i] = u16[i] / 32768.0;
-            }
+            conductor_table(&mat[k], n, u16, dv); /* any table will do for the P position */
             snprintf(what, sizeof what, "%.31s n %d", mat[k].name, n);
             for (c = 0; c <= ONE; c++) {
                 int32_t got = fresnel_lut_q15_u16_pl_fast(u16, n, c);
