@@ -1,6 +1,6 @@
 /* `fresnel gen --glsl` (see emit_glsl.h). One GLSL file serves every dialect
  * of ports/glsl/fresnel.glsl: LUT tables are const arrays where
- * FRESNEL_LUT_ARRAYS is 1 (GLSL ES 3.00+, desktop 1.20+) and strips of a
+ * FRESNEL_LUT_ARRAYS is 1 (GLSL ES 3.00+, desktop 1.30+) and strips of a
  * packed RGBA8 texture where it is 0 (GLSL ES 1.00: no array constructors,
  * constant-index-only arrays in fragment shaders, 16 uniform vectors
  * guaranteed, float textures optional). Output depends only on the manifest
@@ -344,9 +344,10 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
                " * same manifest.\n",
             scene_prefix);
     if (l.count)
-        fprintf(f, " * LUT models: const float arrays where FRESNEL_LUT_ARRAYS is 1 (GLSL ES 3.00+, desktop 1.20+);\n"
-                   " * where it is 0 (GLSL ES 1.00) a strip of the packed RGBA8 texture in the sampler uniform\n"
-                   " * %s_lut_texture, %d x %d texels, 16 bits per node (quantisation <= 2^-16), whose\n"
+        fprintf(f, " * LUT models: const float arrays where FRESNEL_LUT_ARRAYS is 1 (GLSL ES 3.00+, desktop 1.30+);\n"
+                   " * where it is 0 (GLSL ES 1.00, desktop 1.10 and 1.20) a strip of the packed RGBA8 texture\n"
+                   " * in the sampler uniform %s_lut_texture, %d x %d texels, 16 bits per node\n"
+                   " * (quantisation <= 2^-16), whose\n"
                    " * bytes `fresnel gen %s --glsl -o OUT.glsl --glsl-texture OUT_TEX.h` writes as a C array;\n"
                    " * in fragment shaders (ES 2.0 promises no vertex texture units).\n",
                 scene_prefix, l.width, l.height, in->manifest_name);

@@ -40,7 +40,18 @@ validate() {
 main_of() {
     case $1 in
     es100) printf 'varying highp float fr_c;\nvoid main() { gl_FragColor = vec4(%s, 1.0); }\n' "$2" ;;
+    110 | 120) printf 'varying float fr_c;\nvoid main() { gl_FragColor = vec4(%s, 1.0); }\n' "$2" ;;
     *) printf 'in highp float fr_c;\nout vec4 fr_out;\nvoid main() { fr_out = vec4(%s, 1.0); }\n' "$2" ;;
+    esac
+}
+# prelude_of DIALECT: the port's prelude file, or for the other versions
+# fresnel.glsl supports (tests/glsl_test.c compiles it in all of them) the
+# #version line and an ES default precision.
+prelude_of() {
+    case $1 in
+    es100 | es300 | 330) cat "$port/prelude_$1.glsl" ;;
+    es*) printf '#version %s es\nprecision mediump float;\n' "${1#es}" ;;
+    *) printf '#version %s\n' "$1" ;;
     esac
 }
 
@@ -93,19 +104,29 @@ for manifest in data/scenes/*.scene "$out/glsl_luts.scene" "$out/glsl_luts_unifo
         fi
         expr=$(printf '%s\n' "$funcs" | sed 's/$/(fr_c)/' | paste -sd+)
         variants="es100 es300 330"
-        case $model in lut*) variants="$variants es300-texture 330-texture" ;; esac
+        case $model in lut*) variants="$variants es300-texture" ;; esac
         for v in $variants; do
             p=${v%-texture}
             conf=
             [ "$p" = es100 ] && conf="$out/es100.conf"
             f="$out/${ident}_${id}_$v.frag"
-            { cat "$port/prelude_$p.glsl"
+            { prelude_of "$p"
               [ "$v" != "$p" ] && echo '#define FRESNEL_LUT_ARRAYS 0'
               cat "$port/fresnel.glsl" "$glsl"
               main_of "$p" "$expr"; } >"$f"
             validate "glslang: $scene $model, $nmat materials, $v" "$f" "$conf"
         done
     done
+    # The scene with every model also in the other versions fresnel.glsl
+    # supports, one shader calling every function.
+    if [ "$ident" = glsl_luts ]; then
+        all=$(sed -n "s/^vec3 \(fresnel_${ident}_[a-z0-9_]*_rgb\)(FRESNEL_HIGHP float c)$/\1(fr_c)/p" "$glsl" | paste -sd+)
+        for v in 110 120 130 150 450 es310 es320; do
+            f="$out/${ident}_all_$v.frag"
+            { prelude_of "$v"; cat "$port/fresnel.glsl" "$glsl"; main_of "$v" "$all"; } >"$f"
+            validate "glslang: $scene, every model and material, GLSL $v" "$f"
+        done
+    fi
 done
 
 # Bad input for --glsl: a clear error, exit 2, no output written.

@@ -107,15 +107,16 @@
 #endif
 
 /* FRESNEL_LUT_ARRAYS: 1 where tables can be const arrays indexed with a
- * variable (GLSL ES 3.00 and later, desktop GLSL 1.20 and later), 0 where
+ * variable (GLSL ES 3.00 and later, desktop GLSL 1.30 and later), 0 where
  * they cannot (GLSL ES 1.00: no array constructors, and fragment shaders need
- * only support constant indices; desktop 1.10: no array constructors).
+ * only support constant indices; desktop 1.10: no array constructors; 1.20:
+ * no integer min() and max(), which the cubic's index clamps need).
  * Generated scenes (`fresnel gen --glsl`) read their tables from const arrays
  * when it is 1 and from the packed RGBA8 texture (fresnel_lut_packed_rgb
  * below) when it is 0; define it as 0 before this file to use the texture in
  * any dialect. */
 #ifndef FRESNEL_LUT_ARRAYS
-#if (defined(GL_ES) && __VERSION__ >= 300) || (!defined(GL_ES) && __VERSION__ >= 120)
+#if (defined(GL_ES) && __VERSION__ >= 300) || (!defined(GL_ES) && __VERSION__ >= 130)
 #define FRESNEL_LUT_ARRAYS 1
 #else
 #define FRESNEL_LUT_ARRAYS 0
@@ -726,7 +727,7 @@ vec3 fresnel_lut_linear_residual_packed_rgb(vec3 f0, FRESNEL_HIGHP sampler2D tab
 
 /* fresnel_lut_cubic (src/lut.c): Catmull-Rom through the four nodes around
  * sqrt(c), the outer ones clamped to the table's ends; tables fitted for it
- * (lutN-cubic). Arrays (ES 3.00, GLSL 1.20 and later), n an int, or the packed
+ * (lutN-cubic). Arrays (ES 3.00, GLSL 1.30 and later), n an int, or the packed
  * texture (fresnel_lut_cubic_packed_rgb, every dialect). */
 FRESNEL_HIGHP float fresnel_lut_cubic_blend(FRESNEL_HIGHP float p0, FRESNEL_HIGHP float p1, FRESNEL_HIGHP float p2,
                                             FRESNEL_HIGHP float p3, FRESNEL_HIGHP float t)
