@@ -283,8 +283,9 @@ static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, con
                " *   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, FRESNEL_%s_LUT_TEXTURE_WIDTH,\n"
                " *                FRESNEL_%s_LUT_TEXTURE_HEIGHT, 0, GL_RGBA, GL_UNSIGNED_BYTE, fresnel_%s_lut_texture);\n"
                " * with GL_NEAREST filters, GL_CLAMP_TO_EDGE and no mipmaps (rows bottom to top, as GL\n"
-               " * reads them). Needed where the GLSL has FRESNEL_LUT_ARRAYS 0 (GLSL ES 1.00). Texel\n"
-               " * layout and node code: fresnel_lut_packed_rgb in ports/glsl/fresnel.glsl. */\n",
+               " * reads them). Needed where the GLSL has FRESNEL_LUT_ARRAYS 0 (GLSL ES 1.00, desktop\n"
+               " * 1.10 and 1.20). Texel layout and node code: fresnel_lut_packed_rgb in\n"
+               " * ports/glsl/fresnel.glsl. */\n",
             in->name, GEN_VERSION, in->manifest_name, in->name, guard, guard, in->name);
     fprintf(f, "#ifndef FRESNEL_SCENE_%s_LUT_TEXTURE_H\n#define FRESNEL_SCENE_%s_LUT_TEXTURE_H\n\n", guard, guard);
     fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
