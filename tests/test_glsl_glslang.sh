@@ -55,9 +55,9 @@ prelude_of() {
     esac
 }
 
-# The controls: the checks can fail. Array constructors (what the generator
-# once emitted for every dialect) and a variable index into a uniform array
-# are rejected for ES 1.00 under this configuration.
+# The controls: the checks can fail. Array constructors (the const-array
+# path of the tables) and a variable index into a uniform array are rejected
+# for ES 1.00 under this configuration.
 { cat $port/prelude_es100.glsl
   printf 'const float t[2] = float[2](0.5, 1.0);\nuniform float u[4];\n'
   main_of es100 'vec3(t[0])'; } >"$out/control_array.frag"
