@@ -6,6 +6,7 @@
 
 #include "cli.h"
 #include "emit.h"
+#include "emit_glsl.h"
 #include "generator.h"
 #include "scene.h"
 
@@ -14,13 +15,16 @@
 static void gen_usage(FILE *out)
 {
     int i;
-    fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--glsl] [--data DIR]\n\n"
+    fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--glsl [--glsl-texture OUT_TEX.h]] [--data DIR]\n\n"
                  "Reads the scene manifest SCENE and writes a C header with static const\n"
                  "constants and tables for exactly its materials, models and number types.\n"
                  "--glsl writes the same constants as GLSL instead (const vec3, float arrays)\n"
-                 "for use after ports/glsl/fresnel.glsl.\n"
+                 "for use after ports/glsl/fresnel.glsl, with vec3 fresnel_<scene>_<material>_<model>_rgb(c)\n"
+                 "per material and model, in every dialect the port supports; lut_spacing\n"
+                 "grazing or uniform. --glsl-texture writes, as a C header, the packed RGBA8\n"
+                 "texture GLSL ES 1.00 reads the LUT models from (no const arrays there).\n"
                  "The output is written to a temporary file and renamed: on any error nothing\n"
-                 "is left at OUT.h. Identical input gives byte-identical output.\n\n"
+                 "is left at OUT.h (nor at OUT_TEX.h). Identical input gives byte-identical output.\n\n"
                  "Manifest format: `key = value` lines, # comments (see gen/scene.h):\n"
                  "  materials = au cu al      required; ids from `fresnel materials`\n"
                  "  models = schlick f82 lut32 required; one or more of:");
@@ -55,14 +59,14 @@ static void scene_name(const char *path, char *out, size_t size)
 
 int cmd_gen(int argc, char **argv)
 {
-    const char *manifest = NULL, *out_path = NULL, *dir_option = NULL;
+    const char *manifest = NULL, *out_path = NULL, *dir_option = NULL, *tex_path = NULL;
     scene *sc = NULL;
     gen_context *g = NULL;
     material_params *params = NULL;
     spectrum **spectra = NULL;
     char name[64], where[1100];
     int i, status = 0, glsl = 0;
-    cli_outfile out;
+    cli_outfile out, tex;
     emit_input in;
 
     for (i = 1; i < argc; i++) {
@@ -71,11 +75,13 @@ int cmd_gen(int argc, char **argv)
             return 0;
         } else if (!strcmp(argv[i], "--glsl")) {
             glsl = 1;
-        } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data")) {
+        } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data") || !strcmp(argv[i], "--glsl-texture")) {
             if (i + 1 >= argc)
                 return cli_error(WHERE, "option '%s' needs a value (see fresnel gen --help)", argv[i]);
             if (argv[i][1] == 'o')
                 out_path = argv[++i];
+            else if (argv[i][2] == 'g')
+                tex_path = argv[++i];
             else
                 dir_option = argv[++i];
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
@@ -88,11 +94,18 @@ int cmd_gen(int argc, char **argv)
     }
     if (!manifest || !out_path)
         return cli_error(WHERE, "usage: fresnel gen SCENE -o OUT.h (see fresnel gen --help)");
+    if (tex_path && !glsl)
+        return cli_error(WHERE, "--glsl-texture needs --glsl (see fresnel gen --help)");
+    if (tex_path && !strcmp(tex_path, out_path))
+        return cli_error(WHERE, "--glsl-texture and -o name the same file '%s'", out_path);
     if (!(sc = malloc(sizeof *sc)) || !(g = malloc(sizeof *g))) {
         status = cli_error(WHERE, "out of memory");
         goto done;
     }
     if ((status = scene_load(manifest, sc)))
+        goto done;
+    scene_name(manifest, name, sizeof name);
+    if (glsl && (status = emit_glsl_check(sc, manifest, name)))
         goto done;
     params = calloc((size_t)sc->material_count, sizeof *params);
     spectra = calloc((size_t)sc->material_count, sizeof *spectra);
@@ -114,7 +127,6 @@ int cmd_gen(int argc, char **argv)
         if ((status = derive_parameters(g, sc->materials[i], sc->sigma, sc->n1, spectra[i], &params[i])))
             goto done;
     }
-    scene_name(manifest, name, sizeof name);
     in.sc = sc;
     in.name = name;
     in.manifest_name = strrchr(manifest, '/') ? strrchr(manifest, '/') + 1 : manifest;
@@ -126,8 +138,21 @@ int cmd_gen(int argc, char **argv)
         status = cli_error(out_path, "cannot write");
         goto done;
     }
-    if ((status = emit_header(out.f, &in))) {
+    if (tex_path && cli_out_open(&tex, tex_path)) {
         cli_out_abort(&out);
+        status = cli_error(tex_path, "cannot write");
+        goto done;
+    }
+    status = glsl ? emit_glsl(out.f, tex_path ? tex.f : NULL, &in) : emit_header(out.f, &in);
+    if (status) {
+        cli_out_abort(&out);
+        if (tex_path)
+            cli_out_abort(&tex);
+        goto done;
+    }
+    if (tex_path && cli_out_commit(&tex)) {
+        cli_out_abort(&out);
+        status = cli_error(tex_path, "cannot write");
         goto done;
     }
     if (cli_out_commit(&out))

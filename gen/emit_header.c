@@ -20,12 +20,9 @@ static int scene_has_residual_lut(const scene *sc)
     return 0;
 }
 
-/* C or GLSL: the one difference in what is emitted is the syntax. */
-static int glsl;
-
 /* A binary32 literal that reads back to the same float: 9 significant
- * digits, always with a '.' or an exponent. C gets the 'f' suffix; GLSL ES
- * 1.00 has no suffixes, and its float is binary32 at highp anyway. */
+ * digits, always with a '.' or an exponent, and the 'f' suffix. (GLSL:
+ * emit_glsl.c.) */
 static void put_float(FILE *f, double v)
 {
     char buf[40];
@@ -33,30 +30,23 @@ static void put_float(FILE *f, double v)
     fputs(buf, f);
     if (!strpbrk(buf, ".e"))
         fputs(".0", f);
-    if (!glsl)
-        fputc('f', f);
+    fputc('f', f);
 }
 
 static void emit_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
 {
-    if (glsl)
-        fprintf(f, "/* %s */\nconst vec3 %s_%s = vec3(", why, prefix, name);
-    else
-        fprintf(f, "/* %s */\nstatic const fresnel_rgb %s_%s FRESNEL_GEN_UNUSED = {", why, prefix, name);
+    fprintf(f, "/* %s */\nstatic const fresnel_rgb %s_%s FRESNEL_GEN_UNUSED = {", why, prefix, name);
     put_float(f, v[0]);
     fputs(", ", f);
     put_float(f, v[1]);
     fputs(", ", f);
     put_float(f, v[2]);
-    fputs(glsl ? ");\n" : "};\n", f);
+    fputs("};\n", f);
 }
 
 static void emit_float(FILE *f, const char *prefix, const char *name, double v, const char *why)
 {
-    if (glsl)
-        fprintf(f, "/* %s */\nconst FRESNEL_HIGHP float %s_%s = ", why, prefix, name);
-    else
-        fprintf(f, "/* %s */\nstatic const float %s_%s FRESNEL_GEN_UNUSED = ", why, prefix, name);
+    fprintf(f, "/* %s */\nstatic const float %s_%s FRESNEL_GEN_UNUSED = ", why, prefix, name);
     put_float(f, v);
     fputs(";\n", f);
 }
@@ -95,24 +85,16 @@ static int emit_lut(FILE *f, const char *prefix, const char *model, const materi
                " * fitted to the ground truth through %s interpolation.\n",
             model, n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
             form == LUT_CUBIC ? "Catmull-Rom" : "linear");
-    if (glsl) {
-        fprintf(f, " * Evaluate with FRESNEL_%s%s_ARRAY_RGB(%s%s_%s, %d, c) (GLSL ES 3.00, GLSL 3.30; for\n"
-                   " * ES 1.00 upload the same values as a texture strip, see fresnel.glsl). */\n",
-                spacing == LUT_UNIFORM ? "LUT_LINEAR" : "LUT", residual ? "_RESIDUAL" : (form == LUT_CUBIC ? "_CUBIC" : ""),
-                residual ? "f0, " : "", prefix, name, n);
-        fprintf(f, "const FRESNEL_HIGHP float %s_%s[%d] = float[%d](", prefix, name, 3 * n, 3 * n);
-    } else {
-        fprintf(f, " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n", spacing == LUT_UNIFORM ? "lut_linear" : "lut",
-                suffix, residual ? "f0, " : "", n);
-        fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
-    }
+    fprintf(f, " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n", spacing == LUT_UNIFORM ? "lut_linear" : "lut",
+            suffix, residual ? "f0, " : "", n);
+    fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
     for (i = 0; i < 3 * n; i++) {
         fputs(i % 6 == 0 ? "\n    " : " ", f);
         put_float(f, t[i]);
         if (i + 1 < 3 * n)
             fputc(',', f);
     }
-    fprintf(f, glsl ? "\n);\n" : "\n};\n");
+    fprintf(f, "\n};\n");
     free(t);
     return 0;
 }
@@ -124,7 +106,6 @@ int emit_header(FILE *f, const emit_input *in)
     lut_spacing spacing = scene_lut_spacing(sc);
     char guard[96];
     int i, m;
-    glsl = in->glsl;
     for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
         guard[i] = (char)toupper((unsigned char)in->name[i]);
     guard[i] = '\0';
@@ -149,26 +130,21 @@ int emit_header(FILE *f, const emit_input *in)
         fprintf(f, " *   %-18s %s.csv, %s, %s, %.1f-%.1f nm\n", p->info.id, p->info.id, p->info.name,
                 p->info.dataset, p->measured_lo, p->measured_hi);
     }
-    if (glsl) {
-        fprintf(f, " * GLSL: paste after ports/glsl/fresnel.glsl, which defines FRESNEL_HIGHP.\n */\n"
-                   "#ifndef FRESNEL_SCENE_%s_GLSL\n#define FRESNEL_SCENE_%s_GLSL\n", guard, guard);
-    } else {
-        fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n", guard, guard);
-        if (scene_has_type(sc, "q15"))
-            fprintf(f, "#include \"fresnel_fixed.h\"\n");
-        fputc('\n', f);
-        fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
-                   "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");
-    }
+    fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n", guard, guard);
+    if (scene_has_type(sc, "q15"))
+        fprintf(f, "#include \"fresnel_fixed.h\"\n");
+    fputc('\n', f);
+    fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
+               "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");
 
     for (i = 0; i < sc->material_count; i++) {
         const material_params *p = &in->params[i];
         char prefix[96];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
         fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
-        if (!glsl && scene_has_type(sc, "q15") && emit_fixed_material(f, in, i, prefix))
+        if (scene_has_type(sc, "q15") && emit_fixed_material(f, in, i, prefix))
             return CLI_BAD_INPUT;
-        if (!glsl && !scene_has_type(sc, "f32"))
+        if (!scene_has_type(sc, "f32"))
             continue;
         if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") ||
             scene_has_residual_lut(sc))

@@ -1,34 +1,73 @@
-/* `fresnel gen --glsl` in a real GL pipeline: the default scene's GLSL
- * constants, compiled after ports/glsl/fresnel.glsl in GLSL 3.30 and ES 3.00,
- * evaluate on the GPU (OSMesa) to what the C runtime gives with the C header
- * generated from the same manifest. Built and run by tests/test_glsl_gen.sh. */
+/* `fresnel gen --glsl` in a real GL pipeline: a scene's generated GLSL,
+ * compiled after ports/glsl/fresnel.glsl, evaluates on the GPU (OSMesa,
+ * llvmpipe) to what the C runtime computes from the same manifest
+ * (gen/scene_eval.c, the evaluation `fresnel curve` and the report use),
+ * for every material and model of the scene, in GLSL 3.30, ES 3.00 and
+ * ES 1.00. ES 1.00 reads the LUT models from the packed RGBA8 texture that
+ * `--glsl-texture` wrote (included here as FR_TEX_HEADER, the C header a
+ * program uploads); ES 3.00 also runs that path with FRESNEL_LUT_ARRAYS 0.
+ *
+ * Bounds (highp): analytic models and const-array tables 1e-5, as the
+ * port's own test. Texture tables: within 1e-5 of the C runtime on the
+ * decoded 16-bit nodes, and within the quantisation bound of the C runtime
+ * on the binary32 nodes: 2^-16 for linear interpolation, 1.25 * 2^-16 for
+ * Catmull-Rom (the sum of its weights' magnitudes is at most 1.25), plus
+ * 1e-6 of binary32 rounding. ES 1.00 without highp in fragment shaders
+ * (FRESNEL_HIGHP forced to mediump): measured and bounded, see
+ * MEDIUMP_BOUND. Built and run by tests/test_glsl_gen.sh, once per scene. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
-#include "fresnel.h"
+#include "cli.h"
+#include "emit_glsl.h"
+#include "generator.h"
 #include "glctx.h"
 #include "harness.h"
-#include "scene_default.h"
+#include "scene.h"
+#include "scene_eval.h"
+#include "spectral.h"
 
-#define W 64 /* c = (x + 0.5) / 64: exact in binary32 on both sides */
+#include FR_TEX_HEADER
+
+#define W 260 /* pixel x: c = (x - 1) / 256, from -1/256 to 1 + 2/256, exact in binary32 */
+#define HIGHP_BOUND 1e-5
+/* FRESNEL_HIGHP = mediump: the table position x (n - 1) in binary16 and
+ * the binary16 result; measured at most 1.1e-3 here (NOTE lines: residual tables, where the
+ * binary16 Schlick adds its own rounding), asserted with
+ * the margin of the port's mediump bounds. */
+#define MEDIUMP_BOUND 2.5e-3
+
+enum { V_330, V_ES300, V_ES100, V_ES300_TEX, V_ES100_MEDIUMP, NVARIANTS };
+static const struct variant {
+    const char *name, *prelude, *defines;
+    int es, version, texture, lut_only;
+} variants[NVARIANTS] = {
+    {"330", "prelude_330.glsl", "", 0, 330, 0, 0},
+    {"es300", "prelude_es300.glsl", "precision highp float;\n", 1, 300, 0, 0},
+    {"es100", "prelude_es100.glsl", "precision highp float;\n", 1, 100, 1, 0},
+    {"es300, FRESNEL_LUT_ARRAYS 0", "prelude_es300.glsl", "precision highp float;\n#define FRESNEL_LUT_ARRAYS 0\n", 1,
+     300, 1, 1},
+    {"es100, FRESNEL_HIGHP mediump", "prelude_es100.glsl", "#define FRESNEL_HIGHP mediump\n", 1, 100, 1, 1},
+};
 
 static char glsl_log[16384];
 
-static GLuint program(const char *prelude, int es, int version, const char *port, const char *scene,
-                      const char *expr)
+static GLuint program(const struct variant *v, const char *prelude, const char *port, const char *scene,
+                      const char *body)
 {
-    const char *parts[7];
-    const char *vsrc = glctx_vertex_source(es, version);
+    const char *parts[6];
+    const char *vsrc = glctx_vertex_source(v->es, v->version);
     GLuint vs, fs;
     parts[0] = prelude;
-    parts[1] = es ? "precision highp float;\n" : "";
+    parts[1] = v->defines;
     parts[2] = port;
     parts[3] = scene;
-    parts[4] = "out highp vec4 fr_out;\nvoid main() {\n    highp float c = gl_FragCoord.x / 64.0;\n    fr_out = vec4(";
-    parts[5] = expr;
-    parts[6] = ", 1.0);\n}\n";
-    if (!(fs = glctx_shader(GL_FRAGMENT_SHADER, parts, 7, glsl_log, sizeof glsl_log)))
+    parts[4] = v->version >= 300 ? "in highp vec2 fr_uv;\nout highp vec4 fr_out;\n#define FR_OUT fr_out\n"
+                                 : "varying highp vec2 fr_uv;\n#define FR_OUT gl_FragColor\n";
+    parts[5] = body;
+    if (!(fs = glctx_shader(GL_FRAGMENT_SHADER, parts, 6, glsl_log, sizeof glsl_log)))
         return 0;
     if (!(vs = glctx_shader(GL_VERTEX_SHADER, &vsrc, 1, glsl_log, sizeof glsl_log))) {
         glDeleteShader(fs);
@@ -37,81 +76,180 @@ static GLuint program(const char *prelude, int es, int version, const char *port
     return glctx_program(vs, fs, glsl_log, sizeof glsl_log);
 }
 
-static fresnel_rgb c_model(int which, float c)
+/* main(): row r of the viewport evaluates material r's function. */
+static char *main_body(const scene *sc, const char *ident, const char *model)
 {
-    if (which == 0)
-        return fresnel_lut_rgb(fresnel_default_cu_lut32, 32, c);
-    if (which == 1)
-        return fresnel_f82_rgb(fresnel_default_au_f0, fresnel_default_au_f82, c);
-    if (which == 3)
-        return fresnel_lut_cubic_rgb(fresnel_default_cr_lut16_cubic, 16, c);
-    return fresnel_conductor_rgb(fresnel_default_al_eta, fresnel_default_al_kappa, c);
+    size_t size = 4096 + (size_t)sc->material_count * 256;
+    char *b = malloc(size), id[32];
+    size_t len;
+    int i;
+    if (!b)
+        return NULL;
+    for (i = 0; model[i] && i < 31; i++)
+        id[i] = model[i] == '-' ? '_' : model[i];
+    id[i] = '\0';
+    len = (size_t)snprintf(b, size,
+                           "void main() {\n    highp float c = (floor(fr_uv.x * %d.0) - 1.0) * (1.0 / 256.0);\n"
+                           "    highp float row = floor(fr_uv.y * %d.0);\n    vec3 r = vec3(0.0);\n",
+                           W, sc->material_count);
+    for (i = 0; i < sc->material_count; i++)
+        len += (size_t)snprintf(b + len, size - len, "    %sif (row < %d.5) r = fresnel_%s_%s_%s_rgb(c);\n",
+                                i ? "else " : "", i, ident, sc->materials[i], id);
+    snprintf(b + len, size - len, "    FR_OUT = vec4(r, 1.0);\n}\n");
+    return b;
 }
 
 int main(int argc, char **argv)
 {
-    static const char *const exprs[4] = {"FRESNEL_LUT_ARRAY_RGB(fresnel_default_cu_lut32, 32, c)",
-                                         "fresnel_f82_rgb(fresnel_default_au_f0, fresnel_default_au_f82, c)",
-                                         "fresnel_conductor_rgb(fresnel_default_al_eta, fresnel_default_al_kappa, c)",
-                                         "FRESNEL_LUT_CUBIC_ARRAY_RGB(fresnel_default_cr_lut16_cubic, 16, c)"};
-    static const char *const names[4] = {"copper lut32", "gold f82", "aluminium exact", "chromium lut16-cubic"};
-    static const struct {
-        const char *prelude;
-        int es, version;
-    } dialects[2] = {{"prelude_330.glsl", 0, 330}, {"prelude_es300.glsl", 1, 300}};
+    static scene sc;
+    static gen_context gc;
     char err[256], path[1024];
-    char *port, *scene, *prelude;
+    char *port, *scene_src, *prelude[NVARIANTS];
+    const char *ident;
+    material_params *params;
+    spectrum *spectra;
+    scene_model *models; /* [material][model] */
+    float *out;
     glctx g;
-    GLuint fbo, tex;
-    int d, m, i, ch;
-    if (argc != 3) {
-        fprintf(stderr, "usage: glsl_gen_test PORT_DIR SCENE.glsl\n");
+    GLuint fbo, target, tex;
+    int i, m, v, x, ch, nmat;
+    if (argc != 5) {
+        fprintf(stderr, "usage: glsl_gen_test PORT_DIR MANIFEST IDENT SCENE.glsl\n");
         return 2;
+    }
+    ident = argv[3];
+    if (scene_load(argv[2], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
+        CHECK("glsl gen: scene loads", 0, "%s", argv[2]);
+        return harness_exit();
+    }
+    nmat = sc.material_count;
+    params = calloc((size_t)nmat, sizeof *params);
+    spectra = calloc((size_t)nmat, sizeof *spectra);
+    models = calloc((size_t)nmat * (size_t)sc.model_count, sizeof *models);
+    out = malloc((size_t)W * (size_t)nmat * 4 * sizeof *out);
+    if (!params || !spectra || !models || !out)
+        return 1;
+    for (i = 0; i < nmat; i++) {
+        if (derive_parameters(&gc, sc.materials[i], sc.sigma, sc.n1, &spectra[i], &params[i]))
+            return 1;
+        for (m = 0; m < sc.model_count; m++)
+            if (scene_model_prepare(sc.models[m], scene_lut_spacing(&sc), &spectra[i], &gc, &params[i],
+                                    &models[i * sc.model_count + m]))
+                return 1;
     }
     snprintf(path, sizeof path, "%s/fresnel.glsl", argv[1]);
     port = glctx_read_file(path);
-    scene = glctx_read_file(argv[2]);
-    if (!port || !scene || glctx_open(&g, W, 1, err, sizeof err)) {
-        CHECK("glsl gen: context and sources", 0, "%s", port && scene ? err : "cannot read sources");
+    scene_src = glctx_read_file(argv[4]);
+    if (!port || !scene_src || glctx_open(&g, W, nmat, err, sizeof err)) {
+        CHECK("glsl gen: context and sources", 0, "%s", port && scene_src ? err : "cannot read sources");
         return harness_exit();
     }
-    fbo = glctx_float_target(W, 1, &tex);
-    for (d = 0; d < 2; d++) {
-        snprintf(path, sizeof path, "%s/%s", argv[1], dialects[d].prelude);
-        prelude = glctx_read_file(path);
-        for (m = 0; m < 4; m++) {
-            static float out[W * 4];
-            char name[160];
-            double worst = 0.0;
-            GLuint prog = prelude ? program(prelude, dialects[d].es, dialects[d].version, port, scene, exprs[m]) : 0;
-            snprintf(name, sizeof name, "glsl gen: %s compiles and matches C in %s", names[m], dialects[d].prelude);
+    for (v = 0; v < NVARIANTS; v++) {
+        snprintf(path, sizeof path, "%s/%s", argv[1], variants[v].prelude);
+        prelude[v] = glctx_read_file(path);
+    }
+    fbo = glctx_float_target(W, nmat, &target);
+    glGenTextures(1, &tex);
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, FR_TEX_WIDTH, FR_TEX_HEIGHT, 0, GL_RGBA, GL_UNSIGNED_BYTE, FR_TEX);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+
+    for (m = 0; m < sc.model_count; m++) {
+        char *body = main_body(&sc, ident, sc.models[m]);
+        int is_lut = models[m].lut_n > 0, form = models[m].form;
+        for (v = 0; v < NVARIANTS && body; v++) {
+            const struct variant *va = &variants[v];
+            int texture = is_lut && va->texture, mediump = v == V_ES100_MEDIUMP;
+            double worst = 0.0, worst_q = 0.0, bound, bound_q = HIGHP_BOUND;
+            char name[256], sampler[128];
+            GLuint prog;
+            if (va->lut_only && !is_lut)
+                continue;
+            bound = mediump ? MEDIUMP_BOUND
+                  : texture ? (form == LUT_CUBIC ? 1.25 : 1.0) * ldexp(1.0, -16) + 1e-6
+                            : HIGHP_BOUND;
+            snprintf(name, sizeof name, "glsl gen: %s %s, %d materials, %s%s", ident, sc.models[m], nmat, va->name,
+                     is_lut ? (texture ? " (packed texture)" : " (const arrays)") : "");
+            prog = prelude[v] ? program(va, prelude[v], port, scene_src, body) : 0;
             if (!prog) {
                 CHECK(name, 0, "compile/link failed:\n%s", glsl_log);
                 continue;
             }
             glUseProgram(prog);
-            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-            glViewport(0, 0, W, 1);
-            glctx_draw(&g);
-            glReadPixels(0, 0, W, 1, GL_RGBA, GL_FLOAT, out);
-            for (i = 0; i < W; i++) {
-                fresnel_rgb v = c_model(m, (i + 0.5f) / W);
-                float cv[3];
-                cv[0] = v.r;
-                cv[1] = v.g;
-                cv[2] = v.b;
-                for (ch = 0; ch < 3; ch++)
-                    if (!(fabs(out[4 * i + ch] - cv[ch]) <= worst))
-                        worst = fabs(out[4 * i + ch] - cv[ch]);
+            snprintf(sampler, sizeof sampler, "fresnel_%s_lut_texture", ident);
+            if (texture) {
+                GLint loc = glGetUniformLocation(prog, sampler);
+                CHECK(name, loc >= 0, "no sampler uniform %s", sampler);
+                glActiveTexture(GL_TEXTURE0);
+                glBindTexture(GL_TEXTURE_2D, tex);
+                glUniform1i(loc, 0);
             }
-            NOTE("%s: max |GPU highp - C| %.2g", name, worst);
-            CHECK(name, worst <= 1e-5, "max difference %.3g", worst);
+            glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+            glViewport(0, 0, W, nmat);
+            glctx_draw(&g);
+            glReadPixels(0, 0, W, nmat, GL_RGBA, GL_FLOAT, out);
+            for (i = 0; i < nmat; i++) {
+                const scene_model *sm = &models[i * sc.model_count + m];
+                scene_model qm = *sm;
+                float qtab[3 * SCENE_LUT_MAX];
+                if (texture) { /* the nodes as the texture holds them */
+                    int k;
+                    for (k = 0; k < 3 * sm->lut_n; k++)
+                        qtab[k] = (float)((emit_glsl_node_code(sm->table_d[k]) - 16384) / 32768.0);
+                    qm.table = qtab;
+                }
+                for (x = 0; x < W; x++) {
+                    float c = (float)(x - 1) / 256.0f, ref[3], refq[3];
+                    const float *gpu = out + 4 * ((size_t)i * W + (size_t)x);
+                    scene_model_eval(sm, &params[i], c, ref);
+                    scene_model_eval(&qm, &params[i], c, refq);
+                    for (ch = 0; ch < 3; ch++) {
+                        double d = fabs(gpu[ch] - ref[ch]), dq = fabs(gpu[ch] - refq[ch]);
+                        if (!(d <= worst))
+                            worst = d;
+                        if (!(dq <= worst_q))
+                            worst_q = dq;
+                    }
+                }
+            }
+            if (texture && !mediump) {
+                NOTE("%s: max |GPU - C| %.2g (bound %.2g), on the decoded nodes %.2g", name, worst, bound, worst_q);
+                CHECK(name, worst <= bound && worst_q <= bound_q, "max difference %.3g (bound %.3g), decoded %.3g",
+                      worst, bound, worst_q);
+            } else {
+                NOTE("%s: max |GPU - C| %.2g (bound %.2g)", name, worst, bound);
+                CHECK(name, worst <= bound, "max difference %.3g (bound %.3g)", worst, bound);
+            }
             glDeleteProgram(prog);
         }
-        free(prelude);
+        free(body);
     }
+    /* The quantisation itself: every node of every table of the scene. */
+    {
+        double q = 0.0;
+        for (i = 0; i < nmat * sc.model_count; i++)
+            for (x = 0; x < 3 * models[i].lut_n; x++) {
+                double d = fabs((emit_glsl_node_code(models[i].table_d[x]) - 16384) / 32768.0 - models[i].table[x]);
+                if (d > q)
+                    q = d;
+            }
+        NOTE("glsl gen: %s: max |16-bit texture node - binary32 node| %.3g (2^-16 = %.3g)", ident, q, ldexp(1.0, -16));
+        CHECK("glsl gen: texture nodes within 2^-16 of the binary32 tables", q <= ldexp(1.0, -16), "%.3g", q);
+    }
+    glDeleteTextures(1, &tex);
     glctx_close(&g);
+    for (i = 0; i < nmat * sc.model_count; i++)
+        scene_model_free(&models[i]);
+    for (v = 0; v < NVARIANTS; v++)
+        free(prelude[v]);
+    free(models);
+    free(params);
+    free(spectra);
+    free(out);
     free(port);
-    free(scene);
+    free(scene_src);
     return harness_exit();
 }

@@ -1,32 +1,62 @@
 #!/bin/sh
-# `fresnel gen --glsl` (issue 6): the default scene as GLSL compiles after the
-# port and evaluates on the GPU to the C runtime's values from the C header
-# of the same manifest. Needs OSMesa, like tests/test_glsl.sh.
+# `fresnel gen --glsl` on the GPU: for the default scene and two scenes with
+# every LUT kind and every analytic model, the generated GLSL (and, for
+# GLSL ES 1.00, the packed LUT texture of --glsl-texture) evaluates in
+# OSMesa to what the C runtime computes from the same manifest, in GLSL 3.30,
+# ES 3.00 and ES 1.00 (tests/glsl_gen_test.c, built once per scene because it
+# includes the scene's texture header). Needs OSMesa, like tests/test_glsl.sh.
 BUILD=${BUILD:-build}
 CC=${CC:-cc}
-out="$BUILD/glsl"
+out="$BUILD/glsl/gen"
 if [ ! -f /usr/include/GL/osmesa.h ] || ! pkg-config --exists osmesa 2>/dev/null; then
     echo "FAIL glsl gen: OSMesa not found: install Debian's libosmesa6-dev (.ci/run does this)"
     exit 1
 fi
 mkdir -p "$out"
-if ! "$BUILD/fresnel" gen data/scenes/default.scene --glsl -o "$out/scene_default.glsl" 2>"$out/gen.log"; then
-    echo "FAIL glsl gen: fresnel gen --glsl: $(cat "$out/gen.log")"
-    exit 1
-fi
-grep -q 'f[,)]' "$out/scene_default.glsl" && echo "FAIL glsl gen: a C float suffix in the GLSL output" ||
-    echo "PASS glsl gen: no C float suffixes in the GLSL output"
 san=
 if nm "$BUILD/libfresnel.a" 2>/dev/null | grep -q '__asan_'; then
     san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 fi
-# shellcheck disable=SC2086,SC2046
-if ! $CC -std=c99 -Wall -Wextra -Wpedantic -Werror -O1 -g $san -Iinclude -Iports/glsl/host -Itests -I"$BUILD" \
-    -o "$out/glsl_gen_test" tests/glsl_gen_test.c ports/glsl/host/glctx.c "$BUILD/libfresnel.a" \
-    $(pkg-config --cflags --libs osmesa) -lm >"$out/gen_build.log" 2>&1; then
-    echo "FAIL glsl gen: tests/glsl_gen_test.c does not build:"
-    cat "$out/gen_build.log"
-    exit 1
-fi
-MESA_SHADER_CACHE_DIR="${BUILD%%/*}/mesa-shader-cache" ASAN_OPTIONS=detect_leaks=0 \
-    "$out/glsl_gen_test" ports/glsl "$out/scene_default.glsl"
+gen_obj=$(ls "$BUILD"/obj/gen/*.o | grep -v '/main\.o$')
+cat >"$out/glsl_all_models.scene" <<'SCENE'
+# every analytic model and every LUT kind, nodes uniform in sqrt(cos theta)
+materials = au ag bk7
+models = schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point lut4 lut256 lut32-residual lut4-cubic lut16-cubic lut256-cubic
+SCENE
+cat >"$out/glsl_uniform.scene" <<'SCENE'
+# every LUT kind with nodes uniform in cos theta (cubic needs grazing)
+materials = cu water
+models = lut4 lut32 lut256 lut4-residual lut256-residual
+lut_spacing = uniform
+SCENE
+status=0
+for manifest in data/scenes/default.scene "$out/glsl_all_models.scene" "$out/glsl_uniform.scene"; do
+    ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
+    IDENT=$(printf '%s' "$ident" | tr 'a-z' 'A-Z')
+    if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$out/$ident.glsl" --glsl-texture "$out/${ident}_tex.h" \
+        2>"$out/gen.log"; then
+        echo "FAIL glsl gen: fresnel gen $manifest --glsl: $(cat "$out/gen.log")"
+        status=1
+        continue
+    fi
+    if grep -q '[0-9]f[,)]' "$out/$ident.glsl"; then
+        echo "FAIL glsl gen: $ident: a C float suffix in the GLSL output"
+    else
+        echo "PASS glsl gen: $ident: no C float suffixes in the GLSL output"
+    fi
+    # shellcheck disable=SC2086,SC2046
+    if ! $CC -std=c99 -Wall -Wextra -Wpedantic -Werror -O1 -g $san -D_POSIX_C_SOURCE=200809L \
+        -Iinclude -Igen -Iports/glsl/host -Itests \
+        -I"$out" -DFR_TEX_HEADER="\"${ident}_tex.h\"" -DFR_TEX="fresnel_${ident}_lut_texture" \
+        -DFR_TEX_WIDTH="FRESNEL_${IDENT}_LUT_TEXTURE_WIDTH" -DFR_TEX_HEIGHT="FRESNEL_${IDENT}_LUT_TEXTURE_HEIGHT" \
+        -o "$out/glsl_gen_test_$ident" tests/glsl_gen_test.c ports/glsl/host/glctx.c $gen_obj "$BUILD/libfresnel.a" \
+        $(pkg-config --cflags --libs osmesa) -lm >"$out/build_$ident.log" 2>&1; then
+        echo "FAIL glsl gen: tests/glsl_gen_test.c does not build with $ident:"
+        cat "$out/build_$ident.log"
+        status=1
+        continue
+    fi
+    MESA_SHADER_CACHE_DIR="${BUILD%%/*}/mesa-shader-cache" ASAN_OPTIONS=detect_leaks=0 \
+        "$out/glsl_gen_test_$ident" ports/glsl "$manifest" "$ident" "$out/$ident.glsl" || status=1
+done
+exit $status

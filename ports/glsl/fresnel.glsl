@@ -106,6 +106,23 @@
 #endif
 #endif
 
+/* FRESNEL_LUT_ARRAYS: 1 where tables can be const arrays indexed with a
+ * variable (GLSL ES 3.00 and later, desktop GLSL 1.30 and later), 0 where
+ * they cannot (GLSL ES 1.00: no array constructors, and fragment shaders need
+ * only support constant indices; desktop 1.10: no array constructors; 1.20:
+ * no integer min() and max(), which the cubic's index clamps need).
+ * Generated scenes (`fresnel gen --glsl`) read their tables from const arrays
+ * when it is 1 and from the packed RGBA8 texture (fresnel_lut_packed_rgb
+ * below) when it is 0; define it as 0 before this file to use the texture in
+ * any dialect. */
+#ifndef FRESNEL_LUT_ARRAYS
+#if (defined(GL_ES) && __VERSION__ >= 300) || (!defined(GL_ES) && __VERSION__ >= 130)
+#define FRESNEL_LUT_ARRAYS 1
+#else
+#define FRESNEL_LUT_ARRAYS 0
+#endif
+#endif
+
 #if __VERSION__ >= 130
 #define FRESNEL_TEXTURE texture
 #else
@@ -646,6 +663,55 @@ vec3 fresnel_lut_linear_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRE
                           fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
 }
 
+/* PACKED RGBA8 TEXTURE (every dialect; the form `fresnel gen --glsl` emits
+ * for GLSL ES 1.00, where neither const arrays nor float textures are
+ * guaranteed, and 16 uniform vectors are all a fragment shader is promised).
+ * A table is one strip of texels in one row, addressed like the R32F strip
+ * above (strip = (u of the first texel's centre, v of the row's centre,
+ * du)); texel first + j of channel ch holds node j in .rg and node j + 1 in
+ * .ba (the channel's last texel repeats its last node), so linear
+ * interpolation needs one fetch per channel. A node v is the 16-bit code
+ * q = round(v 2^15) + 2^14, high byte first: v in [-0.5, 1.5), step 2^-15,
+ * quantisation error <= 2^-16; the decode below is exact in binary32 and
+ * rounds once in binary16. Upload: GL_RGBA, GL_UNSIGNED_BYTE, NEAREST (any
+ * filter works: fetches hit texel centres), CLAMP_TO_EDGE, no mipmaps. */
+FRESNEL_HIGHP vec2 fresnel_i_lut_u16x2(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float j)
+{
+    FRESNEL_HIGHP vec4 b = floor(FRESNEL_TEXTURE(table, vec2(strip.x + j * strip.z, strip.y)) * 255.0 + 0.5);
+    /* (hi - 64) / 128 + lo / 2^15, with constants that are normal binary16 */
+    return (b.yw * (1.0 / 256.0) + (b.xz - 64.0)) * (1.0 / 128.0);
+}
+FRESNEL_HIGHP vec3 fresnel_i_lut_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                                            FRESNEL_HIGHP vec2 pos, FRESNEL_HIGHP float n)
+{
+    FRESNEL_HIGHP vec2 r = fresnel_i_lut_u16x2(table, strip, pos.x);
+    FRESNEL_HIGHP vec2 g = fresnel_i_lut_u16x2(table, strip, n + pos.x);
+    FRESNEL_HIGHP vec2 b = fresnel_i_lut_u16x2(table, strip, 2.0 * n + pos.x);
+    return vec3(fresnel_lut_lerp(r.x, r.y, pos.y), fresnel_lut_lerp(g.x, g.y, pos.y), fresnel_lut_lerp(b.x, b.y, pos.y));
+}
+vec3 fresnel_lut_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
+                            FRESNEL_HIGHP float c)
+{
+    return clamp(fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_pos(n, c), n), 0.0, 1.0);
+}
+vec3 fresnel_lut_linear_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
+                                   FRESNEL_HIGHP float c)
+{
+    return clamp(fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_linear_pos(n, c), n), 0.0, 1.0);
+}
+vec3 fresnel_lut_residual_packed_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                                     FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+{
+    return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
+                          fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_pos(n, c), n));
+}
+vec3 fresnel_lut_linear_residual_packed_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                                            FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+{
+    return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
+                          fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
+}
+
 /* Arrays: table is a float array (const or uniform) of n or 3n nodes, n an
  * int constant expression or variable. Each macro is one expression. */
 #define FRESNEL_I_LUT_AT(table, base, p) fresnel_lut_lerp((table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (p).y)
@@ -661,7 +727,8 @@ vec3 fresnel_lut_linear_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRE
 
 /* fresnel_lut_cubic (src/lut.c): Catmull-Rom through the four nodes around
  * sqrt(c), the outer ones clamped to the table's ends; tables fitted for it
- * (lutN-cubic). Arrays only (ES 3.00, GLSL 3.30), n an int. */
+ * (lutN-cubic). Arrays (ES 3.00, GLSL 1.30 and later), n an int, or the packed
+ * texture (fresnel_lut_cubic_packed_rgb, every dialect). */
 FRESNEL_HIGHP float fresnel_lut_cubic_blend(FRESNEL_HIGHP float p0, FRESNEL_HIGHP float p1, FRESNEL_HIGHP float p2,
                                             FRESNEL_HIGHP float p3, FRESNEL_HIGHP float t)
 {
@@ -671,5 +738,24 @@ FRESNEL_HIGHP float fresnel_lut_cubic_blend(FRESNEL_HIGHP float p0, FRESNEL_HIGH
 #define FRESNEL_I_LUT_CUBIC_AT(table, base, n, p) fresnel_lut_cubic_blend((table)[(base) + max(int((p).x) - 1, 0)], (table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (table)[(base) + min(int((p).x) + 2, (n) - 1)], (p).y)
 #define FRESNEL_LUT_CUBIC_ARRAY(table, n, c) clamp(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), 0.0, 1.0)
 #define FRESNEL_LUT_CUBIC_ARRAY_RGB(table, n, c) clamp(vec3(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, (n), (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, 2 * (n), (n), fresnel_lut_pos(float(n), (c)))), 0.0, 1.0)
+
+/* The cubic from the packed texture: texel i gives p1, p2; texel max(i-1, 0)
+ * gives p0 in .rg; texel i + 1 gives p3 in .ba (node min(i + 2, n - 1),
+ * since a channel's last texel repeats its last node). */
+FRESNEL_HIGHP float fresnel_i_lut_cubic_packed(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
+                                               FRESNEL_HIGHP vec2 pos, FRESNEL_HIGHP float first)
+{
+    FRESNEL_HIGHP vec2 a = fresnel_i_lut_u16x2(table, strip, first + max(pos.x - 1.0, 0.0));
+    FRESNEL_HIGHP vec2 m = fresnel_i_lut_u16x2(table, strip, first + pos.x);
+    FRESNEL_HIGHP vec2 z = fresnel_i_lut_u16x2(table, strip, first + pos.x + 1.0);
+    return fresnel_lut_cubic_blend(a.x, m.x, m.y, z.y, pos.y);
+}
+vec3 fresnel_lut_cubic_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
+                                  FRESNEL_HIGHP float c)
+{
+    FRESNEL_HIGHP vec2 pos = fresnel_lut_pos(n, c);
+    return clamp(vec3(fresnel_i_lut_cubic_packed(table, strip, pos, 0.0), fresnel_i_lut_cubic_packed(table, strip, pos, n),
+                      fresnel_i_lut_cubic_packed(table, strip, pos, 2.0 * n)), 0.0, 1.0);
+}
 
 #endif /* FRESNEL_GLSL */

@@ -1,0 +1,161 @@
+#!/bin/sh
+# `fresnel gen --glsl` output compiles in every dialect the GLSL port claims:
+# glslangValidator (Debian glslang-tools) on each prelude x scene x model,
+# a fragment shader calling the model's function for every material. The
+# scenes: every committed data/scenes/*.scene and two written here with
+# every LUT kind (lutN, lutN-residual, lutN-cubic; N = 4 and 256 at the
+# ends of the range) in both spacings the port reads (grazing, uniform).
+# GLSL ES 1.00 runs under the ES 2.0 minimum limits and Appendix A's
+# indexing rules (fragment arrays: constant-index-expressions only), which
+# glslangValidator enforces when its configuration says so; ES 3.00 and 3.30
+# also compile with FRESNEL_LUT_ARRAYS 0 (the texture path there). Then the
+# bad inputs of --glsl. A missing glslangValidator is a FAIL, not a skip.
+BUILD=${BUILD:-build}
+out="$BUILD/glsl/glslang"
+port=ports/glsl
+if ! command -v glslangValidator >/dev/null 2>&1; then
+    echo "FAIL glslang: glslangValidator not found: install Debian's glslang-tools"
+    exit 1
+fi
+mkdir -p "$out"
+# ES 2.0 minimums and Appendix A: no general indexing, no while/do loops.
+glslangValidator -c | sed \
+    -e 's/^\(nonInductiveForLoops\|whileLoops\|doWhileLoops\|generalUniformIndexing\|generalAttributeMatrixVectorIndexing\|generalVaryingIndexing\|generalSamplerIndexing\|generalVariableIndexing\|generalConstantMatrixVectorIndexing\) 1$/\1 0/' \
+    -e 's/^MaxFragmentUniformVectors .*/MaxFragmentUniformVectors 16/' \
+    -e 's/^MaxVertexUniformVectors .*/MaxVertexUniformVectors 128/' \
+    -e 's/^MaxVaryingVectors .*/MaxVaryingVectors 8/' \
+    -e 's/^MaxTextureImageUnits .*/MaxTextureImageUnits 8/' \
+    -e 's/^MaxVertexTextureImageUnits .*/MaxVertexTextureImageUnits 0/' >"$out/es100.conf"
+
+# validate NAME FILE [CONF]: one PASS/FAIL line.
+validate() {
+    if glslangValidator $3 "$2" >"$2.log" 2>&1; then
+        echo "PASS $1"
+    else
+        echo "FAIL $1: glslangValidator $3 $2:"
+        grep -m 5 'ERROR' "$2.log"
+    fi
+}
+# main_of DIALECT EXPR: a fragment main writing EXPR (a vec3).
+main_of() {
+    case $1 in
+    es100) printf 'varying highp float fr_c;\nvoid main() { gl_FragColor = vec4(%s, 1.0); }\n' "$2" ;;
+    110 | 120) printf 'varying float fr_c;\nvoid main() { gl_FragColor = vec4(%s, 1.0); }\n' "$2" ;;
+    *) printf 'in highp float fr_c;\nout vec4 fr_out;\nvoid main() { fr_out = vec4(%s, 1.0); }\n' "$2" ;;
+    esac
+}
+# prelude_of DIALECT: the port's prelude file, or for the other versions
+# fresnel.glsl supports (tests/glsl_test.c compiles it in all of them) the
+# #version line and an ES default precision.
+prelude_of() {
+    case $1 in
+    es100 | es300 | 330) cat "$port/prelude_$1.glsl" ;;
+    es*) printf '#version %s es\nprecision mediump float;\n' "${1#es}" ;;
+    *) printf '#version %s\n' "$1" ;;
+    esac
+}
+
+# The controls: the checks can fail. Array constructors (the const-array
+# path of the tables) and a variable index into a uniform array are rejected
+# for ES 1.00 under this configuration.
+{ cat $port/prelude_es100.glsl
+  printf 'const float t[2] = float[2](0.5, 1.0);\nuniform float u[4];\n'
+  main_of es100 'vec3(t[0])'; } >"$out/control_array.frag"
+{ cat $port/prelude_es100.glsl
+  printf 'uniform float u[4];\n'
+  main_of es100 'vec3(u[int(fr_c * 3.0)])'; } >"$out/control_index.frag"
+for c in array index; do
+    if glslangValidator "$out/es100.conf" "$out/control_$c.frag" >"$out/control_$c.log" 2>&1; then
+        echo "FAIL glslang: the ES 1.00 $c control compiles: the validation cannot catch that class"
+    else
+        echo "PASS glslang: the ES 1.00 $c control is rejected ($(grep -m1 ERROR "$out/control_$c.log" | cut -c1-70))"
+    fi
+done
+
+cat >"$out/glsl_luts.scene" <<'EOF'
+# every LUT kind with nodes uniform in sqrt(cos theta), and every analytic model
+materials = au ag bk7
+models = schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point lut4 lut16 lut256 lut4-residual lut32-residual lut256-residual lut4-cubic lut16-cubic lut256-cubic
+EOF
+cat >"$out/glsl_luts_uniform.scene" <<'EOF'
+# every LUT kind with nodes uniform in cos theta (cubic needs grazing)
+materials = cu water
+models = lut4 lut32 lut256 lut4-residual lut16-residual lut256-residual
+lut_spacing = uniform
+EOF
+
+for manifest in data/scenes/*.scene "$out/glsl_luts.scene" "$out/glsl_luts_uniform.scene"; do
+    scene=$(basename "$manifest" .scene)
+    ident=$(printf '%s' "$scene" | tr 'A-Z-' 'a-z_')
+    glsl="$out/$ident.glsl"
+    if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$glsl" --glsl-texture "$out/${ident}_tex.h" 2>"$out/gen.log"; then
+        echo "FAIL glslang: fresnel gen $manifest --glsl: $(cat "$out/gen.log")"
+        continue
+    fi
+    models=$(sed -n 's/^ \* Models: \(.*\)\.$/\1/p' "$glsl")
+    nmat=$(grep -c '^/\* ---- ' "$glsl")
+    for model in $models; do
+        id=$(printf '%s' "$model" | tr '-' '_')
+        funcs=$(sed -n "s/^vec3 \(fresnel_${ident}_[a-z0-9_]*_${id}_rgb\)(FRESNEL_HIGHP float c)$/\1/p" "$glsl")
+        n=$(printf '%s\n' "$funcs" | grep -c .)
+        if [ "$n" -ne "$nmat" ]; then
+            echo "FAIL glslang: $scene $model: $n functions for $nmat materials"
+            continue
+        fi
+        expr=$(printf '%s\n' "$funcs" | sed 's/$/(fr_c)/' | paste -sd+)
+        variants="es100 es300 330"
+        case $model in lut*) variants="$variants es300-texture" ;; esac
+        for v in $variants; do
+            p=${v%-texture}
+            conf=
+            [ "$p" = es100 ] && conf="$out/es100.conf"
+            f="$out/${ident}_${id}_$v.frag"
+            { prelude_of "$p"
+              [ "$v" != "$p" ] && echo '#define FRESNEL_LUT_ARRAYS 0'
+              cat "$port/fresnel.glsl" "$glsl"
+              main_of "$p" "$expr"; } >"$f"
+            validate "glslang: $scene $model, $nmat materials, $v" "$f" "$conf"
+        done
+    done
+    # The scene with every model also in the other versions fresnel.glsl
+    # supports, one shader calling every function.
+    if [ "$ident" = glsl_luts ]; then
+        all=$(sed -n "s/^vec3 \(fresnel_${ident}_[a-z0-9_]*_rgb\)(FRESNEL_HIGHP float c)$/\1(fr_c)/p" "$glsl" | paste -sd+)
+        for v in 110 120 130 150 450 es310 es320; do
+            f="$out/${ident}_all_$v.frag"
+            { prelude_of "$v"; cat "$port/fresnel.glsl" "$glsl"; main_of "$v" "$all"; } >"$f"
+            validate "glslang: $scene, every model and material, GLSL $v" "$f"
+        done
+    fi
+done
+
+# Bad input for --glsl: a clear error, exit 2, no output written.
+# expect_bad NAME WANT -- ARGS: runs fresnel gen ARGS with -o/--glsl-texture
+# at files that exist beforehand and must survive unchanged.
+expect_bad() {
+    name=$1
+    want=$2
+    shift 3
+    echo keep >"$out/bad.glsl"
+    echo keep >"$out/bad_tex.h"
+    "$BUILD/fresnel" gen "$@" >"$out/bad.out" 2>"$out/bad.err"
+    st=$?
+    if [ $st -eq 2 ] && grep -q -- "$want" "$out/bad.err" && [ "$(cat "$out/bad.glsl")" = keep ] &&
+        [ "$(cat "$out/bad_tex.h")" = keep ] && [ -z "$(ls "$out" | grep '\.tmp\.')" ]; then
+        echo "PASS glslang: $name: exit 2, $(head -c 120 "$out/bad.err" | head -1)"
+    else
+        echo "FAIL glslang: $name: exit $st, stderr: $(cat "$out/bad.err"), outputs: $(cat "$out/bad.glsl" "$out/bad_tex.h" | tr '\n' ' ')"
+    fi
+}
+printf 'materials = au\nmodels = lut16\ntypes = q15\nlut_spacing = grazing-pl\n' >"$out/pl.scene"
+expect_bad "grazing-pl with --glsl" "pl.scene:4: expected lut_spacing grazing or uniform" -- \
+    "$out/pl.scene" --glsl -o "$out/bad.glsl" --glsl-texture "$out/bad_tex.h"
+printf 'materials = au\nmodels = schlick\n' >"$out/a__b.scene"
+expect_bad "scene name with __ (reserved in GLSL)" "reserves identifiers" -- \
+    "$out/a__b.scene" --glsl -o "$out/bad.glsl"
+cp "$out/a__b.scene" "$out/nolut.scene"
+expect_bad "--glsl-texture for a scene without LUTs" "no LUT model" -- \
+    "$out/nolut.scene" --glsl -o "$out/bad.glsl" --glsl-texture "$out/bad_tex.h"
+expect_bad "--glsl-texture without --glsl" "needs --glsl" -- \
+    data/scenes/default.scene -o "$out/bad.glsl" --glsl-texture "$out/bad_tex.h"
+exit 0
