@@ -118,6 +118,7 @@ int cmd_gen(int argc, char **argv)
     in.sc = sc;
     in.name = name;
     in.manifest_name = strrchr(manifest, '/') ? strrchr(manifest, '/') + 1 : manifest;
+    in.manifest_path = manifest;
     in.g = g;
     in.params = params;
     in.spectra = spectra;

@@ -127,12 +127,14 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
     int count = FIT_STEPS + 1 + n, k, ch, a, b;
     fit_sample *sm = malloc((size_t)count * sizeof *sm);
     double *ata = malloc((size_t)n * n * sizeof *ata), *atb = malloc((size_t)n * sizeof *atb);
-    double *fixed = malloc((size_t)n * sizeof *fixed); /* held node values; < 0: free */
-    if (!sm || !ata || !atb || !fixed) {
+    double *fixed = malloc((size_t)n * sizeof *fixed); /* held node values */
+    char *held = malloc((size_t)n);
+    if (!sm || !ata || !atb || !fixed || !held) {
         free(sm);
         free(ata);
         free(atb);
         free(fixed);
+        free(held);
         return -1;
     }
     for (k = 0; k <= FIT_STEPS; k++) {
@@ -144,40 +146,47 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
     for (ch = 0; ch < 3; ch++) {
         /* A curve's nodes must stay reflectances: the fit overshoots 1 at
          * grazing incidence for some metals. Nodes that leave [0, 1] are
-         * held at the bound and the rest refitted, until none leaves. */
-        int held = 0, again = 1;
+         * held at the bound and the rest refitted, until none leaves. A
+         * residual is a difference of two reflectances, in [-1, 1], but its
+         * fit overshoots that at a total-reflection edge (water under
+         * n1 = 1.5); its nodes are held to [-1, 1], the range the Q15
+         * residual encodings of fresnel_fixed.h hold. */
+        int nheld = 0, again = 1;
         for (k = 0; k < n; k++)
-            fixed[k] = -1.0;
+            held[k] = 0;
         while (again) {
             for (k = 0; k < n * n; k++)
                 ata[k] = 0.0;
             for (k = 0; k < n; k++) {
-                atb[k] = fixed[k] >= 0.0 ? fixed[k] : 0.0;
-                if (fixed[k] >= 0.0)
+                atb[k] = held[k] ? fixed[k] : 0.0;
+                if (held[k])
                     ata[k * n + k] = 1.0;
             }
             for (k = 0; k < count; k++) {
                 double y = sm[k].y[ch];
                 for (b = 0; b < 4; b++)
-                    if (fixed[sm[k].idx[b]] >= 0.0)
+                    if (held[sm[k].idx[b]])
                         y -= sm[k].w[b] * fixed[sm[k].idx[b]];
                 for (a = 0; a < 4; a++) {
-                    if (fixed[sm[k].idx[a]] >= 0.0)
+                    if (held[sm[k].idx[a]])
                         continue;
                     atb[sm[k].idx[a]] += sm[k].w[a] * y;
                     for (b = 0; b < 4; b++)
-                        if (fixed[sm[k].idx[b]] < 0.0)
+                        if (!held[sm[k].idx[b]])
                             ata[sm[k].idx[a] * n + sm[k].idx[b]] += sm[k].w[a] * sm[k].w[b];
                 }
             }
             solve_spd(ata, atb, n);
             again = 0;
-            for (k = 0; k < n && form != LUT_RESIDUAL && held < n; k++)
-                if (fixed[k] < 0.0 && (atb[k] < 0.0 || atb[k] > 1.0)) {
-                    fixed[k] = atb[k] < 0.0 ? 0.0 : 1.0;
-                    held++;
+            for (k = 0; k < n && nheld < n; k++) {
+                double lo = form == LUT_RESIDUAL ? -1.0 : 0.0;
+                if (!held[k] && (atb[k] < lo || atb[k] > 1.0)) {
+                    fixed[k] = atb[k] < lo ? lo : 1.0;
+                    held[k] = 1;
+                    nheld++;
                     again = 1;
                 }
+            }
         }
         for (k = 0; k < n; k++)
             table[ch * n + k] = atb[k];
@@ -186,5 +195,6 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
     free(ata);
     free(atb);
     free(fixed);
+    free(held);
     return 0;
 }
