@@ -3,6 +3,8 @@
  * scene does not need"]. Output depends only on the manifest and the data:
  * no dates, no absolute paths, fixed number formatting. */
 #include <ctype.h>
+#include <float.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +24,7 @@ static int scene_has_residual_lut(const scene *sc)
 
 /* C or GLSL: the one difference in what is emitted is the syntax. */
 static int glsl;
+static const emit_input *emitting; /* for file:line in errors */
 
 /* A binary32 literal that reads back to the same float: 9 significant
  * digits, always with a '.' or an exponent. C gets the 'f' suffix; GLSL ES
@@ -90,6 +93,14 @@ static int emit_lut(FILE *f, const char *prefix, const char *model, const materi
     const char *suffix = form == LUT_RESIDUAL ? "_residual" : (form == LUT_CUBIC ? "_cubic" : "");
     if (!t)
         return cli_error("fresnel gen", "out of memory");
+    for (i = 0; i < 3 * n; i++)
+        if (!(fabs(t[i]) <= FLT_MAX)) {
+            char where[1100];
+            snprintf(where, sizeof where, "%s:%d", emitting->manifest_path, emitting->sc->models_line);
+            cli_error(where, "%s: %s node %d is %g, not a binary32 float; no header written", prefix, model, i, t[i]);
+            free(t);
+            return CLI_BAD_INPUT;
+        }
     residual = form == LUT_RESIDUAL;
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
                " * fitted to the ground truth through %s interpolation.\n",
@@ -117,6 +128,33 @@ static int emit_lut(FILE *f, const char *prefix, const char *model, const materi
     return 0;
 }
 
+/* Every derived constant the header may hold as a float must be a finite
+ * binary32 (a literal beyond FLT_MAX would read inf.0f and not compile). */
+static int params_fit_float(const emit_input *in, const material_params *p)
+{
+    const struct {
+        const char *what;
+        const double *v;
+        int count;
+    } all[] = {{"F0", p->f0, 3},           {"F82", p->f82, 3},           {"eta", p->eta_fit, 3},
+               {"kappa", p->kappa_fit, 3}, {"LSK a", p->lsk_a, 3},      {"LSK alpha", p->lsk_alpha, 3},
+               {"eta'", p->eta_gauss, 3},  {"kappa'", p->kappa_gauss, 3}, {"eta point", p->eta_point, 3},
+               {"kappa point", p->kappa_point, 3}, {"Gulbrandsen r", p->gulb_r, 3},
+               {"Gulbrandsen g", p->gulb_g, 3}, {"Cook-Torrance eta", &p->ct_eta, 1},
+               {"Cook-Torrance kappa", &p->ct_kappa, 1}};
+    size_t i;
+    int ch;
+    for (i = 0; i < sizeof all / sizeof all[0]; i++)
+        for (ch = 0; ch < all[i].count; ch++)
+            if (!(fabs(all[i].v[ch]) <= FLT_MAX)) {
+                char where[1100];
+                snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->materials_line);
+                return cli_error(where, "material %s: %s = %g does not fit a binary32 float; no header written",
+                                 p->info.id, all[i].what, all[i].v[ch]);
+            }
+    return 0;
+}
+
 int emit_header(FILE *f, const emit_input *in)
 {
     const scene *sc = in->sc;
@@ -125,6 +163,7 @@ int emit_header(FILE *f, const emit_input *in)
     char guard[96];
     int i, m;
     glsl = in->glsl;
+    emitting = in;
     for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
         guard[i] = (char)toupper((unsigned char)in->name[i]);
     guard[i] = '\0';
@@ -168,6 +207,8 @@ int emit_header(FILE *f, const emit_input *in)
         const material_params *p = &in->params[i];
         char prefix[96];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
+        if (params_fit_float(in, p))
+            return CLI_BAD_INPUT;
         fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
         if (!glsl && scene_has_type(sc, "q15") && emit_fixed_material(f, in, i, prefix))
             return CLI_BAD_INPUT;
