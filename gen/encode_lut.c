@@ -8,6 +8,7 @@
  * cubic reach 0.02 (`fresnel report`, the LUT section). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "fresnel_fixed.h"
 #include "generator.h"
@@ -108,15 +109,50 @@ typedef struct fit_sample {
     double w[4], y[3];
 } fit_sample;
 
+/* truth: the ground truth at c when already known, else NULL. */
 static void sample_at(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing,
-                      lut_form form, int n, double c, fit_sample *out)
+                      lut_form form, int n, double c, const double *truth, fit_sample *out)
 {
     int ch;
-    ground_truth_clamped(s, g, p->n1, c, out->y);
+    if (truth)
+        memcpy(out->y, truth, sizeof out->y);
+    else
+        ground_truth_clamped(s, g, p->n1, c, out->y);
     for (ch = 0; ch < 3; ch++)
         if (form == LUT_RESIDUAL)
             out->y[ch] -= ref_schlick(p->f0[ch], c);
     lut_weights(spacing, form, n, c, out->idx, out->w);
+}
+
+/* The ground truth on the theta grid is the same for every table of one
+ * material (every size, form and spacing): the last one is kept, keyed by
+ * the full content it depends on (spectrum, colorimetry, colour space, n1),
+ * so that a scene with many LUT models integrates each material's spectrum
+ * once per angle instead of once per model. */
+static struct {
+    int valid;
+    spectrum s;
+    colorimetry cm;
+    colour_space cs;
+    double n1;
+    double y[FIT_STEPS + 1][3];
+} gt_cache;
+
+static const double *grid_truth(const spectrum *s, const gen_context *g, double n1, int k)
+{
+    if (k == 0 && !(gt_cache.valid && gt_cache.n1 == n1 && !memcmp(&gt_cache.s, s, sizeof *s) &&
+                    !memcmp(&gt_cache.cm, &g->cm, sizeof g->cm) && !memcmp(&gt_cache.cs, &g->cs, sizeof g->cs))) {
+        int j;
+        gt_cache.valid = 0;
+        for (j = 0; j <= FIT_STEPS; j++)
+            ground_truth_clamped(s, g, n1, j == FIT_STEPS ? 0.0 : cos(j * half_pi / FIT_STEPS), gt_cache.y[j]);
+        gt_cache.s = *s;
+        gt_cache.cm = g->cm;
+        gt_cache.cs = g->cs;
+        gt_cache.n1 = n1;
+        gt_cache.valid = 1;
+    }
+    return gt_cache.y[k];
 }
 
 int encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing, int n,
@@ -139,10 +175,11 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
     }
     for (k = 0; k <= FIT_STEPS; k++) {
         double c = k == FIT_STEPS ? 0.0 : cos(k * half_pi / FIT_STEPS);
-        sample_at(s, g, p, spacing, form, n, c, &sm[k]);
+        const double *y = grid_truth(s, g, p->n1, k);
+        sample_at(s, g, p, spacing, form, n, c, y, &sm[k]);
     }
     for (k = 0; k < n; k++)
-        sample_at(s, g, p, spacing, form, n, lut_node_cos(spacing, k, n), &sm[FIT_STEPS + 1 + k]);
+        sample_at(s, g, p, spacing, form, n, lut_node_cos(spacing, k, n), NULL, &sm[FIT_STEPS + 1 + k]);
     for (ch = 0; ch < 3; ch++) {
         /* A curve's nodes must stay reflectances: the fit overshoots 1 at
          * grazing incidence for some metals. Nodes that leave [0, 1] are
