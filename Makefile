@@ -152,6 +152,12 @@ $(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(LIB_
 	$(FUZZ_CC) $(FUZZ_FLAGS) $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(filter-out %_f16.c,$(LIB_SRC)) \
 	    $(FUZZ_GEN) -lm -o $@
 
+# The end-to-end generator target links the whole generator but its main.
+$(BUILD)/fuzz/fuzz_gen_header: tests/fuzz/fuzz_gen_header.c tests/header_check.h $(wildcard tests/fuzz/*.h) \
+                               $(LIB_SRC) $(wildcard src/*.h) $(GEN_SRC)
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(GEN_SRC) -lm -o $@
+
 fuzz: fuzz-bins
 	@for t in $(FUZZ_TARGETS); do \
 	    mkdir -p $(BUILD)/fuzz/corpus/$$t $(BUILD)/fuzz/artifacts/$$t || exit 1; \

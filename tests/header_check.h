@@ -46,7 +46,7 @@ typedef struct hc_header {
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
 #endif
-static void hc_fail(hc_header *h, const char *fmt, ...)
+static inline void hc_fail(hc_header *h, const char *fmt, ...)
 {
     va_list ap;
     if (h->err[0])
@@ -57,7 +57,7 @@ static void hc_fail(hc_header *h, const char *fmt, ...)
 }
 
 /* Fields per element of a type, or 0 if the type is unknown. */
-static int hc_fields(const char *type, int *is_float)
+static inline int hc_fields(const char *type, int *is_float)
 {
     static const struct {
         const char *type;
@@ -74,9 +74,9 @@ static int hc_fields(const char *type, int *is_float)
     return 0;
 }
 
-static int hc_in(double v, double lo, double hi) { return v >= lo && v <= hi && v == floor(v); }
+static inline int hc_in(double v, double lo, double hi) { return v >= lo && v <= hi && v == floor(v); }
 
-static void hc_qf(hc_header *h, const hc_decl *d, const double *q)
+static inline void hc_qf(hc_header *h, const hc_decl *d, const double *q)
 {
     if (q[0] == 0.0 ? q[1] != 0.0 : !hc_in(q[0], 1073741824.0, 2147483647.0))
         hc_fail(h, "%s %s: qf mantissa %.17g not 0 or in [2^30, 2^31)", d->type, d->name, q[0]);
@@ -85,7 +85,7 @@ static void hc_qf(hc_header *h, const hc_decl *d, const double *q)
 }
 
 /* Check one element of d (its fields at v). */
-static void hc_element(hc_header *h, const hc_decl *d, const double *v)
+static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
 {
     const char *t = d->type;
     int i;
@@ -126,7 +126,7 @@ static void hc_element(hc_header *h, const hc_decl *d, const double *v)
 
 /* One number token at *p: a float literal (must end in 'f', be finite and
  * within binary32) or an integer (decimal, optional '-'). */
-static int hc_number(hc_header *h, const char **p, int is_float, const char *what, double *out)
+static inline int hc_number(hc_header *h, const char **p, int is_float, const char *what, double *out)
 {
     const char *s = *p;
     char *end;
@@ -150,7 +150,7 @@ static int hc_number(hc_header *h, const char **p, int is_float, const char *wha
     return 0;
 }
 
-static void hc_free(hc_header *h)
+static inline void hc_free(hc_header *h)
 {
     int i;
     for (i = 0; i < h->n; i++)
@@ -160,7 +160,7 @@ static void hc_free(hc_header *h)
 
 /* Parse and check text (NUL-terminated). 0 if every check holds, else -1
  * with h->err set. */
-static int hc_parse(const char *text, hc_header *h)
+static inline int hc_parse(const char *text, hc_header *h)
 {
     const char *p = text;
     h->n = 0;
@@ -238,7 +238,7 @@ static int hc_parse(const char *text, hc_header *h)
     return h->err[0] ? -1 : 0;
 }
 
-static const hc_decl *hc_find(const hc_header *h, const char *name)
+static inline const hc_decl *hc_find(const hc_header *h, const char *name)
 {
     int i;
     for (i = 0; i < h->n; i++)
