@@ -107,9 +107,10 @@ static fresnel_q15 fr__lut_u8(const uint8_t *table, int n, uint32_t x)
  * combination, |.| <= 2^30, so the signed addition cannot overflow. The
  * value is in units of 2^-(frac + 15); Q30 needs a shift by frac - 15, to
  * the left by at most 1 (s16, frac 14: |.| <= 2^31) or 9 (s8, frac 6,
- * |v| <= 2^22: |.| <= 2^31), in uint32. Beyond 2^30 the magnitude is held
- * there: Schlick is in [0, 2^30], so a residual of 2^30 or more already
- * gives one and -2^30 or less zero, and the sum stays inside int32. */
+ * |v| <= 2^22: |.| <= 2^31), in uint32. The result is held to
+ * [-2^30, 2^30 - 1]: Schlick is in [0, 2^30], so a residual of -2^30 or less
+ * gives zero and one of 2^30 - 1 or more one (2^30 - 1 rounds to one), and
+ * Schlick plus the residual stays inside int32. */
 static int32_t fr__residual_q30(int32_t v0, int32_t v1, uint32_t t, int frac)
 {
     int32_t v = v0 * 32768 + (v1 - v0) * (int32_t)t;
@@ -120,13 +121,13 @@ static int32_t fr__residual_q30(int32_t v0, int32_t v1, uint32_t t, int frac)
         mag = (mag + (1u << (sh - 1))) >> sh;
     else if (sh < 0)
         mag <<= -sh;
-    if (mag > FR__ONE_Q30)
-        mag = FR__ONE_Q30;
+    if (mag > FR__ONE_Q30 - (v < 0 ? 0u : 1u))
+        mag = FR__ONE_Q30 - (v < 0 ? 0u : 1u);
     return v < 0 ? -(int32_t)mag : (int32_t)mag;
 }
 
-/* Schlick (Q30) plus a residual (Q30, |.| <= 2^30), clamped and rounded.
- * R: the sum is in [-2^30, 2^31 - 1]. */
+/* Schlick (Q30) plus a residual (Q30, in [-2^30, 2^30 - 1]), clamped and
+ * rounded. R: the sum is in [-2^30, 2^31 - 1]. */
 static fresnel_q15 fr__plus_schlick(int32_t f0, int32_t c, int32_t residual)
 {
     uint32_t s = fr__schlick_q30(fr__q15_arg(f0), fr__pow5_q30(FR__ONE_Q15 - fr__q15_arg(c)));
