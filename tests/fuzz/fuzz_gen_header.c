@@ -120,15 +120,41 @@ static int leftover_tmp(void)
     return stat(cmd, &st) == 0;
 }
 
+/* Length of the prefix "path:" or "path:N:" of line when path is one of
+ * the inputs (the manifest, the data file, the data directory), else 0. */
+static size_t input_prefix(const char *line)
+{
+    const char *const paths[] = {scene_path, csv_path, data_dir_path};
+    size_t i, len;
+    for (i = 0; i < 3; i++) {
+        len = strlen(paths[i]);
+        if (strncmp(line, paths[i], len) != 0)
+            continue;
+        while (line[len] && line[len] != ':' && line[len] != '\n') /* data_dir/<file> */
+            len++;
+        if (line[len] != ':')
+            continue;
+        len++;
+        if (line[len] >= '0' && line[len] <= '9') {
+            while (line[len] >= '0' && line[len] <= '9')
+                len++;
+            if (line[len] != ':')
+                continue;
+            len++;
+        }
+        return len;
+    }
+    return 0;
+}
+
+/* Some line is an error (not a warning) that names an input. */
 static int names_input(const char *msg)
 {
     const char *line = msg;
     while (line && *line) {
-        if ((!strncmp(line, scene_path, strlen(scene_path)) && line[strlen(scene_path)] == ':') ||
-            (!strncmp(line, csv_path, strlen(csv_path)) && line[strlen(csv_path)] == ':') ||
-            (!strncmp(line, data_dir_path, strlen(data_dir_path))))
-            if (!strstr(line, "warning:"))
-                return 1;
+        size_t p = input_prefix(line);
+        if (p && strncmp(line + p, " warning:", 9) != 0)
+            return 1;
         line = strchr(line, '\n');
         if (line)
             line++;
