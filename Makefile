@@ -152,6 +152,13 @@ $(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(LIB_
 	$(FUZZ_CC) $(FUZZ_FLAGS) $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(filter-out %_f16.c,$(LIB_SRC)) \
 	    $(FUZZ_GEN) -lm -o $@
 
+# The end-to-end generator target links `fresnel gen` and what it calls.
+FUZZ_GEN_HEADER := gen/cmd_gen.c $(filter-out gen/main.c gen/cmd_%.c gen/bench%.c gen/report%.c gen/svg.c,$(GEN_SRC))
+$(BUILD)/fuzz/fuzz_gen_header: tests/fuzz/fuzz_gen_header.c tests/header_check.h $(wildcard tests/fuzz/*.h) \
+                               $(LIB_SRC) $(wildcard src/*.h) $(FUZZ_GEN_HEADER)
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN_HEADER) -lm -o $@
+
 fuzz: fuzz-bins
 	@for t in $(FUZZ_TARGETS); do \
 	    mkdir -p $(BUILD)/fuzz/corpus/$$t $(BUILD)/fuzz/artifacts/$$t || exit 1; \

@@ -41,22 +41,6 @@ static void gen_usage(FILE *out)
     fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_q15_u16_pl_fast)\n");
 }
 
-/* The scene's C name: the manifest's file name without directory and
- * extension, lower-cased, anything but [a-z0-9_] turned into '_'. */
-static void scene_name(const char *path, char *out, size_t size)
-{
-    const char *base = strrchr(path, '/');
-    size_t i = 0;
-    base = base ? base + 1 : path;
-    while (*base && *base != '.' && i + 1 < size) {
-        int ch = tolower((unsigned char)*base++);
-        out[i++] = (char)(isalnum(ch) ? ch : '_');
-    }
-    if (i == 0 || isdigit((unsigned char)out[0]))
-        out[i++] = 's';
-    out[i] = '\0';
-}
-
 int cmd_gen(int argc, char **argv)
 {
     const char *manifest = NULL, *out_path = NULL, *dir_option = NULL, *tex_path = NULL;
@@ -64,7 +48,7 @@ int cmd_gen(int argc, char **argv)
     gen_context *g = NULL;
     material_params *params = NULL;
     spectrum **spectra = NULL;
-    char name[64], where[1100];
+    char name[SCENE_PREFIX_SIZE], where[1100];
     int i, status = 0, glsl = 0;
     cli_outfile out, tex;
     emit_input in;
@@ -104,7 +88,10 @@ int cmd_gen(int argc, char **argv)
     }
     if ((status = scene_load(manifest, sc)))
         goto done;
-    scene_name(manifest, name, sizeof name);
+    if (sc->name[0])
+        snprintf(name, sizeof name, "%s", sc->name);
+    else
+        scene_name_from_path(manifest, name);
     if (glsl && (status = emit_glsl_check(sc, manifest, name)))
         goto done;
     params = calloc((size_t)sc->material_count, sizeof *params);
@@ -130,6 +117,7 @@ int cmd_gen(int argc, char **argv)
     in.sc = sc;
     in.name = name;
     in.manifest_name = strrchr(manifest, '/') ? strrchr(manifest, '/') + 1 : manifest;
+    in.manifest_path = manifest;
     in.g = g;
     in.params = params;
     in.spectra = spectra;

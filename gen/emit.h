@@ -11,6 +11,7 @@ typedef struct emit_input {
     const scene *sc;
     const char *name;          /* C identifier part: fresnel_<name>_<material>_<param> */
     const char *manifest_name; /* for the leading comment */
+    const char *manifest_path; /* for errors: path:line */
     const gen_context *g;
     const material_params *params; /* one per scene material, in order */
     spectrum *const *spectra;      /* the same */

@@ -8,6 +8,7 @@
  * cubic reach 0.02 (`fresnel report`, the LUT section). */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "fresnel_fixed.h"
 #include "generator.h"
@@ -108,15 +109,50 @@ typedef struct fit_sample {
     double w[4], y[3];
 } fit_sample;
 
+/* truth: the ground truth at c when already known, else NULL. */
 static void sample_at(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing,
-                      lut_form form, int n, double c, fit_sample *out)
+                      lut_form form, int n, double c, const double *truth, fit_sample *out)
 {
     int ch;
-    ground_truth_clamped(s, g, p->n1, c, out->y);
+    if (truth)
+        memcpy(out->y, truth, sizeof out->y);
+    else
+        ground_truth_clamped(s, g, p->n1, c, out->y);
     for (ch = 0; ch < 3; ch++)
         if (form == LUT_RESIDUAL)
             out->y[ch] -= ref_schlick(p->f0[ch], c);
     lut_weights(spacing, form, n, c, out->idx, out->w);
+}
+
+/* The ground truth on the theta grid is the same for every table of one
+ * material (every size, form and spacing): the last one is kept, keyed by
+ * the full content it depends on (spectrum, colorimetry, colour space, n1),
+ * so that a scene with many LUT models integrates each material's spectrum
+ * once per angle instead of once per model. */
+static struct {
+    int valid;
+    spectrum s;
+    colorimetry cm;
+    colour_space cs;
+    double n1;
+    double y[FIT_STEPS + 1][3];
+} gt_cache;
+
+static const double *grid_truth(const spectrum *s, const gen_context *g, double n1, int k)
+{
+    if (k == 0 && !(gt_cache.valid && gt_cache.n1 == n1 && !memcmp(&gt_cache.s, s, sizeof *s) &&
+                    !memcmp(&gt_cache.cm, &g->cm, sizeof g->cm) && !memcmp(&gt_cache.cs, &g->cs, sizeof g->cs))) {
+        int j;
+        gt_cache.valid = 0;
+        for (j = 0; j <= FIT_STEPS; j++)
+            ground_truth_clamped(s, g, n1, j == FIT_STEPS ? 0.0 : cos(j * half_pi / FIT_STEPS), gt_cache.y[j]);
+        gt_cache.s = *s;
+        gt_cache.cm = g->cm;
+        gt_cache.cs = g->cs;
+        gt_cache.n1 = n1;
+        gt_cache.valid = 1;
+    }
+    return gt_cache.y[k];
 }
 
 int encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing, int n,
@@ -127,57 +163,67 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
     int count = FIT_STEPS + 1 + n, k, ch, a, b;
     fit_sample *sm = malloc((size_t)count * sizeof *sm);
     double *ata = malloc((size_t)n * n * sizeof *ata), *atb = malloc((size_t)n * sizeof *atb);
-    double *fixed = malloc((size_t)n * sizeof *fixed); /* held node values; < 0: free */
-    if (!sm || !ata || !atb || !fixed) {
+    double *fixed = malloc((size_t)n * sizeof *fixed); /* held node values */
+    char *held = malloc((size_t)n);
+    if (!sm || !ata || !atb || !fixed || !held) {
         free(sm);
         free(ata);
         free(atb);
         free(fixed);
+        free(held);
         return -1;
     }
     for (k = 0; k <= FIT_STEPS; k++) {
         double c = k == FIT_STEPS ? 0.0 : cos(k * half_pi / FIT_STEPS);
-        sample_at(s, g, p, spacing, form, n, c, &sm[k]);
+        const double *y = grid_truth(s, g, p->n1, k);
+        sample_at(s, g, p, spacing, form, n, c, y, &sm[k]);
     }
     for (k = 0; k < n; k++)
-        sample_at(s, g, p, spacing, form, n, lut_node_cos(spacing, k, n), &sm[FIT_STEPS + 1 + k]);
+        sample_at(s, g, p, spacing, form, n, lut_node_cos(spacing, k, n), NULL, &sm[FIT_STEPS + 1 + k]);
     for (ch = 0; ch < 3; ch++) {
         /* A curve's nodes must stay reflectances: the fit overshoots 1 at
          * grazing incidence for some metals. Nodes that leave [0, 1] are
-         * held at the bound and the rest refitted, until none leaves. */
-        int held = 0, again = 1;
+         * held at the bound and the rest refitted, until none leaves. A
+         * residual is a difference of two reflectances, in [-1, 1], but its
+         * fit overshoots that at a total-reflection edge (water under
+         * n1 = 1.5); its nodes are held to [-1, 1], the range the Q15
+         * residual encodings of fresnel_fixed.h hold. */
+        int nheld = 0, again = 1;
         for (k = 0; k < n; k++)
-            fixed[k] = -1.0;
+            held[k] = 0;
         while (again) {
             for (k = 0; k < n * n; k++)
                 ata[k] = 0.0;
             for (k = 0; k < n; k++) {
-                atb[k] = fixed[k] >= 0.0 ? fixed[k] : 0.0;
-                if (fixed[k] >= 0.0)
+                atb[k] = held[k] ? fixed[k] : 0.0;
+                if (held[k])
                     ata[k * n + k] = 1.0;
             }
             for (k = 0; k < count; k++) {
                 double y = sm[k].y[ch];
                 for (b = 0; b < 4; b++)
-                    if (fixed[sm[k].idx[b]] >= 0.0)
+                    if (held[sm[k].idx[b]])
                         y -= sm[k].w[b] * fixed[sm[k].idx[b]];
                 for (a = 0; a < 4; a++) {
-                    if (fixed[sm[k].idx[a]] >= 0.0)
+                    if (held[sm[k].idx[a]])
                         continue;
                     atb[sm[k].idx[a]] += sm[k].w[a] * y;
                     for (b = 0; b < 4; b++)
-                        if (fixed[sm[k].idx[b]] < 0.0)
+                        if (!held[sm[k].idx[b]])
                             ata[sm[k].idx[a] * n + sm[k].idx[b]] += sm[k].w[a] * sm[k].w[b];
                 }
             }
             solve_spd(ata, atb, n);
             again = 0;
-            for (k = 0; k < n && form != LUT_RESIDUAL && held < n; k++)
-                if (fixed[k] < 0.0 && (atb[k] < 0.0 || atb[k] > 1.0)) {
-                    fixed[k] = atb[k] < 0.0 ? 0.0 : 1.0;
-                    held++;
+            for (k = 0; k < n && nheld < n; k++) {
+                double lo = form == LUT_RESIDUAL ? -1.0 : 0.0;
+                if (!held[k] && (atb[k] < lo || atb[k] > 1.0)) {
+                    fixed[k] = atb[k] < lo ? lo : 1.0;
+                    held[k] = 1;
+                    nheld++;
                     again = 1;
                 }
+            }
         }
         for (k = 0; k < n; k++)
             table[ch * n + k] = atb[k];
@@ -186,5 +232,6 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
     free(ata);
     free(atb);
     free(fixed);
+    free(held);
     return 0;
 }

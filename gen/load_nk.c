@@ -4,6 +4,7 @@
  * ("File format") is checked here. The line reader is shared with the other
  * data tables (see spectral.h). */
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -226,6 +227,15 @@ static int parse_nk_row(const csv_reader *r, char *row, double *wl, double *n, d
         return csv_error(r, "n = %.10g, expected n > 0", *n);
     if (!(*k >= 0.0))
         return csv_error(r, "k = %.10g, expected k >= 0", *k);
+    /* Headers hold n and k (and what derives from them) as binary32: a value
+     * beyond FLT_MAX would be an infinity there, an n below FLT_MIN zero or
+     * a subnormal. A tiny k flushing to 0 changes nothing measurable. */
+    if (*n > FLT_MAX || *n < FLT_MIN)
+        return csv_error(r, "n = %.10g, expected n in [%.9g, %.9g] (binary32, the generated headers' float)", *n,
+                         (double)FLT_MIN, (double)FLT_MAX);
+    if (*k > FLT_MAX)
+        return csv_error(r, "k = %.10g, expected k <= %.9g (binary32, the generated headers' float)", *k,
+                         (double)FLT_MAX);
     return 0;
 }
 

@@ -23,9 +23,9 @@ const char *const scene_type_names[] = {"f32", "q15", NULL};
 const char *const scene_lut_spacing_names[] = {"uniform", "grazing", "grazing-pl", NULL};
 
 enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
-                 KEY_LUT_SPACING, KEY_COUNT };
+                 KEY_LUT_SPACING, KEY_NAME, KEY_COUNT };
 static const char *const key_names[] = {"materials", "models", "space",       "sigma",
-                                        "n1",        "types",  "lut_spacing", NULL};
+                                        "n1",        "types",  "lut_spacing", "name", NULL};
 
 #define SIGMA_MAX 200.0
 #define N1_MIN 1.0
@@ -40,6 +40,7 @@ static int *key_line(scene *s, int key)
     case KEY_SIGMA: return &s->sigma_line;
     case KEY_N1: return &s->n1_line;
     case KEY_TYPES: return &s->types_line;
+    case KEY_NAME: return &s->name_line;
     default: return &s->lut_spacing_line;
     }
 }
@@ -267,12 +268,58 @@ static int parse_number(const char *path, int line, const char *key, const char 
     return 0;
 }
 
+int scene_name_ok(const char *name)
+{
+    size_t i, len = strlen(name);
+    if (len == 0 || len >= SCENE_PREFIX_SIZE || name[0] == '_' || name[len - 1] == '_')
+        return 0;
+    for (i = 0; i < len; i++)
+        if (!(isalnum((unsigned char)name[i]) && (unsigned char)name[i] < 128) &&
+            !(name[i] == '_' && name[i + 1] != '_'))
+            return 0;
+    return 1;
+}
+
+static int parse_name(const char *path, int line, const char *value, scene *s)
+{
+    if (!scene_name_ok(value))
+        return report(path, line,
+                      "expected name as a C identifier part: 1 to %d of A-Z a-z 0-9 _, no '_' at either end "
+                      "and no '__' (C++ reserves it), got '%s'",
+                      SCENE_PREFIX_SIZE - 1, value);
+    strcpy(s->name, value);
+    return 0;
+}
+
+void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE])
+{
+    const char *base = strrchr(path, '/'), *end;
+    size_t i = 0;
+    base = base ? base + 1 : path;
+    end = base + strlen(base);
+    if ((size_t)(end - base) > 6 && strcmp(end - 6, ".scene") == 0)
+        end -= 6;
+    for (; base < end && i + 1 < SCENE_PREFIX_SIZE; base++) {
+        unsigned char ch = (unsigned char)*base;
+        char c = ch < 128 && isalnum(ch) ? (char)tolower(ch) : '_';
+        if (c == '_' && (i == 0 || out[i - 1] == '_'))
+            continue; /* no leading '_', no '__' */
+        out[i++] = c;
+    }
+    while (i > 0 && out[i - 1] == '_')
+        i--;
+    if (i == 0)
+        memcpy(out, "scene", (i = 5));
+    out[i] = '\0';
+}
+
 static int parse_value(const char *path, int line, int key, char *value, scene *s)
 {
     switch (key) {
     case KEY_MATERIALS: return parse_materials(path, line, value, s);
     case KEY_MODELS: return parse_models(path, line, value, s);
     case KEY_TYPES: return parse_types(path, line, value, s);
+    case KEY_NAME: return parse_name(path, line, value, s);
     case KEY_SPACE:
         return parse_choice(path, line, "colour space", colour_space_ids, value, s->space);
     case KEY_LUT_SPACING:

@@ -36,6 +36,17 @@
  *                grazing-pl (uniform in a 64-piece linear stand-in for
  *                sqrt(cos theta), read by fresnel_lut_q15_u16_pl_fast
  *                without a square root: types = q15 only, lutN with N <= 64).
+ *   name         optional; the scene's part of every C identifier in the
+ *                header (fresnel_<name>_<material>_<constant>, include guard
+ *                FRESNEL_SCENE_<NAME>_H): 1 to SCENE_PREFIX_SIZE - 1 of
+ *                A-Z a-z 0-9 _, no '_' at either end and no "__" (C++
+ *                reserves identifiers containing it). Without it the name
+ *                comes from the manifest's file name (scene_name_from_path):
+ *                a final ".scene" dropped, letters lower-cased, every run of
+ *                other characters but a-z 0-9 one '_', none at either end,
+ *                "scene" if nothing is left (2metals.scene -> 2metals,
+ *                x.v1 -> x_v1). Two manifests whose file names map to the
+ *                same name need the key to tell their headers apart.
  *
  *   Example:
  *       # metals for the demo scene
@@ -64,6 +75,7 @@
 #define SCENE_MAX_TYPES 16
 #define SCENE_LUT_MIN 4
 #define SCENE_LUT_MAX 256
+#define SCENE_PREFIX_SIZE 41 /* scene name, NUL included */
 
 /* The vocabulary, NULL-terminated, for reuse in --help text (colour spaces:
  * colour_space_ids in spectral.h). The LUT models are a pattern rather than
@@ -75,7 +87,8 @@ extern const char *const scene_lut_spacing_names[];
 typedef struct scene {
     /* Line of the file where each key was set; 0 where the default applies. */
     int materials_line, models_line, space_line, sigma_line, n1_line, types_line,
-        lut_spacing_line;
+        lut_spacing_line, name_line;
+    char name[SCENE_PREFIX_SIZE]; /* the name key; "" when not given */
 
     int material_count;
     char materials[SCENE_MAX_MATERIALS][SCENE_ID_SIZE];
@@ -98,6 +111,11 @@ int scene_load(const char *path, scene *out);
  * SCENE_LUT_MIN..SCENE_LUT_MAX, no leading zeros), setting *form (if not
  * NULL) to its lut_form (generator.h: LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC); 0 for every other string. */
 int scene_model_lut_size(const char *model, int *form);
+
+/* 1 if name is a valid value of the name key, else 0. */
+int scene_name_ok(const char *name);
+/* The scene name derived from a manifest's path, as FORMAT describes. */
+void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE]);
 
 /* 1 if the model name is one the manifest accepts, else 0. */
 int scene_model_known(const char *model);

@@ -352,11 +352,15 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c);
  *   _u16  uint16_t, F = v / 32768 (v <= 32768)
  *   _u8   uint8_t,  F = v / 255   (each node decoded to Q15 first, +-0.5 LSB)
  *   residual (F = Schlick(F0, c) + interpolated residual):
- *   _s16  int16_t, residual = v / 2^frac, frac in [15, 30]
- *   _s8   int8_t,  residual = v / 2^frac, frac in [7, 22]
+ *   _s16  int16_t, residual = v / 2^frac, frac in [14, 30]
+ *   _s8   int8_t,  residual = v / 2^frac, frac in [6, 22]
+ *         (frac 14 / 6 hold a residual of 1: the generator's residual nodes
+ *         are in [-1, 1])
  * Results are clamped to [0, one]. Error <= FRESNEL_Q15_BOUND_LUT LSB against
  * the same interpolation in double (the table's own error is the
- * generator's business). Cost: uniform in c, 3 mul, no division (~100
+ * generator's business); between two nodes that differ by s > 1 (a
+ * residual table's nodes may span [-1, 1]) the position's part grows with
+ * the step: <= 0.51 + 0.5 s LSB (tests/test_lut_residual_range.c). Cost: uniform in c, 3 mul, no division (~100
  * instructions on Cortex-M0); uniform in sqrt(c), the square root's 31
  * digit steps and 1 mul more (~400; ports/README.md). The _residual forms
  * add Schlick's 8 mul. */

@@ -105,7 +105,12 @@ static fresnel_q15 fr__lut_u8(const uint8_t *table, int n, uint32_t x)
  * and brought to Q30. R: v0 2^15 and (v1 - v0) t are each < 2^31 in
  * magnitude (|v1 - v0| <= 2^16 - 1, t <= 2^15) and their sum is the convex
  * combination, |.| <= 2^30, so the signed addition cannot overflow. The
- * value is in units of 2^-(frac + 15); Q30 needs a shift by frac - 15. */
+ * value is in units of 2^-(frac + 15); Q30 needs a shift by frac - 15, to
+ * the left by at most 1 (s16, frac 14: |.| <= 2^31) or 9 (s8, frac 6,
+ * |v| <= 2^22: |.| <= 2^31), in uint32. The result is held to
+ * [-2^30, 2^30 - 1]: Schlick is in [0, 2^30], so a residual of -2^30 or less
+ * gives zero and one of 2^30 - 1 or more one (2^30 - 1 rounds to one), and
+ * Schlick plus the residual stays inside int32. */
 static int32_t fr__residual_q30(int32_t v0, int32_t v1, uint32_t t, int frac)
 {
     int32_t v = v0 * 32768 + (v1 - v0) * (int32_t)t;
@@ -115,12 +120,14 @@ static int32_t fr__residual_q30(int32_t v0, int32_t v1, uint32_t t, int frac)
     if (sh > 0)
         mag = (mag + (1u << (sh - 1))) >> sh;
     else if (sh < 0)
-        mag <<= -sh; /* s8 tables: |v| <= 2^22, frac >= 7, so |.| <= 2^30 */
+        mag <<= -sh;
+    if (mag > FR__ONE_Q30 - (v < 0 ? 0u : 1u))
+        mag = FR__ONE_Q30 - (v < 0 ? 0u : 1u);
     return v < 0 ? -(int32_t)mag : (int32_t)mag;
 }
 
-/* Schlick (Q30) plus a residual (Q30, |.| <= 2^30), clamped and rounded.
- * R: the sum is in [-2^30, 2^31 - 1]. */
+/* Schlick (Q30) plus a residual (Q30, in [-2^30, 2^30 - 1]), clamped and
+ * rounded. R: the sum is in [-2^30, 2^31 - 1]. */
 static fresnel_q15 fr__plus_schlick(int32_t f0, int32_t c, int32_t residual)
 {
     uint32_t s = fr__schlick_q30(fr__q15_arg(f0), fr__pow5_q30(FR__ONE_Q15 - fr__q15_arg(c)));
@@ -132,13 +139,13 @@ static int fr__frac(int frac, int lo, int hi) { return frac < lo ? lo : (frac > 
 static fresnel_q15 fr__lut_s16(int32_t f0, const int16_t *table, int n, int frac, uint32_t x, int32_t c)
 {
     fr__pos p = fr__position(x, n);
-    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 15, 30)));
+    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 14, 30)));
 }
 
 static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int frac, uint32_t x, int32_t c)
 {
     fr__pos p = fr__position(x, n);
-    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 7, 22)));
+    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 6, 22)));
 }
 
 /* Catmull-Rom weights in Q15 for a fraction t in [0, 2^15], s = 1 - t:

@@ -49,6 +49,12 @@ printf '%s\n500,1.5,0\n510,nan,0\n' "$H" >"$csv"
 expect_error "NaN n" ':3: column n: expected a finite number'
 printf '%s\n500,1.5,0\n510,1.5,NaN\n' "$H" >"$csv"
 expect_error "NaN k" ':3: column k: expected a finite number'
+printf '%s\n500,1.5,0\n510,1e39,0\n' "$H" >"$csv"
+expect_error "n above FLT_MAX" ':3: n = 1e\+39, expected n in .*binary32'
+printf '%s\n500,1.5,0\n510,1.5,3.5e38\n' "$H" >"$csv"
+expect_error "k above FLT_MAX" ':3: k = 3.5e\+38, expected k <= .*binary32'
+printf '%s\n500,1.5,0\n510,1e-39,0\n' "$H" >"$csv"
+expect_error "n below FLT_MIN (a binary32 subnormal)" ':3: n = 1e-39, expected n in'
 printf '%s\n500,1.5,0\n510,1.5,abc\n' "$H" >"$csv"
 expect_error "text in a number column" ":3: column k: expected a number, got 'abc'"
 printf '%s\n1000,1.5,0\n1500,1.45,0\n2000,1.4,0\n' "$H" >"$csv"

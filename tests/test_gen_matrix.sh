@@ -1,0 +1,82 @@
+#!/bin/sh
+# Every material x every model x both number types x n1 in {1, 1.33, 1.5,
+# 2.42, 4} x every LUT spacing (grazing-pl: q15 only, its lutN with N <= 64):
+# `fresnel gen` succeeds; the header compiles warning-free as C99 under gcc
+# and clang and as C++17 under g++ and clang++ (-Wall -Wextra -Wpedantic
+# -Werror); tests/gen_matrix_check.c reads it back (every value in its C type
+# and documented range) and holds each Q1.15 LUT table, through the
+# fixed-point runtime, to its binary32 twin within the documented bound.
+# The LUT sizes are the grammar's ends and a middle one (4, 16, 256; 64 for
+# grazing-pl). Also: a types = f32 and a types = q15 header compile alone.
+case "$BUILD" in *asan*) exit 0 ;; esac # the runtime's own tests run under the sanitizers
+B=${BUILD:-build}
+F="$B/fresnel"
+CC=${CC:-cc}
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+W="-Wall -Wextra -Wpedantic -Werror"
+if ! $CC -std=c99 $W -O2 -Iinclude -Itests tests/gen_matrix_check.c "$B/libfresnel.a" -lm -o "$t/check" \
+    2>"$t/cc.log"; then
+    echo "FAIL gen matrix: tests/gen_matrix_check.c does not build: $(head -5 "$t/cc.log")"
+    exit 1
+fi
+mats=$(tail -n +2 data/materials.csv | cut -d, -f1 | tr '\n' ' ')
+named="schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point"
+
+# compile NAME HEADER: the four compilers, one line each
+compile() {
+    printf '#include "%s"\nint main(void) { return 0; }\n' "$(basename "$2")" >"$t/use.c"
+    for c in "gcc -std=c99" "clang -std=c99" "g++ -std=c++17 -x c++" "clang++ -std=c++17 -x c++"; do
+        # shellcheck disable=SC2086
+        if $c $W -Iinclude -I"$t" -c "$t/use.c" -o "$t/use.o" >"$t/cc.log" 2>&1 && [ ! -s "$t/cc.log" ]; then
+            echo "PASS gen matrix $1: compiles warning-free with $c"
+        else
+            echo "FAIL gen matrix $1: $c: $(head -5 "$t/cc.log")"
+        fi
+    done
+}
+
+# scene NAME SPACING N1 TYPES MODELS
+scene() {
+    printf 'name = %s\nmaterials = %s\nmodels = %s\ntypes = %s\nn1 = %s\nlut_spacing = %s\n' \
+        "$1" "$mats" "$5" "$4" "$3" "$2" >"$t/$1.scene"
+    if ! "$F" gen "$t/$1.scene" -o "$t/$1.h" 2>"$t/gen.log" >/dev/null; then
+        echo "FAIL gen matrix $1: fresnel gen: $(grep -v warning "$t/gen.log" | head -3)"
+        return 1
+    fi
+}
+
+for spacing in grazing uniform grazing-pl; do
+    case $spacing in
+    grazing) luts="lut4 lut16 lut256 lut4-residual lut16-residual lut256-residual lut4-cubic lut16-cubic lut256-cubic"
+        types="f32 q15" ;;
+    uniform) luts="lut4 lut16 lut256 lut4-residual lut16-residual lut256-residual"; types="f32 q15" ;;
+    *) luts="lut4 lut16 lut64"; types="q15" ;;
+    esac
+    for n1 in 1 1.33 1.5 2.42 4; do
+        name=m_$(echo "$spacing" | tr -c 'a-z0-9\n' _)_$(echo "$n1" | tr . _)
+        scene "$name" "$spacing" "$n1" "$types" "$named $luts" || continue
+        compile "$name" "$t/$name.h"
+        "$t/check" "$t/$name.h" "$spacing" "$name (${spacing}, n1 $n1)"
+        rm -f "$t/$name.h"
+    done
+done
+for types in f32 q15; do
+    scene "m_only_$types" grazing 1.5 "$types" "$named lut4 lut16-residual lut16-cubic" &&
+        compile "m_only_$types (types = $types alone)" "$t/m_only_$types.h"
+done
+
+# The checker itself must catch what a wrong header looks like: a residual
+# node wrapped past int16_t, an infinite float, a C99 designated initialiser
+# (no C++17), a Q15 code above one.
+printf '/* x */\nenum { fresnel_b_w_lut8_residual_frac = 15 };\nstatic const int16_t fresnel_b_w_lut8_residual_q15[3] FRESNEL_GEN_UNUSED = {\n    -385, 34867, 304\n};\n' >"$t/bad1.h"
+printf '/* x */\nstatic const float fresnel_b_w_ct_eta FRESNEL_GEN_UNUSED = inf.0f;\n' >"$t/bad2.h"
+printf '/* x */\nstatic const fresnel_q15_nk fresnel_b_w_nk_q15[1] FRESNEL_GEN_UNUSED = {\n    {.n = {1073741824, -30}, .nk2 = {1073741824, -29}}\n};\n' >"$t/bad3.h"
+printf '/* x */\nstatic const fresnel_q15_rgb fresnel_b_w_f0_q15 FRESNEL_GEN_UNUSED = {32769, 0, 0};\n' >"$t/bad4.h"
+for b in 1 2 3 4; do
+    if "$t/check" "$t/bad$b.h" grazing "bad$b" | grep -q '^FAIL gen matrix bad'"$b"': header values'; then
+        echo "PASS gen matrix: the checker rejects wrong header $b ($(head -3 "$t/bad$b.h" | tail -1 | cut -c1-50))"
+    else
+        echo "FAIL gen matrix: the checker accepts wrong header $b"
+    fi
+done
