@@ -19,6 +19,7 @@ typedef struct emit_input {
 } emit_input;
 
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
+void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
 /* A LUT model's table for one material (3n values, malloc'd; NULL when out
  * of memory) and the model's name as a C identifier part (lut16-residual ->
  * lut16_residual) in name[32]; *n and *form describe the table. */

@@ -150,10 +150,10 @@ expect_bad() {
 printf 'materials = au\nmodels = lut16\ntypes = q15\nlut_spacing = grazing-pl\n' >"$out/pl.scene"
 expect_bad "grazing-pl with --glsl" "pl.scene:4: expected lut_spacing grazing or uniform" -- \
     "$out/pl.scene" --glsl -o "$out/bad.glsl" --glsl-texture "$out/bad_tex.h"
-printf 'materials = au\nmodels = schlick\n' >"$out/a__b.scene"
-expect_bad "scene name with __ (reserved in GLSL)" "reserves identifiers" -- \
+printf 'name = a__b\nmaterials = au\nmodels = schlick\n' >"$out/a__b.scene"
+expect_bad "scene name with __ (reserved in GLSL)" "no '__'" -- \
     "$out/a__b.scene" --glsl -o "$out/bad.glsl"
-cp "$out/a__b.scene" "$out/nolut.scene"
+printf 'materials = au\nmodels = schlick\n' >"$out/nolut.scene"
 expect_bad "--glsl-texture for a scene without LUTs" "no LUT model" -- \
     "$out/nolut.scene" --glsl -o "$out/bad.glsl" --glsl-texture "$out/bad_tex.h"
 expect_bad "--glsl-texture without --glsl" "needs --glsl" -- \
