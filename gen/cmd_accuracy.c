@@ -102,7 +102,7 @@ int cmd_accuracy(int argc, char **argv)
             int n;
             free(*buf);
             if (!(*buf = malloc(strlen(argv[i + 1]) + 1))) {
-                status = cli_error(WHERE, "out of memory");
+                status = cli_oom(WHERE);
                 goto done;
             }
             strcpy(*buf, argv[++i]);
@@ -135,7 +135,7 @@ int cmd_accuracy(int argc, char **argv)
     }
     dir = data_dir(dir_option);
     if (!(s = malloc(sizeof *s))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
 

@@ -19,7 +19,7 @@ static int bench_targets_print(int count, int runs)
     bench_target_row rows[BENCH_TARGET_ROWS];
     int n = bench_speed_targets_run(rows, BENCH_TARGET_ROWS, count, runs), i;
     if (n < 0)
-        return cli_error(WHERE, "out of memory");
+        return cli_oom(WHERE);
     printf("name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n");
     for (i = 0; i < n; i++) {
         printf("%s,%.3f,%.2f,%.3g,", rows[i].name, rows[i].ns, rows[i].ratio_to_schlick, rows[i].max_abs_err);
@@ -105,7 +105,7 @@ int cmd_bench(int argc, char **argv)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `fresnel bench --targets` and "
                                      "`make cross-count` time fresnel_lut_q15_u16_pl_fast");
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(data_dir(dir_option), sc.space, g)) ||
@@ -123,7 +123,7 @@ int cmd_bench(int argc, char **argv)
             goto done;
         if (!(q = report_prepare(&sm, &p))) {
             scene_model_free(&sm);
-            status = cli_error(WHERE, "out of memory");
+            status = cli_oom(WHERE);
             goto done;
         }
         for (t = 0; t < report_type_count; t++) {

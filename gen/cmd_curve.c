@@ -63,7 +63,7 @@ int cmd_curve(int argc, char **argv)
         i++;
     }
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s)) || !(names = malloc(strlen(model_list) + 1))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = material_options_derive(WHERE, &o, g, s, &p)))

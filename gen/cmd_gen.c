@@ -19,8 +19,10 @@ static void gen_usage(FILE *out)
                  "constants and tables for exactly its materials, models and number types.\n"
                  "--glsl writes the same constants as GLSL instead (const vec3, float arrays)\n"
                  "for use after ports/glsl/fresnel.glsl.\n"
-                 "The output is written to a temporary file and renamed: on any error nothing\n"
-                 "is left at OUT.h. Identical input gives byte-identical output.\n\n"
+                 "The output is written to a temporary file beside OUT.h and renamed over it\n"
+                 "(an existing file keeps its mode; a symlink's target is replaced): on any\n"
+                 "error OUT.h is left as it was. -o - writes to stdout; a device or FIFO is\n"
+                 "written in place. Identical input gives byte-identical output.\n\n"
                  "Manifest format: `key = value` lines, # comments (see gen/scene.h):\n"
                  "  materials = au cu al      required; ids from `fresnel materials`\n"
                  "  models = schlick f82 lut32 required; one or more of:");
@@ -64,6 +66,7 @@ int cmd_gen(int argc, char **argv)
     int i, status = 0, glsl = 0;
     cli_outfile out;
     emit_input in;
+    static const char *const options[] = {"-o", "--glsl", "--data", "--help", NULL};
 
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -72,14 +75,15 @@ int cmd_gen(int argc, char **argv)
         } else if (!strcmp(argv[i], "--glsl")) {
             glsl = 1;
         } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data")) {
-            if (i + 1 >= argc)
-                return cli_error(WHERE, "option '%s' needs a value (see fresnel gen --help)", argv[i]);
-            if (argv[i][1] == 'o')
-                out_path = argv[++i];
+            const char *val = cli_option_value(WHERE, argc, argv, &i);
+            if (!val)
+                return CLI_BAD_INPUT;
+            if (argv[i - 1][1] == 'o')
+                out_path = val;
             else
-                dir_option = argv[++i];
+                dir_option = val;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_error(WHERE, "unknown option '%s' (see fresnel gen --help)", argv[i]);
+            return cli_bad_argument(WHERE, argv[i], options);
         } else if (manifest) {
             return cli_error(WHERE, "one scene manifest expected, got '%s' and '%s'", manifest, argv[i]);
         } else {
@@ -88,8 +92,10 @@ int cmd_gen(int argc, char **argv)
     }
     if (!manifest || !out_path)
         return cli_error(WHERE, "usage: fresnel gen SCENE -o OUT.h (see fresnel gen --help)");
+    if (cli_out_is_input(out_path, manifest))
+        return cli_error(WHERE, "'%s' is the scene manifest itself; refusing to overwrite it", out_path);
     if (!(sc = malloc(sizeof *sc)) || !(g = malloc(sizeof *g))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = scene_load(manifest, sc)))
@@ -97,7 +103,7 @@ int cmd_gen(int argc, char **argv)
     params = calloc((size_t)sc->material_count, sizeof *params);
     spectra = calloc((size_t)sc->material_count, sizeof *spectra);
     if (!params || !spectra) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(data_dir(dir_option), sc->space, g)))
@@ -108,7 +114,7 @@ int cmd_gen(int argc, char **argv)
         if ((status = material_lookup(g->dir, sc->materials[i], &info, where)))
             goto done;
         if (!(spectra[i] = malloc(sizeof *spectra[i]))) {
-            status = cli_error(WHERE, "out of memory");
+            status = cli_oom(WHERE);
             goto done;
         }
         if ((status = derive_parameters(g, sc->materials[i], sc->sigma, sc->n1, spectra[i], &params[i])))
@@ -122,16 +128,13 @@ int cmd_gen(int argc, char **argv)
     in.params = params;
     in.spectra = spectra;
     in.glsl = glsl;
-    if (cli_out_open(&out, out_path)) {
-        status = cli_error(out_path, "cannot write");
+    if ((status = cli_out_open(&out, out_path)))
         goto done;
-    }
     if ((status = emit_header(out.f, &in))) {
         cli_out_abort(&out);
         goto done;
     }
-    if (cli_out_commit(&out))
-        status = cli_error(out_path, "cannot write");
+    status = cli_out_commit(&out);
 done:
     if (spectra)
         for (i = 0; sc && i < sc->material_count; i++)

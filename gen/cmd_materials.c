@@ -50,7 +50,7 @@ int cmd_materials(int argc, char **argv)
     lo = malloc(MAX_MATERIALS * sizeof *lo);
     hi = malloc(MAX_MATERIALS * sizeof *hi);
     if (!list || !s || !lo || !hi) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((count = material_list(dir, list, MAX_MATERIALS)) < 0)

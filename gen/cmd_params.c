@@ -45,7 +45,7 @@ int cmd_params(int argc, char **argv)
         i++;
     }
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = material_options_derive(WHERE, &o, g, s, &p)))

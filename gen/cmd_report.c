@@ -90,16 +90,12 @@ static int open_out(cli_outfile *o, const char *dir, const char *name)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (cli_out_open(o, path))
-        return cli_error(path, "cannot write");
-    return 0;
+    return cli_out_open(o, path);
 }
 
 static int commit_out(cli_outfile *o)
 {
-    if (cli_out_commit(o))
-        return cli_error(o->path, "cannot write");
-    return 0;
+    return cli_out_commit(o);
 }
 
 static void write_accuracy_tables(report_run *r, FILE *f)
@@ -248,7 +244,7 @@ static int compute_hoffman(report_run *r)
     lab_space ls;
     int i, a, ch, status = 0;
     if (!g || !s) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(r->g->dir, "acescg", g)))
@@ -421,7 +417,7 @@ int cmd_report(int argc, char **argv)
     sig_de = calloc((size_t)r.sc.material_count, sizeof *sig_de);
     sig_err = calloc((size_t)r.sc.material_count, sizeof *sig_err);
     if (!r.g || !r.mats || !r.cells || !r.ns || !r.instr || !sig_de || !sig_err) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(data_dir(dir_option), r.sc.space, r.g)))
@@ -435,7 +431,7 @@ int cmd_report(int argc, char **argv)
             goto done;
         if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models)) ||
             !(rm->prepared = calloc((size_t)r.sc.model_count, sizeof *rm->prepared))) {
-            status = cli_error(WHERE, "out of memory");
+            status = cli_oom(WHERE);
             goto done;
         }
         if ((status = derive_parameters(r.g, r.sc.materials[i], r.sc.sigma, r.sc.n1, rm->s, &rm->p)))
@@ -446,7 +442,7 @@ int cmd_report(int argc, char **argv)
             if ((status = scene_model_prepare(r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
                 goto done;
             if (!(rm->prepared[m] = report_prepare(&rm->models[m], &rm->p))) {
-                status = cli_error(WHERE, "out of memory");
+                status = cli_oom(WHERE);
                 goto done;
             }
             for (t = 0; t < report_type_count; t++)

@@ -89,7 +89,7 @@ static int emit_lut_q15(FILE *f, const char *prefix, const char *model, const ma
     char name[32];
     double big = 0.0, *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
     if (!t)
-        return cli_error("fresnel gen", "out of memory");
+        return cli_oom("fresnel gen");
     residual = form == LUT_RESIDUAL;
     if (residual) {
         /* as many fraction bits as int16 holds for the largest residual */

@@ -89,7 +89,7 @@ static int emit_lut(FILE *f, const char *prefix, const char *model, const materi
     double *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
     const char *suffix = form == LUT_RESIDUAL ? "_residual" : (form == LUT_CUBIC ? "_cubic" : "");
     if (!t)
-        return cli_error("fresnel gen", "out of memory");
+        return cli_oom("fresnel gen");
     residual = form == LUT_RESIDUAL;
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
                " * fitted to the ground truth through %s interpolation.\n",
