@@ -137,30 +137,33 @@ int cli_bad_argument(const char *where, const char *arg, const char *const *opti
     return cli_error(where, "unknown option '%s' (see %s --help)", arg, where);
 }
 
-/* Levenshtein distance, ASCII case folded, for names of up to 63 bytes. */
+/* Edit distance counting an insertion, deletion, substitution or swap of
+ * two neighbours as one edit (optimal string alignment), ASCII case folded,
+ * for names of up to 63 bytes. */
 static int distance(const char *a, const char *b)
 {
-    int row[64], la = (int)strlen(a), lb = (int)strlen(b), i, j;
+    int d[3][64], la = (int)strlen(a), lb = (int)strlen(b), i, j;
     if (la > 63 || lb > 63)
         return INT_MAX;
     for (j = 0; j <= lb; j++)
-        row[j] = j;
+        d[0][j] = j;
     for (i = 1; i <= la; i++) {
-        int diag = row[0];
+        int *row = d[i % 3], *up = d[(i - 1) % 3], *up2 = d[(i + 1) % 3];
         row[0] = i;
         for (j = 1; j <= lb; j++) {
-            int up = row[j];
-            int cost = tolower((unsigned char)a[i - 1]) != tolower((unsigned char)b[j - 1]);
-            int best = diag + cost;
-            if (row[j] + 1 < best)
-                best = row[j] + 1;
+            int ca = tolower((unsigned char)a[i - 1]), cb = tolower((unsigned char)b[j - 1]);
+            int best = up[j - 1] + (ca != cb);
+            if (up[j] + 1 < best)
+                best = up[j] + 1;
             if (row[j - 1] + 1 < best)
                 best = row[j - 1] + 1;
+            if (i > 1 && j > 1 && ca == tolower((unsigned char)b[j - 2]) &&
+                tolower((unsigned char)a[i - 2]) == cb && up2[j - 2] + 1 < best)
+                best = up2[j - 2] + 1;
             row[j] = best;
-            diag = up;
         }
     }
-    return row[lb];
+    return d[la % 3][lb];
 }
 
 const char *cli_suggest(const char *name, const char *const *candidates)

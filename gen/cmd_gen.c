@@ -109,10 +109,15 @@ int cmd_gen(int argc, char **argv)
     if ((status = gen_context_load(data_dir(dir_option), sc->space, g)))
         goto done;
     snprintf(where, sizeof where, "%s:%d", manifest, sc->materials_line);
+    /* Every unknown material is reported, not only the first. */
     for (i = 0; i < sc->material_count; i++) {
         material_info info;
-        if ((status = material_lookup(g->dir, sc->materials[i], &info, where)))
-            goto done;
+        if (material_lookup(g->dir, sc->materials[i], &info, where))
+            status = CLI_BAD_INPUT;
+    }
+    if (status)
+        goto done;
+    for (i = 0; i < sc->material_count; i++) {
         if (!(spectra[i] = malloc(sizeof *spectra[i]))) {
             status = cli_oom(WHERE);
             goto done;

@@ -107,6 +107,9 @@ typedef struct colour_space {
 } colour_space;
 int colour_space_load(const char *dir, const char *id, const colorimetry *cm, colour_space *cs);
 extern const char *const colour_space_ids[]; /* NULL-terminated */
+/* The id a colour-space name stands for, ignoring case and taking common
+ * aliases (sRGB, rec709/bt709, p3, bt2020, ACEScg, ...), or NULL. */
+const char *colour_space_find(const char *name);
 
 /* ---- dominant_wavelength.c: nm[0..2] for R, G, B. */
 void dominant_wavelengths(const colorimetry *cm, const colour_space *cs, double nm[3]);
