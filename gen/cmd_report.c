@@ -1,5 +1,5 @@
 /* fresnel report: accuracy, speed and size of every model x number type for
- * the materials of a scene, as report.md plus SVG plots (issue 5). */
+ * the materials of a scene, as report.md plus SVG plots. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -117,7 +117,12 @@ static void write_accuracy_tables(report_run *r, FILE *f)
             for (i = 0; i < r->sc.material_count; i++)
                 if (report_cell_at(r, i, m, t)->vs_ref_max > vs)
                     vs = report_cell_at(r, i, m, t)->vs_ref_max;
-            fprintf(f, "| %s | %s | %.3f | %.3f | %.1e | ", r->sc.models[m], report_types[t].name, mean, worst, vs);
+            fprintf(f, "| %s | %s | ", r->sc.models[m], report_types[t].name);
+            if (isnan(mean)) /* a scene without metals: nothing to average */
+                fprintf(f, "no metals | - | ");
+            else
+                fprintf(f, "%.3f | %.3f | ", mean, worst);
+            fprintf(f, "%.1e | ", vs);
             if (isnan(r->ns[m * report_type_count + t]))
                 fprintf(f, "not measured | ");
             else
@@ -307,6 +312,16 @@ static void write_budget(report_run *r, FILE *f)
     const double *cost;
     if (!front)
         return;
+    {
+        double mean, worst;
+        report_metal_summary(r, 0, 0, &mean, &worst);
+        if (isnan(mean)) {
+            fprintf(f, "\n## Which model for which budget\n\nNo metals in this scene: no error over the metals to "
+                       "rank the models by.\n");
+            free(front);
+            return;
+        }
+    }
     for (k = 0; k < n; k++)
         if (isnan(r->instr[k]))
             use_instr = 0;
@@ -377,6 +392,8 @@ int cmd_report(int argc, char **argv)
 {
     report_run r;
     const char *scene_path = "data/scenes/report.scene", *dir_option = NULL;
+    static const char *const options[] = {"--scene", "-o", "--cross", "--data", "--no-timing", "--no-instructions",
+                                          "--help", NULL};
     int timing = 1, instructions = 1, i, m, t, status = 0;
     double (*sig_de)[REPORT_SIGMAS] = NULL, (*sig_err)[REPORT_SIGMAS] = NULL;
     cli_outfile out;
@@ -391,16 +408,20 @@ int cmd_report(int argc, char **argv)
             timing = 0;
         } else if (!strcmp(argv[i], "--no-instructions")) {
             instructions = 0;
-        } else if (i + 1 < argc && !strcmp(argv[i], "--scene")) {
-            scene_path = argv[++i];
-        } else if (i + 1 < argc && !strcmp(argv[i], "-o")) {
-            r.out_dir = argv[++i];
-        } else if (i + 1 < argc && !strcmp(argv[i], "--cross")) {
-            r.cross_path = argv[++i];
-        } else if (i + 1 < argc && !strcmp(argv[i], "--data")) {
-            dir_option = argv[++i];
+        } else if (!cli_in_list(argv[i], options)) {
+            return cli_bad_argument(WHERE, argv[i], options);
         } else {
-            return cli_error(WHERE, "unknown option or missing value '%s' (see fresnel report --help)", argv[i]);
+            const char *v = cli_option_value(WHERE, argc, argv, &i);
+            if (!v)
+                return CLI_BAD_INPUT;
+            if (!strcmp(argv[i - 1], "--scene"))
+                scene_path = v;
+            else if (!strcmp(argv[i - 1], "-o"))
+                r.out_dir = v;
+            else if (!strcmp(argv[i - 1], "--cross"))
+                r.cross_path = v;
+            else
+                dir_option = v;
         }
     }
     if ((status = scene_load(scene_path, &r.sc)))

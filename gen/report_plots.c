@@ -42,8 +42,10 @@ static int write_pareto(report_run *r)
             char label[64];
             if (isnan(r->ns[k]))
                 continue;
-            measured++;
             report_metal_summary(r, m, t, &mean, &worst);
+            if (isnan(mean)) /* no metals in the scene: no error to plot */
+                continue;
+            measured++;
             snprintf(label, sizeof label, "%s %s", r->sc.models[m], report_types[t].name);
             svg_point(&p, r->ns[k], mean, SVG_CIRCLE, 6, svg_palette(m), label, SVG_LABEL_RIGHT);
             for (j = 0; j < n && !dominated; j++) {

@@ -83,6 +83,10 @@ typedef struct spectrum {
 } spectrum;
 void resample(const nk_table *t, spectrum *s);
 /* load + resample of data/<id>.csv; 0 or CLI_BAD_INPUT. */
+/* 1 (the default): spectrum_load warns, once per file, when a table covers
+ * only part of 360-830 nm. `fresnel materials` lists the coverage as
+ * columns and clears it unless --verbose. */
+extern int spectrum_coverage_warnings;
 int spectrum_load(const char *dir, const char *id, spectrum *s);
 
 /* ---- colorimetry.c */
