@@ -378,8 +378,13 @@ int cli_out_open(cli_outfile *o, const char *path)
         }
         return 0;
     }
+    /* Read-only means no write bit at all, even for root, whom access(2)
+     * lets write anything: replacing such a file would silently defeat a
+     * protection its owner set. */
     if (exists && access(o->path, W_OK) != 0)
         return out_fail(o, "cannot write", errno);
+    if (exists && (st.st_mode & 0222) == 0)
+        return out_fail(o, "cannot write a read-only file", EACCES);
     if (exists) {
         mode = st.st_mode & 07777;
     } else {
