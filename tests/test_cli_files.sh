@@ -3,6 +3,7 @@
 # it should not, never follows a planted name, never leaves a partial file
 # or a temporary; every command reports a failed write or read with exit 1.
 F="$BUILD/fresnel"
+case $F in /*) ;; *) F="$PWD/$F" ;; esac
 t=$(mktemp -d)
 trap 'chmod -R u+w "$t" 2>/dev/null; rm -rf "$t"' EXIT
 pass() { echo "PASS $1"; }
