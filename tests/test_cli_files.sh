@@ -133,3 +133,14 @@ mkdir -p "$t/rep2"; mkdir "$t/rep2/report.md"
 "$F" gen "$t" -o "$t/x.h" 2>"$t/err"; rc=$?
 [ $rc -ne 0 ] && [ ! -e "$t/x.h" ] && pass "gen DIR (a directory as manifest): exit $rc, no output" ||
     fail "gen DIR: exit $rc $(cat "$t/err")"
+
+# Out of memory has its own exit status (3), apart from bad input (2): an
+# 80 MB line under a 60 MB address-space limit.
+# (A sanitizer build reserves more address space than that at startup: skipped.)
+if ! (ulimit -v 60000; "$F" --version) >/dev/null 2>&1; then
+    echo "NOTE this build does not start under ulimit -v 60000 (sanitizers?): out-of-memory status not tested"
+else
+(ulimit -v 60000; head -c 80000000 /dev/zero | tr '\0' '1' | "$F" eval --model exact --type f32 >"$t/out") 2>"$t/err"; rc=$?
+[ $rc -eq 3 ] && grep -q 'out of memory' "$t/err" && [ ! -s "$t/out" ] &&
+    pass "out of memory: exit 3 ($(cat "$t/err"))" || fail "out of memory: exit $rc $(cat "$t/err")"
+fi

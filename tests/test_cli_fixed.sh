@@ -1,5 +1,5 @@
 #!/bin/sh
-# `fresnel eval --type fixed|f16` (issue 4): every model, the output formats,
+# `fresnel eval --type fixed|f16`: every model, the output formats,
 # agreement with the double reference within the documented bounds, the
 # clamping policy, and bad types.
 F="$BUILD/fresnel"
