@@ -31,6 +31,8 @@ static void put_escaped(const char *s)
             fputs("\\r", stderr);
         else if (c < 0x20 || c == 0x7f)
             fprintf(stderr, "\\x%02x", c);
+        else if (c == 0xc2 && (unsigned char)s[1] >= 0x80 && (unsigned char)s[1] <= 0x9f)
+            fprintf(stderr, "\\u%04x", (unsigned char)*++s); /* a C1 control (U+0080-U+009F) in UTF-8 */
         else
             fputc(c, stderr);
     }

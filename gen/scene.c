@@ -387,7 +387,8 @@ int scene_load(const char *path, scene *out)
     free(buf);
     if (rc == 0 && ferror(f)) {
         fclose(f);
-        return report(path, 0, "cannot read: %s", strerror(read_errno ? read_errno : EIO));
+        report(path, 0, "cannot read: %s", strerror(read_errno ? read_errno : EIO));
+        return CLI_FAILURE; /* the file failed, not its content */
     }
     fclose(f);
     if (rc != 0)

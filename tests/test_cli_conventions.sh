@@ -102,6 +102,9 @@ printf 'materials = a\033]0;x\007u\nmodels = schlick\n' >"$t/esc.scene"
 : >"$t/in"
 "$F" params --material "$(printf 'a\033[31mu')" 2>"$t/err"
 ! grep -q "$(printf '\033')" "$t/err" && pass "argument errors escape control characters" || fail "argv escaping"
+"$F" eval --model "$(printf 'x\302\233[2Jy')" --type f32 2>"$t/err"
+! grep -q "$(printf '\302\233')" "$t/err" && grep -q 'x\\u009b\[2Jy' "$t/err" &&
+    pass "a C1 control (U+009B) is escaped too ($(cat "$t/err"))" || fail "C1 escaping: $(od -c "$t/err" | head -3)"
 for x in 1e-310 -4.9e-324 2.2e-308; do
     printf '1.5,0,%s\n' "$x" >"$t/in"
     "$F" eval --model exact --type f64 <"$t/in" >"$t/out" 2>"$t/err" && pass "subnormal cos $x accepted ($(cat "$t/out"))" ||

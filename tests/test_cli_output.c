@@ -84,6 +84,26 @@ int main(void)
     CHECK("signal cleanup leaves the target untouched", read_all(target, buf, sizeof buf) == 4 && !strcmp(buf, "old\n"),
           "target holds '%s'", buf);
 
+    /* The same through a real SIGTERM: the handler cli_out_open installed
+     * runs, removes the temporary, and the process dies of the signal. */
+    fflush(stdout);
+    pid = fork();
+    if (pid == 0) {
+        if (cli_out_open(&o, target) != 0)
+            _exit(3);
+        fputs("partial", o.f);
+        fflush(o.f);
+        if (count_entries(dir) != 2)
+            _exit(4);
+        raise(SIGTERM);
+        _exit(5);
+    }
+    waitpid(pid, &status, 0);
+    CHECK("SIGTERM during a write: killed by SIGTERM, temporary removed, target untouched",
+          WIFSIGNALED(status) && WTERMSIG(status) == SIGTERM && count_entries(dir) == 1 &&
+              read_all(target, buf, sizeof buf) == 4 && !strcmp(buf, "old\n"),
+          "status 0x%x, %d entries, target '%s'", status, count_entries(dir), buf);
+
     /* Commit keeps the mode of the file it replaces. */
     if (cli_out_open(&o, target) == 0) {
         char tmpname[512];
