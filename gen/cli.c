@@ -301,7 +301,7 @@ static int out_fail(cli_outfile *o, const char *what, int err)
 
 /* Follows a chain of symbolic links from path to the file they finally name
  * (which need not exist yet); 0 or -1 with errno set. */
-static int resolve_links(const char *path, char *out, size_t size)
+static int resolve_links(const char *path, char *out, size_t size, int *via_proc)
 {
     char cur[CLI_PATH_MAX], link[CLI_PATH_MAX];
     struct stat st;
@@ -319,6 +319,8 @@ static int resolve_links(const char *path, char *out, size_t size)
         if (n < 0)
             return -1;
         link[n] = '\0';
+        if (!strncmp(link, "/proc/", 6))
+            *via_proc = 1;
         if (link[0] == '/') {
             strcpy(cur, link);
         } else {
@@ -347,7 +349,7 @@ int cli_out_open(cli_outfile *o, const char *path)
 {
     struct stat st;
     mode_t mode;
-    int fd, exists;
+    int fd, exists, via_proc;
     char *slash;
     o->f = NULL;
     o->kind = CLI_OUT_ATOMIC;
@@ -359,18 +361,22 @@ int cli_out_open(cli_outfile *o, const char *path)
         o->f = stdout;
         return 0;
     }
-    if (resolve_links(path, o->path, sizeof o->path))
+    via_proc = 0;
+    if (resolve_links(path, o->path, sizeof o->path, &via_proc))
         return out_fail(o, "cannot resolve", errno);
-    exists = stat(o->path, &st) == 0;
+    /* /dev/stdout and the like lead through /proc/self/fd to an open file
+     * description, which may be a pipe ("pipe:[123]", no path at all) or a
+     * file the shell opened for appending: written in place, appending. */
+    exists = stat(via_proc ? path : o->path, &st) == 0;
     if (!exists && errno != ENOENT)
         return out_fail(o, "cannot write", errno);
     if (exists && S_ISDIR(st.st_mode))
         return out_fail(o, "cannot write", EISDIR);
-    if (exists && !S_ISREG(st.st_mode)) {
+    if (exists && (via_proc || !S_ISREG(st.st_mode))) {
         /* A device, FIFO or socket is written in place: renaming a file over
          * /dev/null would replace the device node. */
         o->kind = CLI_OUT_DIRECT;
-        fd = open(o->path, O_WRONLY | O_NOCTTY);
+        fd = open(via_proc ? path : o->path, O_WRONLY | O_NOCTTY | (via_proc ? O_APPEND : 0));
         if (fd < 0)
             return out_fail(o, "cannot write", errno);
         if (!(o->f = fdopen(fd, "wb"))) {

@@ -62,6 +62,14 @@ wait $reader
 [ $rc -eq 1 ] && grep -q '<stdout>' "$t/err" && pass "gen -o - >/dev/full: exit 1 naming <stdout>" ||
     fail "gen -o - >/dev/full: exit $rc $(cat "$t/err")"
 
+# /dev/stdout: a pipe (no path behind it) and a file opened for appending.
+"$F" gen "$t/s.scene" -o /dev/stdout 2>"$t/err" | cat >"$t/pipe.h" && cmp -s "$t/pipe.h" "$t/ref.h" &&
+    pass "gen -o /dev/stdout into a pipe" || fail "gen -o /dev/stdout | cat: $(cat "$t/err")"
+printf 'first\n' >"$t/log"
+"$F" gen "$t/s.scene" -o /dev/stdout >>"$t/log" 2>"$t/err" && [ "$(head -1 "$t/log")" = first ] &&
+    [ "$(($(wc -l <"$t/ref.h") + 1))" -eq "$(wc -l <"$t/log")" ] &&
+    pass "gen -o /dev/stdout >>LOG appends" || fail "gen -o /dev/stdout >>LOG: $(head -2 "$t/log") $(cat "$t/err")"
+
 # A read-only file is an error and stays as it was.
 printf 'keep\n' >"$t/ro.h"; chmod 444 "$t/ro.h"
 "$F" gen "$t/s.scene" -o "$t/ro.h" 2>"$t/err"; rc=$?
