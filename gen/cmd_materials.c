@@ -74,6 +74,7 @@ int cmd_materials(int argc, char **argv)
                lo[i], hi[i]);
     status = 0;
 done:
+    spectrum_coverage_warnings = 1;
     free(list);
     free(s);
     free(lo);
