@@ -30,6 +30,7 @@ static void gen_usage(FILE *out)
         fprintf(out, " %s", scene_model_names[i]);
     fprintf(out, " lutN lutN-residual lutN-cubic (N = %d..%d)\n"
                  "  space = srgb              display-p3 dci-p3 adobe-rgb rec2020 acescg\n"
+                 "                            (any case; also rec709 bt709 p3 bt2020)\n"
                  "  sigma = 25                Gaussian window, nm (0 = point sampling)\n"
                  "  n1 = 1                    index of the incident medium\n"
                  "  types = f32               number types:",
