@@ -88,9 +88,8 @@ float cmp_pbrt_conductor(float eta, float kappa, float c)
     return 0.5f * (cx_norm(r_par) + cx_norm(r_perp));
 }
 
-/* fresnel_conductor as it was before the speed work of issue 8 (commit
- * f7f9c7c): the careful real form, u and v from sqrt and eta kappa / u, 3
- * divisions. Kept here to measure what changed. */
+/* An earlier form of fresnel_conductor, the careful real form: u and v
+ * from sqrt and eta kappa / u, 3 divisions. Kept here to measure what changed. */
 float cmp_careful_conductor(float eta, float kappa, float c)
 {
     float ek, a, m, u, v, p, q, num_s, den_s, num_p, den_p, rs, rp;

@@ -1,4 +1,4 @@
-/* Issue 8's speed targets (see bench_targets.h). */
+/* The library's speed targets (see bench_targets.h). */
 #include "bench_targets.h"
 
 #include <math.h>

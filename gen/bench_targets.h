@@ -1,4 +1,4 @@
-/* Issue 8's speed targets: time per evaluation of the exact conductor (ours
+/* The library's speed targets: time per evaluation of the exact conductor (ours
  * and two other renderers' algorithms) and of the lookup tables, as a ratio
  * to Schlick measured in the same run, with each row's largest error.
  * `fresnel bench --targets` prints it; the report's targets table reads it.

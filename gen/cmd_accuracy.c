@@ -82,6 +82,7 @@ int cmd_accuracy(int argc, char **argv)
         double nm, eta;
     } internal[MAX_ITEMS * MAX_ITEMS];
     int n_internal = 0;
+    static const char *const options[] = {"--materials", "--nm", "--steps", "--data", "--help", NULL};
 
     for (i = 0; default_materials[i]; i++)
         mats[n_mats++] = default_materials[i];
@@ -93,16 +94,21 @@ int cmd_accuracy(int argc, char **argv)
             accuracy_usage(stdout);
             goto done;
         }
-        if (i + 1 >= argc) {
-            status = cli_error(WHERE, "option '%s' needs a value (see fresnel accuracy --help)", opt);
+        if (!cli_in_list(opt, options)) {
+            status = cli_bad_argument(WHERE, opt, options);
             goto done;
         }
+        if (!cli_option_value(WHERE, argc, argv, &i)) {
+            status = CLI_BAD_INPUT;
+            goto done;
+        }
+        i--; /* the branches below take the value as argv[++i] */
         if (!strcmp(opt, "--materials") || !strcmp(opt, "--nm")) {
             char **buf = opt[2] == 'm' ? &mat_buf : &nm_buf;
             int n;
             free(*buf);
             if (!(*buf = malloc(strlen(argv[i + 1]) + 1))) {
-                status = cli_error(WHERE, "out of memory");
+                status = cli_oom(WHERE);
                 goto done;
             }
             strcpy(*buf, argv[++i]);
@@ -128,14 +134,11 @@ int cmd_accuracy(int argc, char **argv)
             }
         } else if (!strcmp(opt, "--data")) {
             dir_option = argv[++i];
-        } else {
-            status = cli_error(WHERE, "unknown option '%s' (see fresnel accuracy --help)", opt);
-            goto done;
         }
     }
     dir = data_dir(dir_option);
     if (!(s = malloc(sizeof *s))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
 

@@ -19,7 +19,7 @@ static int bench_targets_print(int count, int runs)
     bench_target_row rows[BENCH_TARGET_ROWS];
     int n = bench_speed_targets_run(rows, BENCH_TARGET_ROWS, count, runs), i;
     if (n < 0)
-        return cli_error(WHERE, "out of memory");
+        return cli_oom(WHERE);
     printf("name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n");
     for (i = 0; i < n; i++) {
         printf("%s,%.3f,%.2f,%.3g,", rows[i].name, rows[i].ns, rows[i].ratio_to_schlick, rows[i].max_abs_err);
@@ -39,6 +39,9 @@ int cmd_bench(int argc, char **argv)
                *dir_option = NULL;
     int count = 1 << 20, runs = 5, i, m, t, status = 0, targets = 0, count_set = 0, runs_set = 0,
         scene_options = 0;
+    static const char *const options[] = {"--scene", "--material", "--model", "--type", "--data", "--count",
+                                          "--runs", "--targets", "--help", NULL};
+    const char *v;
     scene sc;
     gen_context *g = NULL;
     spectrum *s = NULL;
@@ -53,7 +56,7 @@ int cmd_bench(int argc, char **argv)
                    "evaluations (default 2^20) over fixed pseudo-random cosines, for each model of the\n"
                    "scene (default data/scenes/report.scene) and material ID (default au). --runs 0\n"
                    "runs one untimed batch (the callgrind workload of `make report`).\n\n"
-                   "--targets: issue 8's speed targets, CSV\n"
+                   "--targets: the library's speed targets, CSV\n"
                    "  name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n"
                    "one channel of copper at 650 nm (eta 0.24, kappa 3.63), every row timed back to back\n"
                    "in R rounds (default %d) of N cosines (default %d), the median; ratio to the\n"
@@ -70,29 +73,33 @@ int cmd_bench(int argc, char **argv)
             targets = 1;
             continue;
         }
-        if (i + 1 >= argc)
-            return cli_error(WHERE, "option '%s' needs a value (see fresnel bench --help)", o);
+        if (!cli_in_list(o, options))
+            return cli_bad_argument(WHERE, o, options);
+        if (!(v = cli_option_value(WHERE, argc, argv, &i)))
+            return CLI_BAD_INPUT;
         scene_options += strcmp(o, "--count") && strcmp(o, "--runs");
         if (!strcmp(o, "--scene"))
-            scene_path = argv[++i];
+            scene_path = v;
         else if (!strcmp(o, "--material"))
-            material = argv[++i];
+            material = v;
         else if (!strcmp(o, "--model"))
-            only_model = argv[++i];
-        else if (!strcmp(o, "--type"))
-            only_type = argv[++i];
-        else if (!strcmp(o, "--data"))
-            dir_option = argv[++i];
+            only_model = v;
+        else if (!strcmp(o, "--type")) {
+            static const char *const types[] = {"f32", "q15", "f16", NULL};
+            only_type = !strcmp(v, "fixed") ? "q15" : v;
+            if (!cli_in_list(only_type, types))
+                return cli_unknown(WHERE, "type", v, types);
+        } else if (!strcmp(o, "--data"))
+            dir_option = v;
         else if (!strcmp(o, "--count")) {
-            if (cli_parse_int(argv[++i], 1, 1 << 26, &count))
-                return cli_error(WHERE, "--count expects an integer 1..2^26, got '%s'", argv[i]);
+            if (cli_parse_int(v, 1, 1 << 26, &count))
+                return cli_error(WHERE, "--count expects an integer 1..2^26, got '%s'", v);
             count_set = 1;
-        } else if (!strcmp(o, "--runs")) {
-            if (cli_parse_int(argv[++i], 0, 101, &runs))
-                return cli_error(WHERE, "--runs expects an integer 0..101, got '%s'", argv[i]);
+        } else {
+            if (cli_parse_int(v, 0, 101, &runs))
+                return cli_error(WHERE, "--runs expects an integer 0..101, got '%s'", v);
             runs_set = 1;
-        } else
-            return cli_error(WHERE, "unknown option '%s' (see fresnel bench --help)", o);
+        }
     }
     if (targets) {
         if (scene_options)
@@ -104,8 +111,15 @@ int cmd_bench(int argc, char **argv)
     if (scene_lut_spacing(&sc) == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `fresnel bench --targets` and "
                                      "`make cross-count` time fresnel_lut_q15_u16_pl_fast");
+    if (only_model && !scene_has_model(&sc, only_model)) {
+        const char *names[SCENE_MAX_MODELS + 1];
+        for (m = 0; m < sc.model_count; m++)
+            names[m] = sc.models[m];
+        names[m] = NULL;
+        return cli_unknown(WHERE, "model (of the scene)", only_model, names);
+    }
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(data_dir(dir_option), sc.space, g)) ||
@@ -123,7 +137,7 @@ int cmd_bench(int argc, char **argv)
             goto done;
         if (!(q = report_prepare(&sm, &p))) {
             scene_model_free(&sm);
-            status = cli_error(WHERE, "out of memory");
+            status = cli_oom(WHERE);
             goto done;
         }
         for (t = 0; t < report_type_count; t++) {

@@ -25,6 +25,9 @@ int cmd_curve(int argc, char **argv)
     scene_model models[MAX_MODELS];
     char *names = NULL, *tok;
     const char *model_list = default_models;
+    static const char *const options[] = {"--material", "--space", "--sigma", "--n1", "--data", "--samples",
+                                          "--models", "--lut-spacing", "--help", NULL};
+    const char *val;
     int samples = 91, n_models = 0, i, r, status = 0;
     lut_spacing spacing = LUT_GRAZING;
     material_options_init(&o);
@@ -41,29 +44,30 @@ int cmd_curve(int argc, char **argv)
                    default_models, material_options_help);
             return 0;
         }
-        if (i + 1 >= argc)
-            return cli_error(WHERE, "option '%s' needs a value (see fresnel curve --help)", argv[i]);
-        r = material_option(WHERE, argv[i], argv[i + 1], &o);
+        if (!cli_in_list(argv[i], options))
+            return cli_bad_argument(WHERE, argv[i], options);
+        if (!(val = cli_option_value(WHERE, argc, argv, &i)))
+            return CLI_BAD_INPUT;
+        r = material_option(WHERE, argv[i - 1], val, &o);
         if (r == CLI_BAD_INPUT)
             return r;
         if (r == 0) {
-            if (!strcmp(argv[i], "--samples")) {
-                if (cli_parse_int(argv[i + 1], 2, 100000, &samples))
-                    return cli_error(WHERE, "--samples expects an integer 2..100000, got '%s'", argv[i + 1]);
-            } else if (!strcmp(argv[i], "--models")) {
-                model_list = argv[i + 1];
-            } else if (!strcmp(argv[i], "--lut-spacing")) {
-                if (!strcmp(argv[i + 1], "uniform"))
+            if (!strcmp(argv[i - 1], "--samples")) {
+                if (cli_parse_int(val, 2, 100000, &samples))
+                    return cli_error(WHERE, "--samples expects an integer 2..100000, got '%s'", val);
+            } else if (!strcmp(argv[i - 1], "--models")) {
+                model_list = val;
+            } else {
+                static const char *const spacings[] = {"grazing", "uniform", NULL};
+                if (!strcmp(val, "uniform"))
                     spacing = LUT_UNIFORM;
-                else if (strcmp(argv[i + 1], "grazing"))
-                    return cli_error(WHERE, "--lut-spacing expects grazing or uniform, got '%s'", argv[i + 1]);
-            } else
-                return cli_error(WHERE, "unknown option '%s' (see fresnel curve --help)", argv[i]);
+                else if (strcmp(val, "grazing"))
+                    return cli_unknown(WHERE, "--lut-spacing", val, spacings);
+            }
         }
-        i++;
     }
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s)) || !(names = malloc(strlen(model_list) + 1))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = material_options_derive(WHERE, &o, g, s, &p)))

@@ -7,29 +7,33 @@
 #include "fixed_params.h"
 #include "models.h"
 
+#define WHERE "fresnel eval"
+
 static void eval_usage(FILE *out)
 {
     int i;
     fprintf(out,
-            "usage: fresnel eval --model NAME --type f32|f64|fixed|f16 [--n1 X] [--f90 X] [--p X]\n"
+            "usage: fresnel eval --model NAME --type f32|f64|q15|f16 [--n1 X] [--f90 X] [--p X]\n"
             "\n"
             "Reads CSV lines eta,kappa,cos on stdin and writes one reflectance per line,\n"
             "in order: %%.9g for f32 (the binary32 runtime), %%.17g for f64 (the double\n"
-            "reference), %%.9g for fixed (the Q15 runtime of fresnel_fixed.h: cos and\n"
+            "reference), %%.9g for q15 (the Q15 runtime of fresnel_fixed.h: cos and\n"
             "the parameters converted to its formats, the result code divided by 32768)\n"
             "and for f16 (the binary16 runtime of fresnel_f16.h, parameters and cos\n"
             "rounded to binary16; only where the compiler has _Float16).\n"
             "eta + i kappa is the material's index, seen from a medium of\n"
             "real index n1 (default 1); cos is the cosine of the angle of incidence.\n"
-            "An optional first line 'eta,kappa,cos' is a header; empty lines and lines\n"
+            "(--type fixed is accepted as another name for q15.)\n"
+            "An optional first line 'eta,kappa,cos' is a header (a leading UTF-8\n"
+            "byte-order mark is skipped); empty lines and lines\n"
             "starting with '#' are ignored. Parameters a model needs (F0, F82, LSK a and\n"
             "alpha, Gulbrandsen r and g) are derived from eta, kappa and n1 by the double\n"
             "reference; f32 rounds them to binary32 before calling the runtime.\n"
             "--f90 (default 1) and --p (default 5) are the generalized Schlick parameters.\n"
             "\n"
-            "Bad input (non-numeric or non-finite field, wrong number of columns) is\n"
-            "reported as <stdin>:LINE:COLUMN on stderr with exit status 2, and nothing is\n"
-            "written to stdout.\n"
+            "Bad input (non-numeric or non-finite field, wrong number of columns, a NUL\n"
+            "byte) is reported as <stdin>:LINE:COLUMN on stderr with exit status 2, and\n"
+            "nothing is written to stdout. A read or write error exits with status 1.\n"
             "\nmodels:\n");
     for (i = 0; i < model_count; i++)
         fprintf(out, "  %-18s %s\n", model_table[i].name, model_table[i].params);
@@ -66,6 +70,7 @@ static char *trim(char *s)
 
 int cmd_eval(int argc, char **argv)
 {
+    static const char *const options[] = {"--model", "--type", "--n1", "--f90", "--p", "--help", NULL};
     static const char *const column[3] = {"eta", "kappa", "cos"};
     const model *m = NULL;
     enum { T_NONE, T_F32, T_F64, T_FIXED, T_F16 } type = T_NONE;
@@ -79,48 +84,53 @@ int cmd_eval(int argc, char **argv)
     int seen_data = 0;
 
     for (i = 1; i < argc; i++) {
-        const char *opt = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
+        const char *opt = argv[i], *val;
         if (!strcmp(opt, "--help") || !strcmp(opt, "-h")) {
             eval_usage(stdout);
             return 0;
         }
-        if (!val)
-            return cli_error("fresnel eval", "option '%s' needs a value (see fresnel eval --help)", opt);
-        i++;
+        if (!cli_looks_like_option(opt) || !cli_in_list(opt, options))
+            return cli_bad_argument(WHERE, opt, options);
+        if (!(val = cli_option_value(WHERE, argc, argv, &i)))
+            return CLI_BAD_INPUT;
         if (!strcmp(opt, "--model")) {
-            if (!(m = model_find(val)))
-                return cli_error("fresnel eval", "unknown model '%s' (see fresnel eval --help)", val);
+            if (!(m = model_find(val))) {
+                const char *names[64];
+                int k;
+                for (k = 0; k < model_count && k < 63; k++)
+                    names[k] = model_table[k].name;
+                names[k] = NULL;
+                return cli_unknown(WHERE, "model", val, names);
+            }
         } else if (!strcmp(opt, "--type")) {
+            static const char *const types[] = {"f32", "f64", "q15", "f16", NULL};
             if (!strcmp(val, "f32"))
                 type = T_F32;
             else if (!strcmp(val, "f64"))
                 type = T_F64;
-            else if (!strcmp(val, "fixed"))
+            else if (!strcmp(val, "q15") || !strcmp(val, "fixed"))
                 type = T_FIXED;
             else if (!strcmp(val, "f16"))
                 type = T_F16;
             else
-                return cli_error("fresnel eval", "unknown type '%s': expected f32, f64, fixed or f16", val);
+                return cli_unknown(WHERE, "type", val, types);
         } else if (!strcmp(opt, "--n1")) {
             if (cli_parse_double(val, &n1) || !(n1 > 0.0))
-                return cli_error("fresnel eval", "--n1 expects a positive number, got '%s'", val);
+                return cli_error(WHERE, "--n1 expects a positive number, got '%s'", val);
         } else if (!strcmp(opt, "--f90")) {
             if (cli_parse_double(val, &f90))
-                return cli_error("fresnel eval", "--f90 expects a number, got '%s'", val);
-        } else if (!strcmp(opt, "--p")) {
-            if (cli_parse_double(val, &p))
-                return cli_error("fresnel eval", "--p expects a number, got '%s'", val);
+                return cli_error(WHERE, "--f90 expects a number, got '%s'", val);
         } else {
-            return cli_error("fresnel eval", "unknown option '%s' (see fresnel eval --help)", opt);
+            if (cli_parse_double(val, &p))
+                return cli_error(WHERE, "--p expects a number, got '%s'", val);
         }
     }
     if (!m)
-        return cli_error("fresnel eval", "--model is required (see fresnel eval --help)");
+        return cli_error(WHERE, "--model is required (see fresnel eval --help)");
     if (type == T_NONE)
-        return cli_error("fresnel eval", "--type is required: f32, f64, fixed or f16");
+        return cli_error(WHERE, "--type is required: f32, f64, q15 or f16");
     if (type == T_F16 && !m->f16)
-        return cli_error("fresnel eval", "--type f16: this build's compiler has no _Float16");
+        return cli_error(WHERE, "--type f16: this build's compiler has no _Float16");
 
     /* Everything is evaluated before anything is printed, so bad input on
      * line 1000 leaves stdout empty rather than half-written. */
@@ -133,29 +143,36 @@ int cmd_eval(int argc, char **argv)
         int ch;
         /* read one line of any length */
         while ((ch = getchar()) != EOF && ch != '\n') {
+            if (ch == '\0') {
+                snprintf(where, sizeof where, "<stdin>:%ld", lineno + 1);
+                status = cli_error(where, "expected text, found a NUL byte");
+                goto done;
+            }
             if (len + 1 >= cap) {
                 cap = cap ? 2 * cap : 256;
                 line = realloc(line, cap);
                 if (!line) {
-                    status = cli_error("fresnel eval", "out of memory");
+                    status = cli_oom(WHERE);
                     goto done;
                 }
             }
             line[len++] = (char)ch;
         }
+        if (ch == EOF && (status = cli_check_input(WHERE, stdin, "<stdin>")))
+            goto done;
         if (ch == EOF && len == 0)
             break;
         if (!line) {
             cap = 16;
             if (!(line = malloc(cap))) {
-                status = cli_error("fresnel eval", "out of memory");
+                status = cli_oom(WHERE);
                 goto done;
             }
         }
         line[len] = '\0';
         lineno++;
         snprintf(where, sizeof where, "<stdin>:%ld", lineno);
-        s = trim(line);
+        s = trim(line + (lineno == 1 ? cli_skip_bom(line) : 0));
         if (*s == '\0' || *s == '#')
             continue;
         if (!seen_data) {
@@ -181,7 +198,7 @@ int cmd_eval(int argc, char **argv)
             double *grown;
             out_cap = out_cap ? 2 * out_cap : 1024;
             if (!(grown = realloc(out, out_cap * sizeof *out))) {
-                status = cli_error("fresnel eval", "out of memory");
+                status = cli_oom(WHERE);
                 goto done;
             }
             out = grown;

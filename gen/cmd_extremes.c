@@ -1,5 +1,5 @@
 /* fresnel extremes: what every model returns in every number type on the
- * extreme and stiff cases of issue 7, against the double reference, as
+ * extreme and stiff cases, against the double reference, as
  * Markdown for README. The properties are asserted by tests/test_extremes.c
  * on the same cases (gen/extremes.h). */
 #include <math.h>
@@ -558,7 +558,10 @@ int cmd_extremes(int argc, char **argv)
             extremes_usage(stdout);
             return 0;
         }
-        return cli_error("fresnel extremes", "unknown argument '%s' (see fresnel extremes --help)", argv[i]);
+        {
+            static const char *const options[] = {"--help", NULL};
+            return cli_bad_argument("fresnel extremes", argv[i], options);
+        }
     }
     printf("## Extreme cases\n\n"
            "Produced by `build/fresnel extremes`; tests/test_extremes.c asserts the properties.\n"

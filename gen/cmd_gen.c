@@ -23,8 +23,10 @@ static void gen_usage(FILE *out)
                  "per material and model, in every dialect the port supports; lut_spacing\n"
                  "grazing or uniform. --glsl-texture writes, as a C header, the packed RGBA8\n"
                  "texture GLSL ES 1.00 reads the LUT models from (no const arrays there).\n"
-                 "The output is written to a temporary file and renamed: on any error nothing\n"
-                 "is left at OUT.h (nor at OUT_TEX.h). Identical input gives byte-identical output.\n\n"
+                 "The output is written to a temporary file beside OUT.h and renamed over it\n"
+                 "(an existing file keeps its mode; a symlink's target is replaced): on any\n"
+                 "error OUT.h (and OUT_TEX.h) is left as it was. -o - writes to stdout; a device\n"
+                 "or FIFO is written in place. Identical input gives byte-identical output.\n\n"
                  "Manifest format: `key = value` lines, # comments (see gen/scene.h):\n"
                  "  materials = au cu al      required; ids from `fresnel materials`\n"
                  "  models = schlick f82 lut32 required; one or more of:");
@@ -32,6 +34,7 @@ static void gen_usage(FILE *out)
         fprintf(out, " %s", scene_model_names[i]);
     fprintf(out, " lutN lutN-residual lutN-cubic (N = %d..%d)\n"
                  "  space = srgb              display-p3 dci-p3 adobe-rgb rec2020 acescg\n"
+                 "                            (any case; also rec709 bt709 p3 bt2020)\n"
                  "  sigma = 25                Gaussian window, nm (0 = point sampling)\n"
                  "  n1 = 1                    index of the incident medium\n"
                  "  types = f32               number types:",
@@ -52,6 +55,7 @@ int cmd_gen(int argc, char **argv)
     int i, status = 0, glsl = 0;
     cli_outfile out, tex;
     emit_input in;
+    static const char *const options[] = {"-o", "--glsl", "--glsl-texture", "--data", "--help", NULL};
 
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -60,16 +64,17 @@ int cmd_gen(int argc, char **argv)
         } else if (!strcmp(argv[i], "--glsl")) {
             glsl = 1;
         } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data") || !strcmp(argv[i], "--glsl-texture")) {
-            if (i + 1 >= argc)
-                return cli_error(WHERE, "option '%s' needs a value (see fresnel gen --help)", argv[i]);
-            if (argv[i][1] == 'o')
-                out_path = argv[++i];
-            else if (argv[i][2] == 'g')
-                tex_path = argv[++i];
+            const char *val = cli_option_value(WHERE, argc, argv, &i);
+            if (!val)
+                return CLI_BAD_INPUT;
+            if (argv[i - 1][1] == 'o')
+                out_path = val;
+            else if (argv[i - 1][2] == 'g')
+                tex_path = val;
             else
-                dir_option = argv[++i];
+                dir_option = val;
         } else if (argv[i][0] == '-' && argv[i][1] != '\0') {
-            return cli_error(WHERE, "unknown option '%s' (see fresnel gen --help)", argv[i]);
+            return cli_bad_argument(WHERE, argv[i], options);
         } else if (manifest) {
             return cli_error(WHERE, "one scene manifest expected, got '%s' and '%s'", manifest, argv[i]);
         } else {
@@ -82,8 +87,12 @@ int cmd_gen(int argc, char **argv)
         return cli_error(WHERE, "--glsl-texture needs --glsl (see fresnel gen --help)");
     if (tex_path && !strcmp(tex_path, out_path))
         return cli_error(WHERE, "--glsl-texture and -o name the same file '%s'", out_path);
+    if (cli_out_is_input(out_path, manifest))
+        return cli_error(WHERE, "'%s' is the scene manifest itself; refusing to overwrite it", out_path);
+    if (tex_path && (cli_out_is_input(tex_path, manifest) || cli_out_is_input(tex_path, out_path)))
+        return cli_error(WHERE, "'%s' is the scene manifest or the -o file; refusing to overwrite it", tex_path);
     if (!(sc = malloc(sizeof *sc)) || !(g = malloc(sizeof *g))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = scene_load(manifest, sc)))
@@ -97,18 +106,23 @@ int cmd_gen(int argc, char **argv)
     params = calloc((size_t)sc->material_count, sizeof *params);
     spectra = calloc((size_t)sc->material_count, sizeof *spectra);
     if (!params || !spectra) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(data_dir(dir_option), sc->space, g)))
         goto done;
     snprintf(where, sizeof where, "%s:%d", manifest, sc->materials_line);
+    /* Every unknown material is reported, not only the first. */
     for (i = 0; i < sc->material_count; i++) {
         material_info info;
-        if ((status = material_lookup(g->dir, sc->materials[i], &info, where)))
-            goto done;
+        if (material_lookup(g->dir, sc->materials[i], &info, where))
+            status = CLI_BAD_INPUT;
+    }
+    if (status)
+        goto done;
+    for (i = 0; i < sc->material_count; i++) {
         if (!(spectra[i] = malloc(sizeof *spectra[i]))) {
-            status = cli_error(WHERE, "out of memory");
+            status = cli_oom(WHERE);
             goto done;
         }
         if ((status = derive_parameters(g, sc->materials[i], sc->sigma, sc->n1, spectra[i], &params[i])))
@@ -122,13 +136,10 @@ int cmd_gen(int argc, char **argv)
     in.params = params;
     in.spectra = spectra;
     in.glsl = glsl;
-    if (cli_out_open(&out, out_path)) {
-        status = cli_error(out_path, "cannot write");
+    if ((status = cli_out_open(&out, out_path)))
         goto done;
-    }
-    if (tex_path && cli_out_open(&tex, tex_path)) {
+    if (tex_path && (status = cli_out_open(&tex, tex_path))) {
         cli_out_abort(&out);
-        status = cli_error(tex_path, "cannot write");
         goto done;
     }
     status = glsl ? emit_glsl(out.f, tex_path ? tex.f : NULL, &in) : emit_header(out.f, &in);
@@ -138,13 +149,11 @@ int cmd_gen(int argc, char **argv)
             cli_out_abort(&tex);
         goto done;
     }
-    if (tex_path && cli_out_commit(&tex)) {
+    if (tex_path && (status = cli_out_commit(&tex))) {
         cli_out_abort(&out);
-        status = cli_error(tex_path, "cannot write");
         goto done;
     }
-    if (cli_out_commit(&out))
-        status = cli_error(out_path, "cannot write");
+    status = cli_out_commit(&out);
 done:
     if (spectra)
         for (i = 0; sc && i < sc->material_count; i++)

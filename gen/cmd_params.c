@@ -19,7 +19,8 @@ int cmd_params(int argc, char **argv)
     gen_context *g = NULL;
     spectrum *s = NULL;
     material_params p;
-    int i, r, status = 0;
+    const char *val;
+    int i, status = 0;
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -35,17 +36,15 @@ int cmd_params(int argc, char **argv)
                    material_options_help);
             return 0;
         }
-        if (i + 1 >= argc)
-            return cli_error(WHERE, "option '%s' needs a value (see fresnel params --help)", argv[i]);
-        r = material_option(WHERE, argv[i], argv[i + 1], &o);
-        if (r == CLI_BAD_INPUT)
-            return r;
-        if (r == 0)
-            return cli_error(WHERE, "unknown option '%s' (see fresnel params --help)", argv[i]);
-        i++;
+        if (!cli_in_list(argv[i], material_option_names))
+            return cli_bad_argument(WHERE, argv[i], material_option_names);
+        if (!(val = cli_option_value(WHERE, argc, argv, &i)))
+            return CLI_BAD_INPUT;
+        if (material_option(WHERE, argv[i - 1], val, &o) == CLI_BAD_INPUT)
+            return CLI_BAD_INPUT;
     }
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = material_options_derive(WHERE, &o, g, s, &p)))
@@ -54,7 +53,7 @@ int cmd_params(int argc, char **argv)
         double ct_eta[3] = {p.ct_eta, p.ct_eta, p.ct_eta}, ct_kappa[3] = {p.ct_kappa, p.ct_kappa, p.ct_kappa};
         printf("# material %s (%s; %s), measured %.1f-%.1f nm\n", p.info.id, p.info.name, p.info.dataset,
                p.measured_lo, p.measured_hi);
-        printf("# space %s, sigma %g nm, n1 %g\n", o.space, p.sigma, p.n1);
+        printf("# space %s, sigma %g nm, n1 %g\n", g->cs.id, p.sigma, p.n1);
         printf("parameter,r,g,b\n");
         row("dominant_nm", p.nm);
         row("f0_unclamped", p.f0_unclamped);

@@ -1,5 +1,5 @@
 /* fresnel report: accuracy, speed and size of every model x number type for
- * the materials of a scene, as report.md plus SVG plots (issue 5). */
+ * the materials of a scene, as report.md plus SVG plots. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -90,16 +90,12 @@ static int open_out(cli_outfile *o, const char *dir, const char *name)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    if (cli_out_open(o, path))
-        return cli_error(path, "cannot write");
-    return 0;
+    return cli_out_open(o, path);
 }
 
 static int commit_out(cli_outfile *o)
 {
-    if (cli_out_commit(o))
-        return cli_error(o->path, "cannot write");
-    return 0;
+    return cli_out_commit(o);
 }
 
 static void write_accuracy_tables(report_run *r, FILE *f)
@@ -121,7 +117,12 @@ static void write_accuracy_tables(report_run *r, FILE *f)
             for (i = 0; i < r->sc.material_count; i++)
                 if (report_cell_at(r, i, m, t)->vs_ref_max > vs)
                     vs = report_cell_at(r, i, m, t)->vs_ref_max;
-            fprintf(f, "| %s | %s | %.3f | %.3f | %.1e | ", r->sc.models[m], report_types[t].name, mean, worst, vs);
+            fprintf(f, "| %s | %s | ", r->sc.models[m], report_types[t].name);
+            if (isnan(mean)) /* a scene without metals: nothing to average */
+                fprintf(f, "no metals | - | ");
+            else
+                fprintf(f, "%.3f | %.3f | ", mean, worst);
+            fprintf(f, "%.1e | ", vs);
             if (isnan(r->ns[m * report_type_count + t]))
                 fprintf(f, "not measured | ");
             else
@@ -248,7 +249,7 @@ static int compute_hoffman(report_run *r)
     lab_space ls;
     int i, a, ch, status = 0;
     if (!g || !s) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(r->g->dir, "acescg", g)))
@@ -311,6 +312,16 @@ static void write_budget(report_run *r, FILE *f)
     const double *cost;
     if (!front)
         return;
+    {
+        double mean, worst;
+        report_metal_summary(r, 0, 0, &mean, &worst);
+        if (isnan(mean)) {
+            fprintf(f, "\n## Which model for which budget\n\nNo metals in this scene: no error over the metals to "
+                       "rank the models by.\n");
+            free(front);
+            return;
+        }
+    }
     for (k = 0; k < n; k++)
         if (isnan(r->instr[k]))
             use_instr = 0;
@@ -381,6 +392,8 @@ int cmd_report(int argc, char **argv)
 {
     report_run r;
     const char *scene_path = "data/scenes/report.scene", *dir_option = NULL;
+    static const char *const options[] = {"--scene", "-o", "--cross", "--data", "--no-timing", "--no-instructions",
+                                          "--help", NULL};
     int timing = 1, instructions = 1, i, m, t, status = 0;
     double (*sig_de)[REPORT_SIGMAS] = NULL, (*sig_err)[REPORT_SIGMAS] = NULL;
     cli_outfile out;
@@ -395,16 +408,20 @@ int cmd_report(int argc, char **argv)
             timing = 0;
         } else if (!strcmp(argv[i], "--no-instructions")) {
             instructions = 0;
-        } else if (i + 1 < argc && !strcmp(argv[i], "--scene")) {
-            scene_path = argv[++i];
-        } else if (i + 1 < argc && !strcmp(argv[i], "-o")) {
-            r.out_dir = argv[++i];
-        } else if (i + 1 < argc && !strcmp(argv[i], "--cross")) {
-            r.cross_path = argv[++i];
-        } else if (i + 1 < argc && !strcmp(argv[i], "--data")) {
-            dir_option = argv[++i];
+        } else if (!cli_in_list(argv[i], options)) {
+            return cli_bad_argument(WHERE, argv[i], options);
         } else {
-            return cli_error(WHERE, "unknown option or missing value '%s' (see fresnel report --help)", argv[i]);
+            const char *v = cli_option_value(WHERE, argc, argv, &i);
+            if (!v)
+                return CLI_BAD_INPUT;
+            if (!strcmp(argv[i - 1], "--scene"))
+                scene_path = v;
+            else if (!strcmp(argv[i - 1], "-o"))
+                r.out_dir = v;
+            else if (!strcmp(argv[i - 1], "--cross"))
+                r.cross_path = v;
+            else
+                dir_option = v;
         }
     }
     if ((status = scene_load(scene_path, &r.sc)))
@@ -421,7 +438,7 @@ int cmd_report(int argc, char **argv)
     sig_de = calloc((size_t)r.sc.material_count, sizeof *sig_de);
     sig_err = calloc((size_t)r.sc.material_count, sizeof *sig_err);
     if (!r.g || !r.mats || !r.cells || !r.ns || !r.instr || !sig_de || !sig_err) {
-        status = cli_error(WHERE, "out of memory");
+        status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(data_dir(dir_option), r.sc.space, r.g)))
@@ -435,7 +452,7 @@ int cmd_report(int argc, char **argv)
             goto done;
         if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models)) ||
             !(rm->prepared = calloc((size_t)r.sc.model_count, sizeof *rm->prepared))) {
-            status = cli_error(WHERE, "out of memory");
+            status = cli_oom(WHERE);
             goto done;
         }
         if ((status = derive_parameters(r.g, r.sc.materials[i], r.sc.sigma, r.sc.n1, rm->s, &rm->p)))
@@ -446,7 +463,7 @@ int cmd_report(int argc, char **argv)
             if ((status = scene_model_prepare(r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
                 goto done;
             if (!(rm->prepared[m] = report_prepare(&rm->models[m], &rm->p))) {
-                status = cli_error(WHERE, "out of memory");
+                status = cli_oom(WHERE);
                 goto done;
             }
             for (t = 0; t < report_type_count; t++)

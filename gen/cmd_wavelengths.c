@@ -26,18 +26,10 @@ static void wavelengths_usage(FILE *out)
     fprintf(out, "\n");
 }
 
-static int known_space(const char *id)
-{
-    int i;
-    for (i = 0; colour_space_ids[i]; i++)
-        if (!strcmp(id, colour_space_ids[i]))
-            return 1;
-    return 0;
-}
-
 int cmd_wavelengths(int argc, char **argv)
 {
-    const char *space = NULL, *dir_option = NULL, *dir;
+    static const char *const options[] = {"--space", "--data", "--help", NULL};
+    const char *space = NULL, *dir_option = NULL, *dir, *val;
     colorimetry cm;
     colour_space cs;
     double nm[3];
@@ -48,33 +40,23 @@ int cmd_wavelengths(int argc, char **argv)
             wavelengths_usage(stdout);
             return 0;
         }
-        if (strcmp(opt, "--space") && strcmp(opt, "--data"))
-            return cli_error(WHERE, "unknown option '%s' (see fresnel wavelengths --help)", opt);
-        if (i + 1 >= argc)
-            return cli_error(WHERE, "option '%s' needs a value (see fresnel wavelengths --help)",
-                             opt);
+        if (!cli_in_list(opt, options))
+            return cli_bad_argument(WHERE, opt, options);
+        if (!(val = cli_option_value(WHERE, argc, argv, &i)))
+            return CLI_BAD_INPUT;
         if (!strcmp(opt, "--space"))
-            space = argv[++i];
+            space = val;
         else
-            dir_option = argv[++i];
+            dir_option = val;
     }
     if (!space)
         return cli_error(WHERE, "--space is required (see fresnel wavelengths --help)");
-    if (!known_space(space)) {
-        fprintf(stderr, WHERE ": unknown colour space '%s' (expected one of:", space);
-        for (i = 0; colour_space_ids[i]; i++)
-            fprintf(stderr, " %s", colour_space_ids[i]);
-        fprintf(stderr, ")\n");
-        return CLI_BAD_INPUT;
-    }
+    if (!colour_space_find(space))
+        return cli_unknown(WHERE, "colour space", space, colour_space_ids);
     dir = data_dir(dir_option);
     if (colorimetry_load(dir, &cm) || colour_space_load(dir, space, &cm, &cs))
         return CLI_BAD_INPUT;
     dominant_wavelengths(&cm, &cs, nm);
     printf("red_nm,green_nm,blue_nm\n%.2f,%.2f,%.2f\n", nm[0], nm[1], nm[2]);
-    if (fflush(stdout) || ferror(stdout)) {
-        perror(WHERE ": writing the result");
-        return 1;
-    }
     return 0;
 }

@@ -10,6 +10,7 @@
  * makes a perfect reflector exactly (1,1,1) either way. */
 #include <math.h>
 #include <string.h>
+#include <strings.h>
 
 #include "cli.h"
 #include "spectral.h"
@@ -127,10 +128,33 @@ static mat3 bradford_adaptation(const double src[3], const double dst[3])
     return mat_mul(&bradford_inv, &scaled);
 }
 
-static int space_index(const char *id)
+/* Other common spellings of the same spaces (matched ignoring case). */
+static const struct {
+    const char *alias, *id;
+} space_aliases[] = {
+    {"rec709", "srgb"},      {"rec.709", "srgb"},         {"bt709", "srgb"},          {"bt.709", "srgb"},
+    {"p3", "display-p3"},    {"displayp3", "display-p3"}, {"display_p3", "display-p3"}, {"dcip3", "dci-p3"},
+    {"dci_p3", "dci-p3"},    {"adobergb", "adobe-rgb"},   {"adobe_rgb", "adobe-rgb"}, {"bt2020", "rec2020"},
+    {"bt.2020", "rec2020"},  {"rec.2020", "rec2020"},     {"rec_2020", "rec2020"},    {"aces-cg", "acescg"},
+};
+
+const char *colour_space_find(const char *name)
 {
-    int i;
+    size_t i;
     for (i = 0; colour_space_ids[i]; i++)
+        if (!strcasecmp(name, colour_space_ids[i]))
+            return colour_space_ids[i];
+    for (i = 0; i < sizeof space_aliases / sizeof space_aliases[0]; i++)
+        if (!strcasecmp(name, space_aliases[i].alias))
+            return space_aliases[i].id;
+    return NULL;
+}
+
+static int space_index(const char *name)
+{
+    const char *id = colour_space_find(name);
+    int i;
+    for (i = 0; id && colour_space_ids[i]; i++)
         if (!strcmp(id, colour_space_ids[i]))
             return i;
     return -1;
@@ -189,14 +213,8 @@ int colour_space_load(const char *dir, const char *id, const colorimetry *cm, co
     mat3 rgb_to_xyz, xyz_to_space, adapt, composite;
     double spd_white[3], space_white[3], unit_rgb[3];
     int which = space_index(id), i, j;
-    if (which < 0) {
-        char valid[128] = "";
-        for (i = 0; colour_space_ids[i]; i++) {
-            strcat(valid, i ? ", " : "");
-            strcat(valid, colour_space_ids[i]);
-        }
-        return cli_error("colour space", "unknown '%s' (expected one of %s)", id, valid);
-    }
+    if (which < 0)
+        return cli_unknown("fresnel", "colour space", id, colour_space_ids);
     memset(cs, 0, sizeof *cs);
     strcpy(cs->id, colour_space_ids[which]);
     if (read_space(dir, csv_names[which], cs))

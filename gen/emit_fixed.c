@@ -178,7 +178,7 @@ static int emit_lut_q15(fx_out *o, const char *prefix, const char *model, const 
     char name[32], id[160];
     double *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
     if (!t)
-        return cli_error("fresnel gen", "out of memory");
+        return cli_oom("fresnel gen");
     snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
     residual = form == LUT_RESIDUAL;
     if (residual) {

@@ -81,7 +81,7 @@ static int emit_lut(FILE *f, const emit_input *in, const char *prefix, const cha
     double *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
     const char *suffix = form == LUT_RESIDUAL ? "_residual" : (form == LUT_CUBIC ? "_cubic" : "");
     if (!t)
-        return cli_error("fresnel gen", "out of memory");
+        return cli_oom("fresnel gen");
     for (i = 0; i < 3 * n; i++)
         if (!(fabs(t[i]) <= FLT_MAX)) {
             char where[1100];

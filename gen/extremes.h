@@ -1,4 +1,4 @@
-/* The extreme and stiff cases of issue 7, shared by `fresnel extremes` (which
+/* The extreme and stiff cases, shared by `fresnel extremes` (which
  * prints what every model returns on them) and tests/test_extremes.c (which
  * asserts the properties). Host only. */
 #ifndef FRESNEL_EXTREMES_H

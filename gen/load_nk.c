@@ -22,11 +22,11 @@
 int csv_error(const csv_reader *r, const char *fmt, ...)
 {
     va_list ap;
-    fprintf(stderr, "%s:%d: ", r->path, r->line);
+    char where[1100];
+    snprintf(where, sizeof where, "%s:%d", r->path, r->line);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    cli_verror(where, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
     return CLI_BAD_INPUT;
 }
 

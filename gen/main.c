@@ -1,4 +1,5 @@
 /* build/fresnel: the project's one command-line program. */
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -33,23 +34,48 @@ static void usage(FILE *out)
             FRESNEL_VERSION);
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(out, "  %-12s %s\n", commands[i].name, commands[i].summary);
-    fprintf(out, "\nExit status: 0 success, 2 bad input or usage, 1 other failure.\n");
+    fprintf(out, "  %-12s %s\n", "version", "print the version (also --version)");
+    fprintf(out, "\nOutput options take '-' for stdout. Exit status: 0 success, 1 a read or\n"
+                 "write failure, 2 bad input or usage, 3 out of memory.\n");
 }
 
 int main(int argc, char **argv)
 {
+    const char *names[sizeof commands / sizeof commands[0] + 2];
+    char where[64];
     size_t i;
+    int status;
     if (argc < 2) {
         usage(stderr);
         return CLI_BAD_INPUT;
     }
+    /* A file size limit (ulimit -f) then fails the write with EFBIG, which
+     * the output code reports and cleans up after, instead of killing the
+     * process with a partial temporary left behind. */
+    signal(SIGXFSZ, SIG_IGN);
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage(stdout);
-        return 0;
+        return cli_finish_stdout("fresnel");
+    }
+    if (!strcmp(argv[1], "--version") || !strcmp(argv[1], "version")) {
+        if (argc > 2)
+            return cli_error("fresnel version", "unexpected argument '%s'", argv[2]);
+        printf("fresnel %s\n", FRESNEL_VERSION);
+        return cli_finish_stdout("fresnel version");
     }
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (!strcmp(argv[1], commands[i].name))
-            return commands[i].run(argc - 1, argv + 1);
-    cli_error("fresnel", "unknown command '%s' (try fresnel --help)", argv[1]);
-    return CLI_BAD_INPUT;
+        if (!strcmp(argv[1], commands[i].name)) {
+            status = commands[i].run(argc - 1, argv + 1);
+            snprintf(where, sizeof where, "fresnel %s", commands[i].name);
+            if (cli_finish_stdout(where) && status == 0)
+                status = CLI_FAILURE;
+            return status;
+        }
+    for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        names[i] = commands[i].name;
+    names[i++] = "version";
+    names[i] = NULL;
+    if (cli_looks_like_option(argv[1]) || !cli_suggest(argv[1], names))
+        return cli_error("fresnel", "unknown command '%s' (try fresnel --help)", argv[1]);
+    return cli_unknown("fresnel", "command", argv[1], names);
 }

@@ -8,9 +8,12 @@
 const char material_options_help[] =
     "  --material ID   material id (fresnel materials lists them), required\n"
     "  --space NAME    srgb (default), display-p3, dci-p3, adobe-rgb, rec2020, acescg\n"
+    "                  (any case; aliases sRGB, rec709, bt709, p3, bt2020, ACEScg)\n"
     "  --sigma S       Gaussian window in nm for Metzgar's eta', kappa' (default 25; 0 = point sampling)\n"
     "  --n1 X          real index of the incident medium (default 1)\n"
     "  --data DIR      data directory (default $FRESNEL_DATA, else the build's data/)\n";
+
+const char *const material_option_names[] = {"--material", "--space", "--sigma", "--n1", "--data", "--help", NULL};
 
 void material_options_init(material_options *o)
 {

@@ -18,6 +18,8 @@ void material_options_init(material_options *o);
  * option. */
 int material_option(const char *where, const char *opt, const char *val, material_options *o);
 extern const char material_options_help[];
+/* The shared options' names, NULL-terminated (with --help). */
+extern const char *const material_option_names[];
 
 /* Load the colour space and derive the material's parameters; 0 or
  * CLI_BAD_INPUT. */

@@ -90,10 +90,14 @@ fail:
 
 int material_lookup(const char *dir, const char *id, material_info *out, const char *where)
 {
+    /* The ids seen are kept to suggest the nearest one for a typo. */
+    enum { MAX_SEEN = 256 };
+    static char seen[MAX_SEEN][sizeof out->id];
+    const char *names[MAX_SEEN + 1], *near;
     char path[1024];
     csv_reader r;
     char *row;
-    int got;
+    int got, count = 0;
     if (open_index(dir, path, sizeof path, &r))
         return CLI_BAD_INPUT;
     while ((got = csv_next_row(&r, &row)) == 1) {
@@ -103,9 +107,17 @@ int material_lookup(const char *dir, const char *id, material_info *out, const c
             csv_close(&r);
             return 0;
         }
+        if (count < MAX_SEEN) {
+            strcpy(seen[count], out->id);
+            names[count] = seen[count];
+            count++;
+        }
     }
     csv_close(&r);
-    if (got == 0)
+    names[count] = NULL;
+    if (got == 0 && (near = cli_suggest(id, names)) != NULL)
+        cli_error(where, "unknown material '%s' (did you mean '%s'?)", id, near);
+    else if (got == 0)
         cli_error(where, "unknown material '%s' (not in %s; `fresnel materials` lists them)", id,
                   path);
     return CLI_BAD_INPUT;

@@ -1,5 +1,5 @@
 /* `fresnel report`: every material x model x number type on accuracy, speed
- * and size (issue 5). One file per part: report_accuracy.c measures,
+ * and size. One file per part: report_accuracy.c measures,
  * report_plots.c draws, cmd_report.c runs and writes report.md. */
 #ifndef FRESNEL_REPORT_H
 #define FRESNEL_REPORT_H
@@ -76,7 +76,7 @@ typedef struct report_hoffman_row {
 extern const report_hoffman_row report_hoffman[REPORT_HOFFMAN];
 /* Index of material id in the run, or -1. */
 int report_material_index(const report_run *r, const char *id);
-/* Issue 8's targets: each with its measured value and a pass/miss mark
+/* The library's targets: each with its measured value and a pass/miss mark
  * (report_targets.c). Needs hoffman_rms filled. */
 void report_targets(report_run *r, FILE *f);
 

@@ -15,14 +15,13 @@ static int begin_file(cli_outfile *o, const char *dir, const char *name)
 {
     char path[1024];
     snprintf(path, sizeof path, "%s/%s", dir, name);
-    return cli_out_open(o, path) ? cli_error(path, "cannot write") : 0;
+    return cli_out_open(o, path);
 }
 
 static int end_file(cli_outfile *o, svg_doc *d)
 {
-    if (svg_end(d) || cli_out_commit(o))
-        return cli_error(o->path, "cannot write");
-    return 0;
+    svg_end(d); /* a write error stays in the stream's error flag, which commit checks */
+    return cli_out_commit(o);
 }
 
 static int write_pareto(report_run *r)
@@ -33,8 +32,8 @@ static int write_pareto(report_run *r)
     svg_axis xa = {0.1, 1000.0, SVG_LOG10, 0.0, "ns per RGB evaluation (this host)", NULL};
     svg_axis ya = {1e-4, 100.0, SVG_LOG10, 0.0, "mean CIEDE2000 over the metals (log)", NULL};
     int n = r->sc.model_count * report_type_count, k, j, front[256], nf = 0, measured = 0;
-    if (begin_file(&o, r->out_dir, "pareto.svg"))
-        return CLI_BAD_INPUT;
+    if ((k = begin_file(&o, r->out_dir, "pareto.svg")))
+        return k;
     svg_begin(&d, o.f, 900, 620, "Fresnel models: error against run time");
     if (svg_panel_begin(&p, &d, 0, 0, 900, 620, &xa, &ya, "Error against run time; Pareto front in black") == 0) {
         for (k = 0; k < n && k < 256; k++) {
@@ -43,8 +42,10 @@ static int write_pareto(report_run *r)
             char label[64];
             if (isnan(r->ns[k]))
                 continue;
-            measured++;
             report_metal_summary(r, m, t, &mean, &worst);
+            if (isnan(mean)) /* no metals in the scene: no error to plot */
+                continue;
+            measured++;
             snprintf(label, sizeof label, "%s %s", r->sc.models[m], report_types[t].name);
             svg_point(&p, r->ns[k], mean, SVG_CIRCLE, 6, svg_palette(m), label, SVG_LABEL_RIGHT);
             for (j = 0; j < n && !dominated; j++) {
@@ -91,7 +92,7 @@ static int write_sigma(report_run *r, const double (*de)[REPORT_SIGMAS])
     svg_axis ya = {1e-3, 30.0, SVG_LOG10, 0.0, "mean CIEDE2000 against the ground truth", NULL};
     int i, k;
     if (begin_file(&o, r->out_dir, "sigma.svg"))
-        return CLI_BAD_INPUT;
+        return CLI_FAILURE;
     svg_begin(&d, o.f, 900, 560, "Exact Fresnel on Gaussian-window eta', kappa'");
     if (svg_panel_begin(&p, &d, 0, 0, 700, 560, &xa, &ya, "Metzgar's window width against error") == 0) {
         svg_legend_begin(&l, &d, 710, 40);
@@ -130,7 +131,7 @@ static int write_curves(report_run *r, int mi)
     int m, a, ch;
     snprintf(name, sizeof name, "curves/%s.svg", rm->p.info.id);
     if (begin_file(&o, r->out_dir, name))
-        return CLI_BAD_INPUT;
+        return CLI_FAILURE;
     snprintf(title, sizeof title, "%s (%s) in %s: ground truth (dashed) and each model (solid)", rm->p.info.name,
              rm->p.info.id, r->sc.space);
     svg_begin(&d, o.f, 960, 40 + row_h * r->sc.model_count, title);

@@ -1,4 +1,4 @@
-/* Issue 8's targets, each with the value this run measured and a pass/miss
+/* The library's targets, each with the value this run measured and a pass/miss
  * mark, plus the LUT ablation that shows which encoding choice bought what.
  * Accuracy comes from the run's own materials (the 14 metals of Hoffman's
  * table must be in the scene), host speed from bench_targets.c, Cortex-M0
@@ -37,7 +37,7 @@ typedef struct lut_variant {
 
 static const lut_variant lut_variants[] = {
     {"16 nodes uniform in c, values on the curve, linear", 16, LUT_UNIFORM, 0, 0},
-    {"16 nodes uniform in sqrt(c), values on the curve, linear (the issue's naive LUT)", 16, LUT_GRAZING, 0, 0},
+    {"16 nodes uniform in sqrt(c), values on the curve, linear (the naive LUT)", 16, LUT_GRAZING, 0, 0},
     {"16 nodes uniform in c, fitted values, linear", 16, LUT_UNIFORM, 1, 0},
     {"16 nodes uniform in sqrt(c), fitted values, linear (lut16)", 16, LUT_GRAZING, 1, 0},
     {"16 nodes uniform in sqrt(c), values on the curve, Catmull-Rom", 16, LUT_GRAZING, 0, 1},
@@ -342,7 +342,7 @@ void report_targets(report_run *r, FILE *f)
 {
     lut_result luts[N_VARIANTS];
     lut_measure(r, luts);
-    fprintf(f, "## Targets (issue 8)\n\nEach target of issue 8 with the value this run measured. Accuracy: "
+    fprintf(f, "## Targets\n\nEach target of the library with the value this run measured. Accuracy: "
                "theta 0-90 deg in 1 deg steps, linear %s, against the clamped spectral ground truth, on the 14 "
                "metals of Hoffman's table.\n\n| target | goal | measured | |\n|---|---|---|---|\n",
             r->sc.space);

@@ -71,6 +71,8 @@ static int warned_before(const char *path)
     return 0;
 }
 
+int spectrum_coverage_warnings = 1;
+
 static int coverage(const char *path, const nk_table *t)
 {
     int last = t->rows - 1;
@@ -81,7 +83,8 @@ static int coverage(const char *path, const nk_table *t)
         return cli_error(where, "the table covers %.10g-%.10g nm, expected it to reach into %g-%g nm",
                          t->wl[0], t->wl[last], SPEC_LO_NM, SPEC_HI_NM);
     }
-    if ((t->wl[0] > SPEC_LO_NM || t->wl[last] < SPEC_HI_NM) && !warned_before(path)) {
+    if ((t->wl[0] > SPEC_LO_NM || t->wl[last] < SPEC_HI_NM) && spectrum_coverage_warnings &&
+        !warned_before(path)) {
         int line = t->wl[0] > SPEC_LO_NM ? 2 : last + 2;
         snprintf(where, sizeof where, "%s:%d", path, line);
         fprintf(stderr, "%s: warning: measured %.10g-%.10g nm, n and k held at the end values over the rest of %g-%g nm\n",

@@ -28,6 +28,7 @@ static const char *const key_names[] = {"materials", "models", "space",       "s
                                         "n1",        "types",  "lut_spacing", "name", NULL};
 
 #define SIGMA_MAX 200.0
+#define SCENE_MAX_ERRORS 50
 #define N1_MIN 1.0
 #define N1_MAX 4.0
 
@@ -74,6 +75,16 @@ static int report(const char *path, int line, const char *fmt, ...)
     free(msg);
     free(where);
     return CLI_BAD_INPUT;
+}
+
+/* " (did you mean 'x'?)" when a name of table is a near miss of s, else "". */
+static const char *hint(const char *const *table, const char *s, char *buf, size_t size)
+{
+    const char *near = cli_suggest(s, table);
+    if (!near)
+        return "";
+    snprintf(buf, size, " (did you mean '%s'?)", near);
+    return buf;
 }
 
 static int table_index(const char *const *table, const char *s)
@@ -214,9 +225,11 @@ static int parse_models(const char *path, int line, char *value, scene *s)
                               "expected lutN, lutN-residual or lutN-cubic with N an integer in %d..%d "
                               "(no leading zeros), got '%s'",
                               SCENE_LUT_MIN, SCENE_LUT_MAX, model);
+            char near[SCENE_NAME_SIZE + 32];
             return report(path, line,
-                          "expected a model (one of %s, lutN, lutN-residual, lutN-cubic), got '%s'",
-                          table_list(scene_model_names, names, sizeof names), model);
+                          "expected a model (one of %s, lutN, lutN-residual, lutN-cubic), got '%s'%s",
+                          table_list(scene_model_names, names, sizeof names), model,
+                          hint(scene_model_names, model, near, sizeof near));
         }
         if (find_in(s->models, s->model_count, model) >= 0)
             return report(path, line, "expected each model once, '%s' is listed twice", model);
@@ -232,9 +245,13 @@ static int parse_types(const char *path, int line, char *value, scene *s)
     char *cursor = value, *type, names[256];
     s->type_count = 0; /* replaces the default */
     while ((type = next_token(&cursor)) != NULL) {
+        char near[SCENE_NAME_SIZE + 32];
+        if (strcmp(type, "fixed") == 0)
+            type = "q15"; /* the older name of the Q15 type */
         if (table_index(scene_type_names, type) < 0)
-            return report(path, line, "expected a number type (one of %s), got '%s'",
-                          table_list(scene_type_names, names, sizeof names), type);
+            return report(path, line, "expected a number type (one of %s), got '%s'%s",
+                          table_list(scene_type_names, names, sizeof names), type,
+                          hint(scene_type_names, type, near, sizeof near));
         if (find_in(s->types, s->type_count, type) >= 0)
             return report(path, line, "expected each type once, '%s' is listed twice", type);
         if (s->type_count == SCENE_MAX_TYPES)
@@ -249,10 +266,12 @@ static int parse_types(const char *path, int line, char *value, scene *s)
 static int parse_choice(const char *path, int line, const char *what,
                         const char *const *table, const char *value, char *dst)
 {
-    char names[256];
+    char names[256], near[SCENE_NAME_SIZE + 32];
+    if (table == colour_space_ids && colour_space_find(value))
+        value = colour_space_find(value); /* any case, common aliases */
     if (table_index(table, value) < 0)
-        return report(path, line, "expected a %s (one of %s), got '%s'", what,
-                      table_list(table, names, sizeof names), value);
+        return report(path, line, "expected a %s (one of %s), got '%s'%s", what,
+                      table_list(table, names, sizeof names), value, hint(table, value, near, sizeof near));
     snprintf(dst, SCENE_NAME_SIZE, "%s", value); /* dst is a SCENE_NAME_SIZE field */
     return 0;
 }
@@ -354,9 +373,11 @@ static int parse_line(const char *path, int line, char *text, scene *s)
     if (*key == '\0')
         return report(path, line, "expected a key before '='");
     k = table_index(key_names, key);
-    if (k < 0)
-        return report(path, line, "expected a key (one of %s), got '%s'",
-                      table_list(key_names, names, sizeof names), key);
+    if (k < 0) {
+        char near[SCENE_NAME_SIZE + 32];
+        return report(path, line, "expected a key (one of %s), got '%s'%s",
+                      table_list(key_names, names, sizeof names), key, hint(key_names, key, near, sizeof near));
+    }
     where = key_line(s, k);
     if (*where != 0)
         return report(path, line, "expected '%s' once, it is already set at line %d", key, *where);
@@ -372,7 +393,7 @@ int scene_load(const char *path, scene *out)
     char *buf = NULL;
     size_t cap = 0;
     ssize_t len;
-    int line = 0, rc = 0, read_errno;
+    int line = 0, rc = 0, read_errno, errors = 0;
     set_defaults(out);
     f = fopen(path, "rb");
     if (f == NULL)
@@ -388,7 +409,9 @@ int scene_load(const char *path, scene *out)
         text = buf;
         if (strlen(text) != (size_t)len) {
             rc = report(path, line, "expected text, found a NUL byte");
-            break;
+            if (++errors == SCENE_MAX_ERRORS)
+                break;
+            continue;
         }
         if (line == 1 && len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
             text += 3;
@@ -398,14 +421,21 @@ int scene_load(const char *path, scene *out)
         text = trim(text);
         if (*text == '\0')
             continue;
-        rc = parse_line(path, line, text, out);
-        if (rc != 0)
-            break;
+        /* Every bad line is reported, each at its line, so one run lists
+         * all there is to fix. */
+        if (parse_line(path, line, text, out) != 0) {
+            rc = CLI_BAD_INPUT;
+            if (++errors == SCENE_MAX_ERRORS) {
+                report(path, line, "stopping after %d errors", SCENE_MAX_ERRORS);
+                break;
+            }
+        }
     }
     free(buf);
     if (rc == 0 && ferror(f)) {
         fclose(f);
-        return report(path, 0, "cannot read: %s", strerror(read_errno ? read_errno : EIO));
+        report(path, 0, "cannot read: %s", strerror(read_errno ? read_errno : EIO));
+        return CLI_FAILURE; /* the file failed, not its content */
     }
     fclose(f);
     if (rc != 0)

@@ -33,11 +33,11 @@ int scene_model_prepare(const char *name, lut_spacing spacing, const spectrum *s
     m->table = malloc(3 * (size_t)n * sizeof *m->table);
     if (!m->table_d || !m->table) {
         scene_model_free(m);
-        return cli_error("scene model", "out of memory");
+        return cli_oom("scene model");
     }
     if (encode_lut(s, g, p, spacing, n, (lut_form)form, m->table_d)) {
         scene_model_free(m);
-        return cli_error("scene model", "out of memory");
+        return cli_oom("scene model");
     }
     for (i = 0; i < 3 * n; i++)
         m->table[i] = (float)m->table_d[i];

@@ -83,6 +83,10 @@ typedef struct spectrum {
 } spectrum;
 void resample(const nk_table *t, spectrum *s);
 /* load + resample of data/<id>.csv; 0 or CLI_BAD_INPUT. */
+/* 1 (the default): spectrum_load warns, once per file, when a table covers
+ * only part of 360-830 nm. `fresnel materials` lists the coverage as
+ * columns and clears it unless --verbose. */
+extern int spectrum_coverage_warnings;
 int spectrum_load(const char *dir, const char *id, spectrum *s);
 
 /* ---- colorimetry.c */
@@ -107,6 +111,9 @@ typedef struct colour_space {
 } colour_space;
 int colour_space_load(const char *dir, const char *id, const colorimetry *cm, colour_space *cs);
 extern const char *const colour_space_ids[]; /* NULL-terminated */
+/* The id a colour-space name stands for, ignoring case and taking common
+ * aliases (sRGB, rec709/bt709, p3, bt2020, ACEScg, ...), or NULL. */
+const char *colour_space_find(const char *name);
 
 /* ---- dominant_wavelength.c: nm[0..2] for R, G, B. */
 void dominant_wavelengths(const colorimetry *cm, const colour_space *cs, double nm[3]);

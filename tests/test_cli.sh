@@ -1,5 +1,5 @@
 #!/bin/sh
-# The `fresnel eval` contract of issue 2: every model, both types, bad input.
+# The `fresnel eval` contract: every model, both types, bad input.
 F="$BUILD/fresnel"
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT

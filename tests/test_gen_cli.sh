@@ -1,5 +1,5 @@
 #!/bin/sh
-# `fresnel gen`, `curve`, `params` contracts (issue 3): the emitted header
+# `fresnel gen`, `curve`, `params` contracts: the emitted header
 # compiles warning-free and holds only what the scene names, output is
 # byte-identical for identical input, manifest errors give file:line, exit 2
 # and leave no file behind.

@@ -272,7 +272,23 @@ static void test_errors(void)
 
     expect_error("scene error: unknown space", "space = srgb-linear\n", 1, "display-p3");
     expect_error("scene error: two spaces", "space = srgb acescg\n", 1, "'srgb acescg'");
-    expect_error("scene error: space is case-sensitive", "space = sRGB\n", 1, "'sRGB'");
+    {
+        /* Colour-space names ignore case and take the common aliases. */
+        static const char *const spellings[][2] = {{"sRGB", "srgb"},     {"rec709", "srgb"},   {"BT709", "srgb"},
+                                                   {"p3", "display-p3"}, {"bt2020", "rec2020"}, {"ACEScg", "acescg"}};
+        size_t k;
+        for (k = 0; k < sizeof spellings / sizeof spellings[0]; k++) {
+            char text[128], name[96];
+            scene s;
+            int rc;
+            snprintf(text, sizeof text, "materials = au\nmodels = exact\nspace = %s\n", spellings[k][0]);
+            rc = load_capturing(write_manifest_len(text, strlen(text)), &s);
+            snprintf(name, sizeof name, "scene: space = %s is %s", spellings[k][0], spellings[k][1]);
+            CHECK(name, rc == 0 && !strcmp(s.space, spellings[k][1]), "rc %d, space '%s', '%s'", rc,
+                  rc == 0 ? s.space : "", last_message);
+        }
+    }
+    expect_error("scene error: a near-miss space gets a suggestion", "space = srbg\n", 1, "did you mean 'srgb'?");
     expect_error("scene error: unknown model", "materials = gold\nmodels = f82 fresnel\n", 2,
                  "'fresnel'");
     expect_error("scene error: lut too small", "models = lut3\n", 1, "4..256");
@@ -338,7 +354,7 @@ static void test_unreadable(void)
           "rc %d, got '%s'", rc, last_message);
     rc = load_capturing(tmp_dir, &s);
     snprintf(prefix, sizeof prefix, "%s: cannot read: ", tmp_dir);
-    CHECK("scene error: directory", rc == CLI_BAD_INPUT &&
+    CHECK("scene error: directory (a read error, exit 1)", rc == CLI_FAILURE &&
                                         strncmp(last_message, prefix, strlen(prefix)) == 0,
           "rc %d, got '%s'", rc, last_message);
 }

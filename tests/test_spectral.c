@@ -572,10 +572,10 @@ static void test_commands(void)
               "rc %d err '%s'", rc, err);
     }
     {
-        const char *argv[] = {"materials", "--verbose", NULL};
+        const char *argv[] = {"materials", "--verbos", NULL};
         rc = run_command(cmd_materials, 2, argv, out, sizeof out, err, sizeof err);
         CHECK("fresnel materials rejects an unknown option",
-              rc == CLI_BAD_INPUT && strstr(err, "--verbose"), "rc %d err '%s'", rc, err);
+              rc == CLI_BAD_INPUT && strstr(err, "'--verbos' (did you mean '--verbose'?)"), "rc %d err '%s'", rc, err);
     }
     {
         const char *argv[] = {"materials", "--data", scratch_dir, NULL};
