@@ -28,7 +28,7 @@ int cmd_curve(int argc, char **argv)
     int samples = 91, n_models = 0, i, r, status = 0;
     lut_spacing spacing = LUT_GRAZING;
     material_options_init(&o);
-    for (i = 1; i < argc; i++) {
+    for (i = 1; i < argc; i += 2) { /* option, value */
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fresnel curve --material ID [--space NAME] [--sigma S] [--samples N]\n"
                    "                     [--models \"NAME ...\"] [--lut-spacing grazing|uniform] [--n1 X] [--data DIR]\n\n"
@@ -60,7 +60,6 @@ int cmd_curve(int argc, char **argv)
             } else
                 return cli_error(WHERE, "unknown option '%s' (see fresnel curve --help)", argv[i]);
         }
-        i++;
     }
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s)) || !(names = malloc(strlen(model_list) + 1))) {
         status = cli_error(WHERE, "out of memory");

@@ -21,7 +21,7 @@ int cmd_params(int argc, char **argv)
     material_params p;
     int i, r, status = 0;
     material_options_init(&o);
-    for (i = 1; i < argc; i++) {
+    for (i = 1; i < argc; i += 2) { /* option, value */
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fresnel params --material ID [--space NAME] [--sigma S] [--n1 X] [--data DIR]\n\n"
                    "Prints, as CSV parameter,r,g,b, every parameter the generator derives for one\n"
@@ -42,7 +42,6 @@ int cmd_params(int argc, char **argv)
             return r;
         if (r == 0)
             return cli_error(WHERE, "unknown option '%s' (see fresnel params --help)", argv[i]);
-        i++;
     }
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
         status = cli_error(WHERE, "out of memory");

@@ -4,6 +4,7 @@
 
 #include "cli.h"
 #include "fresnel.h"
+#include "spectral.h"
 
 struct command {
     const char *name;
@@ -39,6 +40,7 @@ static void usage(FILE *out)
 int main(int argc, char **argv)
 {
     size_t i;
+    data_dir_program(argv[0]);
     if (argc < 2) {
         usage(stderr);
         return CLI_BAD_INPUT;
