@@ -46,10 +46,12 @@ static const char *installed_dir(void)
     if (!(slash = strrchr(exe, '/')))
         return NULL;
     *slash = '\0';
-    if (strlen(exe) + sizeof INSTALLED_DATA > sizeof installed)
+    n = snprintf(installed, sizeof installed, "%s%s", exe, INSTALLED_DATA);
+    if (n < 0 || (size_t)n >= sizeof installed)
         return NULL;
-    sprintf(installed, "%s" INSTALLED_DATA, exe);
-    sprintf(probe, "%s/materials.csv", installed);
+    n = snprintf(probe, sizeof probe, "%s/materials.csv", installed);
+    if (n < 0 || (size_t)n >= sizeof probe)
+        return NULL;
     return stat(probe, &st) == 0 && S_ISREG(st.st_mode) ? installed : NULL;
 }
 

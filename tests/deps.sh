@@ -15,14 +15,17 @@
 #   DEPS_DRY_RUN=1 print the apt-get commands instead of running them
 #
 # To add a tool: one line below, "GROUP KIND PROBE PACKAGE". KIND is cmd (a
-# command on PATH), file or dir (a path that must exist). GROUP cross rows
-# are also what `make cross-deps` checks.
+# command on PATH), file or dir (a path that must exist), or link
+# (COMPILER:FLAGS links an empty program: clang's sanitizer runtime is only
+# a recommended package of clang, and `make CC=clang test` needs it). GROUP
+# cross rows are also what `make cross-deps` checks.
 table='
 all   cmd  make                     make
 all   cmd  gcc                      gcc
 all   cmd  clang                    clang
 all   cmd  g++                      g++
 all   cmd  clang++                  clang
+all   link clang:-fsanitize=address,undefined libclang-rt-dev
 all   cmd  pkg-config               pkg-config
 all   cmd  nm                       binutils
 all   cmd  xmllint                  libxml2-utils
@@ -51,6 +54,8 @@ root=${DEPS_ROOT-}
 uid=${DEPS_UID-$(id -u)}
 
 missing=""
+tmp=$(mktemp) || exit 1
+trap 'rm -f "$tmp" "$tmp.c"' EXIT
 # `all` covers every row; `cross` only the cross rows
 rows=$(printf '%s\n' "$table" | awk -v g="$group" 'NF == 4 && (g == "all" || $1 == g)')
 set -f # the probes are literal names, never globs
@@ -63,6 +68,12 @@ for row in $(printf '%s\n' "$rows" | awk '{ print $2 "|" $3 "|" $4 }'); do
     cmd) (PATH=$probe_path command -v "$probe") >/dev/null 2>&1 && continue ;;
     file) [ -f "$root$probe" ] && continue ;;
     dir) [ -d "$root$probe" ] && continue ;;
+    link)
+        printf 'int main(void) { return 0; }\n' >"$tmp.c"
+        # the compiler as the cmd probes find it; its linker from the real PATH
+        cc=$(PATH=$probe_path command -v "${probe%%:*}") &&
+            "$cc" ${probe#*:} "$tmp.c" -o "$tmp" >/dev/null 2>&1 && continue
+        ;;
     esac
     case " $missing " in
     *" $pkg "*) ;;
