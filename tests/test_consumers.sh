@@ -118,7 +118,7 @@ cmake_route() { # name, cmake -D arguments...
     shift
     rm -rf "$t/cm"
     if cmake -S tests/consumer/cmake -B "$t/cm" -DCMAKE_C_FLAGS="$W" "$@" >"$t/cm.log" 2>&1 &&
-        cmake --build "$t/cm" >>"$t/cm.log" 2>&1 && "$t/cm/consumer" >"$t/o3" && cmp -s "$t/o1" "$t/o3"; then
+        env -u MAKEFLAGS -u MFLAGS cmake --build "$t/cm" >>"$t/cm.log" 2>&1 && "$t/cm/consumer" >"$t/o3" && cmp -s "$t/o1" "$t/o3"; then
         if grep -qi 'warning' "$t/cm.log"; then
             echo "FAIL CMake $name: warnings: $(grep -i -m3 warning "$t/cm.log")"
         else
