@@ -1,7 +1,11 @@
 # Fresnel reflectance library: runtime (src/, include/), host tools (gen/), tests.
 #   make          build the library and build/fresnel, run the main job
-#   make test     unit and error-bound tests, then again under ASan+UBSan
-#   make install  PREFIX=/usr/local DESTDIR=   headers, libfresnel.a, fresnel.pc
+#   make test     installs missing tools (tests/deps.sh), unit and error-bound
+#                 tests, again under ASan+UBSan, and again built by the other
+#                 compiler (clang when CC is gcc, else gcc)
+#   make install  PREFIX=/usr/local DESTDIR=   headers, libfresnel.a, fresnel.pc,
+#                 CMake package, bin/fresnel, share/fresnel/ (ports/install.sh)
+#   make uninstall PREFIX=... DESTDIR=...      removes what install put there
 
 CC      ?= cc
 AR      ?= ar
@@ -31,7 +35,7 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o)
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all main-job test test-bins install clean report bench
+.PHONY: all main-job test test-bins install uninstall deps clean report bench
 .DELETE_ON_ERROR:
 
 all: $(BUILD)/libfresnel.a $(BUILD)/fresnel
@@ -70,13 +74,22 @@ $(BUILD)/tests/%: tests/%.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 
 test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example
 
-# The second pass rebuilds everything with sanitizers in build/asan; the last
-# line printed is "N passed, N failed".
-test:
+# Every tool a test needs, from the one list in tests/deps.sh: installed with
+# apt-get when run as root, else the exact apt-get line and a stop.
+deps:
+	@sh tests/deps.sh all
+
+# The second pass rebuilds everything with sanitizers in build/asan; the third
+# with the other compiler (-Werror, as always) in build/gcc or build/clang,
+# whose tests run with CC set to it. The last line printed is
+# "N passed, N failed".
+OTHER_CC := $(if $(findstring clang,$(shell $(CC) --version 2>/dev/null)),gcc,clang)
+test: deps
 	@$(MAKE) --no-print-directory test-bins
 	@$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1 -g" \
 	    SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" test-bins
-	@sh tests/run.sh build build/asan
+	@$(MAKE) --no-print-directory BUILD=build/$(OTHER_CC) CC=$(OTHER_CC) test-bins
+	@sh tests/run.sh build build/asan build/$(OTHER_CC)@$(OTHER_CC)
 
 # Benchmarks, never tests: `make report` writes build/report/ (accuracy against
 # the spectral ground truth, time and instructions per evaluation, plots),
@@ -97,13 +110,11 @@ report: $(BUILD)/fresnel
 bench: $(BUILD)/fresnel
 	$(BUILD)/fresnel bench
 
-install: $(BUILD)/libfresnel.a
-	install -d $(DESTDIR)$(PREFIX)/include $(DESTDIR)$(PREFIX)/lib/pkgconfig
-	install -m 644 include/*.h $(DESTDIR)$(PREFIX)/include/
-	install -m 644 $(BUILD)/libfresnel.a $(DESTDIR)$(PREFIX)/lib/
-	v=`sed -n 's/^#define FRESNEL_VERSION "\(.*\)"/\1/p' include/fresnel.h`; \
-	printf 'prefix=%s\nincludedir=$${prefix}/include\nlibdir=$${prefix}/lib\n\nName: fresnel\nDescription: Fresnel reflectance for small devices\nVersion: %s\nCflags: -I$${includedir}\nLibs: -L$${libdir} -lfresnel -lm\n' \
-	    '$(PREFIX)' "$$v" > $(DESTDIR)$(PREFIX)/lib/pkgconfig/fresnel.pc
+install: $(BUILD)/libfresnel.a $(BUILD)/fresnel
+	@sh ports/install.sh install '$(DESTDIR)' '$(PREFIX)' '$(BUILD)'
+
+uninstall:
+	@sh ports/install.sh uninstall '$(DESTDIR)' '$(PREFIX)'
 
 clean:
 	rm -rf $(BUILD)
@@ -201,22 +212,10 @@ $(BUILD)/tests/test_fixed_bounds: tests/test_fixed_bounds.c $(FIXED_RC_OBJ) $(GE
 #   make cross-test    what tests/test_cross.sh runs (PASS/FAIL lines)
 #   make cross-count   instructions per call (qemu -singlestep traces)
 #   make size          .text/.rodata per model and type, Cortex-M0/M4F, RV32IMC
-# cross-deps installs the Debian packages that are missing (needs apt-get).
-CROSS_PKGS := gcc-arm-none-eabi binutils-arm-none-eabi libnewlib-arm-none-eabi \
-              gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf qemu-system-arm qemu-user-static
+# cross-deps installs the missing Debian packages of tests/deps.sh's cross rows.
 .PHONY: cross-deps cross-data cross-test cross-count size
 cross-deps:
-	@missing=""; \
-	command -v arm-none-eabi-gcc >/dev/null || missing="$$missing gcc-arm-none-eabi binutils-arm-none-eabi"; \
-	[ -d /usr/lib/arm-none-eabi/newlib ] || missing="$$missing libnewlib-arm-none-eabi"; \
-	command -v riscv64-unknown-elf-gcc >/dev/null || missing="$$missing gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf"; \
-	command -v qemu-system-arm >/dev/null || missing="$$missing qemu-system-arm"; \
-	command -v qemu-riscv32 >/dev/null || command -v qemu-riscv32-static >/dev/null || missing="$$missing qemu-user-static"; \
-	if [ -n "$$missing" ]; then \
-	    echo "cross-deps: installing$$missing"; \
-	    { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends $$missing >/dev/null; } || \
-	        { echo "cross-deps: could not install$$missing (need: $(CROSS_PKGS))"; exit 1; }; \
-	fi
+	@sh tests/deps.sh cross
 
 $(BUILD)/cross/conform_data.c: $(BUILD)/tests/cross/conform_gen
 	@mkdir -p $(@D)

@@ -5,6 +5,7 @@
 
 #include "cli.h"
 #include "fresnel.h"
+#include "spectral.h"
 
 struct command {
     const char *name;
@@ -45,6 +46,7 @@ int main(int argc, char **argv)
     char where[64];
     size_t i;
     int status;
+    data_dir_program(argv[0]);
     if (argc < 2) {
         usage(stderr);
         return CLI_BAD_INPUT;

@@ -25,8 +25,12 @@
 #define SPEC_N 4701 /* (830 - 360) / 0.1 + 1 */
 #define CMF_N 471   /* 360..830 at 1 nm */
 
-/* Where data/ is: --data DIR, else $FRESNEL_DATA, else the build's copy. */
+/* Where data/ is: --data DIR, else $FRESNEL_DATA, else the installed pack
+ * next to the program (BINDIR/../share/fresnel/data), else the build's copy
+ * (data_dir.c). data_dir_program records argv[0], the fallback where
+ * /proc/self/exe is missing. */
 const char *data_dir(const char *override);
+void data_dir_program(const char *argv0);
 
 /* ---- load_nk.c: a measured table as read (ascending unique wavelengths,
  * finite numbers, n > 0, k >= 0, at least two rows, header line). */

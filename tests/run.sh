@@ -22,7 +22,12 @@ tally() {
     fi
 }
 
-for dir in "$@"; do
+# An argument DIR@COMPILER runs DIR's scripts with CC=COMPILER (the
+# other-compiler pass of make test); a plain DIR keeps $CC.
+for arg in "$@"; do
+    dir=${arg%@*}
+    cc=${arg#"$dir"}
+    cc=${cc#@}
     flavour=$(basename "$dir")
     for t in "$dir"/tests/test_*; do
         [ -x "$t" ] || continue
@@ -31,7 +36,7 @@ for dir in "$@"; do
     done
     for s in tests/test_*.sh; do
         [ -f "$s" ] || continue
-        BUILD="$dir" sh "$s" >"$log" 2>&1
+        BUILD="$dir" CC="${cc:-${CC:-cc}}" sh "$s" >"$log" 2>&1
         tally "$flavour" "$s" $?
     done
 done

@@ -24,6 +24,23 @@ for cc in gcc clang; do
             echo "FAIL $cc: $name failed without naming the cause: $(head -3 "$t/err")"
         fi
     }
+    # binary16 follows the compiler: FRESNEL_HAS_F16 is 1 exactly where it
+    # accepts _Float16 (gcc on x86-64), 0 where not (clang 14 on x86-64),
+    # and then fresnel_f16.h and src/*_f16.c still build, to nothing
+    printf '__extension__ typedef _Float16 h;\nh half(h x) { return x; }\n' >"$t/probe.c"
+    has=0
+    $cc $W -c "$t/probe.c" -o "$t/o.o" 2>/dev/null && has=1
+    printf '#include "fresnel_f16.h"\ntypedef char ok[FRESNEL_HAS_F16 == %d ? 1 : -1];\nint unused;\n' $has >"$t/has.c"
+    syms=""
+    for f in src/*_f16.c; do
+        $cc $W -c "$f" -o "$t/s.o" 2>>"$t/err16" || syms="$syms $f:error"
+        [ $has -eq 1 ] || syms="$syms$(nm --defined-only "$t/s.o" 2>/dev/null | awk '$2 ~ /[TtDdRrBb]/ {printf " %s", $3}')"
+    done
+    if $cc $W -c "$t/has.c" -o "$t/o.o" 2>"$t/err" && [ -z "$syms" ]; then
+        echo "PASS $cc: FRESNEL_HAS_F16 = $has, as the compiler's _Float16; src/*_f16.c build warning-free$([ $has -eq 1 ] || echo ', to empty objects')"
+    else
+        echo "FAIL $cc: FRESNEL_HAS_F16 is not $has (the compiler's _Float16) or src/*_f16.c:$syms $(head -3 "$t/err" "$t/err16")"
+    fi
     must_fail "misspelled flag FRESNEL_CFG_NO_FLOT" 'FRESNEL_CFG_NO_FLOT' "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOT"
     must_fail "unknown flag bit 0x100" 'fresnel_config_has_unknown_flags_' "-DFRESNEL_CONFIG=0x100"
     must_fail "stb-style FRESNEL_NO_FLOAT" 'configure with -DFRESNEL_CONFIG' "-DFRESNEL_NO_FLOAT"

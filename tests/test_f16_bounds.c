@@ -11,9 +11,9 @@
 
 #include "fresnel_f16.h"
 #include "harness.h"
-#include "worst.h"
 
 #if FRESNEL_HAS_F16
+#include "worst.h"
 #include "f16_internal.h"
 #include "fixed_materials.h"
 #include "models.h"
