@@ -121,10 +121,10 @@ clean:
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
 
-# ---- GLSL ports and OSMesa (issue 6) ----
+# ---- GLSL ports and OSMesa ----
 include ports/glsl/glsl.mk
 
-# ---- fuzzing (issue 7) ----
+# ---- fuzzing ----
 # `make fuzz` runs each libFuzzer target tests/fuzz/fuzz_*.c for FUZZ_SECONDS
 # under ASan+UBSan, starting from the committed seed corpus
 # tests/fuzz/corpus/<target>/; inputs it finds go to $(BUILD)/fuzz/corpus/<target>/,
@@ -181,7 +181,7 @@ fuzz: fuzz-bins
 	    [ $$rc -eq 0 ] || { echo "$$t: finding, see $(BUILD)/fuzz/$$t.log and $(BUILD)/fuzz/artifacts/$$t/"; exit 1; }; \
 	done
 
-# ---- fixed point, fp16 and cross targets (issue 4) ----
+# ---- fixed point, fp16 and cross targets ----
 # Everything below belongs to the fixed-point / binary16 runtime and its
 # cross builds (include/fresnel_fixed.h, include/fresnel_f16.h, ports/).
 

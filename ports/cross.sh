@@ -1,7 +1,7 @@
 #!/bin/sh
 # Cross builds of the fixed-point (and binary16, binary32) runtime for the
 # targets of ports/, their runs under qemu, instruction counts and sizes.
-# Called by the Makefile section of issue 4 (make cross, cross-conform,
+# Called by the Makefile's cross section (make cross, cross-conform,
 # cross-count, size); BUILD is the build directory, and $BUILD/cross/conform_data.c
 # (the material set prepared on the host) must exist.
 #

@@ -49,7 +49,7 @@
 #define LUT_W (3 * LUT_N)
 #define LUT_VARIANTS 4 /* uniform in sqrt(c), in c, and their residual forms */
 
-#define HIGHP_BOUND 1e-5 /* issue 6: highp against the C float runtime */
+#define HIGHP_BOUND 1e-5 /* highp against the C float runtime */
 
 /* ------------------------------------------------------------ fp16 */
 
@@ -153,7 +153,7 @@ struct mcase {
     int lut_first;      /* first node of the strip (LUT_N: the green channel) */
     int params;         /* PAR_*: what setup_row derives */
     void (*eval)(const struct row *r, float c, float out[3]);
-    double mp_bound;    /* mediump bound (issue 6: documented per model) */
+    double mp_bound;    /* mediump bound (documented per model) */
 };
 
 static void set3(float d[3], float a, float b, float c)

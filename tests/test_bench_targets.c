@@ -2,7 +2,7 @@
  * --targets` and of the report's targets table: on a tiny untimed workload
  * (runs = 0), the documented rows in their order, and the errors it
  * measures for this runtime within the documented bounds. No timing
- * assertions: speeds are benchmarks (issue 8), never tests. */
+ * assertions: speeds are benchmarks, never tests. */
 #include <math.h>
 #include <string.h>
 

@@ -1,5 +1,5 @@
 #!/bin/sh
-# The fixed-point runtime on the Arm and RISC-V ISAs (issue 4): `make
+# The fixed-point runtime on the Arm and RISC-V ISAs: `make
 # cross-test` builds the conformance program for a Cortex-M0, a Cortex-M4F
 # and an RV32IMC, runs it under qemu and compares every result with the
 # host's bit for bit, and checks the symbols of the fixed-point-only

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Replays the committed fuzz corpus (issue 7) without libFuzzer: each target
+# Replays the committed fuzz corpus without libFuzzer: each target
 # tests/fuzz/fuzz_*.c is linked with tests/fuzz/replay_main.c against the
 # objects `make test` built in $BUILD (so the asan pass replays under
 # ASan+UBSan) and fed every file of tests/fuzz/corpus/<target>/. The oracle

@@ -1,4 +1,4 @@
-/* The generator's derived parameters and LUT encoding (issue 3, steps 6-7),
+/* The generator's derived parameters and LUT encoding,
  * checked against the ground truth they come from. */
 #include <math.h>
 #include <stdio.h>

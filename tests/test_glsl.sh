@@ -1,5 +1,5 @@
 #!/bin/sh
-# The GLSL port in a real GL pipeline (issue 6): builds tests/glsl_test.c
+# The GLSL port in a real GL pipeline: builds tests/glsl_test.c
 # against OSMesa and $BUILD/libfresnel.a into $BUILD/glsl/ and runs it. Its
 # own link line (pkg-config osmesa) is why it is not a tests/test_*.c.
 # A missing OSMesa is a failure, not a skip: .ci/run installs it.

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Hostile data for the generator (issue 7): `fresnel gen --data DIR` on a
+# Hostile data for the generator: `fresnel gen --data DIR` on a
 # copy of data/ with one bad n,k table added to materials.csv. Every error
 # must name file:line (a missing file has no line: it names the file), exit
 # with status 2 and leave no output or temp file; a table that only partly
@@ -11,8 +11,8 @@ F="$BUILD/fresnel"
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 cp -r data "$t/data" || exit 1
-echo "hostile,Hostile table,issue 7 test,metal" >>"$t/data/materials.csv"
-echo "ghost,Listed but absent,issue 7 test,metal" >>"$t/data/materials.csv"
+echo "hostile,Hostile table,hostile data test,metal" >>"$t/data/materials.csv"
+echo "ghost,Listed but absent,hostile data test,metal" >>"$t/data/materials.csv"
 printf 'materials = hostile\nmodels = schlick f82\n' >"$t/hostile.scene"
 H='wavelength_nm,n,k'
 csv="$t/data/hostile.csv"

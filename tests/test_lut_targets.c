@@ -1,4 +1,4 @@
-/* Issue 8's accuracy targets for the LUTs, through the Q1.15 runtime as
+/* The LUTs' accuracy targets, through the Q1.15 runtime as
  * firmware runs them: on each of the 14 metals of Hoffman's table (linear
  * sRGB, D65, theta 0..90 in 1 degree steps, CIEDE2000 against the clamped
  * spectral ground truth), 16 nodes per channel (96 bytes per material)

@@ -1,4 +1,4 @@
-/* WHERE PRECISION IS LOST, AND WHY NOT HERE (issue 7)
+/* WHERE PRECISION IS LOST, AND WHY NOT HERE
  *
  * The textbook forms of the Fresnel equations are written for real numbers.
  * Evaluated in binary32 (ulp(1) = 1.2e-7) some of them subtract nearly equal

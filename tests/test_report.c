@@ -1,4 +1,4 @@
-/* The report's measurements are self-consistent (issue 5): the ground truth
+/* The report's measurements are self-consistent: the ground truth
  * against itself is 0 dE, every model's error is finite and >= 0, a model
  * that reproduces the ground truth scores ~0, and the f32 runtime agrees with
  * its own double reference within the documented bounds. */

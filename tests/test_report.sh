@@ -1,5 +1,5 @@
 #!/bin/sh
-# `fresnel report` runs on a tiny scene and writes every part (issue 5);
+# `fresnel report` runs on a tiny scene and writes every part;
 # every dE number in the summary is finite and >= 0. Timing and instruction
 # counts are benchmarks (make report), not tests.
 F="$BUILD/fresnel"

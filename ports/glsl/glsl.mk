@@ -1,4 +1,4 @@
-# GLSL port (issue 6), included at the end of the Makefile.
+# GLSL port, included at the end of the Makefile.
 #   make gallery    spheres per metal and model through OSMesa: build/gallery/index.html
 # The port's test is tests/test_glsl.sh (run by make test; it builds its own
 # binary because it links OSMesa).
