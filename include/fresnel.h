@@ -47,8 +47,13 @@
  *   No global state, no allocation, no stdio, no errno: every function is
  *   reentrant. <math.h> is used: sqrtf everywhere, expf and log1pf
  *   (generalized Schlick with p != 5, LSK compensation), fmaf only where the compiler
- *   says it is fast (FP_FAST_FMAF). Build without -ffast-math: the exact
- *   forms rely on IEEE rounding.
+ *   says it is fast (FP_FAST_FMAF).
+ *   Build src/ without -ffast-math, -ffinite-math-only, -fassociative-math
+ *   and -Ofast: the NaN policy needs NaN comparisons, and the exact forms
+ *   (critical angles) need IEEE rounding. src/internal.h stops the build
+ *   with #error where the compiler says it is on (__FAST_MATH__,
+ *   __FINITE_MATH_ONLY__); a vendoring user with such a global flag compiles
+ *   src/\*.c with -fno-fast-math (gcc, clang) or without it.
  *
  * REFERENCES
  *   [Sch94]  C. Schlick, An inexpensive BRDF model for physically-based rendering, 1994.
@@ -71,7 +76,7 @@ extern "C" {
 /* Domain limits for material parameters (see CONVENTIONS). Beyond these the
  * binary32 formulas would overflow or lose all meaning; no measured material
  * comes near them. */
-#define FRESNEL_ETA_MIN   1e-3f
+#define FRESNEL_ETA_MIN   0.0009765625f /* 2^-10, as binary16 and Q15 */
 #define FRESNEL_ETA_MAX   1e5f
 #define FRESNEL_KAPPA_MAX 1e5f
 #define FRESNEL_KAPPA_TINY 1e-18f /* kappa below this is taken as 0 */
@@ -79,6 +84,9 @@ extern "C" {
 #define FRESNEL_P_MAX     1e3f
 #define FRESNEL_ALPHA_MAX 1e3f    /* LSK compensation exponent, domain [0, max] */
 #define FRESNEL_A_MAX     1e6f    /* LSK compensation weight, domain [0, max] */
+/* Most nodes a binary32 LUT uses (lut.c): n - 1 and every position stay
+ * exact binary32 integers; the Q15 LUTs have the same limit. */
+#define FRESNEL_LUT_N_MAX 32768
 /* Gulbrandsen's inverse needs r < 1; r is clamped to this first. */
 #define FRESNEL_GULBRANDSEN_R_MAX 0.9999f
 
@@ -341,7 +349,12 @@ float fresnel_dielectric(float eta, float c);
  *   misses.
  * Results are clamped to [0, 1]; table values are trusted (generated).
  * Error: the table's own (see `fresnel curve`, the report) plus <= 3e-7
- * rounding. Cost: 6-10 flops (+ sqrtf for fresnel_lut), no division. */
+ * rounding. Cost: 6-10 flops (+ sqrtf for fresnel_lut), no division.
+ * n, every LUT function here: supported 2 <= n <= FRESNEL_LUT_N_MAX; no n
+ * reads outside table[0 .. n-1] (per channel for RGB). n < 1 is an empty
+ * table: it contributes 0 (plain forms give 0, residual forms
+ * fresnel_schlick(f0, c)); n = 1 is the constant table[0]; n above
+ * FRESNEL_LUT_N_MAX uses the first FRESNEL_LUT_N_MAX nodes as the table. */
 float fresnel_lut(const float *table, int n, float c);
 float fresnel_lut_linear(const float *table, int n, float c);
 float fresnel_lut_residual(float f0, const float *table, int n, float c);

@@ -56,11 +56,13 @@
 
 #include "fresnel_config.h"
 
-#define FRESNEL_F16_ETA_MIN 0.0009765625f /* 2^-10, as fresnel.h's 1e-3 */
+#define FRESNEL_F16_ETA_MIN 0.0009765625f /* 2^-10, as fresnel.h */
 #define FRESNEL_F16_ETA_MAX 16.0f
 #define FRESNEL_F16_KAPPA_MAX 16.0f
 #define FRESNEL_F16_P_MIN 0.0009765625f
 #define FRESNEL_F16_P_MAX 64.0f
+/* Most nodes a binary16 LUT uses: n - 1 <= 2048 is an exact half. */
+#define FRESNEL_F16_LUT_N_MAX 2049
 
 /* Measured error bounds (see ERROR BOUNDS); measured maxima in brackets,
  * from `build/tests/test_f16_bounds`. Most models lose 2-8 half-ulps: the
@@ -124,7 +126,11 @@ fresnel_f16 fresnel_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f1
 fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);
 /* Lookup tables as fresnel_lut (nodes uniform in sqrt(c), the position
  * from the half root of c, as the GLSL port's fresnel_lut_pos) and
- * fresnel_lut_linear (uniform in c), plain and residual, binary16 nodes. */
+ * fresnel_lut_linear (uniform in c), plain and residual, binary16 nodes.
+ * n as fresnel.h's LUTs, with FRESNEL_F16_LUT_N_MAX: no n reads outside
+ * table[0 .. n-1]; n < 1 contributes 0, n = 1 is table[0], larger n than
+ * the maximum use its first FRESNEL_F16_LUT_N_MAX nodes. Above 257 nodes
+ * the half position keeps fewer than 3 fraction bits. */
 fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);
