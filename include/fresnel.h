@@ -103,6 +103,7 @@ extern "C" {
 #define FRESNEL_BOUND_LSK_COMP         5e-7f
 #define FRESNEL_BOUND_F82              5e-7f
 #define FRESNEL_BOUND_GULBRANDSEN      4e-7f
+#define FRESNEL_BOUND_GULBRANDSEN_G    4e-7f /* g of fresnel_gulbrandsen_rg */
 #define FRESNEL_BOUND_APPROX_CONDUCTOR 3e-7f
 #define FRESNEL_BOUND_COOK_TORRANCE    6e-7f
 #define FRESNEL_BOUND_CONDUCTOR        4e-7f
