@@ -37,7 +37,12 @@
  *   measured by tests/test_float_bounds.c over eta in [0.01, 100], kappa in
  *   {0} u [1e-3, 1000], incident index n1 in {1, 1.33, 1.5, 2.42} and a dense
  *   set of c including 0, 1 and points within 1e-6 of each
- *   (`make test`; the measured maxima are printed by `build/tests/test_float_bounds`).
+ *   (`make test`; the measured maxima are printed by `build/tests/test_float_bounds`);
+ *   they hold there. fresnel_lsk_comp's and fresnel_gulbrandsen_rg's are
+ *   measured over the whole eta, kappa domain as well (random points, the
+ *   same test); the rest of the domain (eta in [2^-10, 0.01) or (100, 1e5],
+ *   kappa above 1000) is checked for range only (tests/test_extremes.c,
+ *   tests/fuzz/fuzz_float_models.c).
  *   How far each MODEL is from the exact Fresnel equations is a different
  *   question, answered by `build/fresnel accuracy` (see README).
  *   Cost counts binary32 operations: "flop" = add, sub or mul; div, sqrt and
