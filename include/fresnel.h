@@ -105,7 +105,7 @@ extern "C" {
 #define FRESNEL_BOUND_F0               3e-7f /* fresnel_f0_from_ior */
 #define FRESNEL_BOUND_F0_IN_MEDIUM     5e-7f
 #define FRESNEL_BOUND_LSK              5e-7f
-#define FRESNEL_BOUND_LSK_COMP         7e-7f
+#define FRESNEL_BOUND_LSK_COMP         6e-7f
 #define FRESNEL_BOUND_F82              5e-7f
 #define FRESNEL_BOUND_GULBRANDSEN      4e-7f
 #define FRESNEL_BOUND_GULBRANDSEN_G    4e-7f /* g of fresnel_gulbrandsen_rg */
