@@ -280,7 +280,7 @@ static fresnel_f16 rnd_half(unsigned long long *st, double lo, double hi, long i
  * eta in [FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX], kappa 0 or in
  * [1e-3, FRESNEL_F16_KAPPA_MAX], F0, r, g in [0, 1], LSK a in [0, 64],
  * alpha in [1/1024, 64], c a random half in [0, 1] or an end; 1e6
- * deterministic points per function. The maxima are FRESNEL_F16_DOMAIN_*;
+ * deterministic points per function, and the worst point fuzzing found. The maxima are FRESNEL_F16_DOMAIN_*;
  * the exact forms and Cook-Torrance are measured for conductors
  * (kappa >= 1e-3), away from any critical angle. */
 static void check_domain(void)
@@ -310,6 +310,11 @@ static void check_domain(void)
         char what[120];
         if (i % 11 == 0)
             c = (fresnel_f16)(i & 16 ? 0.0f : 1.0f), cd = (double)c;
+        if (i == 0) { /* the worst point `make fuzz` found for LSK (alpha 0: no exponent) */
+            c = (fresnel_f16)0x1.e3cp-6f, e = (fresnel_f16)0x1.0a4p+0f, k = (fresnel_f16)0x1.cfp-4f;
+            a = (fresnel_f16)0x1.47cp-5f, al = (fresnel_f16)0.0f;
+            cd = (double)c, ed = (double)e, kd = (double)k;
+        }
         got[D_SCHLICK] = (double)fresnel_schlick_f16(f0, c);
         ref[D_SCHLICK] = ref_schlick((double)f0, cd);
         got[D_F0] = (double)fresnel_f0_from_ior_f16(e, k);
