@@ -142,7 +142,7 @@ FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 .PHONY: fuzz fuzz-bins
 fuzz-bins: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/%)
 
-$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(wildcard tests/fuzz/*.h) $(LIB_SRC) $(wildcard src/*.h) $(FUZZ_GEN)
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(wildcard tests/fuzz/*.h) $(LIB_SRC) $(wildcard src/*.h) $(wildcard include/*.h) $(FUZZ_GEN)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN) -lm -o $@
 
@@ -155,7 +155,7 @@ FUZZ_GCC_FLAGS  = $(WARN) -g -O1 $(F16_CFLAGS) -fsanitize=address,undefined -fno
                   -fsanitize-coverage=trace-cmp -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Igen -Itests/fuzz
 FUZZ_F16_SRC   := tests/fuzz/fuzz_f16_models.c $(filter %_f16.c,$(LIB_SRC))
 FUZZ_F16_OBJ   := $(FUZZ_F16_SRC:%.c=$(BUILD)/fuzz/gcc/%.o)
-$(BUILD)/fuzz/gcc/%.o: %.c $(wildcard tests/fuzz/*.h) $(wildcard src/*.h)
+$(BUILD)/fuzz/gcc/%.o: %.c $(wildcard tests/fuzz/*.h) $(wildcard src/*.h) $(wildcard include/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_GCC) $(FUZZ_GCC_FLAGS) -c $< -o $@
 $(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(LIB_SRC) $(FUZZ_GEN)

@@ -156,14 +156,14 @@ void ref_gulbrandsen_rg(double n, double k, double *r, double *g)
 
 double ref_gulbrandsen_g(double r, double n)
 {
-    double rc, sr, nmin, nmax, span;
+    double rc, sr, nmax1, span;
     n = eta_dom(n);
     rc = ref_clamp(r, 0.0, FRESNEL_GULBRANDSEN_R_MAX);
     sr = sqrt(rc);
-    nmin = (1.0 - rc) / (1.0 + rc);
-    nmax = (1.0 + sr) * (1.0 + sr) / (1.0 - rc);
-    span = nmax - nmin;
-    return span > 0.0 ? unit((nmax - n) / span) : 0.0;
+    /* nmax - 1 and nmax - nmin without cancellation (gulbrandsen.c) */
+    nmax1 = 2.0 * sr * (1.0 + sr) / (1.0 - rc);
+    span = nmax1 * (1.0 + sr) / (1.0 + rc);
+    return span > 0.0 ? unit((nmax1 - (n - 1.0)) / span) : 0.0;
 }
 
 double ref_gulbrandsen(double r, double g, double c)

@@ -37,7 +37,12 @@
  *   measured by tests/test_float_bounds.c over eta in [0.01, 100], kappa in
  *   {0} u [1e-3, 1000], incident index n1 in {1, 1.33, 1.5, 2.42} and a dense
  *   set of c including 0, 1 and points within 1e-6 of each
- *   (`make test`; the measured maxima are printed by `build/tests/test_float_bounds`).
+ *   (`make test`; the measured maxima are printed by `build/tests/test_float_bounds`);
+ *   they hold there. fresnel_lsk_comp's and fresnel_gulbrandsen_rg's are
+ *   measured over the whole eta, kappa domain as well (random points, the
+ *   same test); the rest of the domain (eta in [2^-10, 0.01) or (100, 1e5],
+ *   kappa above 1000) is checked for range only (tests/test_extremes.c,
+ *   tests/fuzz/fuzz_float_models.c).
  *   How far each MODEL is from the exact Fresnel equations is a different
  *   question, answered by `build/fresnel accuracy` (see README).
  *   Cost counts binary32 operations: "flop" = add, sub or mul; div, sqrt and
@@ -47,8 +52,13 @@
  *   No global state, no allocation, no stdio, no errno: every function is
  *   reentrant. <math.h> is used: sqrtf everywhere, expf and log1pf
  *   (generalized Schlick with p != 5, LSK compensation), fmaf only where the compiler
- *   says it is fast (FP_FAST_FMAF). Build without -ffast-math: the exact
- *   forms rely on IEEE rounding.
+ *   says it is fast (FP_FAST_FMAF).
+ *   Build src/ without -ffast-math, -ffinite-math-only, -fassociative-math
+ *   and -Ofast: the NaN policy needs NaN comparisons, and the exact forms
+ *   (critical angles) need IEEE rounding. src/internal.h stops the build
+ *   with #error where the compiler says it is on (__FAST_MATH__,
+ *   __FINITE_MATH_ONLY__); a vendoring user with such a global flag compiles
+ *   src/\*.c with -fno-fast-math (gcc, clang) or without it.
  *
  * REFERENCES
  *   [Sch94]  C. Schlick, An inexpensive BRDF model for physically-based rendering, 1994.
@@ -71,7 +81,7 @@ extern "C" {
 /* Domain limits for material parameters (see CONVENTIONS). Beyond these the
  * binary32 formulas would overflow or lose all meaning; no measured material
  * comes near them. */
-#define FRESNEL_ETA_MIN   1e-3f
+#define FRESNEL_ETA_MIN   0.0009765625f /* 2^-10, as binary16 and Q15 */
 #define FRESNEL_ETA_MAX   1e5f
 #define FRESNEL_KAPPA_MAX 1e5f
 #define FRESNEL_KAPPA_TINY 1e-18f /* kappa below this is taken as 0 */
@@ -79,6 +89,9 @@ extern "C" {
 #define FRESNEL_P_MAX     1e3f
 #define FRESNEL_ALPHA_MAX 1e3f    /* LSK compensation exponent, domain [0, max] */
 #define FRESNEL_A_MAX     1e6f    /* LSK compensation weight, domain [0, max] */
+/* Most nodes a binary32 LUT uses (lut.c): n - 1 and every position stay
+ * exact binary32 integers; the Q15 LUTs have the same limit. */
+#define FRESNEL_LUT_N_MAX 32768
 /* Gulbrandsen's inverse needs r < 1; r is clamped to this first. */
 #define FRESNEL_GULBRANDSEN_R_MAX 0.9999f
 
@@ -92,9 +105,10 @@ extern "C" {
 #define FRESNEL_BOUND_F0               3e-7f /* fresnel_f0_from_ior */
 #define FRESNEL_BOUND_F0_IN_MEDIUM     5e-7f
 #define FRESNEL_BOUND_LSK              5e-7f
-#define FRESNEL_BOUND_LSK_COMP         5e-7f
+#define FRESNEL_BOUND_LSK_COMP         6e-7f
 #define FRESNEL_BOUND_F82              5e-7f
 #define FRESNEL_BOUND_GULBRANDSEN      4e-7f
+#define FRESNEL_BOUND_GULBRANDSEN_G    4e-7f /* g of fresnel_gulbrandsen_rg */
 #define FRESNEL_BOUND_APPROX_CONDUCTOR 3e-7f
 #define FRESNEL_BOUND_COOK_TORRANCE    6e-7f
 #define FRESNEL_BOUND_CONDUCTOR        4e-7f
@@ -177,8 +191,13 @@ fresnel_rgb fresnel_lsk_rgb(fresnel_rgb n, fresnel_rgb k, float c);
  * would need alpha <= 0, the host sets a = 0: no compensation.
  * a in [0, FRESNEL_A_MAX], alpha in [0, FRESNEL_ALPHA_MAX] (clamped).
  * (1-c)^alpha is evaluated as expf(alpha log1pf(-c)) so the rounding of 1 - c
- * is not multiplied by alpha. Error <= FRESNEL_BOUND_LSK_COMP for a <= 200
- * (a = 2n with n <= 100, every measured material); for larger a the float
+ * is not multiplied by alpha, and alpha ln(1-c) is formed exactly (two
+ * floats). Error <= FRESNEL_BOUND_LSK_COMP for a <= 200 over the whole eta,
+ * kappa, alpha domain (a = 2n with n <= 100, every measured material): the
+ * result is the difference of the LSK value and a term of about the same
+ * size when a = 200 and n is small, and keeps the roundings of both
+ * (log1pf, expf and two products on the term); tests/test_float_bounds
+ * prints the measured maximum ("lsk-comp over its domain"). For larger a the float
  * rounding of the exponent alpha ln(1-c) is multiplied by the term's size:
  * about 6e-8 |a c (1-c)^alpha alpha ln(1-c)| (1.2e-6 at a = 1e6, found by
  * fuzzing).
@@ -341,7 +360,12 @@ float fresnel_dielectric(float eta, float c);
  *   misses.
  * Results are clamped to [0, 1]; table values are trusted (generated).
  * Error: the table's own (see `fresnel curve`, the report) plus <= 3e-7
- * rounding. Cost: 6-10 flops (+ sqrtf for fresnel_lut), no division. */
+ * rounding. Cost: 6-10 flops (+ sqrtf for fresnel_lut), no division.
+ * n, every LUT function here: supported 2 <= n <= FRESNEL_LUT_N_MAX; no n
+ * reads outside table[0 .. n-1] (per channel for RGB). n < 1 is an empty
+ * table: it contributes 0 (plain forms give 0, residual forms
+ * fresnel_schlick(f0, c)); n = 1 is the constant table[0]; n above
+ * FRESNEL_LUT_N_MAX uses the first FRESNEL_LUT_N_MAX nodes as the table. */
 float fresnel_lut(const float *table, int n, float c);
 float fresnel_lut_linear(const float *table, int n, float c);
 float fresnel_lut_residual(float f0, const float *table, int n, float c);

@@ -49,18 +49,22 @@
  *   FRESNEL_F16_BOUND_*: absolute, against the double reference of the same
  *   model at the same binary16 inputs, measured by tests/test_f16_bounds.c on
  *   every binary16 cosine in [0, 1] (15361 values) and the material set of
- *   fresnel_fixed.h. binary16 ulp(1) = 9.8e-4, ulp(0.5) = 4.9e-4.
+ *   fresnel_fixed.h: they hold there, not over the whole domain.
+ *   FRESNEL_F16_DOMAIN_*: the same over the whole domain (below).
+ *   binary16 ulp(1) = 9.8e-4, ulp(0.5) = 4.9e-4.
  */
 #ifndef FRESNEL_F16_H
 #define FRESNEL_F16_H
 
 #include "fresnel_config.h"
 
-#define FRESNEL_F16_ETA_MIN 0.0009765625f /* 2^-10, as fresnel.h's 1e-3 */
+#define FRESNEL_F16_ETA_MIN 0.0009765625f /* 2^-10, as fresnel.h */
 #define FRESNEL_F16_ETA_MAX 16.0f
 #define FRESNEL_F16_KAPPA_MAX 16.0f
 #define FRESNEL_F16_P_MIN 0.0009765625f
 #define FRESNEL_F16_P_MAX 64.0f
+/* Most nodes a binary16 LUT uses: n - 1 <= 2048 is an exact half. */
+#define FRESNEL_F16_LUT_N_MAX 2049
 
 /* Measured error bounds (see ERROR BOUNDS); measured maxima in brackets,
  * from `build/tests/test_f16_bounds`. Most models lose 2-8 half-ulps: the
@@ -92,6 +96,27 @@
 #define FRESNEL_F16_BOUND_LUT_CUBIC 9.0e-4 /* [8.68e-4 on reflectance curves, n <= 256; tests/test_lut_cubic] */
 #define FRESNEL_F16_BOUND_LUT 1.7e-2 /* [1.599e-2 nodes uniform in sqrt(c), a table with a total-reflection edge; 3.84e-3 uniform in c] */
 #define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3 /* [4.449e-3] */
+/* The bounds above hold where they were measured: every binary16 cosine on
+ * the material set (and, where the bracket says so, every F0 or a grid of
+ * F0/F82 pairs). Over the whole documented domain (eta in [2^-10, 16],
+ * kappa 0 or in [1e-3, 16], F0, r, g in [0, 1], a and alpha in [2^-10, 64])
+ * the errors are larger: tiny eta with tiny c (approximate conductor),
+ * F0 near 0 in a dense medium (F0 in medium), Gulbrandsen with g near 0
+ * and r near 1 (k clamped to 16), and near-dielectric conductors (kappa
+ * 1e-3) at their critical angle. FRESNEL_F16_DOMAIN_* are the maxima of
+ * 1e6 deterministic random points over that domain per function and of 10
+ * minutes of `make fuzz` (its "f16 fuzz" NOTE lines), rounded up: measured,
+ * not proven. tests/test_f16_bounds.c holds the random points and the
+ * fuzzer's worst LSK point to them ("f16 domain" lines). */
+#define FRESNEL_F16_DOMAIN_SCHLICK 2.6e-3 /* [2.230e-3; 2.527e-3 exhaustive in F0, above] */
+#define FRESNEL_F16_DOMAIN_F0 2.1e-3 /* [2.029e-3] */
+#define FRESNEL_F16_DOMAIN_F0_IN_MEDIUM 5.2e-3 /* [5.162e-3] */
+#define FRESNEL_F16_DOMAIN_LSK 3.5e-3 /* [3.43e-3 fuzzing; 3.204e-3 random] */
+#define FRESNEL_F16_DOMAIN_LSK_COMP 3.7e-3 /* [3.64e-3 fuzzing; 3.292e-3 random] */
+#define FRESNEL_F16_DOMAIN_GULBRANDSEN 0.15 /* [0.148 fuzzing; 0.1428 random] */
+#define FRESNEL_F16_DOMAIN_APPROX_CONDUCTOR 1.9e-2 /* [1.858e-2] */
+#define FRESNEL_F16_DOMAIN_COOK_TORRANCE 1.0 /* [0.808, critical angle at kappa 1e-3] */
+#define FRESNEL_F16_DOMAIN_CONDUCTOR 1.0 /* [0.0649, critical angle at kappa 1e-3] */
 
 #if FRESNEL_HAS_F16
 
@@ -124,7 +149,11 @@ fresnel_f16 fresnel_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f1
 fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);
 /* Lookup tables as fresnel_lut (nodes uniform in sqrt(c), the position
  * from the half root of c, as the GLSL port's fresnel_lut_pos) and
- * fresnel_lut_linear (uniform in c), plain and residual, binary16 nodes. */
+ * fresnel_lut_linear (uniform in c), plain and residual, binary16 nodes.
+ * n as fresnel.h's LUTs, with FRESNEL_F16_LUT_N_MAX: no n reads outside
+ * table[0 .. n-1]; n < 1 contributes 0, n = 1 is table[0], larger n than
+ * the maximum use its first FRESNEL_F16_LUT_N_MAX nodes. Above 257 nodes
+ * the half position keeps fewer than 3 fraction bits. */
 fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);

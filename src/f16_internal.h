@@ -14,6 +14,13 @@
  * fixed-point-only toolchain may lack. */
 #if FRESNEL_HAS_F16
 
+/* The NaN policy (fresnel.h CONVENTIONS) compares against NaN and the exact
+ * forms rely on IEEE rounding: -ffast-math and its parts break both silently
+ * (critical-angle results off by up to 1), so they stop the build here. */
+#if defined(__FAST_MATH__) || defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+#error "fresnel: compile src/ without -ffast-math / -Ofast / -ffinite-math-only (add -fno-fast-math for these files); see fresnel.h THREAD SAFETY"
+#endif
+
 #include <math.h>
 
 typedef fresnel_f16 fr__h;

@@ -29,16 +29,30 @@ fresnel_nk fresnel_gulbrandsen_nk(float r, float g)
 fresnel_rg fresnel_gulbrandsen_rg(float n, float k)
 {
     fresnel_rg out;
-    float rc, sr, nmin, nmax, span;
+    float rc, omr, sr, nmax1, span;
     out.r = fresnel_f0_from_ior(n, k);
     n = fr__eta(n);
-    rc = out.r < FRESNEL_GULBRANDSEN_R_MAX ? out.r : FRESNEL_GULBRANDSEN_R_MAX;
+    k = fr__kappa(k);
+    /* 1 - r = 4n/((n+1)^2 + k^2) directly, and r clamped by it: 1 - r from
+     * the rounded r has an absolute error of ulp(1)/2, a relative error of
+     * 6e-8/(1 - r) in nmax, and g changes by 1/(1 - r) per unit of r. */
+    omr = 4.0f * n / ((n + 1.0f) * (n + 1.0f) + k * k);
+    if (omr > 1.0f - FRESNEL_GULBRANDSEN_R_MAX) {
+        rc = out.r;
+    } else {
+        omr = 1.0f - FRESNEL_GULBRANDSEN_R_MAX;
+        rc = FRESNEL_GULBRANDSEN_R_MAX;
+    }
     sr = sqrtf(rc);
-    nmin = (1.0f - rc) / (1.0f + rc);
-    nmax = (1.0f + sr) * (1.0f + sr) / (1.0f - rc);
-    span = nmax - nmin;
+    /* g = (nmax - n)/(nmax - nmin) with both differences formed without
+     * cancellation: for r -> 0 (n -> 1, k -> 0) nmax = 1 + 2 sqrt r and
+     * nmin = 1 - 2r round to 1 and would leave g = 0 where it is 1. With
+     * s = sqrt r: nmax - 1 = 2s(1+s)/(1-r), nmax - nmin = 2s(1+s)^2 /
+     * ((1-r)(1+r)), and n - 1 is exact near 1 (Sterbenz). */
+    nmax1 = 2.0f * sr * (1.0f + sr) / omr;
+    span = nmax1 * (1.0f + sr) / (1.0f + rc);
     /* r = 0 (n 1, k 0) gives n = 1 for every g; report 0. */
-    out.g = span > 0.0f ? fr__unit((nmax - n) / span) : 0.0f;
+    out.g = span > 0.0f ? fr__unit((nmax1 - (n - 1.0f)) / span) : 0.0f;
     return out;
 }
 

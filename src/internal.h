@@ -8,6 +8,13 @@
  * all of src/ does not need <math.h> (freestanding toolchains without libm). */
 #if FRESNEL_HAS_FLOAT
 
+/* The NaN policy (fresnel.h CONVENTIONS) compares against NaN and the exact
+ * forms rely on IEEE rounding: -ffast-math and its parts break both silently
+ * (critical-angle results off by up to 1), so they stop the build here. */
+#if defined(__FAST_MATH__) || defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
+#error "fresnel: compile src/ without -ffast-math / -Ofast / -ffinite-math-only (add -fno-fast-math for these files); see fresnel.h THREAD SAFETY"
+#endif
+
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -79,11 +86,37 @@ static inline float fr__eta2_minus_sin2(float eta, float c, float kappa2)
     return (s - 1.0f) + ((err + el + cl) - kappa2);
 }
 
+/* The top 12 significand bits of x, by masking (see fr__square_exact). */
+static inline float fr__split_hi(float x)
+{
+    union {
+        float f;
+        uint32_t u;
+    } split;
+    split.f = x;
+    split.u &= 0xfffff000u;
+    return split.f;
+}
+
 /* (1 - c)^p for c in [0, 1], p > 0, as exp(p log1p(-c)): powf(1 - c, p) would
- * first round 1 - c, an error that p multiplies. */
+ * first round 1 - c, an error that p multiplies. The product y = p l is
+ * formed exactly as hi + lo (Dekker) and exp(hi + lo) = exp(hi)(1 + lo):
+ * the rounding of y would be an error of |y| 2^-24 relative, and |y| reaches
+ * ln(a c), about 5, where the LSK compensation term matters. */
 static inline float fr__pow_one_minus(float c, float p)
 {
-    return c < 1.0f ? expf(p * log1pf(-c)) : 0.0f;
+    float l, hi, lo, e, ph, pl, lh, ll;
+    if (!(c < 1.0f))
+        return 0.0f;
+    l = log1pf(-c);
+    hi = p * l;
+    ph = fr__split_hi(p);
+    pl = p - ph;
+    lh = fr__split_hi(l);
+    ll = l - lh;
+    lo = ((ph * lh - hi) + ph * ll + pl * lh) + pl * ll;
+    e = expf(hi);
+    return e + e * lo;
 }
 
 /* Apply a scalar model channel by channel. */

@@ -4,12 +4,35 @@
 #if FRESNEL_HAS_FLOAT
 #include <math.h>
 
+/* The number of nodes used of an n-node table (fresnel.h): none for n < 1,
+ * at most FRESNEL_LUT_N_MAX, so that n - 1 and every position are exact
+ * binary32 integers and the index never leaves the table. */
+static int fr__lut_n(int n)
+{
+    return n < 1 ? 0 : (n < FRESNEL_LUT_N_MAX ? n : FRESNEL_LUT_N_MAX);
+}
+
+/* Offset of channel ch (0, 1, 2) in an RGB table of n nodes per channel;
+ * added as pointers, so 2n never overflows an int. */
+static const float *fr__lut_channel(const float *table, int n, int ch)
+{
+    const float *p = table;
+    if (n > 0)
+        while (ch-- > 0)
+            p += n;
+    return p;
+}
+
 /* Interpolate table at position x in [0, 1] along its n nodes. */
 static float fr__interp(const float *table, int n, float x)
 {
-    float pos = x * (float)(n - 1);
-    int i = (int)pos;
-    float t;
+    float pos, t;
+    int i;
+    n = fr__lut_n(n);
+    if (n < 2)
+        return n == 1 ? table[0] : 0.0f;
+    pos = x * (float)(n - 1);
+    i = (int)pos;
     if (i >= n - 1)
         i = n - 2; /* x = 1 lands on the last segment's end */
     t = pos - (float)i;
@@ -22,8 +45,13 @@ static float fr__interp(const float *table, int n, float x)
  * d = p2 - p1, m1 = (p2 - p0)/2, m2 = (p3 - p1)/2. */
 static float fr__cubic(const float *table, int n, float x)
 {
-    float pos = x * (float)(n - 1), t, p0, p1, p2, p3, d, m1, m2;
-    int i = (int)pos;
+    float pos, t, p0, p1, p2, p3, d, m1, m2;
+    int i;
+    n = fr__lut_n(n);
+    if (n < 2)
+        return n == 1 ? table[0] : 0.0f;
+    pos = x * (float)(n - 1);
+    i = (int)pos;
     if (i > n - 2)
         i = n - 2;
     t = pos - (float)i;
@@ -46,8 +74,8 @@ float fresnel_lut_cubic(const float *table, int n, float c)
 fresnel_rgb fresnel_lut_cubic_rgb(const float *table, int n, float c)
 {
     float x = sqrtf(fr__unit(c));
-    FR__RGB(fr__unit(fr__cubic(table, n, x)), fr__unit(fr__cubic(table + n, n, x)),
-            fr__unit(fr__cubic(table + 2 * n, n, x)));
+    FR__RGB(fr__unit(fr__cubic(table, n, x)), fr__unit(fr__cubic(fr__lut_channel(table, n, 1), n, x)),
+            fr__unit(fr__cubic(fr__lut_channel(table, n, 2), n, x)));
 }
 
 float fresnel_lut(const float *table, int n, float c)
@@ -74,26 +102,26 @@ float fresnel_lut_linear_residual(float f0, const float *table, int n, float c)
 
 fresnel_rgb fresnel_lut_rgb(const float *table, int n, float c)
 {
-    FR__RGB(fresnel_lut(table, n, c), fresnel_lut(table + n, n, c), fresnel_lut(table + 2 * n, n, c));
+    FR__RGB(fresnel_lut(table, n, c), fresnel_lut(fr__lut_channel(table, n, 1), n, c), fresnel_lut(fr__lut_channel(table, n, 2), n, c));
 }
 
 fresnel_rgb fresnel_lut_linear_rgb(const float *table, int n, float c)
 {
-    FR__RGB(fresnel_lut_linear(table, n, c), fresnel_lut_linear(table + n, n, c),
-            fresnel_lut_linear(table + 2 * n, n, c));
+    FR__RGB(fresnel_lut_linear(table, n, c), fresnel_lut_linear(fr__lut_channel(table, n, 1), n, c),
+            fresnel_lut_linear(fr__lut_channel(table, n, 2), n, c));
 }
 
 fresnel_rgb fresnel_lut_residual_rgb(fresnel_rgb f0, const float *table, int n, float c)
 {
-    FR__RGB(fresnel_lut_residual(f0.r, table, n, c), fresnel_lut_residual(f0.g, table + n, n, c),
-            fresnel_lut_residual(f0.b, table + 2 * n, n, c));
+    FR__RGB(fresnel_lut_residual(f0.r, table, n, c), fresnel_lut_residual(f0.g, fr__lut_channel(table, n, 1), n, c),
+            fresnel_lut_residual(f0.b, fr__lut_channel(table, n, 2), n, c));
 }
 
 fresnel_rgb fresnel_lut_linear_residual_rgb(fresnel_rgb f0, const float *table, int n, float c)
 {
     FR__RGB(fresnel_lut_linear_residual(f0.r, table, n, c),
-            fresnel_lut_linear_residual(f0.g, table + n, n, c),
-            fresnel_lut_linear_residual(f0.b, table + 2 * n, n, c));
+            fresnel_lut_linear_residual(f0.g, fr__lut_channel(table, n, 1), n, c),
+            fresnel_lut_linear_residual(f0.b, fr__lut_channel(table, n, 2), n, c));
 }
 
 #else

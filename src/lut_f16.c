@@ -8,10 +8,23 @@
 
 #if FRESNEL_HAS_F16
 
+/* The number of nodes used of an n-node table (fresnel_f16.h): none for
+ * n < 1, at most FRESNEL_F16_LUT_N_MAX, so that n - 1 is an exact half, the
+ * position at most n - 1 and the index inside the table. */
+static int fr__lut_n_h(int n)
+{
+    return n < 1 ? 0 : (n < FRESNEL_F16_LUT_N_MAX ? n : FRESNEL_F16_LUT_N_MAX);
+}
+
 static fr__h fr__interp_h(const fr__h *table, int n, fr__h x)
 {
-    fr__h pos = fr__hmul(x, (fr__h)(float)(n - 1)), t;
-    int i = (int)(float)pos;
+    fr__h pos, t;
+    int i;
+    n = fr__lut_n_h(n);
+    if (n < 2)
+        return n == 1 ? table[0] : fr__hc(0.0f);
+    pos = fr__hmul(x, (fr__h)(float)(n - 1));
+    i = (int)(float)pos;
     if (i >= n - 1)
         i = n - 2;
     t = fr__hsub(pos, (fr__h)(float)i);
@@ -25,8 +38,13 @@ static fr__h fr__interp_h(const fr__h *table, int n, fr__h x)
  * are the size of 5 p1, whose half ulp near 4.5 is 4e-3. */
 static fr__h fr__cubic_h(const fr__h *table, int n, fr__h x)
 {
-    fr__h pos = fr__hmul(x, (fr__h)(float)(n - 1)), t, half = fr__hc(0.5f), p0, p1, p2, p3, d, m1, m2, k2, k3;
-    int i = (int)(float)pos;
+    fr__h pos, t, half = fr__hc(0.5f), p0, p1, p2, p3, d, m1, m2, k2, k3;
+    int i;
+    n = fr__lut_n_h(n);
+    if (n < 2)
+        return n == 1 ? table[0] : fr__hc(0.0f);
+    pos = fr__hmul(x, (fr__h)(float)(n - 1));
+    i = (int)(float)pos;
     if (i >= n - 1)
         i = n - 2;
     t = fr__hsub(pos, (fr__h)(float)i);

@@ -558,7 +558,8 @@ static void test_conductor_prepared(void)
         /* the two-division form (eta kappa < 2^-30), near-dielectrics, and the domain's corners */
         static const float mat[][2] = {{0.5f, 1e-12f}, {1.0001f, 1e-15f}, {2.0f, 1e-18f}, {0.9f, 1e-10f},
                                        {0.9999999f, 1e-12f}, {1.0f, 1e-18f}, {1e-3f, 1e-6f}, {0.01f, 1e-7f},
-                                       {1e5f, 1e5f}, {1e5f, 1e-3f}, {1e-3f, 1e5f}, {1e5f, 0.0f}, {1e-3f, 0.0f}};
+                                       {1e5f, 1e5f}, {1e5f, 1e-3f}, {1e-3f, 1e5f}, {1e5f, 0.0f}, {1e-3f, 0.0f},
+                                       {FRESNEL_ETA_MIN, 1e-6f}, {FRESNEL_ETA_MIN, 1e5f}, {FRESNEL_ETA_MIN, 0.0f}};
         double w_in = 0.0, w_out = 0.0;
         long range = 0;
         int m, k;
@@ -578,7 +579,7 @@ static void test_conductor_prepared(void)
             }
         }
         NOTE("extremes f32: conductor-prepared on tiny kappa (two divisions below eta kappa = 2^-30): max|err| %.3g "
-             "for eta in [0.01, 100]; %.3g at the domain's corners (eta or kappa 1e-3 or 1e5)", w_in, w_out);
+             "for eta in [0.01, 100]; %.3g at the domain's corners (eta 2^-10, 1e-3 or 1e5, kappa 1e-3 or 1e5)", w_in, w_out);
         CHECK("extremes f32: conductor-prepared on tiny kappa within its bound, results in [0, 1] at the corners",
               w_in <= FRESNEL_BOUND_CONDUCTOR_PREPARED && range == 0, "max %.3g, %ld outside", w_in, range);
     }

@@ -257,6 +257,98 @@ static void check_luts(const test_material *mat, int nmat)
     check_bound("LUT, linear nodes", &w[1], FRESNEL_F16_BOUND_LUT, bad[1]);
 }
 
+
+/* Deterministic uniform [0, 1) (64-bit LCG) for the domain sweep. */
+static double rnd16(unsigned long long *st)
+{
+    *st = *st * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(*st >> 11) / 9007199254740992.0;
+}
+
+/* A half in [lo, hi]: log-uniform, uniform, or an end, by turns. */
+static fresnel_f16 rnd_half(unsigned long long *st, double lo, double hi, long i)
+{
+    switch (i % 5) {
+    case 0: return (fresnel_f16)(lo * pow(hi / lo, rnd16(st)));
+    case 1: return (fresnel_f16)(lo + (hi - lo) * rnd16(st));
+    case 2: return (fresnel_f16)(i & 8 ? lo : hi);
+    default: return (fresnel_f16)(lo * pow(hi / lo, rnd16(st)));
+    }
+}
+
+/* Every bound over the documented binary16 domain, not the material set:
+ * eta in [FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX], kappa 0 or in
+ * [1e-3, FRESNEL_F16_KAPPA_MAX], F0, r, g in [0, 1], LSK a in [0, 64],
+ * alpha in [1/1024, 64], c a random half in [0, 1] or an end; 1e6
+ * deterministic points per function, and the worst point fuzzing found. The maxima are FRESNEL_F16_DOMAIN_*;
+ * the exact forms and Cook-Torrance are measured for conductors
+ * (kappa >= 1e-3), away from any critical angle. */
+static void check_domain(void)
+{
+    enum { D_SCHLICK, D_F0, D_F0_MEDIUM, D_LSK, D_LSK_COMP, D_GULB, D_APPROX, D_COOK, D_COND, D_N };
+    static const char *names[D_N] = {"domain schlick", "domain f0_from_ior", "domain f0_in_medium",
+                                     "domain lsk", "domain lsk_comp", "domain gulbrandsen",
+                                     "domain approx_conductor", "domain cook_torrance (kappa>=1e-3)",
+                                     "domain conductor (kappa>=1e-3)"};
+    static const double bounds[D_N] = {FRESNEL_F16_DOMAIN_SCHLICK, FRESNEL_F16_DOMAIN_F0,
+                                       FRESNEL_F16_DOMAIN_F0_IN_MEDIUM, FRESNEL_F16_DOMAIN_LSK,
+                                       FRESNEL_F16_DOMAIN_LSK_COMP, FRESNEL_F16_DOMAIN_GULBRANDSEN,
+                                       FRESNEL_F16_DOMAIN_APPROX_CONDUCTOR, FRESNEL_F16_DOMAIN_COOK_TORRANCE,
+                                       FRESNEL_F16_DOMAIN_CONDUCTOR};
+    worst w[D_N];
+    long bad[D_N] = {0}, i;
+    unsigned long long st = 4242;
+    int f;
+    memset(w, 0, sizeof w);
+    for (i = 0; i < 1000000; i++) {
+        fresnel_f16 c = rnd_half(&st, 1.0 / 16384.0, 1.0, i + 1), e = rnd_half(&st, FRESNEL_F16_ETA_MIN, 16.0, i + 2);
+        fresnel_f16 k = i % 7 == 0 ? (fresnel_f16)0.0f : rnd_half(&st, 1e-3, 16.0, i + 3);
+        fresnel_f16 kc = k > (fresnel_f16)0.0f ? k : (fresnel_f16)1e-3f;
+        fresnel_f16 f0 = rnd_half(&st, 1.0 / 16384.0, 1.0, i + 4), a = rnd_half(&st, 1.0 / 1024.0, 64.0, i);
+        fresnel_f16 al = rnd_half(&st, 1.0 / 1024.0, 64.0, i + 1), g = rnd_half(&st, 1.0 / 16384.0, 1.0, i + 2);
+        double cd = (double)c, ed = (double)e, kd = (double)k, got[D_N], ref[D_N], rn, rk;
+        char what[120];
+        if (i % 11 == 0)
+            c = (fresnel_f16)(i & 16 ? 0.0f : 1.0f), cd = (double)c;
+        if (i == 0) { /* the worst point `make fuzz` found for LSK (alpha 0: no exponent) */
+            c = (fresnel_f16)0x1.e3cp-6f, e = (fresnel_f16)0x1.0a4p+0f, k = (fresnel_f16)0x1.cfp-4f;
+            a = (fresnel_f16)0x1.47cp-5f, al = (fresnel_f16)0.0f;
+            cd = (double)c, ed = (double)e, kd = (double)k;
+        }
+        got[D_SCHLICK] = (double)fresnel_schlick_f16(f0, c);
+        ref[D_SCHLICK] = ref_schlick((double)f0, cd);
+        got[D_F0] = (double)fresnel_f0_from_ior_f16(e, k);
+        ref[D_F0] = ref_f0_from_ior(ed, kd);
+        got[D_F0_MEDIUM] = (double)fresnel_f0_in_medium_f16(f0, e);
+        ref[D_F0_MEDIUM] = ref_f0_in_medium((double)f0, ed);
+        got[D_LSK] = (double)fresnel_lsk_f16(e, k, c);
+        ref[D_LSK] = ref_lsk(ed, kd, cd);
+        got[D_LSK_COMP] = (double)fresnel_lsk_comp_f16(e, k, a, al, c);
+        ref[D_LSK_COMP] = ref_lsk_comp(ed, kd, (double)a, (double)al, cd);
+        got[D_GULB] = (double)fresnel_gulbrandsen_f16(f0, g, c);
+        {
+            double r = (double)f0 < 1.0 - 1.0 / 2048.0 ? (double)f0 : 1.0 - 1.0 / 2048.0;
+            ref_gulbrandsen_nk(r, (double)g, &rn, &rk);
+            ref[D_GULB] = ref_approx_conductor(rn < FRESNEL_F16_ETA_MIN ? FRESNEL_F16_ETA_MIN : rn > 16.0 ? 16.0 : rn,
+                                               rk > 16.0 ? 16.0 : rk, cd);
+        }
+        got[D_APPROX] = (double)fresnel_approx_conductor_f16(e, k, c);
+        ref[D_APPROX] = ref_approx_conductor(ed, kd, cd);
+        got[D_COOK] = (double)fresnel_cook_torrance_f16(f0, e, kc, c);
+        ref[D_COOK] = ref_cook_torrance((double)f0, ed, (double)kc, cd);
+        got[D_COND] = (double)fresnel_conductor_f16(e, kc, c);
+        ref[D_COND] = ref_conductor(ed, (double)kc, cd);
+        snprintf(what, sizeof what, "eta %a kappa %a f0 %a a %a alpha %a g %a", ed, kd, (double)f0, (double)a,
+                 (double)al, (double)g);
+        for (f = 0; f < D_N; f++) {
+            bad[f] += !(got[f] >= 0.0 && got[f] <= 1.0);
+            note_worst(&w[f], fabs(got[f] - ref[f]), what, cd);
+        }
+    }
+    for (f = 0; f < D_N; f++)
+        check_bound(names[f], &w[f], bounds[f], bad[f]);
+}
+
 int main(void)
 {
     static test_material mat[TM_MAX];
@@ -272,6 +364,7 @@ int main(void)
     check_f82_pairs();
     check_f0_helpers();
     check_luts(mat, nmat);
+    check_domain();
     return harness_exit();
 }
 

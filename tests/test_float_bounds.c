@@ -140,6 +140,114 @@ static void check_conductor_prepared(const float *cs, int nc)
           "%ld differ", differ);
 }
 
+
+/* Deterministic uniform [0, 1) (64-bit LCG): the random part of a domain sweep. */
+static double rnd(unsigned long long *st)
+{
+    *st = *st * 6364136223846793005ull + 1442695040888963407ull;
+    return (double)(*st >> 11) / 9007199254740992.0;
+}
+
+/* log-uniform in [lo, hi] */
+static double rnd_log(unsigned long long *st, double lo, double hi) { return lo * pow(hi / lo, rnd(st)); }
+
+/* fresnel_lsk_comp over its documented region: eta in [FRESNEL_ETA_MIN,
+ * FRESNEL_ETA_MAX], kappa in {0} u [1e-3, FRESNEL_KAPPA_MAX], a in [0, 200],
+ * alpha in [0, FRESNEL_ALPHA_MAX], every c: random points (log-uniform
+ * parameters, a and c also uniform) plus the known hard point. */
+static void check_lsk_comp_domain(void)
+{
+    static const float hard[][5] = {{0x1.c63ed8p-7f, 0x1.1e702p-2f, 200.0f, 0x1.1b4898p+3f, 0x1.9331aep-2f}};
+    unsigned long long st = 12345;
+    double w = 0.0, wp[5] = {0};
+    long i;
+    for (i = -(long)(sizeof hard / sizeof hard[0]); i < 8000000; i++) {
+        float p[5], got;
+        double ref, err;
+        int j;
+        if (i < 0) {
+            for (j = 0; j < 5; j++)
+                p[j] = hard[-i - 1][j];
+        } else {
+            p[0] = (float)rnd_log(&st, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+            p[1] = i % 5 == 0 ? 0.0f : (float)rnd_log(&st, 1e-3, FRESNEL_KAPPA_MAX);
+            /* a = 200 with small n: the largest compensation term against
+             * an LSK value near 1, where the difference keeps both errors */
+            p[2] = i % 4 == 3 ? 200.0f : i % 2 ? (float)(200.0 * rnd(&st)) : (float)rnd_log(&st, 1e-3, 200.0);
+            if (i % 4 == 3)
+                p[0] = (float)rnd_log(&st, FRESNEL_ETA_MIN, 0.1);
+            p[3] = i % 3 ? (float)rnd_log(&st, 1e-3, FRESNEL_ALPHA_MAX) : (float)(60.0 * rnd(&st));
+            p[4] = i % 2 ? (float)rnd(&st) : (float)rnd_log(&st, 1e-6, 1.0);
+        }
+        got = fresnel_lsk_comp(p[0], p[1], p[2], p[3], p[4]);
+        ref = ref_lsk_comp(p[0], p[1], p[2], p[3], p[4]);
+        err = fabs((double)got - ref);
+        if (!(err <= w)) {
+            w = err;
+            for (j = 0; j < 5; j++)
+                wp[j] = p[j];
+        }
+    }
+    NOTE("lsk-comp over its domain (a <= 200), 8e6 random points: max|err| %.3g at n %a k %a a %a alpha %a c %a", w,
+         wp[0], wp[1], wp[2], wp[3], wp[4]);
+    CHECK("lsk-comp bound over eta, kappa, alpha domain, a <= 200", w <= FRESNEL_BOUND_LSK_COMP, "max %.3g > %.3g", w,
+          (double)FRESNEL_BOUND_LSK_COMP);
+}
+
+/* fresnel_gulbrandsen_rg's edge tint g over the whole domain: n in
+ * [FRESNEL_ETA_MIN, FRESNEL_ETA_MAX], k in {0} u [1e-20, FRESNEL_KAPPA_MAX],
+ * with n within 1e-12..0.5 of 1 and tiny k (r -> 0) and huge n or k
+ * (r -> 1, the clamp at FRESNEL_GULBRANDSEN_R_MAX) as their own sets. */
+static void check_gulbrandsen_rg_domain(void)
+{
+    static const float edge_n[] = {FRESNEL_ETA_MIN, 0.5f, 1.0f - 0x1p-24f, 1.0f, 1.0f + 0x1p-23f, 2.0f, 39999.0f,
+                                   40000.0f, FRESNEL_ETA_MAX};
+    static const float edge_k[] = {0.0f, FRESNEL_KAPPA_TINY, 1e-12f, 2.98e-9f, 1e-4f, 1.0f, 100.0f, 1e4f,
+                                   FRESNEL_KAPPA_MAX};
+    unsigned long long st = 777;
+    double w = 0.0, wn = 0, wk = 0, r, g;
+    long i;
+    int a, b;
+    for (i = 0; i < 4000000; i++) {
+        float n, k;
+        fresnel_rg o;
+        switch (i % 4) {
+        case 0: /* r -> 0 */
+            n = (float)(1.0 + (rnd(&st) - 0.5) * pow(10.0, -12.0 * rnd(&st)));
+            k = (float)rnd_log(&st, 1e-20, 1.0);
+            break;
+        case 1:
+            n = (float)rnd_log(&st, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+            k = (float)rnd_log(&st, 1e-20, FRESNEL_KAPPA_MAX);
+            break;
+        case 2:
+            n = (float)rnd_log(&st, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+            k = 0.0f;
+            break;
+        default: /* r -> 1 */
+            n = (float)rnd_log(&st, 1.0, FRESNEL_ETA_MAX);
+            k = (float)rnd_log(&st, 1.0, FRESNEL_KAPPA_MAX);
+            break;
+        }
+        if (i < (long)(sizeof edge_n / sizeof edge_n[0] * sizeof edge_k / sizeof edge_k[0])) {
+            a = (int)(i % (long)(sizeof edge_n / sizeof edge_n[0]));
+            b = (int)(i / (long)(sizeof edge_n / sizeof edge_n[0]));
+            n = edge_n[a];
+            k = edge_k[b];
+        }
+        o = fresnel_gulbrandsen_rg(n, k);
+        ref_gulbrandsen_rg(n, k, &r, &g);
+        if (!(fabs(o.g - g) <= w)) {
+            w = fabs(o.g - g);
+            wn = n;
+            wk = k;
+        }
+    }
+    NOTE("gulbrandsen_rg edge tint over the domain, 4e6 points: max|g err| %.3g at n %a k %a", w, wn, wk);
+    CHECK("gulbrandsen_rg: g within FRESNEL_BOUND_GULBRANDSEN_G of the reference, r -> 0 and r -> 1 included",
+          w <= FRESNEL_BOUND_GULBRANDSEN_G, "max %.3g > %.3g", w, (double)FRESNEL_BOUND_GULBRANDSEN_G);
+}
+
 int main(void)
 {
     float cs[2048];
@@ -184,5 +292,7 @@ int main(void)
     check_schlick_gen_exponents(cs, nc);
     check_f0_helpers();
     check_conductor_prepared(cs, nc);
+    check_lsk_comp_domain();
+    check_gulbrandsen_rg_domain();
     return harness_exit();
 }

@@ -258,6 +258,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (!(rg.r >= 0.0f && rg.r <= 1.0f && rg.g >= 0.0f && rg.g <= 1.0f))
         FUZZ_FAIL("fresnel_gulbrandsen_rg(%a, %a) = (%g, %g): expected both in [0, 1]", (double)eta,
                   (double)kappa, (double)rg.r, (double)rg.g);
+    else if (eta == eta && kappa == kappa) {
+        /* the edge tint over the whole domain (r -> 0 and r -> 1 included) */
+        double rr, rgg;
+        ref_gulbrandsen_rg(eta, kappa, &rr, &rgg);
+        if (!(fabs((double)rg.g - rgg) <= FRESNEL_BOUND_GULBRANDSEN_G))
+            FUZZ_FAIL("fresnel_gulbrandsen_rg(%a, %a).g = %.9g, reference %.9g: beyond %g", (double)eta,
+                      (double)kappa, (double)rg.g, rgg, (double)FRESNEL_BOUND_GULBRANDSEN_G);
+    }
 
     in[0] = eta, in[1] = kappa, in[2] = c;
     s0 = fresnel_approx_conductor(eta, kappa, c);

@@ -1,0 +1,40 @@
+#!/bin/sh
+# -ffast-math (or -Ofast, -ffinite-math-only) as a user's global flag would
+# silently break the NaN policy and the critical angles of the binary32 and
+# binary16 runtime: every such source must fail to build and name the flags
+# to drop; -fno-fast-math after it must build again.
+[ "$BUILD" = build ] || exit 0 # compile-time behaviour; once is enough
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+pat='fresnel: compile src/ without -ffast-math'
+for cc in gcc clang; do
+    command -v $cc >/dev/null || continue
+    for flags in "-ffast-math" "-Ofast" "-O2 -ffinite-math-only"; do
+        bad=""
+        n=0
+        for f in src/*.c; do
+            case $f in *_q15.c|src/fixed_math.c) continue ;; esac
+            # binary16 sources compile to nothing without _Float16 (clang 14)
+            case $f in *_f16.c) $cc -std=c99 -Iinclude -c "$f" -o "$t/p.o" && nm "$t/p.o" |
+                grep -q ' T fresnel_' || continue ;; esac
+            n=$((n + 1))
+            # shellcheck disable=SC2086
+            if $cc -std=c99 -Iinclude $flags -c "$f" -o "$t/o.o" 2>"$t/err"; then
+                bad="$bad $f:compiled"
+            elif ! grep -q -e "$pat" "$t/err"; then
+                bad="$bad $f:$(head -1 "$t/err")"
+            fi
+        done
+        if [ -z "$bad" ] && [ $n -gt 0 ]; then
+            echo "PASS $cc $flags: all $n binary32/binary16 sources fail, naming the flags"
+        else
+            echo "FAIL $cc $flags:$bad"
+        fi
+    done
+    if $cc -std=c99 -Wall -Wextra -Wpedantic -Iinclude -ffast-math -fno-fast-math -c src/exact.c \
+        -o "$t/o.o" 2>"$t/err"; then
+        echo "PASS $cc -ffast-math -fno-fast-math: builds"
+    else
+        echo "FAIL $cc -ffast-math -fno-fast-math: $(head -3 "$t/err")"
+    fi
+done
