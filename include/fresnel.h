@@ -71,7 +71,7 @@ extern "C" {
 /* Domain limits for material parameters (see CONVENTIONS). Beyond these the
  * binary32 formulas would overflow or lose all meaning; no measured material
  * comes near them. */
-#define FRESNEL_ETA_MIN   1e-3f
+#define FRESNEL_ETA_MIN   0.0009765625f
 #define FRESNEL_ETA_MAX   1e5f
 #define FRESNEL_KAPPA_MAX 1e5f
 #define FRESNEL_KAPPA_TINY 1e-18f /* kappa below this is taken as 0 */
