@@ -476,13 +476,18 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5(uint32_t x)
     return (x4 * x) >> 15;
 }
 
-/* 1 - c for the Schlick and F82 fast paths: c below 0 is 0 (two
- * instructions on Cortex-M0). c in (one, FRESNEL_Q15_FAST_C_MAX] needs
+/* c for the Schlick and F82 fast paths: c below 0 is 0, as c & ~(c >> 31)
+ * where >> is arithmetic on negative values (GCC, Clang and the other
+ * embedded compilers; two instructions on Cortex-M0, where the conditional
+ * takes three), else by the conditional. c in (one, FRESNEL_Q15_FAST_C_MAX] needs
  * nothing: 1 - c wraps to 2^32 - k, whose square is k^2 mod 2^32, so x^2 is
  * ceil(k^2 / 2^15) < 182, x^4 = 0 and x^5 = x^6 = 0: the result is F0, the
  * value at c = one (tests/test_fixed_edges.c, every such c and F0). */
 #define FRESNEL_Q15_FAST_C_MAX (32768 + 2435)
-FRESNEL_FAST__INLINE uint32_t fresnel_fast__x(int32_t c) { return 32768u - (uint32_t)(c < 0 ? 0 : c); }
+FRESNEL_FAST__INLINE uint32_t fresnel_fast__c(int32_t c)
+{
+    return (-1 >> 1) == -1 ? (uint32_t)c & ~(uint32_t)(c >> 31) : (uint32_t)(c < 0 ? 0 : c);
+}
 
 /* F0 + (1 - F0) x5 for f0, x5 in [0, one], truncated. */
 FRESNEL_FAST__INLINE uint32_t fresnel_fast__blend(uint32_t f0, uint32_t x5)
@@ -497,14 +502,14 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__blend(uint32_t f0, uint32_t x5)
  * c = one exactly F0. Cost: 4 mul. */
 FRESNEL_FAST__INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 {
-    return (fresnel_q15)fresnel_fast__blend((uint32_t)f0, fresnel_fast__pow5(fresnel_fast__x(c)));
+    return (fresnel_q15)fresnel_fast__blend((uint32_t)f0, fresnel_fast__pow5(32768u - fresnel_fast__c(c)));
 }
 
 /* The same for three channels: x^5 once, three blends; each channel equals
  * fresnel_schlick_q15_fast's. Cost: 6 mul. */
 FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
 {
-    uint32_t x5 = fresnel_fast__pow5(fresnel_fast__x(c));
+    uint32_t x5 = fresnel_fast__pow5(32768u - fresnel_fast__c(c));
     fresnel_q15_rgb r;
     r.r = (fresnel_q15)fresnel_fast__blend(f0.r, x5);
     r.g = (fresnel_q15)fresnel_fast__blend(f0.g, x5);
@@ -531,7 +536,7 @@ FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rg
 #define FRESNEL_Q15_F82_FAST_A_MAX 144592
 FRESNEL_FAST__INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
-    uint32_t x = fresnel_fast__x(c), cu = 32768u - x;
+    uint32_t cu = fresnel_fast__c(c), x = 32768u - cu;
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
     uint32_t cx6 = (cu * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
     int32_t v = (int32_t)(fresnel_fast__blend((uint32_t)f0, x5) << 15) - a_q12 * (int32_t)cx6;
@@ -614,7 +619,7 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table,
         return n < 1 ? 0 : table[0];
     if (n > 1024)
         n = 1024;
-    if ((uint32_t)c - 1u >= 32768u) /* c <= 0, or c > one */
+    if (((uint32_t)c - 1u) >> 15) /* c <= 0, or c > one */
         return c <= 0 ? table[0] : table[n - 1];
     pos = (fresnel_fast__sqrt_q22((uint32_t)c) * (uint32_t)(n - 1) + 64u) >> 7;
     i = (pos - 1u) >> 15;
@@ -654,9 +659,9 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *tab
         return n < 1 ? 0 : table[0];
     if (n > 32768)
         n = 32768;
-    if ((uint32_t)c > 32768u) /* c < 0, or c > one */
-        c = c < 0 ? 0 : 32768;
-    x = (uint32_t)c - ((uint32_t)c >> 15);
+    x = (uint32_t)c;
+    if (x >> 15) /* c < 0, or c >= one: one is read as one - 2^-15 */
+        x = c < 0 ? 0u : 32767u;
     s = fresnel_fast__sqrt_pl + (x >> 9);
     p = s[0] + (((uint32_t)(s[1] - s[0]) * (x & 511u)) >> 9);
     pos = p * (uint32_t)(n - 1);
