@@ -194,6 +194,8 @@ void fresnel_q15_ior_prepare(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_q
         if (k_bits < 32u && (vh >> k_bits) != 0)
             continue; /* quotient above 32 bits */
         q = k_bits == 32u ? vh : (vh << (32u - k_bits)) | (vl >> k_bits);
+        if (q > 0x7fffffffu - (1u << (30u - (uint32_t)s)))
+            continue; /* also before rounding: 0xffffffff would round to 0 */
         low = k_bits == 32u ? vl : vl & ((1u << k_bits) - 1u);
         half = 1u << (k_bits - 1u);
         if (low >= half) { /* round up; the remainder goes negative */

@@ -492,6 +492,45 @@ static void check_eta_min(void)
     check_bound("f0_from_ior, eta at and below the domain's bottom", &wf, FRESNEL_Q15_BOUND_F0, 0);
 }
 
+/* fresnel_q15_ior_prepare where eta^2 - kappa^2 - 1 crosses a power of
+ * two (the shift's choice, and a quotient that rounds up past 32 bits):
+ * eta and kappa codes 2^j + d, d in [-3, 3], j up to 30, each with kappa (or
+ * eta) 0, 2^-10, 1 and 2, against the reference at the same Q16.16 values,
+ * cos codes 0, 1, every 97th and the last 16. */
+static void check_prepare_powers(void)
+{
+    static const int32_t others[] = {0, 64, 65536, 131072};
+    worst w;
+    long bad = 0, layout_bad = 0;
+    int j, d, which;
+    size_t io;
+    memset(&w, 0, sizeof w);
+    for (j = 6; j <= 30; j++)
+        for (d = -3; d <= 3; d++)
+            for (io = 0; io < 4; io++)
+                for (which = 0; which < 2; which++) {
+                    int64_t v = ((int64_t)1 << j) + d;
+                    int32_t code = v > INT32_MAX ? INT32_MAX : (int32_t)v;
+                    int32_t e = which ? others[io] : code, k = which ? code : others[io], c;
+                    fresnel_q15_ior m;
+                    char what[48];
+                    double ed = (e < FRESNEL_Q16_ETA_MIN ? FRESNEL_Q16_ETA_MIN : e) / 65536.0, kd = k / 65536.0;
+                    if (ed > 32767.0 || kd > 32767.0)
+                        continue;
+                    snprintf(what, sizeof what, "eta code %ld kappa code %ld", (long)e, (long)k);
+                    fresnel_q15_ior_prepare(e, k, &m);
+                    layout_bad += !ior_layout_ok(&m);
+                    for (c = 0; c <= ONE; c += (c < 1 || c >= ONE - 16) ? 1 : 97) {
+                        int32_t got = fresnel_conductor_q15(&m, c);
+                        bad += got < 0 || got > ONE;
+                        note_worst(&w, fabs(got / 32768.0 - ref_conductor(ed, kd, c / 32768.0)) * 32768.0, what,
+                                   c / 32768.0);
+                    }
+                }
+    check_bound("conductor, Q16.16 prepare at powers of two of eta, kappa", &w, FRESNEL_Q15_BOUND_CONDUCTOR, bad);
+    CHECK("fresnel_q15_ior_prepare keeps the layout at powers of two", layout_bad == 0, "%ld break it", layout_bad);
+}
+
 /* eta -> 0 near normal incidence, where eta^2 at the prepared scale is a
  * small number: 4000 eta in [FRESNEL_ETA_MIN, 0.05], the 512 codes below one. */
 static void check_small_eta(const model *m)
@@ -593,6 +632,7 @@ int main(void)
     check_models(mat, nmat);
     check_domain();
     check_eta_min();
+    check_prepare_powers();
     check_schlick_gen();
     check_schlick_f0();
     check_f82_pairs();
