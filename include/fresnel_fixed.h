@@ -60,7 +60,17 @@
  *   (eta is not adjusted: a0 and a0_lo hold eta^2 - kappa^2 - 1 to 60 bits,
  *   enough also at a dielectric's critical angle, where the reflectance is
  *   as sensitive to eta as the physics makes it). F82 and generalized Schlick are also measured on grids of
- *   their parameters, the LUTs on tables of 2 to 1024 nodes. Rounding the
+ *   their parameters, the LUTs on tables of 2 to 1024 nodes. The same bounds
+ *   hold over the whole domain eta in [2^-10, 32767], kappa in [0, 32767]
+ *   (check_domain: 304 eta, kappa pairs, log-uniform grids, dense toward
+ *   eta -> 0, and random, every 5th code and every code within 64 of 0 and
+ *   one: the largest maximum is LSK compensated's 0.50005; 4000 eta in
+ *   [2^-10, 0.05] near normal incidence for the dielectric; Q16.16 eta
+ *   codes from below 2^-10 and at every power of two of eta and kappa for
+ *   fresnel_q15_ior_prepare), and the fuzzer (tests/fuzz/fuzz_fixed_models.c)
+ *   holds every function to them there. Prepared on the host, eta or kappa
+ *   above 46340 ((eta^2 - kappa^2 - 1) 2^-30 at shift 30 must fit int32)
+ *   is outside the layout. Rounding the
  *   exact value to the nearest code is already 0.5 LSB. The test asserts
  *   each bound; `make test` prints the maxima. The same results, bit for
  *   bit, come out of the Cortex-M0, Cortex-M4F and RV32IMC builds
