@@ -505,8 +505,8 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__blend(uint32_t f0, uint32_t x5)
     return f0 + (((32768u - f0) * x5) >> 15);
 }
 
-/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 and c in [0, one]: x^5 as
- * fresnel_fast__pow5 and a truncated blend. Error <=
+/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 in [0, one] and c as
+ * PRECONDITIONS says: x^5 as fresnel_fast__pow5 and a truncated blend. Error <=
  * FRESNEL_Q15_BOUND_SCHLICK_FAST LSB (every 16th F0 code, every c code;
  * every F0 code with FRESNEL_TEST_EXHAUSTIVE=1). c = 0 gives exactly one,
  * c = one exactly F0. Cost: 4 mul. */

@@ -10,34 +10,38 @@
 #define FR__LUT_N_MAX 32768
 static int fr__lut_n(int n) { return n <= 0 ? 0 : (n > FR__LUT_N_MAX ? FR__LUT_N_MAX : n); }
 
-/* Position of x (Q30, [0, 2^30]) along n nodes (1 <= n <= FR__LUT_N_MAX),
- * as the two nodes i, j = i + 1 around it and a 15-bit fraction, rounded to
+/* Position of x (Q30, [0, 2^30]) along n nodes (1 <= n <= FR__LUT_N_MAX, as
+ * fr__lut_n gives it and the callers have checked n != 0),
+ * as the node i before it (FR__NEXT the one after) and a 15-bit fraction, rounded to
  * nearest (a floor would cost up to one LSB on a steep two-node table).
  * R: n - 1 <= 2^15 - 1: (x >> 15)(n-1) < 2^30, (x & 0x7fff)(n-1) + 2^14 <
  * 2^31, and the position is at most (n-1) 2^15, index <= n - 1. x = 1 lands
  * on the last segment's end: index n - 2 with fraction 2^15. One node is a
- * constant curve: i = j = 0. */
+ * constant curve: i = 0, t = 0. */
 typedef struct fr__pos {
-    int i, j;
+    int i;
     uint32_t t;
 } fr__pos;
+
+/* The node after i: i itself for a one-node table. */
+#define FR__NEXT(p, n) ((p).i + ((n) > 1))
 
 static fr__pos fr__position(uint32_t x, int n)
 {
     fr__pos p;
-    uint32_t nodes = (uint32_t)(n < 2 ? 1 : (n > FR__LUT_N_MAX ? FR__LUT_N_MAX - 1 : n - 1));
-    uint32_t pos = (x >> 15) * nodes + (((x & 0x7fffu) * nodes + (1u << 14)) >> 15);
+    uint32_t nodes = (uint32_t)n - 1u, pos;
+    FR__RANGE("lut n", n, 1, FR__LUT_N_MAX);
+    p.i = 0;
+    p.t = 0;
+    if (nodes == 0)
+        return p;
+    pos = (x >> 15) * nodes + (((x & 0x7fffu) * nodes + (1u << 14)) >> 15);
     FR__RANGE("lut position", pos, 0, nodes << 15);
     p.i = (int)(pos >> 15);
     p.t = pos & 0x7fffu;
     if (p.i >= (int)nodes) {
         p.i = (int)nodes - 1;
         p.t = 1u << 15;
-    }
-    p.j = p.i + 1;
-    if (n < 2) {
-        p.i = p.j = 0;
-        p.t = 0;
     }
     return p;
 }
@@ -107,7 +111,7 @@ static fresnel_q15 fr__lut_u16(const uint16_t *table, int n, int ch, uint32_t x)
         return 0;
     table += ch * n;
     p = fr__position(x, n);
-    return fr__q30_to_q15(fr__lerp_q30(fr__u16_q15(table[p.i]), fr__u16_q15(table[p.j]), p.t));
+    return fr__q30_to_q15(fr__lerp_q30(fr__u16_q15(table[p.i]), fr__u16_q15(table[FR__NEXT(p, n)]), p.t));
 }
 
 /* uint8 nodes mean v / 255: interpolated in units of 2^-15 / 255 (the lerp
@@ -120,7 +124,7 @@ static fresnel_q15 fr__lut_u8(const uint8_t *table, int n, int ch, uint32_t x)
         return 0;
     table += ch * n;
     p = fr__position(x, n);
-    return (fresnel_q15)fr__div255_round(fr__lerp_q30(table[p.i], table[p.j], p.t));
+    return (fresnel_q15)fr__div255_round(fr__lerp_q30(table[p.i], table[FR__NEXT(p, n)], p.t));
 }
 
 /* Signed residual nodes v0, v1 (|v| <= 2^15) scaled by 2^-frac, interpolated
@@ -159,7 +163,7 @@ static fresnel_q15 fr__lut_s16(int32_t f0, const int16_t *table, int n, int ch, 
         return fr__plus_schlick(f0, c, 0);
     table += ch * n;
     p = fr__position(x, n);
-    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.j], p.t, fr__frac(frac, 15, 30)));
+    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[FR__NEXT(p, n)], p.t, fr__frac(frac, 15, 30)));
 }
 
 static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int ch, int frac, uint32_t x, int32_t c)
@@ -169,7 +173,7 @@ static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int ch, in
         return fr__plus_schlick(f0, c, 0);
     table += ch * n;
     p = fr__position(x, n);
-    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.j], p.t, fr__frac(frac, 7, 22)));
+    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[FR__NEXT(p, n)], p.t, fr__frac(frac, 7, 22)));
 }
 
 /* Catmull-Rom weights in Q15 for a fraction t in [0, 2^15], s = 1 - t:
@@ -198,28 +202,33 @@ static fresnel_q15 fr__cubic_u16(const uint16_t *table, int n, int ch, fr__pos p
 {
     int last = n - 1;
     int32_t v0, v1, v2, v3;
-    if (n == 0)
-        return 0;
     table += ch * n;
     v0 = (int32_t)fr__u16_q15(table[p.i > 0 ? p.i - 1 : 0]);
     v1 = (int32_t)fr__u16_q15(table[p.i]);
-    v2 = (int32_t)fr__u16_q15(table[p.j]);
-    v3 = (int32_t)fr__u16_q15(table[p.j + 1 <= last ? p.j + 1 : last]);
+    v2 = (int32_t)fr__u16_q15(table[FR__NEXT(p, n)]);
+    v3 = (int32_t)fr__u16_q15(table[FR__NEXT(p, n) + 1 <= last ? FR__NEXT(p, n) + 1 : last]);
     return fr__q30s_to_q15(w.w1 * v1 + w.w2 * v2 - w.w0 * v0 - w.w3 * v3);
 }
 
 fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n_in, int32_t c)
 {
     int n = fr__lut_n(n_in);
-    fr__pos p = fr__position(fr__sqrt_w(c), n);
+    fr__pos p;
+    if (n == 0)
+        return 0;
+    p = fr__position(fr__sqrt_w(c), n);
     return fr__cubic_u16(table, n, 0, p, fr__cubic_weights(p.t));
 }
 
 fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n_in, int32_t c)
 {
     int n = fr__lut_n(n_in);
-    fr__pos p = fr__position(fr__sqrt_w(c), n);
-    fr__cubic_w w = fr__cubic_weights(p.t);
+    fr__pos p;
+    fr__cubic_w w;
+    if (n == 0)
+        FR__RGB_Q15(0, 0, 0);
+    p = fr__position(fr__sqrt_w(c), n);
+    w = fr__cubic_weights(p.t);
     FR__RGB_Q15(fr__cubic_u16(table, n, 0, p, w), fr__cubic_u16(table, n, 1, p, w), fr__cubic_u16(table, n, 2, p, w));
 }
 
