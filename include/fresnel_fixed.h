@@ -60,7 +60,17 @@
  *   (eta is not adjusted: a0 and a0_lo hold eta^2 - kappa^2 - 1 to 60 bits,
  *   enough also at a dielectric's critical angle, where the reflectance is
  *   as sensitive to eta as the physics makes it). F82 and generalized Schlick are also measured on grids of
- *   their parameters, the LUTs on tables of 2 to 1024 nodes. Rounding the
+ *   their parameters, the LUTs on tables of 2 to 1024 nodes. The same bounds
+ *   hold over the whole domain eta in [2^-10, 32767], kappa in [0, 32767]
+ *   (check_domain: 304 eta, kappa pairs, log-uniform grids, dense toward
+ *   eta -> 0, and random, every 5th code and every code within 64 of 0 and
+ *   one: the largest maximum is LSK compensated's 0.50005; 4000 eta in
+ *   [2^-10, 0.05] near normal incidence for the dielectric; Q16.16 eta
+ *   codes from below 2^-10 and at every power of two of eta and kappa for
+ *   fresnel_q15_ior_prepare), and the fuzzer (tests/fuzz/fuzz_fixed_models.c)
+ *   holds every function to them there. Prepared on the host, eta or kappa
+ *   above 46340 ((eta^2 - kappa^2 - 1) 2^-30 at shift 30 must fit int32)
+ *   is outside the layout. Rounding the
  *   exact value to the nearest code is already 0.5 LSB. The test asserts
  *   each bound; `make test` prints the maxima. The same results, bit for
  *   bit, come out of the Cortex-M0, Cortex-M4F and RV32IMC builds
@@ -356,6 +366,10 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c);
  *   _s8   int8_t,  residual = v / 2^frac, frac in [6, 22]
  *         (frac 14 / 6 hold a residual of 1: the generator's residual nodes
  *         are in [-1, 1])
+ * n outside [2, 32768] (any int): n <= 0 reads no entry and gives 0 (the
+ * _residual forms: Schlick alone), n = 1 is the constant table[0], n above
+ * 32768 is read as 32768 nodes (the _rgb forms: 3 x 32768 entries, the
+ * channels at 0, 32768, 65536), so no entry past the table is read.
  * Results are clamped to [0, one]. Error <= FRESNEL_Q15_BOUND_LUT LSB against
  * the same interpolation in double (the table's own error is the
  * generator's business); between two nodes that differ by s > 1 (a
@@ -428,10 +442,17 @@ fresnel_q16 fresnel_recip_q16(fresnel_q16 x);
  * no division, no float); C99 static inline, so a firmware that uses one of
  * them links no library code for it.
  *
- * PRECONDITIONS (not checked; outside them the result is unspecified):
- *   c, f0 in [0, FRESNEL_Q15_ONE]; F82's a_q12 as fresnel_f82_q15_fast says;
- *   LUT entries in [0, FRESNEL_Q15_ONE] and 2 <= n <= 1024.
- * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them.
+ * PRECONDITIONS (outside them the behaviour is undefined):
+ *   f0 in [0, FRESNEL_Q15_ONE]; LUT entries in [0, FRESNEL_Q15_ONE];
+ *   Schlick and F82: c <= FRESNEL_Q15_FAST_C_MAX (one + 2435; any c < 0 is
+ *   read as 0, c in [one, one + 2435] gives F0, the value at one), F82's
+ *   a_q12 in [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX];
+ *   LUTs: any c (c <= 0 reads as 0, c > one as one) and any n (n <= 0 gives
+ *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
+ *   as that many nodes; with n a compile-time constant these tests fold
+ *   away). The table must hold min(n, that maximum) entries.
+ * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them
+ * (tests/test_fixed_edges.c: each precondition at its edge and one past).
  * ERROR BOUNDS (LSB of Q15, FRESNEL_Q15_BOUND_*_FAST) are the largest
  * |result/32768 - reference| measured by tests/test_fixed_fast.c, against
  * the same double references as tests/test_fixed_bounds.c, over every cos
@@ -469,27 +490,40 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5(uint32_t x)
     return (x4 * x) >> 15;
 }
 
+/* c for the Schlick and F82 fast paths: c below 0 is 0, as c & ~(c >> 31)
+ * where >> is arithmetic on negative values (GCC, Clang and the other
+ * embedded compilers; two instructions on Cortex-M0, where the conditional
+ * takes three), else by the conditional. c in (one, FRESNEL_Q15_FAST_C_MAX] needs
+ * nothing: 1 - c wraps to 2^32 - k, whose square is k^2 mod 2^32, so x^2 is
+ * ceil(k^2 / 2^15) < 182, x^4 = 0 and x^5 = x^6 = 0: the result is F0, the
+ * value at c = one (tests/test_fixed_edges.c, every such c and F0). */
+#define FRESNEL_Q15_FAST_C_MAX (32768 + 2435)
+FRESNEL_FAST__INLINE uint32_t fresnel_fast__c(int32_t c)
+{
+    return (-1 >> 1) == -1 ? (uint32_t)c & ~(uint32_t)(c >> 31) : (uint32_t)(c < 0 ? 0 : c);
+}
+
 /* F0 + (1 - F0) x5 for f0, x5 in [0, one], truncated. */
 FRESNEL_FAST__INLINE uint32_t fresnel_fast__blend(uint32_t f0, uint32_t x5)
 {
     return f0 + (((32768u - f0) * x5) >> 15);
 }
 
-/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 and c in [0, one]: x^5 as
- * fresnel_fast__pow5 and a truncated blend. Error <=
+/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 in [0, one] and c as
+ * PRECONDITIONS says: x^5 as fresnel_fast__pow5 and a truncated blend. Error <=
  * FRESNEL_Q15_BOUND_SCHLICK_FAST LSB (every 16th F0 code, every c code;
  * every F0 code with FRESNEL_TEST_EXHAUSTIVE=1). c = 0 gives exactly one,
  * c = one exactly F0. Cost: 4 mul. */
 FRESNEL_FAST__INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 {
-    return (fresnel_q15)fresnel_fast__blend((uint32_t)f0, fresnel_fast__pow5(32768u - (uint32_t)c));
+    return (fresnel_q15)fresnel_fast__blend((uint32_t)f0, fresnel_fast__pow5(32768u - fresnel_fast__c(c)));
 }
 
 /* The same for three channels: x^5 once, three blends; each channel equals
  * fresnel_schlick_q15_fast's. Cost: 6 mul. */
 FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
 {
-    uint32_t x5 = fresnel_fast__pow5(32768u - (uint32_t)c);
+    uint32_t x5 = fresnel_fast__pow5(32768u - fresnel_fast__c(c));
     fresnel_q15_rgb r;
     r.r = (fresnel_q15)fresnel_fast__blend(f0.r, x5);
     r.g = (fresnel_q15)fresnel_fast__blend(f0.g, x5);
@@ -500,7 +534,11 @@ FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rg
 /* Hoffman's F82 model, F = F0 + (1 - F0) x^5 - a c x^6, with the
  * per-material a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) prepared on the host
  * as a_q12 = round(4096 a) (`fresnel gen` emits it for scenes with f82 and
- * q15; any F0, F82 in [0, 1] give a in [-9.5, 17.7], so |a_q12| <= 73000).
+ * q15; any F0, F82 in [0, 1] give a in [-9.4847, 17.6514], a_q12 in
+ * [-38849, 72300]). The arithmetic is exact for a_q12 in
+ * [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX]: c x^6 in Q18
+ * is at most 14852 (c = 4654), so F0 = one with a_q12 below -72296 would
+ * overflow int32 (tests/test_fixed_edges.c computes both ends).
  * Schlick as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
  * error matters: a c multiplies it), c x^6 in Q18 (<= 14870), the sum in
  * units of 2^-30 (|a_q12 c x^6| < 2^30.1, Schlick 2^30), clamped to [0, one]
@@ -508,11 +546,13 @@ FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rg
  * reached only at unphysical corners (F0 = 1, F82 = 0: a = 17.7). Error <= FRESNEL_Q15_BOUND_F82_FAST LSB (F0 and F82 on a 1/32 grid
  * and the test materials, every c code, against ref_f82 at the unrounded
  * a). Cost: 7 mul. */
+#define FRESNEL_Q15_F82_FAST_A_MIN (-72296)
+#define FRESNEL_Q15_F82_FAST_A_MAX 144592
 FRESNEL_FAST__INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
-    uint32_t x = 32768u - (uint32_t)c;
+    uint32_t cu = fresnel_fast__c(c), x = 32768u - cu;
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
-    uint32_t cx6 = ((uint32_t)c * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
+    uint32_t cx6 = (cu * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
     int32_t v = (int32_t)(fresnel_fast__blend((uint32_t)f0, x5) << 15) - a_q12 * (int32_t)cx6;
     uint32_t r = (uint32_t)v >> 15;
     if (v <= 0)
@@ -577,7 +617,7 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__sqrt_q22(uint32_t c)
  * with the position from fresnel_fast__sqrt_q22 instead of the exact root:
  * pos = round(sqrt(c) (n-1) 2^15), segment i = (pos - 1) >> 15 (so c = one
  * reads nodes n-2 and n-1 with weight one), linear interpolation rounded.
- * Preconditions: 2 <= n <= 1024, entries <= 32768, c in [0, one]. Error
+ * n and c outside [2, 1024] and [0, one]: as PRECONDITIONS says. Error
  * against the double interpolation at the exact sqrt(c) (tables of 2 to
  * 1024 nodes as in test_fixed_bounds.c) <= FRESNEL_Q15_BOUND_LUT_FAST LSB for
  * n <= 64 and FRESNEL_Q15_BOUND_LUT_FAST_1024 up to 1024 nodes: the
@@ -589,8 +629,12 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table,
 {
     uint32_t pos, i, t;
     int32_t v0, v1;
-    if (c == 0)
-        return table[0];
+    if (n < 2)
+        return n < 1 ? 0 : table[0];
+    if (n > 1024)
+        n = 1024;
+    if (((uint32_t)c - 1u) >> 15) /* c <= 0, or c > one */
+        return c <= 0 ? table[0] : table[n - 1];
     pos = (fresnel_fast__sqrt_q22((uint32_t)c) * (uint32_t)(n - 1) + 64u) >> 7;
     i = (pos - 1u) >> 15;
     t = pos - (i << 15);
@@ -608,12 +652,12 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table,
  *   p = S[j] + ((S[j+1] - S[j]) (c mod 512)) >> 9, j = c >> 9  (c = one read
  *       as one - 2^-15, so that p < one and the last segment is n-2)
  *   pos = p (n-1), node i = pos >> 15, linear interpolation, truncated.
- * Preconditions: 2 <= n <= 64 (P has 15 bits: its truncation moves the
- * position by up to (n-1) 2^-15 of a segment), entries <= 32768, c in [0,
- * one]. Error <= FRESNEL_Q15_BOUND_LUT_PL_FAST LSB against the same
+ * The bound needs 2 <= n <= 64 (P has 15 bits: its truncation moves the
+ * position by up to (n-1) 2^-15 of a segment); n and c outside: as
+ * PRECONDITIONS says. Error <= FRESNEL_Q15_BOUND_LUT_PL_FAST LSB against the same
  * interpolation in double at the same P, FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR
  * across a total-reflection edge (a step of up to one between two nodes)
- * (tests/test_fixed_fast.c). Cost: 3 mul, 4 loads, no branch. */
+ * (tests/test_fixed_fast.c). Cost: 3 mul, 4 loads. */
 static const uint16_t fresnel_fast__sqrt_pl[65] = {
     0u,     4096u,  5793u,  7094u,  8192u,  9159u,  10033u, 10837u, 11585u, 12288u, 12953u, 13585u, 14189u,
     14768u, 15326u, 15864u, 16384u, 16888u, 17378u, 17854u, 18318u, 18770u, 19212u, 19644u, 20066u, 20480u,
@@ -623,10 +667,19 @@ static const uint16_t fresnel_fast__sqrt_pl[65] = {
 
 FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *table, int n, int32_t c)
 {
-    uint32_t x = (uint32_t)c - ((uint32_t)c >> 15);
-    const uint16_t *s = fresnel_fast__sqrt_pl + (x >> 9), *v;
-    uint32_t p = s[0] + (((uint32_t)(s[1] - s[0]) * (x & 511u)) >> 9);
-    uint32_t pos = p * (uint32_t)(n - 1), t = pos & 32767u;
+    uint32_t x, p, pos, t;
+    const uint16_t *s, *v;
+    if (n < 2)
+        return n < 1 ? 0 : table[0];
+    if (n > 32768)
+        n = 32768;
+    x = (uint32_t)c;
+    if (x >> 15) /* c < 0, or c >= one: one is read as one - 2^-15 */
+        x = c < 0 ? 0u : 32767u;
+    s = fresnel_fast__sqrt_pl + (x >> 9);
+    p = s[0] + (((uint32_t)(s[1] - s[0]) * (x & 511u)) >> 9);
+    pos = p * (uint32_t)(n - 1);
+    t = pos & 32767u;
     v = table + (pos >> 15);
     return (fresnel_q15)((v[0] * 32768 + (v[1] - v[0]) * (int32_t)t) >> 15);
 }

@@ -115,8 +115,8 @@ fresnel_q15_rgb fresnel_conductor_q15_rgb(const fresnel_q15_ior m[3], int32_t c)
  * P = eta^2 c the two transmittances reduce to 4cu/(c+u)^2 and 4Pu/(P+u)^2. */
 fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c_in)
 {
-    uint32_t c = fr__q15_arg(c_in), s = fr__shift(m);
-    int a_negative;
+    uint32_t c = fr__q15_arg(c_in);
+    int a_negative, e2_negative;
     fresnel_qf aq, u, cq, p, ts, tp;
     if (m->b.m != 0)
         return fresnel_conductor_q15(m, c_in); /* not a dielectric after all */
@@ -127,9 +127,10 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c_in)
         return FR__ONE_Q15; /* total internal reflection, or grazing */
     u = fr__qf_sqrt(aq);
     cq = fr__qf(c, -15);
-    /* eta^2 = a0 + 1 at the prepared scale (no cancellation: a0_lo is below
-     * what shows). R: a0 + 2^(30-s) in (0, 2^31) by the layout */
-    p = fr__qf_mul(fr__qf((uint32_t)m->a0 + (1u << (30u - s)), (int32_t)s - 30), cq);
+    /* eta^2 = A at c = 1, both words: for eta -> 0 the high word a0 + 1
+     * keeps only log2(eta^2 2^30) bits (17 at eta = 0.01), and P's relative
+     * error shows in the result near normal incidence. */
+    p = fr__qf_mul(fr__a_qf(m, FR__ONE_Q15, &e2_negative), cq);
     ts = fr__qf_add(cq, u);
     ts = fr__qf_div(fr__qf_scale(fr__qf_mul(cq, u), 2), fr__qf_mul(ts, ts));
     tp = fr__qf_add(p, u);
@@ -193,6 +194,8 @@ void fresnel_q15_ior_prepare(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_q
         if (k_bits < 32u && (vh >> k_bits) != 0)
             continue; /* quotient above 32 bits */
         q = k_bits == 32u ? vh : (vh << (32u - k_bits)) | (vl >> k_bits);
+        if (q > 0x7fffffffu - (1u << (30u - (uint32_t)s)))
+            continue; /* also before rounding: 0xffffffff would round to 0 */
         low = k_bits == 32u ? vl : vl & ((1u << k_bits) - 1u);
         half = 1u << (k_bits - 1u);
         if (low >= half) { /* round up; the remainder goes negative */

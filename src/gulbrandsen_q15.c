@@ -37,9 +37,9 @@ void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_q15_nk *out)
     out->n = fr__qf_add(fr__qf_mul(gq, nmin), fr__qf_mul(omg, nmax));
     /* fresnel_gulbrandsen feeds n to fresnel_approx_conductor, which clamps
      * it to fresnel.h's domain; r -> 1 with g = 1 gives n = nmin -> 0, so the
-     * same model needs the same clamp (FRESNEL_ETA_MIN = 1e-3f exactly) */
-    if (fr__qf_cmp(out->n, fr__qf(1099511680u, -40)) < 0)
-        out->n = fr__qf(1099511680u, -40);
+     * same model needs the same clamp (FRESNEL_ETA_MIN = 2^-10, FRESNEL_Q16_ETA_MIN) */
+    if (fr__qf_cmp(out->n, fr__qf(1u << 30, -40)) < 0)
+        out->n = fr__qf(1u << 30, -40);
     q = fr__qf_div(fr__qf_scale(fr__qf_mul(gq, s), 1), opr);
     k2 = fr__qf_mul(q, fr__qf_add(q, fr__qf_div(fr__qf_scale(fr__qf_mul(fr__qf_mul(omg, s), nmax), 2), omr)));
     out->nk2 = fr__qf_add(fr__qf_mul(out->n, out->n), k2);

@@ -4,22 +4,38 @@
 
 #if FRESNEL_HAS_FIXED
 
-/* Position of x (Q30, [0, 2^30]) along n nodes, as node index and a 15-bit
- * fraction, rounded to nearest (a floor would cost up to one LSB on a
- * steep two-node table). R: n - 1 <= 2^15 - 1 (n <= 32768): (x >> 15)(n-1)
- * < 2^30, (x & 0x7fff)(n-1) + 2^14 < 2^31, and the position is at most
- * (n-1) 2^15, index <= n - 1. x = 1 lands on the last segment's end: index
- * n - 2 with fraction 2^15. */
+/* The node count as the functions read it: n above FR__LUT_N_MAX is taken
+ * as FR__LUT_N_MAX (so only entries the caller's table has are read), n <= 0
+ * as 0, for which the callers read no entry at all. */
+#define FR__LUT_N_MAX 32768
+static int fr__lut_n(int n) { return n <= 0 ? 0 : (n > FR__LUT_N_MAX ? FR__LUT_N_MAX : n); }
+
+/* Position of x (Q30, [0, 2^30]) along n nodes (1 <= n <= FR__LUT_N_MAX, as
+ * fr__lut_n gives it and the callers have checked n != 0),
+ * as the node i before it (FR__NEXT the one after) and a 15-bit fraction, rounded to
+ * nearest (a floor would cost up to one LSB on a steep two-node table).
+ * R: n - 1 <= 2^15 - 1: (x >> 15)(n-1) < 2^30, (x & 0x7fff)(n-1) + 2^14 <
+ * 2^31, and the position is at most (n-1) 2^15, index <= n - 1. x = 1 lands
+ * on the last segment's end: index n - 2 with fraction 2^15. One node is a
+ * constant curve: i = 0, t = 0. */
 typedef struct fr__pos {
     int i;
     uint32_t t;
 } fr__pos;
 
+/* The node after i: i itself for a one-node table. */
+#define FR__NEXT(p, n) ((p).i + ((n) > 1))
+
 static fr__pos fr__position(uint32_t x, int n)
 {
     fr__pos p;
-    uint32_t nodes = (uint32_t)(n < 2 ? 1 : (n > 32768 ? 32767 : n - 1));
-    uint32_t pos = (x >> 15) * nodes + (((x & 0x7fffu) * nodes + (1u << 14)) >> 15);
+    uint32_t nodes = (uint32_t)n - 1u, pos;
+    FR__RANGE("lut n", n, 1, FR__LUT_N_MAX);
+    p.i = 0;
+    p.t = 0;
+    if (nodes == 0)
+        return p;
+    pos = (x >> 15) * nodes + (((x & 0x7fffu) * nodes + (1u << 14)) >> 15);
     FR__RANGE("lut position", pos, 0, nodes << 15);
     p.i = (int)(pos >> 15);
     p.t = pos & 0x7fffu;
@@ -86,19 +102,29 @@ static uint32_t fr__div255_round(uint32_t v)
 
 static uint32_t fr__u16_q15(uint16_t v) { return v > FR__ONE_Q15 ? FR__ONE_Q15 : v; }
 
-static fresnel_q15 fr__lut_u16(const uint16_t *table, int n, uint32_t x)
+/* Channel ch (0 for the scalar forms) of a table of n nodes per channel,
+ * n as fr__lut_n gives it: 0 reads nothing. */
+static fresnel_q15 fr__lut_u16(const uint16_t *table, int n, int ch, uint32_t x)
 {
-    fr__pos p = fr__position(x, n);
-    return fr__q30_to_q15(fr__lerp_q30(fr__u16_q15(table[p.i]), fr__u16_q15(table[p.i + 1]), p.t));
+    fr__pos p;
+    if (n == 0)
+        return 0;
+    table += ch * n;
+    p = fr__position(x, n);
+    return fr__q30_to_q15(fr__lerp_q30(fr__u16_q15(table[p.i]), fr__u16_q15(table[FR__NEXT(p, n)]), p.t));
 }
 
 /* uint8 nodes mean v / 255: interpolated in units of 2^-15 / 255 (the lerp
  * of the raw codes, <= 255 2^15) and divided by 255 once, so the encoding
  * adds no rounding of its own. */
-static fresnel_q15 fr__lut_u8(const uint8_t *table, int n, uint32_t x)
+static fresnel_q15 fr__lut_u8(const uint8_t *table, int n, int ch, uint32_t x)
 {
-    fr__pos p = fr__position(x, n);
-    return (fresnel_q15)fr__div255_round(fr__lerp_q30(table[p.i], table[p.i + 1], p.t));
+    fr__pos p;
+    if (n == 0)
+        return 0;
+    table += ch * n;
+    p = fr__position(x, n);
+    return (fresnel_q15)fr__div255_round(fr__lerp_q30(table[p.i], table[FR__NEXT(p, n)], p.t));
 }
 
 /* Signed residual nodes v0, v1 (|v| <= 2^15) scaled by 2^-frac, interpolated
@@ -136,16 +162,25 @@ static fresnel_q15 fr__plus_schlick(int32_t f0, int32_t c, int32_t residual)
 
 static int fr__frac(int frac, int lo, int hi) { return frac < lo ? lo : (frac > hi ? hi : frac); }
 
-static fresnel_q15 fr__lut_s16(int32_t f0, const int16_t *table, int n, int frac, uint32_t x, int32_t c)
+/* Residual tables: no node (n = 0) is a zero residual, Schlick alone. */
+static fresnel_q15 fr__lut_s16(int32_t f0, const int16_t *table, int n, int ch, int frac, uint32_t x, int32_t c)
 {
-    fr__pos p = fr__position(x, n);
-    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 14, 30)));
+    fr__pos p;
+    if (n == 0)
+        return fr__plus_schlick(f0, c, 0);
+    table += ch * n;
+    p = fr__position(x, n);
+    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[FR__NEXT(p, n)], p.t, fr__frac(frac, 14, 30)));
 }
 
-static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int frac, uint32_t x, int32_t c)
+static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int ch, int frac, uint32_t x, int32_t c)
 {
-    fr__pos p = fr__position(x, n);
-    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[p.i + 1], p.t, fr__frac(frac, 6, 22)));
+    fr__pos p;
+    if (n == 0)
+        return fr__plus_schlick(f0, c, 0);
+    table += ch * n;
+    p = fr__position(x, n);
+    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[FR__NEXT(p, n)], p.t, fr__frac(frac, 6, 22)));
 }
 
 /* Catmull-Rom weights in Q15 for a fraction t in [0, 2^15], s = 1 - t:
@@ -168,111 +203,131 @@ static fr__cubic_w fr__cubic_weights(uint32_t t)
     return w;
 }
 
-/* R: node values <= 2^15; |w| sum <= 1.25 2^15 + 4, so |sum| < 1.3 2^30. */
-static fresnel_q15 fr__cubic_u16(const uint16_t *table, int n, fr__pos p, fr__cubic_w w)
+/* R: node values <= 2^15; |w| sum <= 1.25 2^15 + 4, so |sum| < 1.3 2^30.
+ * The outer nodes repeat the end ones (index clamped to [0, n-1]). */
+static fresnel_q15 fr__cubic_u16(const uint16_t *table, int n, int ch, fr__pos p, fr__cubic_w w)
 {
-    int last = n < 2 ? 1 : n - 1;
-    int32_t v0 = (int32_t)fr__u16_q15(table[p.i > 0 ? p.i - 1 : 0]);
-    int32_t v1 = (int32_t)fr__u16_q15(table[p.i]), v2 = (int32_t)fr__u16_q15(table[p.i + 1]);
-    int32_t v3 = (int32_t)fr__u16_q15(table[p.i + 2 <= last ? p.i + 2 : last]);
+    int last = n - 1;
+    int32_t v0, v1, v2, v3;
+    table += ch * n;
+    v0 = (int32_t)fr__u16_q15(table[p.i > 0 ? p.i - 1 : 0]);
+    v1 = (int32_t)fr__u16_q15(table[p.i]);
+    v2 = (int32_t)fr__u16_q15(table[FR__NEXT(p, n)]);
+    v3 = (int32_t)fr__u16_q15(table[FR__NEXT(p, n) + 1 <= last ? FR__NEXT(p, n) + 1 : last]);
     return fr__q30s_to_q15(w.w1 * v1 + w.w2 * v2 - w.w0 * v0 - w.w3 * v3);
 }
 
-fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n, int32_t c)
+fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n_in, int32_t c)
 {
-    fr__pos p = fr__position(fr__sqrt_w(c), n);
-    return fr__cubic_u16(table, n, p, fr__cubic_weights(p.t));
+    int n = fr__lut_n(n_in);
+    fr__pos p;
+    if (n == 0)
+        return 0;
+    p = fr__position(fr__sqrt_w(c), n);
+    return fr__cubic_u16(table, n, 0, p, fr__cubic_weights(p.t));
 }
 
-fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
+fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n_in, int32_t c)
 {
-    fr__pos p = fr__position(fr__sqrt_w(c), n);
-    fr__cubic_w w = fr__cubic_weights(p.t);
-    FR__RGB_Q15(fr__cubic_u16(table, n, p, w), fr__cubic_u16(table + n, n, p, w),
-                fr__cubic_u16(table + 2 * n, n, p, w));
+    int n = fr__lut_n(n_in);
+    fr__pos p;
+    fr__cubic_w w;
+    if (n == 0)
+        FR__RGB_Q15(0, 0, 0);
+    p = fr__position(fr__sqrt_w(c), n);
+    w = fr__cubic_weights(p.t);
+    FR__RGB_Q15(fr__cubic_u16(table, n, 0, p, w), fr__cubic_u16(table, n, 1, p, w), fr__cubic_u16(table, n, 2, p, w));
 }
 
 fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c)
 {
-    return fr__lut_u16(table, n, fr__sqrt_w(c));
+    return fr__lut_u16(table, fr__lut_n(n), 0, fr__sqrt_w(c));
 }
 fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c)
 {
-    return fr__lut_u16(table, n, fr__linear_w(c));
+    return fr__lut_u16(table, fr__lut_n(n), 0, fr__linear_w(c));
 }
 fresnel_q15 fresnel_lut_q15_u8(const uint8_t *table, int n, int32_t c)
 {
-    return fr__lut_u8(table, n, fr__sqrt_w(c));
+    return fr__lut_u8(table, fr__lut_n(n), 0, fr__sqrt_w(c));
 }
 fresnel_q15 fresnel_lut_linear_q15_u8(const uint8_t *table, int n, int32_t c)
 {
-    return fr__lut_u8(table, n, fr__linear_w(c));
+    return fr__lut_u8(table, fr__lut_n(n), 0, fr__linear_w(c));
 }
 fresnel_q15 fresnel_lut_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s16(f0, table, n, frac, fr__sqrt_w(c), c);
+    return fr__lut_s16(f0, table, fr__lut_n(n), 0, frac, fr__sqrt_w(c), c);
 }
 fresnel_q15 fresnel_lut_linear_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s16(f0, table, n, frac, fr__linear_w(c), c);
+    return fr__lut_s16(f0, table, fr__lut_n(n), 0, frac, fr__linear_w(c), c);
 }
 fresnel_q15 fresnel_lut_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s8(f0, table, n, frac, fr__sqrt_w(c), c);
+    return fr__lut_s8(f0, table, fr__lut_n(n), 0, frac, fr__sqrt_w(c), c);
 }
 fresnel_q15 fresnel_lut_linear_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s8(f0, table, n, frac, fr__linear_w(c), c);
+    return fr__lut_s8(f0, table, fr__lut_n(n), 0, frac, fr__linear_w(c), c);
 }
 
-/* RGB: n red nodes, then n green, then n blue. */
+/* RGB: n red nodes, then n green, then n blue (n as fr__lut_n gives it). */
 fresnel_q15_rgb fresnel_lut_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x = fr__sqrt_w(c);
-    FR__RGB_Q15(fr__lut_u16(table, n, x), fr__lut_u16(table + n, n, x), fr__lut_u16(table + 2 * n, n, x));
+    n = fr__lut_n(n);
+    FR__RGB_Q15(fr__lut_u16(table, n, 0, x), fr__lut_u16(table, n, 1, x), fr__lut_u16(table, n, 2, x));
 }
 fresnel_q15_rgb fresnel_lut_linear_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x = fr__linear_w(c);
-    FR__RGB_Q15(fr__lut_u16(table, n, x), fr__lut_u16(table + n, n, x), fr__lut_u16(table + 2 * n, n, x));
+    n = fr__lut_n(n);
+    FR__RGB_Q15(fr__lut_u16(table, n, 0, x), fr__lut_u16(table, n, 1, x), fr__lut_u16(table, n, 2, x));
 }
 fresnel_q15_rgb fresnel_lut_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
 {
     uint32_t x = fr__sqrt_w(c);
-    FR__RGB_Q15(fr__lut_u8(table, n, x), fr__lut_u8(table + n, n, x), fr__lut_u8(table + 2 * n, n, x));
+    n = fr__lut_n(n);
+    FR__RGB_Q15(fr__lut_u8(table, n, 0, x), fr__lut_u8(table, n, 1, x), fr__lut_u8(table, n, 2, x));
 }
 fresnel_q15_rgb fresnel_lut_linear_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
 {
     uint32_t x = fr__linear_w(c);
-    FR__RGB_Q15(fr__lut_u8(table, n, x), fr__lut_u8(table + n, n, x), fr__lut_u8(table + 2 * n, n, x));
+    n = fr__lut_n(n);
+    FR__RGB_Q15(fr__lut_u8(table, n, 0, x), fr__lut_u8(table, n, 1, x), fr__lut_u8(table, n, 2, x));
 }
 fresnel_q15_rgb fresnel_lut_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n, int frac,
                                                  int32_t c)
 {
     uint32_t x = fr__sqrt_w(c);
-    FR__RGB_Q15(fr__lut_s16(f0.r, table, n, frac, x, c), fr__lut_s16(f0.g, table + n, n, frac, x, c),
-                fr__lut_s16(f0.b, table + 2 * n, n, frac, x, c));
+    n = fr__lut_n(n);
+    FR__RGB_Q15(fr__lut_s16(f0.r, table, n, 0, frac, x, c), fr__lut_s16(f0.g, table, n, 1, frac, x, c),
+                fr__lut_s16(f0.b, table, n, 2, frac, x, c));
 }
 fresnel_q15_rgb fresnel_lut_linear_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n,
                                                         int frac, int32_t c)
 {
     uint32_t x = fr__linear_w(c);
-    FR__RGB_Q15(fr__lut_s16(f0.r, table, n, frac, x, c), fr__lut_s16(f0.g, table + n, n, frac, x, c),
-                fr__lut_s16(f0.b, table + 2 * n, n, frac, x, c));
+    n = fr__lut_n(n);
+    FR__RGB_Q15(fr__lut_s16(f0.r, table, n, 0, frac, x, c), fr__lut_s16(f0.g, table, n, 1, frac, x, c),
+                fr__lut_s16(f0.b, table, n, 2, frac, x, c));
 }
 fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n, int frac,
                                                 int32_t c)
 {
     uint32_t x = fr__sqrt_w(c);
-    FR__RGB_Q15(fr__lut_s8(f0.r, table, n, frac, x, c), fr__lut_s8(f0.g, table + n, n, frac, x, c),
-                fr__lut_s8(f0.b, table + 2 * n, n, frac, x, c));
+    n = fr__lut_n(n);
+    FR__RGB_Q15(fr__lut_s8(f0.r, table, n, 0, frac, x, c), fr__lut_s8(f0.g, table, n, 1, frac, x, c),
+                fr__lut_s8(f0.b, table, n, 2, frac, x, c));
 }
 fresnel_q15_rgb fresnel_lut_linear_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n,
                                                        int frac, int32_t c)
 {
     uint32_t x = fr__linear_w(c);
-    FR__RGB_Q15(fr__lut_s8(f0.r, table, n, frac, x, c), fr__lut_s8(f0.g, table + n, n, frac, x, c),
-                fr__lut_s8(f0.b, table + 2 * n, n, frac, x, c));
+    n = fr__lut_n(n);
+    FR__RGB_Q15(fr__lut_s8(f0.r, table, n, 0, frac, x, c), fr__lut_s8(f0.g, table, n, 1, frac, x, c),
+                fr__lut_s8(f0.b, table, n, 2, frac, x, c));
 }
 
 #else

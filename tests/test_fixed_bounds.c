@@ -13,6 +13,7 @@
 
 #include "fixed_materials.h"
 #include "fixed_params.h"
+#include "fresnel.h"
 #include "fresnel_fixed.h"
 #define FRESNEL_RANGE_CHECK /* the inline helpers in this file check too */
 #include "fixed_internal.h"
@@ -442,6 +443,183 @@ static void check_luts(const test_material *mat, int nmat)
     CHECK("fixed LUT RGB forms equal the scalar forms", rgb_mismatch == 0, "%ld mismatches", rgb_mismatch);
 }
 
+/* The bottom of the eta domain is the same number in the Q16.16 API
+ * (FRESNEL_Q16_ETA_MIN codes) and in the double reference (FRESNEL_ETA_MIN):
+ * eta codes from below the domain (clamped by both) through 1e-3 and a
+ * little beyond, prepared at run time, against the reference at the same
+ * eta, every 3rd cos code and the last 64. */
+static void check_eta_min(void)
+{
+    static const int32_t codes[] = {INT32_MIN, -1, 0, 1, 32, 63, 64, 65, 66, 67, 70, 80, 100, 131};
+    worst w, wd, wf;
+    long bad = 0;
+    size_t i;
+    memset(&w, 0, sizeof w);
+    memset(&wd, 0, sizeof wd);
+    memset(&wf, 0, sizeof wf);
+    CHECK("FRESNEL_Q16_ETA_MIN is FRESNEL_ETA_MIN in Q16.16", FRESNEL_Q16_ETA_MIN / 65536.0 == (double)FRESNEL_ETA_MIN,
+          "%.9g vs %.9g", FRESNEL_Q16_ETA_MIN / 65536.0, (double)FRESNEL_ETA_MIN);
+    for (i = 0; i < sizeof codes / sizeof codes[0]; i++) {
+        static const double kappas[] = {0.0, 1e-3, 0.5};
+        double eta = codes[i] / 65536.0;
+        char what[48];
+        int ik;
+        for (ik = 0; ik < 3; ik++) {
+            fresnel_q15_ior m;
+            fresnel_q16 kq = fixed_q16(kappas[ik]);
+            int32_t c, f0 = fresnel_f0_from_ior_q15(codes[i], kq);
+            snprintf(what, sizeof what, "eta code %ld kappa %g", (long)codes[i], kappas[ik]);
+            fresnel_q15_ior_prepare(codes[i], kq, &m);
+            bad += f0 < 0 || f0 > ONE;
+            note_worst(&wf, fabs(f0 / 32768.0 - ref_f0_from_ior(eta, kq / 65536.0)) * 32768.0, what, 1.0);
+            for (c = 0; c <= ONE; c += (c >= ONE - 64) ? 1 : 3) {
+                int32_t got = fresnel_conductor_q15(&m, c);
+                bad += got < 0 || got > ONE;
+                note_worst(&w, fabs(got / 32768.0 - ref_conductor(eta, kq / 65536.0, c / 32768.0)) * 32768.0, what,
+                           c / 32768.0);
+                if (ik == 0) {
+                    got = fresnel_dielectric_q15(&m, c);
+                    bad += got < 0 || got > ONE;
+                    note_worst(&wd, fabs(got / 32768.0 - ref_dielectric(eta, c / 32768.0)) * 32768.0, what,
+                               c / 32768.0);
+                }
+            }
+        }
+    }
+    check_bound("conductor, eta at and below the domain's bottom (Q16.16 prepare)", &w, FRESNEL_Q15_BOUND_CONDUCTOR, bad);
+    check_bound("dielectric, eta at and below the domain's bottom (Q16.16 prepare)", &wd, FRESNEL_Q15_BOUND_DIELECTRIC,
+                0);
+    check_bound("f0_from_ior, eta at and below the domain's bottom", &wf, FRESNEL_Q15_BOUND_F0, 0);
+}
+
+/* fresnel_q15_ior_prepare where eta^2 - kappa^2 - 1 crosses a power of
+ * two (the shift's choice, and a quotient that rounds up past 32 bits):
+ * eta and kappa codes 2^j + d, d in [-3, 3], j up to 30, each with kappa (or
+ * eta) 0, 2^-10, 1 and 2, against the reference at the same Q16.16 values,
+ * cos codes 0, 1, every 97th and the last 16. */
+static void check_prepare_powers(void)
+{
+    static const int32_t others[] = {0, 64, 65536, 131072};
+    worst w;
+    long bad = 0, layout_bad = 0;
+    int j, d, which;
+    size_t io;
+    memset(&w, 0, sizeof w);
+    for (j = 6; j <= 30; j++)
+        for (d = -3; d <= 3; d++)
+            for (io = 0; io < 4; io++)
+                for (which = 0; which < 2; which++) {
+                    int64_t v = ((int64_t)1 << j) + d;
+                    int32_t code = v > INT32_MAX ? INT32_MAX : (int32_t)v;
+                    int32_t e = which ? others[io] : code, k = which ? code : others[io], c;
+                    fresnel_q15_ior m;
+                    char what[48];
+                    double ed = (e < FRESNEL_Q16_ETA_MIN ? FRESNEL_Q16_ETA_MIN : e) / 65536.0, kd = k / 65536.0;
+                    if (ed > 32767.0 || kd > 32767.0)
+                        continue;
+                    snprintf(what, sizeof what, "eta code %ld kappa code %ld", (long)e, (long)k);
+                    fresnel_q15_ior_prepare(e, k, &m);
+                    layout_bad += !ior_layout_ok(&m);
+                    for (c = 0; c <= ONE; c += (c < 1 || c >= ONE - 16) ? 1 : 97) {
+                        int32_t got = fresnel_conductor_q15(&m, c);
+                        bad += got < 0 || got > ONE;
+                        note_worst(&w, fabs(got / 32768.0 - ref_conductor(ed, kd, c / 32768.0)) * 32768.0, what,
+                                   c / 32768.0);
+                    }
+                }
+    check_bound("conductor, Q16.16 prepare at powers of two of eta, kappa", &w, FRESNEL_Q15_BOUND_CONDUCTOR, bad);
+    CHECK("fresnel_q15_ior_prepare keeps the layout at powers of two", layout_bad == 0, "%ld break it", layout_bad);
+}
+
+/* eta -> 0 near normal incidence, where eta^2 at the prepared scale is a
+ * small number: 4000 eta in [FRESNEL_ETA_MIN, 0.05], the 512 codes below one. */
+static void check_small_eta(const model *m)
+{
+    worst w;
+    long bad = 0;
+    int k;
+    memset(&w, 0, sizeof w);
+    for (k = 0; k < 4000; k++) {
+        model_params mp;
+        model_fixed mf;
+        int32_t c;
+        char name[32];
+        double eta = FRESNEL_ETA_MIN * pow(0.05 / FRESNEL_ETA_MIN, k / 3999.0);
+        snprintf(name, sizeof name, "eta %.6g", eta);
+        model_derive(eta, 0.0, 1.0, 1.0, 5.0, &mp);
+        model_params_round_fixed(&mp);
+        model_fixed_from_params(&mp, &mf);
+        for (c = ONE - 511; c <= ONE; c++) {
+            int32_t got = m->q15(&mf, c);
+            bad += got < 0 || got > ONE;
+            note_worst(&w, fabs(got / 32768.0 - m->f64(&mp, c / 32768.0)) * 32768.0, name, c / 32768.0);
+        }
+    }
+    check_bound("exact-dielectric, eta -> 0 near normal incidence", &w, m->q15_bound, bad);
+}
+
+/* The documented domain beyond the test materials: eta log-uniform over
+ * [FRESNEL_ETA_MIN, 32767] (the Q16.16 domain of *_prepare; dense toward eta -> 0, where eta^2
+ * has few bits at the prepared scale), kappa 0 and log-uniform over
+ * [1e-4, 32767], every 5th cos code and every code within 64 of
+ * 0 and of one (normal incidence: c -> 1), every model against the bound
+ * its table row documents. */
+static void check_domain(void)
+{
+    const double Q15_ETA_MAX = 32767.0;
+    enum { NGRID = 160, NSMALL = 48, NRAND = 96 };
+    int mi, k;
+    uint32_t seed = 12345u;
+    static test_material t[NGRID + NSMALL + NRAND];
+    int n = 0;
+    for (k = 0; k < NGRID; k++, n++) {
+        t[n].eta = FRESNEL_ETA_MIN * pow(Q15_ETA_MAX / FRESNEL_ETA_MIN, k / (NGRID - 1.0));
+        t[n].kappa = 0.0;
+    }
+    for (k = 0; k < NSMALL; k++, n++) { /* [1/1024, 0.05], kappa 0 or small */
+        t[n].eta = FRESNEL_ETA_MIN * pow(0.05 / FRESNEL_ETA_MIN, k / (NSMALL - 1.0));
+        t[n].kappa = (k & 1) ? 0.0 : 1e-3 * (k + 1);
+    }
+    for (k = 0; k < NRAND; k++, n++) {
+        double u, v;
+        seed = seed * 1664525u + 1013904223u;
+        u = (seed >> 8) / 16777216.0;
+        seed = seed * 1664525u + 1013904223u;
+        v = (seed >> 8) / 16777216.0;
+        t[n].eta = FRESNEL_ETA_MIN * pow(Q15_ETA_MAX / FRESNEL_ETA_MIN, u);
+        t[n].kappa = 1e-4 * pow(Q15_ETA_MAX / 1e-4, v);
+    }
+    for (mi = 0; mi < model_count; mi++)
+        if (!strcmp(model_table[mi].name, "exact-dielectric"))
+            check_small_eta(&model_table[mi]);
+    for (k = 0; k < n; k++)
+        snprintf(t[k].name, sizeof t[k].name, "eta %.6g k %.3g", t[k].eta, t[k].kappa);
+    for (mi = 0; mi < model_count; mi++) {
+        const model *m = &model_table[mi];
+        worst w;
+        long bad = 0;
+        char what[96];
+        memset(&w, 0, sizeof w);
+        for (k = 0; k < n; k++) {
+            model_params mp;
+            model_fixed mf;
+            int32_t c;
+            model_derive(t[k].eta, t[k].kappa, 1.0, 1.0, 5.0, &mp);
+            model_params_round_fixed(&mp);
+            model_fixed_from_params(&mp, &mf);
+            for (c = 0; c <= ONE; c += (c < 64 || c >= ONE - 64) ? 1 : 5) {
+                int32_t got = m->q15(&mf, c);
+                double ref = m->f64(&mp, c / 32768.0);
+                if (got < 0 || got > ONE)
+                    bad++;
+                note_worst(&w, fabs(got / 32768.0 - ref) * 32768.0, t[k].name, c / 32768.0);
+            }
+        }
+        snprintf(what, sizeof what, "%s over the eta, kappa domain", m->name);
+        check_bound(what, &w, m->q15_bound, bad);
+    }
+}
+
 int main(void)
 {
     static test_material mat[TM_MAX];
@@ -452,6 +630,9 @@ int main(void)
     }
     NOTE("fixed-point bounds over %d materials x 32769 cos codes", nmat);
     check_models(mat, nmat);
+    check_domain();
+    check_eta_min();
+    check_prepare_powers();
     check_schlick_gen();
     check_schlick_f0();
     check_f82_pairs();

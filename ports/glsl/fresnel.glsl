@@ -80,7 +80,7 @@
  *
  * fp16 UNDER- AND OVERFLOW GUARDS (mediump functions)
  *   Overflow: eta and kappa are clamped to [FRESNEL_ETA_MIN,
- *   FRESNEL_MP_IOR_MAX] = [1e-3, 100] in the mediump functions, which keeps
+ *   FRESNEL_MP_IOR_MAX] = [2^-10, 100] in the mediump functions, which keeps
  *   every intermediate below 2.1e4 < 65504 (the C runtime clamps at 1e5;
  *   no measured material comes near 100). LSK's a is clamped to
  *   FRESNEL_MP_A_MAX = 1e4 instead of 1e6 (the host makes a = 2 eta <= 200).
@@ -130,7 +130,7 @@
 #endif
 
 /* Domains, as in fresnel.h. FRESNEL_MP_* apply to the mediump functions. */
-#define FRESNEL_ETA_MIN 1e-3
+#define FRESNEL_ETA_MIN 0.0009765625
 #define FRESNEL_ETA_MAX 1e5
 #define FRESNEL_KAPPA_MAX 1e5
 #define FRESNEL_KAPPA_TINY 1e-18

@@ -1,5 +1,5 @@
 /* Differential fuzzing of the Q15 fixed-point runtime (fresnel_fixed.h)
- * against the double reference (gen/reference.c), issue 7.
+ * against the double reference (gen/reference.c).
  *
  * Inputs: cosine and reflectance codes as arbitrary int32 (the API takes
  * int32 so that a signed dot product can be passed), Q16.16 eta, kappa, p,
@@ -8,12 +8,14 @@
  * nodes.
  * Oracle:
  *   - every result is a code in [0, 32768], whatever the input;
- *   - where the inputs lie in the range the bounds were measured on (eta in
- *     [0.01, 100], kappa <= 1000; codes anything, as they are clamped onto
- *     the whole domain), |result / 32768 - reference| <= FRESNEL_Q15_BOUND_*
+ *   - where the inputs lie in the documented domain (eta in [2^-10, 32767],
+ *     kappa <= 32767; codes anything, as they are clamped onto the whole
+ *     domain), |result / 32768 - reference| <= FRESNEL_Q15_BOUND_*
  *     LSB, the reference evaluated at the values the codes stand for, with
  *     the runtime's documented clamps (eta >= 64/65536, Gulbrandsen r <=
  *     code 32764, generalized Schlick p >= 66/65536) applied to its inputs. */
+#include <limits.h>
+
 #include "fuzz.h"
 
 #include "fixed_params.h"
@@ -24,14 +26,12 @@
 
 #define LSB (1.0 / 32768.0)
 
-/* Findings reported to the lead (issue 7) are all fixed in the runtime, and
- * their inputs stay in the corpus (tests/fuzz/corpus/fuzz_fixed_models/):
- * F5 (Gulbrandsen at r -> 1, g = 1) in eeae237; F7 (a0 + c^2 overflowing
- * int32), F8 (generalized Schlick beyond p = 64, now within its documented
- * 0.516), F9 and F10 (the exact forms and Cook-Torrance near a critical
- * angle of a tiny eta or kappa << 1) in 518d964, which prepares
- * eta^2 - kappa^2 - 1 in two words (a0, a0_lo). Every function is held to
- * its documented bound on the whole measured range. */
+/* Inputs that once broke a bound or the range stay in the corpus
+ * (tests/fuzz/corpus/fuzz_fixed_models/): Gulbrandsen at r -> 1, g = 1;
+ * a0 + c^2 at the int32 limit; generalized Schlick beyond p = 64; the exact
+ * forms and Cook-Torrance near a critical angle of a tiny eta or kappa << 1;
+ * the dielectric at eta -> 0 near normal incidence. Every function is held
+ * to its documented bound on the whole documented domain. */
 
 /* What the prepared layout of fresnel_fixed.h (shift in [0, 30],
  * |a0| < 2^31 - 2^(30 - shift)) is for: a0 + c^2, c^2 up to 2^(30 - shift),
@@ -93,13 +93,13 @@ static void check(const char *fn, int32_t got, double ref, double bound_lsb, int
                   ref * 32768.0, err * 32768.0, bound_lsb);
 }
 
-static int measured_eta(double eta) { return eta >= 0.01 && eta <= 100.0; }
-static int measured_kappa(double kappa) { return kappa >= 0.0 && kappa <= 1000.0; }
+static int measured_eta(double eta) { return eta >= FRESNEL_Q16_ETA_MIN / 65536.0 && eta <= 32767.0; }
+static int measured_kappa(double kappa) { return kappa >= 0.0 && kappa <= 32767.0; }
 
 /* The model table's Q15 entries on a material prepared on the host. */
 static void fuzz_prepared(fuzz_bytes *b, int32_t c)
 {
-    double eta = fuzz_float(b, 0.01f, 100.0f), kappa = fuzz_float(b, 1e-4f, 1000.0f);
+    double eta = fuzz_float(b, 0.0009765625f, 32767.0f), kappa = fuzz_float(b, 1e-4f, 32767.0f);
     double f90 = fuzz_float(b, 1e-3f, 1.0f), p = fuzz_float(b, 0.25f, 40.0f);
     model_params mp;
     model_fixed mf;
@@ -199,6 +199,21 @@ static void fuzz_luts(fuzz_bytes *b, int32_t f0, int32_t c)
           ref_clamp(s + ref_interp(r8, n, w), 0.0, 1.0), rbound8, 1, args);
     check("fresnel_lut_linear_residual_q15_s8", fresnel_lut_linear_residual_q15_s8(f0, s8, n, frac8, c),
           ref_clamp(s + ref_interp(r8, n, cc), 0.0, 1.0), rbound8, 1, args);
+    /* n outside [2, 32768]: n <= 0 reads nothing (a null table) and gives 0,
+     * or Schlick alone for a residual table; n = 1 is the constant table[0]. */
+    {
+        static const int small[] = {INT_MIN, -65536, -1, 0};
+        int ns = small[fuzz_u8(b) % 4];
+        if (fresnel_lut_q15_u16(NULL, ns, c) != 0 || fresnel_lut_linear_q15_u8(NULL, ns, c) != 0 ||
+            fresnel_lut_cubic_q15_u16(NULL, ns, c) != 0 || fresnel_lut_q15_u16_fast(NULL, ns, c) != 0 ||
+            fresnel_lut_q15_u16_pl_fast(NULL, ns, c) != 0 ||
+            fresnel_lut_residual_q15_s16(f0, NULL, ns, frac16, c) != fresnel_schlick_q15(f0, c))
+            FUZZ_FAIL("LUT with n = %d is not 0 / Schlick (%s)", ns, args);
+        if (fresnel_lut_q15_u16(u16, 1, c) != u16[0] || fresnel_lut_linear_q15_u16(u16, 1, c) != u16[0] ||
+            fresnel_lut_cubic_q15_u16(u16, 1, c) != u16[0] || fresnel_lut_q15_u16_fast(u16, 1, c) != u16[0] ||
+            fresnel_lut_q15_u16_pl_fast(u16, 1, c) != u16[0])
+            FUZZ_FAIL("LUT with n = 1 is not table[0] = %d (%s)", (int)u16[0], args);
+    }
     /* RGB forms: channel by channel the scalar ones. */
     rgb = fresnel_lut_q15_u16_rgb(u16, n, c);
     if (rgb.r != fresnel_lut_q15_u16(u16, n, c) || rgb.g != fresnel_lut_q15_u16(u16 + n, n, c) ||
@@ -231,8 +246,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     f90 = fuzz_code(&b);
     r = fuzz_code(&b);
     g = fuzz_code(&b);
-    eta = fuzz_q16(&b, 0.01f, 100.0f);
-    kappa = fuzz_q16(&b, 1e-3f, 1000.0f);
+    eta = fuzz_q16(&b, 0.0009765625f, 32767.0f);
+    kappa = fuzz_q16(&b, 1e-3f, 32767.0f);
     p = fuzz_q16(&b, 0.25f, 40.0f);
     a = fuzz_q16(&b, 0.02f, 200.0f);
     alpha = fuzz_q16(&b, 0.1f, 100.0f);
@@ -255,7 +270,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
           ref_gulbrandsen(ref_clamp(unit_code(r), 0.0, FRESNEL_Q15_GULBRANDSEN_R_MAX / 32768.0), unit_code(g),
                           unit_code(c)),
           FRESNEL_Q15_BOUND_GULBRANDSEN, 1, args);
-    /* eta below 1e-3 (codes 64, 65) is inside the Q15 clamp but below the reference's. */
     check("fresnel_f0_from_ior_q15", fresnel_f0_from_ior_q15(eta, kappa), ref_f0_from_ior(e, k), FRESNEL_Q15_BOUND_F0,
           in, args);
     check("fresnel_f0_in_medium_q15", fresnel_f0_in_medium_q15(f0, eta), ref_f0_in_medium(unit_code(f0), e),
