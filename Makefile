@@ -194,7 +194,7 @@ $(BUILD)/obj/src/%_f16.o: CFLAGS_LIB += $(F16_CFLAGS)
 
 # The exhaustive fixed-point test links its own copy of the fixed-point
 # sources built with FRESNEL_RANGE_CHECK, which turns the range analysis in
-# the sources (FR__RANGE) into checks; linked before libfresnel.a, these
+# the sources (FRESNEL_I_RANGE) into checks; linked before libfresnel.a, these
 # objects provide every fixed-point symbol, so no archive member is pulled.
 FIXED_SRC := src/fixed_math.c $(wildcard src/*_q15.c)
 FIXED_RC_OBJ := $(FIXED_SRC:%.c=$(BUILD)/obj/rc/%.o)

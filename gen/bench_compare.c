@@ -93,13 +93,13 @@ float cmp_pbrt_conductor(float eta, float kappa, float c)
 float cmp_careful_conductor(float eta, float kappa, float c)
 {
     float ek, a, m, u, v, p, q, num_s, den_s, num_p, den_p, rs, rp;
-    eta = fr__eta(eta);
-    kappa = fr__kappa(kappa);
-    c = fr__unit(c);
+    eta = fresnel_i_eta(eta);
+    kappa = fresnel_i_kappa(kappa);
+    c = fresnel_i_unit(c);
     if (eta == 1.0f && kappa == 0.0f)
         return 0.0f;
     ek = eta * kappa;
-    a = fr__eta2_minus_sin2(eta, c, kappa * kappa);
+    a = fresnel_i_eta2_minus_sin2(eta, c, kappa * kappa);
     m = sqrtf(a * a + 4.0f * ek * ek);
     if (a >= 0.0f) {
         u = sqrtf(0.5f * (m + a));
@@ -116,5 +116,5 @@ float cmp_careful_conductor(float eta, float kappa, float c)
     den_p = (p + u) * (p + u) + (q + v) * (q + v);
     rs = den_s > 0.0f ? num_s / den_s : 0.0f;
     rp = den_p > 0.0f ? num_p / den_p : 0.0f;
-    return fr__unit(0.5f * (rs + rp));
+    return fresnel_i_unit(0.5f * (rs + rp));
 }

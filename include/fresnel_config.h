@@ -62,4 +62,15 @@ typedef char fresnel_config_has_unknown_flags_[(((FRESNEL_CONFIG) & ~FRESNEL_CFG
 #define FRESNEL_HAS_F16 0
 #endif
 
+/* The runtime's internal helpers shared between its files are named
+ * fresnel_i_* (not API; the public prefix keeps them out of the user's
+ * namespace) and are declared with FRESNEL_I_HIDDEN, so a shared library
+ * built from src/ does not export them where the toolchain has ELF/Mach-O
+ * visibility. */
+#if defined(__GNUC__) && !defined(_WIN32) && !defined(__CYGWIN__)
+#define FRESNEL_I_HIDDEN __attribute__((visibility("hidden")))
+#else
+#define FRESNEL_I_HIDDEN
+#endif
+
 #endif /* FRESNEL_CONFIG_H */

@@ -467,11 +467,11 @@ fresnel_q16 fresnel_recip_q16(fresnel_q16 x);
 #if FRESNEL_HAS_FIXED
 
 /* Forced inline under GCC and Clang: at -Os they would otherwise keep a
- * helper used twice (fresnel_fast__pow5) out of line, a call per use. */
+ * helper used twice (fresnel_i_fast_pow5) out of line, a call per use. */
 #if defined(__GNUC__)
-#define FRESNEL_FAST__INLINE static inline __attribute__((always_inline))
+#define FRESNEL_FAST_INLINE static inline __attribute__((always_inline))
 #else
-#define FRESNEL_FAST__INLINE static inline
+#define FRESNEL_FAST_INLINE static inline
 #endif
 
 #define FRESNEL_Q15_BOUND_SCHLICK_FAST 2.9     /* measured 2.87615 (every 16th F0) */
@@ -484,7 +484,7 @@ fresnel_q16 fresnel_recip_q16(fresnel_q16 x);
 /* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
  * truncated, so that the errors straddle zero with one constant (every
  * product <= 2^30; x = one gives one exactly). */
-FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5(uint32_t x)
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
 {
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15;
     return (x4 * x) >> 15;
@@ -498,36 +498,36 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__pow5(uint32_t x)
  * ceil(k^2 / 2^15) < 182, x^4 = 0 and x^5 = x^6 = 0: the result is F0, the
  * value at c = one (tests/test_fixed_edges.c, every such c and F0). */
 #define FRESNEL_Q15_FAST_C_MAX (32768 + 2435)
-FRESNEL_FAST__INLINE uint32_t fresnel_fast__c(int32_t c)
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_c(int32_t c)
 {
     return (-1 >> 1) == -1 ? (uint32_t)c & ~(uint32_t)(c >> 31) : (uint32_t)(c < 0 ? 0 : c);
 }
 
 /* F0 + (1 - F0) x5 for f0, x5 in [0, one], truncated. */
-FRESNEL_FAST__INLINE uint32_t fresnel_fast__blend(uint32_t f0, uint32_t x5)
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_blend(uint32_t f0, uint32_t x5)
 {
     return f0 + (((32768u - f0) * x5) >> 15);
 }
 
 /* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 in [0, one] and c as
- * PRECONDITIONS says: x^5 as fresnel_fast__pow5 and a truncated blend. Error <=
+ * PRECONDITIONS says: x^5 as fresnel_i_fast_pow5 and a truncated blend. Error <=
  * FRESNEL_Q15_BOUND_SCHLICK_FAST LSB (every 16th F0 code, every c code;
  * every F0 code with FRESNEL_TEST_EXHAUSTIVE=1). c = 0 gives exactly one,
  * c = one exactly F0. Cost: 4 mul. */
-FRESNEL_FAST__INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 {
-    return (fresnel_q15)fresnel_fast__blend((uint32_t)f0, fresnel_fast__pow5(32768u - fresnel_fast__c(c)));
+    return (fresnel_q15)fresnel_i_fast_blend((uint32_t)f0, fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c)));
 }
 
 /* The same for three channels: x^5 once, three blends; each channel equals
  * fresnel_schlick_q15_fast's. Cost: 6 mul. */
-FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
+FRESNEL_FAST_INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
 {
-    uint32_t x5 = fresnel_fast__pow5(32768u - fresnel_fast__c(c));
+    uint32_t x5 = fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c));
     fresnel_q15_rgb r;
-    r.r = (fresnel_q15)fresnel_fast__blend(f0.r, x5);
-    r.g = (fresnel_q15)fresnel_fast__blend(f0.g, x5);
-    r.b = (fresnel_q15)fresnel_fast__blend(f0.b, x5);
+    r.r = (fresnel_q15)fresnel_i_fast_blend(f0.r, x5);
+    r.g = (fresnel_q15)fresnel_i_fast_blend(f0.g, x5);
+    r.b = (fresnel_q15)fresnel_i_fast_blend(f0.b, x5);
     return r;
 }
 
@@ -548,12 +548,12 @@ FRESNEL_FAST__INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rg
  * a). Cost: 7 mul. */
 #define FRESNEL_Q15_F82_FAST_A_MIN (-72296)
 #define FRESNEL_Q15_F82_FAST_A_MAX 144592
-FRESNEL_FAST__INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
-    uint32_t cu = fresnel_fast__c(c), x = 32768u - cu;
+    uint32_t cu = fresnel_i_fast_c(c), x = 32768u - cu;
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
     uint32_t cx6 = (cu * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
-    int32_t v = (int32_t)(fresnel_fast__blend((uint32_t)f0, x5) << 15) - a_q12 * (int32_t)cx6;
+    int32_t v = (int32_t)(fresnel_i_fast_blend((uint32_t)f0, x5) << 15) - a_q12 * (int32_t)cx6;
     uint32_t r = (uint32_t)v >> 15;
     if (v <= 0)
         return 0;
@@ -563,7 +563,7 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12,
 /* sqrt(j/128) in Q22 for j = 32..129, and 2^16 / (r_j + r_(j+1)) for
  * j = 32..128 (the chord slope of each segment): 586 bytes of flash in the
  * translation unit that uses fresnel_lut_q15_u16_fast. */
-static const uint32_t fresnel_fast__sqrt_r[98] = {
+static const uint32_t fresnel_i_fast_sqrt_r[98] = {
     2097152u, 2129668u, 2161695u, 2193254u, 2224366u, 2255048u, 2285318u, 2315193u,
     2344687u, 2373815u, 2402589u, 2431023u, 2459129u, 2486916u, 2514397u, 2541580u,
     2568476u, 2595093u, 2621440u, 2647525u, 2673355u, 2698938u, 2724280u, 2749389u,
@@ -578,7 +578,7 @@ static const uint32_t fresnel_fast__sqrt_r[98] = {
     4061117u, 4078004u, 4094820u, 4111568u, 4128248u, 4144861u, 4161407u, 4177888u,
     4194304u, 4210656u
 };
-static const uint16_t fresnel_fast__sqrt_k[97] = {
+static const uint16_t fresnel_i_fast_sqrt_k[97] = {
     65032u, 64054u, 63119u, 62223u, 61365u, 60541u, 59749u, 58988u, 58255u, 57549u, 56868u, 56211u,
     55575u, 54961u, 54367u, 53792u, 53234u, 52694u, 52169u, 51660u, 51166u, 50685u, 50218u, 49764u,
     49321u, 48891u, 48471u, 48062u, 47663u, 47274u, 46894u, 46523u, 46161u, 45808u, 45462u, 45124u,
@@ -597,7 +597,7 @@ static const uint16_t fresnel_fast__sqrt_k[97] = {
  * delta1 = d k (the chord), delta2 = (d + delta1 (dh - delta1)) k (one
  * fixed-point step, contraction dh/(r_j + r_(j+1)) <= 2^-7). Every term is
  * non-negative (delta1 <= dh). Measured |error| <= 2^-20.7 (test_fixed_fast). */
-FRESNEL_FAST__INLINE uint32_t fresnel_fast__sqrt_q22(uint32_t c)
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
 {
     uint32_t m = 0, j, d, k, r0, dh, d1;
     while (c < 8192u) {
@@ -606,15 +606,15 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__sqrt_q22(uint32_t c)
     }
     j = (c >> 8) - 32u;
     d = c & 255u;
-    k = fresnel_fast__sqrt_k[j];
-    r0 = fresnel_fast__sqrt_r[j];
-    dh = fresnel_fast__sqrt_r[j + 1] - r0;
+    k = fresnel_i_fast_sqrt_k[j];
+    r0 = fresnel_i_fast_sqrt_r[j];
+    dh = fresnel_i_fast_sqrt_r[j + 1] - r0;
     d1 = (d * k) >> 9;
     return (r0 + ((((d << 7) + ((d1 * (dh - d1)) >> 22)) * k) >> 16)) >> m;
 }
 
 /* fresnel_lut_q15_u16 (nodes uniform in sqrt(c), node i at c = (i/(n-1))^2)
- * with the position from fresnel_fast__sqrt_q22 instead of the exact root:
+ * with the position from fresnel_i_fast_sqrt_q22 instead of the exact root:
  * pos = round(sqrt(c) (n-1) 2^15), segment i = (pos - 1) >> 15 (so c = one
  * reads nodes n-2 and n-1 with weight one), linear interpolation rounded.
  * n and c outside [2, 1024] and [0, one]: as PRECONDITIONS says. Error
@@ -625,7 +625,7 @@ FRESNEL_FAST__INLINE uint32_t fresnel_fast__sqrt_q22(uint32_t c)
  * times the steepest node-to-node step (a 1024-node table across a critical
  * angle). Cost: 5 mul
  * (plus 2 shifts per halving of c below 1/4). */
-FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, int n, int32_t c)
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, int n, int32_t c)
 {
     uint32_t pos, i, t;
     int32_t v0, v1;
@@ -635,7 +635,7 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table,
         n = 1024;
     if (((uint32_t)c - 1u) >> 15) /* c <= 0, or c > one */
         return c <= 0 ? table[0] : table[n - 1];
-    pos = (fresnel_fast__sqrt_q22((uint32_t)c) * (uint32_t)(n - 1) + 64u) >> 7;
+    pos = (fresnel_i_fast_sqrt_q22((uint32_t)c) * (uint32_t)(n - 1) + 64u) >> 7;
     i = (pos - 1u) >> 15;
     t = pos - (i << 15);
     v0 = table[i];
@@ -646,7 +646,7 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table,
 /* Tables whose nodes are uniform in P(c), a 64-piece linear stand-in for
  * sqrt(c) (lut_spacing = grazing-pl in a scene; `fresnel gen` fits the node
  * values through exactly this position): P is the linear interpolation of
- * fresnel_fast__sqrt_pl[k] = round(32768 sqrt(k/64)) between c = k/64 and
+ * fresnel_i_fast_sqrt_pl[k] = round(32768 sqrt(k/64)) between c = k/64 and
  * (k+1)/64, so it needs no root, and still crowds the nodes toward grazing
  * incidence (the first piece is 1/8 of the range, 1/64 of c).
  *   p = S[j] + ((S[j+1] - S[j]) (c mod 512)) >> 9, j = c >> 9  (c = one read
@@ -658,14 +658,14 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table,
  * interpolation in double at the same P, FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR
  * across a total-reflection edge (a step of up to one between two nodes)
  * (tests/test_fixed_fast.c). Cost: 3 mul, 4 loads. */
-static const uint16_t fresnel_fast__sqrt_pl[65] = {
+static const uint16_t fresnel_i_fast_sqrt_pl[65] = {
     0u,     4096u,  5793u,  7094u,  8192u,  9159u,  10033u, 10837u, 11585u, 12288u, 12953u, 13585u, 14189u,
     14768u, 15326u, 15864u, 16384u, 16888u, 17378u, 17854u, 18318u, 18770u, 19212u, 19644u, 20066u, 20480u,
     20886u, 21283u, 21674u, 22058u, 22435u, 22806u, 23170u, 23530u, 23884u, 24232u, 24576u, 24915u, 25249u,
     25580u, 25905u, 26227u, 26545u, 26859u, 27170u, 27477u, 27780u, 28081u, 28378u, 28672u, 28963u, 29251u,
     29537u, 29819u, 30099u, 30377u, 30652u, 30924u, 31194u, 31462u, 31727u, 31991u, 32252u, 32511u, 32768u};
 
-FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *table, int n, int32_t c)
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x, p, pos, t;
     const uint16_t *s, *v;
@@ -676,7 +676,7 @@ FRESNEL_FAST__INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *tab
     x = (uint32_t)c;
     if (x >> 15) /* c < 0, or c >= one: one is read as one - 2^-15 */
         x = c < 0 ? 0u : 32767u;
-    s = fresnel_fast__sqrt_pl + (x >> 9);
+    s = fresnel_i_fast_sqrt_pl + (x >> 9);
     p = s[0] + (((uint32_t)(s[1] - s[0]) * (x & 511u)) >> 9);
     pos = p * (uint32_t)(n - 1);
     t = pos & 32767u;

@@ -95,9 +95,9 @@ cmd_conform() { # target stride: PASS/FAIL lines
     fi
 }
 
-lib_bytes() { # elf -> total size of the library's symbols (fresnel_*, fr__*)
+lib_bytes() { # elf -> total size of the library's symbols (fresnel_*, internal helpers fresnel_i_* included)
     total=0
-    for h in $($NMT -S "$1" | awk '$NF ~ /^(fresnel_|fr__)/ && NF == 4 { print $2 }'); do
+    for h in $($NMT -S "$1" | awk '$NF ~ /^fresnel_/ && NF == 4 { print $2 }'); do
         total=$((total + 0x$h))
     done
     echo $total
@@ -123,7 +123,7 @@ cmd_nm() {
     # The configuration, not the file list, keeps binary32 and binary16 out:
     # every global the library defines is a fixed-point one.
     other=$($NMT --defined-only "$d/libfresnel_fixed.a" | awk 'NF == 3 && $2 ~ /^[A-Z]$/ { print $3 }' |
-        grep -v -e '_q15' -e '^fr__' -e '^fresnel_isqrt_u32$' -e '^fresnel_udiv_frac_u32$' -e '^fresnel_recip_q16$' | sort -u | tr '\n' ' ')
+        grep -v -e '_q15' -e '^fresnel_i_' -e '^fresnel_isqrt_u32$' -e '^fresnel_udiv_frac_u32$' -e '^fresnel_recip_q16$' | sort -u | tr '\n' ' ')
     q15=$($NMT --defined-only "$d/libfresnel_fixed.a" | awk '$3 == "fresnel_schlick_q15" { print $3 }')
     if [ -z "$other" ] && [ -n "$q15" ]; then
         echo "PASS cross m0: all $(echo $ALL_SRC | wc -w) files of src/ with $FIXED_ONLY define only fixed-point symbols (fresnel_schlick_q15, no fresnel_schlick)"
@@ -151,8 +151,8 @@ cmd_nm() {
     # Global symbols of the library in the firmware: Schlick's entry point
     # only. Local ones are the static helpers of schlick_q15.c that -Os chose
     # not to inline (fixed_internal.h), part of Schlick's own code.
-    lib=$($NMT "$d/schlick_only.elf" | awk '$2 ~ /^[A-Z]$/ && $NF ~ /^(fresnel_|fr__)/ { print $NF }' | sort -u | tr '\n' ' ')
-    helpers=$($NMT "$d/schlick_only.elf" | awk '$2 ~ /^[a-z]$/ && $NF ~ /^fr__/ { print $NF }' | sort -u | tr '\n' ' ')
+    lib=$($NMT "$d/schlick_only.elf" | awk '$2 ~ /^[A-Z]$/ && $NF ~ /^fresnel_/ { print $NF }' | sort -u | tr '\n' ' ')
+    helpers=$($NMT "$d/schlick_only.elf" | awk '$2 ~ /^[a-z]$/ && $NF ~ /^fresnel_i_/ { print $NF }' | sort -u | tr '\n' ' ')
     if [ "$lib" = "fresnel_schlick_q15 " ]; then
         echo "PASS cross m0: a firmware using Schlick for one material links only fresnel_schlick_q15 and its inline helpers ($helpers): $(lib_bytes "$d/schlick_only.elf") bytes of library code"
     else
@@ -286,7 +286,7 @@ cmd_size() {
     [ -f "$d/schlick_only.elf" ] || cmd_nm >/dev/null
     echo
     echo "Schlick only, one material, fixed point, Cortex-M0 (tests/cross/schlick_only.c linked with start-up and semihosting):"
-    echo "library code linked: $(lib_bytes "$d/schlick_only.elf") bytes ($($NMT "$d/schlick_only.elf" | awk '$NF ~ /^(fresnel_|fr__)/ { print $NF }' | tr '\n' ' ')); the whole firmware:"
+    echo "library code linked: $(lib_bytes "$d/schlick_only.elf") bytes ($($NMT "$d/schlick_only.elf" | awk '$NF ~ /^fresnel_/ { print $NF }' | tr '\n' ' ')); the whole firmware:"
     $SZ -A "$d/schlick_only.elf" | awk '$1 ~ /^\.(text|rodata|data|bss)$/ { printf "  %-8s %6d\n", $1, $2 }'
 }
 

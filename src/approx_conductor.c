@@ -7,24 +7,24 @@
 float fresnel_approx_conductor(float n, float k, float c)
 {
     float kc, rs, rp, nk2;
-    n = fr__eta(n);
-    k = fr__kappa(k);
-    c = fr__unit(c);
+    n = fresnel_i_eta(n);
+    k = fresnel_i_kappa(k);
+    c = fresnel_i_unit(c);
     nk2 = n * n + k * k;
     kc = k * c;
     /* n^2+k^2 -+ 2nc + c^2 = (n -+ c)^2 + k^2 and (n^2+k^2)c^2 -+ 2nc + 1 =
      * (nc -+ 1)^2 + (kc)^2: the minus forms never subtract nearly equal terms. */
     rs = ((n - c) * (n - c) + k * k) / ((n + c) * (n + c) + k * k);
     rp = ((n * c - 1.0f) * (n * c - 1.0f) + kc * kc) / (nk2 * c * c + 2.0f * n * c + 1.0f);
-    return fr__unit(0.5f * (rs + rp));
+    return fresnel_i_unit(0.5f * (rs + rp));
 }
 
 fresnel_rgb fresnel_approx_conductor_rgb(fresnel_rgb n, fresnel_rgb k, float c)
 {
-    FR__RGB(fresnel_approx_conductor(n.r, k.r, c), fresnel_approx_conductor(n.g, k.g, c),
+    FRESNEL_I_RGB(fresnel_approx_conductor(n.r, k.r, c), fresnel_approx_conductor(n.g, k.g, c),
             fresnel_approx_conductor(n.b, k.b, c));
 }
 
 #else
-typedef int fr__approx_conductor_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+typedef int fresnel_i_approx_conductor_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
 #endif

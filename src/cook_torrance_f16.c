@@ -6,17 +6,17 @@
 
 fresnel_f16 fresnel_cook_torrance_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c)
 {
-    fr__h one = fr__hc(1.0f), ep, d, t;
-    eta = fr__heta(eta);
-    kappa = fr__hkappa(kappa);
-    f0 = fr__hunit(f0);
-    ep = fr__hadd(eta, one);
-    d = fr__hadd(fr__hmul(ep, ep), fr__hmul(kappa, kappa));
+    fresnel_i_h one = fresnel_i_hc(1.0f), ep, d, t;
+    eta = fresnel_i_heta(eta);
+    kappa = fresnel_i_hkappa(kappa);
+    f0 = fresnel_i_hunit(f0);
+    ep = fresnel_i_hadd(eta, one);
+    d = fresnel_i_hadd(fresnel_i_hmul(ep, ep), fresnel_i_hmul(kappa, kappa));
     /* 1 - T(c) d / (4 eta): divide first, T d would not overflow but d / 4eta is the ratio that matters */
-    t = fr__hsub(one, fr__hmul(fr__conductor_transmittance_h(eta, kappa, c), fr__hdiv(d, fr__hmul(fr__hc(4.0f), eta))));
-    return fr__hunit(fr__hadd(f0, fr__hmul(fr__hsub(one, f0), fr__hunit(t))));
+    t = fresnel_i_hsub(one, fresnel_i_hmul(fresnel_i_conductor_transmittance_h(eta, kappa, c), fresnel_i_hdiv(d, fresnel_i_hmul(fresnel_i_hc(4.0f), eta))));
+    return fresnel_i_hunit(fresnel_i_hadd(f0, fresnel_i_hmul(fresnel_i_hsub(one, f0), fresnel_i_hunit(t))));
 }
 
 #else
-typedef int fr__cook_torrance_f16_disabled;
+typedef int fresnel_i_cook_torrance_f16_disabled;
 #endif

@@ -6,25 +6,25 @@
 #if FRESNEL_HAS_FIXED
 
 /* max(0, 1 - T(c)/T(1)) in Q30 */
-static uint32_t fr__ct_weight_q30(const fresnel_q15_ior *m, int32_t c)
+static uint32_t fresnel_i_ct_weight_q30(const fresnel_q15_ior *m, int32_t c)
 {
-    fresnel_qf t = fr__conductor_transmittance_q15(m, fr__q15_arg(c));
-    return FR__ONE_Q30 - fr__qf_to_q30_unit(fr__qf_mul(t, m->t1_inv));
+    fresnel_qf t = fresnel_i_conductor_transmittance_q15(m, fresnel_i_q15_arg(c));
+    return FRESNEL_I_ONE_Q30 - fresnel_i_qf_to_q30_unit(fresnel_i_qf_mul(t, m->t1_inv));
 }
 
 fresnel_q15 fresnel_cook_torrance_q15(int32_t f0, const fresnel_q15_ior *m, int32_t c)
 {
-    return fr__q30_to_q15(fr__schlick_q30(fr__q15_arg(f0), fr__ct_weight_q30(m, c)));
+    return fresnel_i_q30_to_q15(fresnel_i_schlick_q30(fresnel_i_q15_arg(f0), fresnel_i_ct_weight_q30(m, c)));
 }
 
 fresnel_q15_rgb fresnel_cook_torrance_q15_rgb(fresnel_q15_rgb f0, const fresnel_q15_ior *m, int32_t c)
 {
-    uint32_t w = fr__ct_weight_q30(m, c); /* one interpolant for the three channels */
-    FR__RGB_Q15(fr__q30_to_q15(fr__schlick_q30(fr__q15_arg(f0.r), w)),
-                fr__q30_to_q15(fr__schlick_q30(fr__q15_arg(f0.g), w)),
-                fr__q30_to_q15(fr__schlick_q30(fr__q15_arg(f0.b), w)));
+    uint32_t w = fresnel_i_ct_weight_q30(m, c); /* one interpolant for the three channels */
+    FRESNEL_I_RGB_Q15(fresnel_i_q30_to_q15(fresnel_i_schlick_q30(fresnel_i_q15_arg(f0.r), w)),
+                fresnel_i_q30_to_q15(fresnel_i_schlick_q30(fresnel_i_q15_arg(f0.g), w)),
+                fresnel_i_q30_to_q15(fresnel_i_schlick_q30(fresnel_i_q15_arg(f0.b), w)));
 }
 
 #else
-typedef int fr__cook_torrance_q15_disabled;
+typedef int fresnel_i_cook_torrance_q15_disabled;
 #endif

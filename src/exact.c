@@ -7,7 +7,7 @@
  * half its digits in binary32). Here a = u and b = v are the real and
  * imaginary parts of sqrt((eta + i kappa)^2 - sin^2), and the smaller of the
  * two is taken from u v = eta kappa instead. Since issue 8 that division is
- * folded into the ratios and Rs + Rp is one division (fr__exact_f), and a
+ * folded into the ratios and Rs + Rp is one division (fresnel_i_exact_f), and a
  * material may be prepared once for many cosines (fresnel_conductor_prepare). */
 #include "internal.h"
 
@@ -16,15 +16,15 @@
 
 /* u + iv = sqrt((eta + i kappa)^2 - sin^2 theta) on the decaying branch, and
  * m = u^2 + v^2. */
-struct fr__root {
+struct fresnel_i_root {
     float u, v, m;
 };
 
-static inline struct fr__root fr__transmitted(float eta, float kappa, float c)
+static inline struct fresnel_i_root fresnel_i_transmitted(float eta, float kappa, float c)
 {
-    struct fr__root w;
+    struct fresnel_i_root w;
     float ek = eta * kappa;
-    float a = fr__eta2_minus_sin2(eta, c, kappa * kappa);
+    float a = fresnel_i_eta2_minus_sin2(eta, c, kappa * kappa);
     w.m = sqrtf(a * a + 4.0f * ek * ek);
     if (a >= 0.0f) {
         w.u = sqrtf(0.5f * (w.m + a));
@@ -50,17 +50,17 @@ static inline struct fr__root fr__transmitted(float eta, float kappa, float c)
  * digits only where Rs or P is small: an absolute error of a few ulp of the
  * denominator, as with sums of squares. m + c^2 >= 2cu always, and m and u
  * carry a rounding or two of their own, since A does (see
- * fr__eta2_minus_sin2 and fresnel_conductor_prepare).
+ * fresnel_i_eta2_minus_sin2 and fresnel_conductor_prepare).
  * ONE_DIV: F = Ns (Dp + Np) / (2 Ds Dp). For eta kappa >= 2^-30,
  * Ds >= (eta kappa)^1.5, Dp >= sqrt(eta kappa) min(eta kappa, 1/4) and
  * Ds Dp <= ~(|n|^2 + 2)^3: normal and finite in binary32 over the whole
- * domain. Smaller eta kappa (FR__COND2) divides twice, kappa = 0 (FR__DIEL)
+ * domain. Smaller eta kappa (FRESNEL_I_COND2) divides twice, kappa = 0 (FRESNEL_I_DIEL)
  * has m = t = |A| (A^2 could underflow), u = B or 0: one square root. */
-enum { FR__MATCHED, FR__DIEL, FR__COND1, FR__COND2 };
+enum { FRESNEL_I_MATCHED, FRESNEL_I_DIEL, FRESNEL_I_COND1, FRESNEL_I_COND2 };
 
-static inline float fr__exact_f(float a, float c, float ch, float ek, float ek4, int kind)
+static inline float fresnel_i_exact_f(float a, float c, float ch, float ek, float ek4, int kind)
 {
-    const int diel = kind == FR__DIEL;
+    const int diel = kind == FRESNEL_I_DIEL;
     float m = diel ? fabsf(a) : sqrtf(a * a + ek4);
     float t = diel ? m : 0.5f * (m + fabsf(a));
     float b = sqrtf(t);
@@ -72,44 +72,44 @@ static inline float fr__exact_f(float a, float c, float ch, float ek, float ek4,
     float xp = x * (ch * m + s2 * s2);
     float ns = xs - c2y, ds = xs + c2y;
     float np = xp - c2y * s2, dp = xp + c2y * s2;
-    float f = kind == FR__COND2 ? 0.5f * (ns / ds) * (1.0f + np / dp) : (ns * (dp + np)) / (ds * (dp + dp));
+    float f = kind == FRESNEL_I_COND2 ? 0.5f * (ns / ds) * (1.0f + np / dp) : (ns * (dp + np)) / (ds * (dp + dp));
     /* Rounding can take F a few ulp below 0 where Rs or Rp is 0 (eta near 1)
      * and above 1 where both are 1: clamp. */
-    return fr__unit(f);
+    return fresnel_i_unit(f);
 }
 
 /* Which form a material takes (eta, kappa clamped). */
-static inline int fr__conductor_kind(float eta, float kappa)
+static inline int fresnel_i_conductor_kind(float eta, float kappa)
 {
     if (kappa == 0.0f)
-        return eta == 1.0f ? FR__MATCHED : FR__DIEL;
-    return eta * kappa >= 0x1p-30f ? FR__COND1 : FR__COND2;
+        return eta == 1.0f ? FRESNEL_I_MATCHED : FRESNEL_I_DIEL;
+    return eta * kappa >= 0x1p-30f ? FRESNEL_I_COND1 : FRESNEL_I_COND2;
 }
 
 float fresnel_conductor(float eta, float kappa, float c)
 {
     float ek, a;
     int kind;
-    eta = fr__eta(eta);
-    kappa = fr__kappa(kappa);
-    c = fr__unit(c);
-    kind = fr__conductor_kind(eta, kappa);
+    eta = fresnel_i_eta(eta);
+    kappa = fresnel_i_kappa(kappa);
+    c = fresnel_i_unit(c);
+    kind = fresnel_i_conductor_kind(eta, kappa);
     /* Matched index: no interface, nothing reflected, at every c including
      * c = 0 where the limit depends on the direction of approach (and where
      * c^2 underflows for c < 1e-19, so it must not be computed from c). */
-    if (kind == FR__MATCHED)
+    if (kind == FRESNEL_I_MATCHED)
         return 0.0f;
     ek = eta * kappa;
-    a = fr__eta2_minus_sin2(eta, c, kappa * kappa);
-    if (kind == FR__DIEL)
-        return fr__exact_f(a, c, c * c, 0.0f, 0.0f, FR__DIEL);
-    if (kind == FR__COND1)
-        return fr__exact_f(a, c, c * c, ek, 4.0f * ek * ek, FR__COND1);
-    return fr__exact_f(a, c, c * c, ek, 4.0f * ek * ek, FR__COND2);
+    a = fresnel_i_eta2_minus_sin2(eta, c, kappa * kappa);
+    if (kind == FRESNEL_I_DIEL)
+        return fresnel_i_exact_f(a, c, c * c, 0.0f, 0.0f, FRESNEL_I_DIEL);
+    if (kind == FRESNEL_I_COND1)
+        return fresnel_i_exact_f(a, c, c * c, ek, 4.0f * ek * ek, FRESNEL_I_COND1);
+    return fresnel_i_exact_f(a, c, c * c, ek, 4.0f * ek * ek, FRESNEL_I_COND2);
 }
 
 /* x + y = s + err exactly, s = fl(x + y) (Knuth's TwoSum). */
-static inline float fr__two_sum_err(float x, float y, float s)
+static inline float fresnel_i_two_sum_err(float x, float y, float s)
 {
     float t = s - x;
     return (x - (s - t)) + (y - t);
@@ -119,16 +119,16 @@ fresnel_conductor_prep fresnel_conductor_prepare(float eta, float kappa)
 {
     fresnel_conductor_prep p;
     float eh, el, kh, kl, s, d, lo;
-    eta = fr__eta(eta);
-    kappa = fr__kappa(kappa);
-    p.kind = fr__conductor_kind(eta, kappa);
+    eta = fresnel_i_eta(eta);
+    kappa = fresnel_i_kappa(kappa);
+    p.kind = fresnel_i_conductor_kind(eta, kappa);
     /* eta^2 - kappa^2 - 1 = a0 + a0_lo to about 2^-48 of its size: exact
      * squares, two TwoSums, the low parts summed last. */
-    fr__square_exact(eta, &eh, &el);
-    fr__square_exact(kappa, &kh, &kl);
+    fresnel_i_square_exact(eta, &eh, &el);
+    fresnel_i_square_exact(kappa, &kh, &kl);
     s = eh - 1.0f;
     d = s - kh;
-    lo = ((fr__two_sum_err(eh, -1.0f, s) + fr__two_sum_err(s, -kh, d)) + el) - kl;
+    lo = ((fresnel_i_two_sum_err(eh, -1.0f, s) + fresnel_i_two_sum_err(s, -kh, d)) + el) - kl;
     p.a0 = d + lo;
     p.a0_lo = lo - (p.a0 - d); /* Fast2Sum: |d| >= |lo| */
     p.ek = eta * kappa;
@@ -138,45 +138,45 @@ fresnel_conductor_prep fresnel_conductor_prepare(float eta, float kappa)
 
 /* A = eta^2 - kappa^2 - sin^2 = (a0 + c^2) + (a0_lo + c^2 low part): a0 + c^2
  * is exact where it cancels (Sterbenz), so A keeps its digits at a critical
- * angle as in fr__eta2_minus_sin2. */
-static inline float fr__prepared_a(const fresnel_conductor_prep *p, float c)
+ * angle as in fresnel_i_eta2_minus_sin2. */
+static inline float fresnel_i_prepared_a(const fresnel_conductor_prep *p, float c)
 {
     float ch, cl;
-    fr__square_exact(c, &ch, &cl);
+    fresnel_i_square_exact(c, &ch, &cl);
     return (p->a0 + ch) + (p->a0_lo + cl);
 }
 
-#define FR__PREPARED(p, c, kind) fr__exact_f(fr__prepared_a(p, c), c, (c) * (c), (p)->ek, (p)->ek4, kind)
+#define FRESNEL_I_PREPARED(p, c, kind) fresnel_i_exact_f(fresnel_i_prepared_a(p, c), c, (c) * (c), (p)->ek, (p)->ek4, kind)
 
 float fresnel_conductor_prepared(const fresnel_conductor_prep *p, float c)
 {
-    c = fr__unit(c);
+    c = fresnel_i_unit(c);
     switch (p->kind) {
-    case FR__DIEL: return FR__PREPARED(p, c, FR__DIEL);
-    case FR__COND1: return FR__PREPARED(p, c, FR__COND1);
-    case FR__COND2: return FR__PREPARED(p, c, FR__COND2);
+    case FRESNEL_I_DIEL: return FRESNEL_I_PREPARED(p, c, FRESNEL_I_DIEL);
+    case FRESNEL_I_COND1: return FRESNEL_I_PREPARED(p, c, FRESNEL_I_COND1);
+    case FRESNEL_I_COND2: return FRESNEL_I_PREPARED(p, c, FRESNEL_I_COND2);
     default: return 0.0f; /* matched index */
     }
 }
 
 /* One loop per kind, with no branch inside (the selects compile to
- * conditional moves or blends), in blocks of FR__BLOCK with a fixed trip
+ * conditional moves or blends), in blocks of FRESNEL_I_BLOCK with a fixed trip
  * count: the shape gcc's -O2 vectoriser accepts (very-cheap cost model).
  * It does vectorise them when sqrtf need not set errno (-fno-math-errno)
  * and compares may be if-converted (-fno-trapping-math); with the default
  * flags the loops stay scalar. */
-#define FR__BLOCK 8
-#define FR__BATCH_LOOP(kind)                                 \
-    for (i = 0; i + FR__BLOCK <= n; i += FR__BLOCK) {        \
+#define FRESNEL_I_BLOCK 8
+#define FRESNEL_I_BATCH_LOOP(kind)                                 \
+    for (i = 0; i + FRESNEL_I_BLOCK <= n; i += FRESNEL_I_BLOCK) {        \
         int j;                                               \
-        for (j = 0; j < FR__BLOCK; j++) {                    \
-            float cj = fr__unit(c[i + j]);                   \
-            out[i + j] = FR__PREPARED(&q, cj, kind);         \
+        for (j = 0; j < FRESNEL_I_BLOCK; j++) {                    \
+            float cj = fresnel_i_unit(c[i + j]);                   \
+            out[i + j] = FRESNEL_I_PREPARED(&q, cj, kind);         \
         }                                                    \
     }                                                        \
     for (; i < n; i++) {                                     \
-        float ci = fr__unit(c[i]);                           \
-        out[i] = FR__PREPARED(&q, ci, kind);                 \
+        float ci = fresnel_i_unit(c[i]);                           \
+        out[i] = FRESNEL_I_PREPARED(&q, ci, kind);                 \
     }
 
 void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restrict c, float *restrict out, int n)
@@ -184,9 +184,9 @@ void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restr
     const fresnel_conductor_prep q = *p;
     int i;
     switch (q.kind) {
-    case FR__DIEL: FR__BATCH_LOOP(FR__DIEL) break;
-    case FR__COND1: FR__BATCH_LOOP(FR__COND1) break;
-    case FR__COND2: FR__BATCH_LOOP(FR__COND2) break;
+    case FRESNEL_I_DIEL: FRESNEL_I_BATCH_LOOP(FRESNEL_I_DIEL) break;
+    case FRESNEL_I_COND1: FRESNEL_I_BATCH_LOOP(FRESNEL_I_COND1) break;
+    case FRESNEL_I_COND2: FRESNEL_I_BATCH_LOOP(FRESNEL_I_COND2) break;
     default:
         for (i = 0; i < n; i++)
             out[i] = 0.0f; /* matched index */
@@ -195,23 +195,23 @@ void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restr
 
 fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c)
 {
-    FR__RGB(fresnel_conductor(eta.r, kappa.r, c), fresnel_conductor(eta.g, kappa.g, c),
+    FRESNEL_I_RGB(fresnel_conductor(eta.r, kappa.r, c), fresnel_conductor(eta.g, kappa.g, c),
             fresnel_conductor(eta.b, kappa.b, c));
 }
 
-float fr__conductor_transmittance(float eta, float kappa, float c)
+float fresnel_i_conductor_transmittance(float eta, float kappa, float c)
 {
     /* |a+b|^2 - |a-b|^2 = 4 Re(a conj b) gives 1 - Rs = 4cu / den_s and
      * 1 - Rp = 4 (p u + q v) / den_p, and with u v = eta kappa,
      * p u + q v = c u (m + sin^2): sums of non-negative terms only. */
-    struct fr__root w;
+    struct fresnel_i_root w;
     float p, q, den_s, den_p, ts, tp, s2;
-    eta = fr__eta(eta);
-    kappa = fr__kappa(kappa);
-    c = fr__unit(c);
+    eta = fresnel_i_eta(eta);
+    kappa = fresnel_i_kappa(kappa);
+    c = fresnel_i_unit(c);
     if (eta == 1.0f && kappa == 0.0f)
         return 1.0f; /* matched index, as in fresnel_conductor */
-    w = fr__transmitted(eta, kappa, c);
+    w = fresnel_i_transmitted(eta, kappa, c);
     p = c * ((eta - kappa) * (eta + kappa));
     q = 2.0f * eta * kappa * c;
     s2 = (1.0f - c) * (1.0f + c);
@@ -219,17 +219,17 @@ float fr__conductor_transmittance(float eta, float kappa, float c)
     den_p = (p + w.u) * (p + w.u) + (q + w.v) * (q + w.v);
     ts = den_s > 0.0f ? 4.0f * c * w.u / den_s : 1.0f;
     tp = den_p > 0.0f ? 4.0f * c * w.u * (w.m + s2) / den_p : 1.0f;
-    return fr__unit(0.5f * (ts + tp));
+    return fresnel_i_unit(0.5f * (ts + tp));
 }
 
 float fresnel_dielectric(float eta, float c)
 {
     float a, w, e2c, rs, rp;
-    eta = fr__eta(eta);
-    c = fr__unit(c);
+    eta = fresnel_i_eta(eta);
+    c = fresnel_i_unit(c);
     if (eta == 1.0f)
         return 0.0f; /* matched index, as in fresnel_conductor */
-    a = fr__eta2_minus_sin2(eta, c, 0.0f);
+    a = fresnel_i_eta2_minus_sin2(eta, c, 0.0f);
     if (a < 0.0f)
         return 1.0f; /* total internal reflection */
     w = sqrtf(a);
@@ -237,9 +237,9 @@ float fresnel_dielectric(float eta, float c)
     /* c + w > 0: w = 0 needs a = 0, which with eta != 1 needs c > 0. */
     rs = (c - w) / (c + w);
     rp = (e2c - w) / (e2c + w);
-    return fr__unit(0.5f * (rs * rs + rp * rp));
+    return fresnel_i_unit(0.5f * (rs * rs + rp * rp));
 }
 
 #else
-typedef int fr__exact_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+typedef int fresnel_i_exact_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
 #endif

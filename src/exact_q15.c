@@ -15,20 +15,20 @@
  * Q15 result could show. The one true cancellation is A = eta^2 - kappa^2 -
  * sin^2 near a critical angle (a dielectric, or a conductor with kappa << 1):
  * there the reflectance's slope is unbounded, so A is carried in two words,
- * a0 + c^2 exact to 2^-60 of its scale (fr__a_qf). */
+ * a0 + c^2 exact to 2^-60 of its scale (fresnel_i_a_qf). */
 #include "fixed_internal.h"
 
 #if FRESNEL_HAS_FIXED
 
 /* The prepared shift, held to the layout's [0, 30] so that a corrupt
  * constant cannot make a shift count undefined. */
-static uint32_t fr__shift(const fresnel_q15_ior *m)
+static uint32_t fresnel_i_shift(const fresnel_q15_ior *m)
 {
-    FR__RANGE("ior shift", m->shift, 0, 30);
+    FRESNEL_I_RANGE("ior shift", m->shift, 0, 30);
     return m->shift <= 0 ? 0u : (m->shift >= 30 ? 30u : (uint32_t)m->shift);
 }
 
-static uint32_t fr__mag(int32_t x) { return x < 0 ? 0u - (uint32_t)x : (uint32_t)x; }
+static uint32_t fresnel_i_mag(int32_t x) { return x < 0 ? 0u - (uint32_t)x : (uint32_t)x; }
 
 /* |A| and its sign, A = eta^2 - kappa^2 - sin^2 = a0 + c^2. At the prepared
  * scale 2^-(30 - s),
@@ -38,76 +38,76 @@ static uint32_t fr__mag(int32_t x) { return x < 0 ? 0u - (uint32_t)x : (uint32_t
  * high word's unit (R: |a0_lo| <= 2^29, (c^2 mod 2^s) 2^(30-s) < 2^30). Both
  * sums are formed in uint32, so a constant outside the layout wraps rather
  * than overflowing a signed int. */
-fresnel_qf fr__a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative)
+fresnel_qf fresnel_i_a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative)
 {
-    uint32_t s = fr__shift(m), c2 = c * c; /* R: c^2 <= 2^30, exact */
+    uint32_t s = fresnel_i_shift(m), c2 = c * c; /* R: c^2 <= 2^30, exact */
     int32_t hi = (int32_t)((uint32_t)m->a0 + (c2 >> s));
     int32_t lo = (int32_t)((uint32_t)m->a0_lo + ((c2 & ((1u << s) - 1u)) << (30u - s)));
-    fresnel_qf qh = fr__qf(fr__mag(hi), (int32_t)s - 30), ql = fr__qf(fr__mag(lo), (int32_t)s - 60);
+    fresnel_qf qh = fresnel_i_qf(fresnel_i_mag(hi), (int32_t)s - 30), ql = fresnel_i_qf(fresnel_i_mag(lo), (int32_t)s - 60);
     int below;
-    FR__RANGE("exact a0_lo", m->a0_lo, -(1 << 29), 1 << 29);
+    FRESNEL_I_RANGE("exact a0_lo", m->a0_lo, -(1 << 29), 1 << 29);
     if ((hi < 0) == (lo < 0) || hi == 0 || lo == 0) {
         *negative = hi < 0 || (hi == 0 && lo < 0);
-        return fr__qf_add(qh, ql);
+        return fresnel_i_qf_add(qh, ql);
     }
     /* opposite signs: |lo| 2^-30 < 2 units of hi, so hi's sign wins unless
      * hi is +-1 and the difference crosses zero */
-    qh = fr__qf_sub(qh, ql, &below);
+    qh = fresnel_i_qf_sub(qh, ql, &below);
     *negative = (hi < 0) != (below != 0);
     return qh;
 }
 
 /* Ts + Tp (= 2 T) as qf, and 0 under total internal reflection (u = 0). */
-static fresnel_qf fr__two_t(const fresnel_q15_ior *m, uint32_t c)
+static fresnel_qf fresnel_i_two_t(const fresnel_q15_ior *m, uint32_t c)
 {
     int a_negative;
-    fresnel_qf aq = fr__a_qf(m, c, &a_negative);
+    fresnel_qf aq = fresnel_i_a_qf(m, c, &a_negative);
     fresnel_qf mq, big, u, cq, c2q, cu, ts, tp, q;
     if (c == 0)
-        return fr__qf(0, 0); /* 4cu = 0: grazing incidence reflects everything */
+        return fresnel_i_qf(0, 0); /* 4cu = 0: grazing incidence reflects everything */
     /* m = |w|^2 = sqrt(A^2 + b^2); big = sqrt((m + |A|)/2) is u for A >= 0
      * and v for A < 0; the other is b / (2 big) (u v = eta kappa = b/2). */
     if (m->b.m == 0) {
         if (a_negative)
-            return fr__qf(0, 0); /* dielectric past the critical angle: u = 0 */
+            return fresnel_i_qf(0, 0); /* dielectric past the critical angle: u = 0 */
         mq = aq;
-        u = fr__qf_sqrt(aq);
+        u = fresnel_i_qf_sqrt(aq);
     } else {
-        mq = fr__qf_sqrt(fr__qf_add(fr__qf_mul(aq, aq), fr__qf_mul(m->b, m->b)));
-        big = fr__qf_sqrt(fr__qf_scale(fr__qf_add(mq, aq), -1));
-        u = a_negative ? fr__qf_scale(fr__qf_div(m->b, big), -1) : big;
+        mq = fresnel_i_qf_sqrt(fresnel_i_qf_add(fresnel_i_qf_mul(aq, aq), fresnel_i_qf_mul(m->b, m->b)));
+        big = fresnel_i_qf_sqrt(fresnel_i_qf_scale(fresnel_i_qf_add(mq, aq), -1));
+        u = a_negative ? fresnel_i_qf_scale(fresnel_i_qf_div(m->b, big), -1) : big;
     }
     if (u.m == 0)
         return u; /* A = 0 with b = 0: exactly at the critical angle */
-    cq = fr__qf(c, -15);
-    c2q = fr__qf(c * c, -30);
-    cu = fr__qf_mul(cq, u);
-    ts = fr__qf_div(fr__qf_scale(cu, 2), fr__qf_add(fr__qf_add(c2q, fr__qf_scale(cu, 1)), mq));
+    cq = fresnel_i_qf(c, -15);
+    c2q = fresnel_i_qf(c * c, -30);
+    cu = fresnel_i_qf_mul(cq, u);
+    ts = fresnel_i_qf_div(fresnel_i_qf_scale(cu, 2), fresnel_i_qf_add(fresnel_i_qf_add(c2q, fresnel_i_qf_scale(cu, 1)), mq));
     /* q = c u (m + s^2), s^2 = 1 - c^2 exact in Q30 */
-    q = fr__qf_mul(cu, fr__qf_add(mq, fr__qf(FR__ONE_Q30 - c * c, -30)));
-    tp = fr__qf_div(fr__qf_scale(q, 2),
-                    fr__qf_add(fr__qf_add(fr__qf_mul(m->n4, c2q), fr__qf_scale(q, 1)), mq));
-    return fr__qf_add(ts, tp);
+    q = fresnel_i_qf_mul(cu, fresnel_i_qf_add(mq, fresnel_i_qf(FRESNEL_I_ONE_Q30 - c * c, -30)));
+    tp = fresnel_i_qf_div(fresnel_i_qf_scale(q, 2),
+                    fresnel_i_qf_add(fresnel_i_qf_add(fresnel_i_qf_mul(m->n4, c2q), fresnel_i_qf_scale(q, 1)), mq));
+    return fresnel_i_qf_add(ts, tp);
 }
 
 /* 1 - (Ts + Tp)/2 in Q30, rounded to Q15. */
-static fresnel_q15 fr__reflectance(fresnel_qf two_t)
+static fresnel_q15 fresnel_i_reflectance(fresnel_qf two_t)
 {
-    return fr__q30_to_q15(FR__ONE_Q30 - fr__qf_to_q30_unit(fr__qf_scale(two_t, -1)));
+    return fresnel_i_q30_to_q15(FRESNEL_I_ONE_Q30 - fresnel_i_qf_to_q30_unit(fresnel_i_qf_scale(two_t, -1)));
 }
 
-static int fr__matched(const fresnel_q15_ior *m) { return m->a0 == 0 && m->a0_lo == 0 && m->b.m == 0; }
+static int fresnel_i_matched(const fresnel_q15_ior *m) { return m->a0 == 0 && m->a0_lo == 0 && m->b.m == 0; }
 
 fresnel_q15 fresnel_conductor_q15(const fresnel_q15_ior *m, int32_t c)
 {
-    if (fr__matched(m))
+    if (fresnel_i_matched(m))
         return 0; /* no interface: nothing reflected at any c, as fresnel_conductor */
-    return fr__reflectance(fr__two_t(m, fr__q15_arg(c)));
+    return fresnel_i_reflectance(fresnel_i_two_t(m, fresnel_i_q15_arg(c)));
 }
 
 fresnel_q15_rgb fresnel_conductor_q15_rgb(const fresnel_q15_ior m[3], int32_t c)
 {
-    FR__RGB_Q15(fresnel_conductor_q15(&m[0], c), fresnel_conductor_q15(&m[1], c),
+    FRESNEL_I_RGB_Q15(fresnel_conductor_q15(&m[0], c), fresnel_conductor_q15(&m[1], c),
                 fresnel_conductor_q15(&m[2], c));
 }
 
@@ -115,39 +115,39 @@ fresnel_q15_rgb fresnel_conductor_q15_rgb(const fresnel_q15_ior m[3], int32_t c)
  * P = eta^2 c the two transmittances reduce to 4cu/(c+u)^2 and 4Pu/(P+u)^2. */
 fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c_in)
 {
-    uint32_t c = fr__q15_arg(c_in);
+    uint32_t c = fresnel_i_q15_arg(c_in);
     int a_negative, e2_negative;
     fresnel_qf aq, u, cq, p, ts, tp;
     if (m->b.m != 0)
         return fresnel_conductor_q15(m, c_in); /* not a dielectric after all */
-    if (fr__matched(m))
+    if (fresnel_i_matched(m))
         return 0;
-    aq = fr__a_qf(m, c, &a_negative);
+    aq = fresnel_i_a_qf(m, c, &a_negative);
     if (a_negative || aq.m == 0 || c == 0)
-        return FR__ONE_Q15; /* total internal reflection, or grazing */
-    u = fr__qf_sqrt(aq);
-    cq = fr__qf(c, -15);
+        return FRESNEL_I_ONE_Q15; /* total internal reflection, or grazing */
+    u = fresnel_i_qf_sqrt(aq);
+    cq = fresnel_i_qf(c, -15);
     /* eta^2 = A at c = 1, both words: for eta -> 0 the high word a0 + 1
      * keeps only log2(eta^2 2^30) bits (17 at eta = 0.01), and P's relative
      * error shows in the result near normal incidence. */
-    p = fr__qf_mul(fr__a_qf(m, FR__ONE_Q15, &e2_negative), cq);
-    ts = fr__qf_add(cq, u);
-    ts = fr__qf_div(fr__qf_scale(fr__qf_mul(cq, u), 2), fr__qf_mul(ts, ts));
-    tp = fr__qf_add(p, u);
-    tp = fr__qf_div(fr__qf_scale(fr__qf_mul(p, u), 2), fr__qf_mul(tp, tp));
-    return fr__reflectance(fr__qf_add(ts, tp));
+    p = fresnel_i_qf_mul(fresnel_i_a_qf(m, FRESNEL_I_ONE_Q15, &e2_negative), cq);
+    ts = fresnel_i_qf_add(cq, u);
+    ts = fresnel_i_qf_div(fresnel_i_qf_scale(fresnel_i_qf_mul(cq, u), 2), fresnel_i_qf_mul(ts, ts));
+    tp = fresnel_i_qf_add(p, u);
+    tp = fresnel_i_qf_div(fresnel_i_qf_scale(fresnel_i_qf_mul(p, u), 2), fresnel_i_qf_mul(tp, tp));
+    return fresnel_i_reflectance(fresnel_i_qf_add(ts, tp));
 }
 
-fresnel_qf fr__conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c)
+fresnel_qf fresnel_i_conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c)
 {
-    if (fr__matched(m))
-        return fr__qf_one();
-    return fr__qf_scale(fr__two_t(m, c), -1);
+    if (fresnel_i_matched(m))
+        return fresnel_i_qf_one();
+    return fresnel_i_qf_scale(fresnel_i_two_t(m, c), -1);
 }
 
 /* a b as two 32-bit words, from 16-bit halves. R: each partial product
  * < 2^32; mid < 3 2^16. */
-static void fr__mul_wide(uint32_t a, uint32_t b, uint32_t *hi, uint32_t *lo)
+static void fresnel_i_mul_wide(uint32_t a, uint32_t b, uint32_t *hi, uint32_t *lo)
 {
     uint32_t al = a & 0xffffu, ah = a >> 16, bl = b & 0xffffu, bh = b >> 16;
     uint32_t ll = al * bl, lh = al * bh, hl = ah * bl;
@@ -168,11 +168,11 @@ void fresnel_q15_ior_prepare(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_q
     uint32_t ph, pl, kh, kl, vh, vl;
     int neg;
     int32_t s;
-    fresnel_qf e = fr__qf(eta, -16), k = fr__qf(kappa, -16), one = fr__qf_one();
-    fresnel_qf ep1 = fr__qf(eta + 65536u, -16); /* R: < 2^31 + 2^16, unsigned */
-    fresnel_qf k2 = fr__qf_mul(k, k), e2 = fr__qf_mul(e, e);
-    fr__mul_wide(em1, eta + 65536u, &ph, &pl);
-    fr__mul_wide(kappa, kappa, &kh, &kl);
+    fresnel_qf e = fresnel_i_qf(eta, -16), k = fresnel_i_qf(kappa, -16), one = fresnel_i_qf_one();
+    fresnel_qf ep1 = fresnel_i_qf(eta + 65536u, -16); /* R: < 2^31 + 2^16, unsigned */
+    fresnel_qf k2 = fresnel_i_qf_mul(k, k), e2 = fresnel_i_qf_mul(e, e);
+    fresnel_i_mul_wide(em1, eta + 65536u, &ph, &pl);
+    fresnel_i_mul_wide(kappa, kappa, &kh, &kl);
     if (eta < 65536u) { /* V = -(P + K) */
         vl = pl + kl;
         vh = ph + kh + (vl < pl);
@@ -210,7 +210,7 @@ void fresnel_q15_ior_prepare(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_q
         if (s <= 28) {
             r *= (int32_t)(1u << (28u - (uint32_t)s));
         } else {
-            uint32_t sh = (uint32_t)s - 28u, mag = fr__mag(r);
+            uint32_t sh = (uint32_t)s - 28u, mag = fresnel_i_mag(r);
             mag = (mag + (1u << (sh - 1u))) >> sh;
             r = r < 0 ? -(int32_t)mag : (int32_t)mag;
         }
@@ -224,13 +224,13 @@ void fresnel_q15_ior_prepare(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_q
         out->a0 = neg ? -0x7fffffff + 1 : 0x7fffffff - 1;
         out->a0_lo = 0;
     }
-    out->b = fr__qf_scale(fr__qf_mul(e, k), 1);
-    out->n4 = fr__qf_add(e2, k2);
-    out->n4 = fr__qf_mul(out->n4, out->n4);
-    out->t1_inv = fr__qf_div(fr__qf_add(fr__qf_mul(ep1, ep1), k2), fr__qf_scale(e, 2));
-    out->inv_eta2 = fr__qf_div(one, e2);
+    out->b = fresnel_i_qf_scale(fresnel_i_qf_mul(e, k), 1);
+    out->n4 = fresnel_i_qf_add(e2, k2);
+    out->n4 = fresnel_i_qf_mul(out->n4, out->n4);
+    out->t1_inv = fresnel_i_qf_div(fresnel_i_qf_add(fresnel_i_qf_mul(ep1, ep1), k2), fresnel_i_qf_scale(e, 2));
+    out->inv_eta2 = fresnel_i_qf_div(one, e2);
 }
 
 #else
-typedef int fr__exact_q15_disabled;
+typedef int fresnel_i_exact_q15_disabled;
 #endif

@@ -1,6 +1,6 @@
 /* Helpers shared by the binary16 model files (src/\*_f16.c); not public.
  *
- * Every arithmetic operation goes through one of the fr__h* helpers, whose
+ * Every arithmetic operation goes through one of the fresnel_i_h* helpers, whose
  * return converts to _Float16: in C99 that conversion (like an assignment
  * or a cast) discards any excess precision, so each operation is one
  * rounding to binary16 even where the compiler evaluates _Float16
@@ -23,25 +23,25 @@
 
 #include <math.h>
 
-typedef fresnel_f16 fr__h;
+typedef fresnel_f16 fresnel_i_h;
 
-static inline fr__h fr__hc(float x) { return (fr__h)x; } /* a constant, rounded once */
-static inline fr__h fr__hadd(fr__h a, fr__h b) { return (fr__h)(a + b); }
-static inline fr__h fr__hsub(fr__h a, fr__h b) { return (fr__h)(a - b); }
-static inline fr__h fr__hmul(fr__h a, fr__h b) { return (fr__h)(a * b); }
-static inline fr__h fr__hdiv(fr__h a, fr__h b) { return (fr__h)(a / b); }
+static inline fresnel_i_h fresnel_i_hc(float x) { return (fresnel_i_h)x; } /* a constant, rounded once */
+static inline fresnel_i_h fresnel_i_hadd(fresnel_i_h a, fresnel_i_h b) { return (fresnel_i_h)(a + b); }
+static inline fresnel_i_h fresnel_i_hsub(fresnel_i_h a, fresnel_i_h b) { return (fresnel_i_h)(a - b); }
+static inline fresnel_i_h fresnel_i_hmul(fresnel_i_h a, fresnel_i_h b) { return (fresnel_i_h)(a * b); }
+static inline fresnel_i_h fresnel_i_hdiv(fresnel_i_h a, fresnel_i_h b) { return (fresnel_i_h)(a / b); }
 /* Correctly rounded: sqrtf is correctly rounded and binary32 has more than
  * 2 * 11 + 2 significand bits, so rounding its result to half again is
  * the same as rounding the exact root. */
-static inline fr__h fr__hsqrt(fr__h a) { return (fr__h)sqrtf((float)a); }
+static inline fresnel_i_h fresnel_i_hsqrt(fresnel_i_h a) { return (fresnel_i_h)sqrtf((float)a); }
 
 /* a == b for clamped values (no NaN, no -0), by representation: a
  * _Float16 == compiles to a libgcc call (__eqhf2) on x86-64, even written
  * as a float comparison. */
-static inline int fr__heq(fr__h a, fr__h b)
+static inline int fresnel_i_heq(fresnel_i_h a, fresnel_i_h b)
 {
     union {
-        fr__h h;
+        fresnel_i_h h;
         unsigned short u;
     } x, y;
     x.h = a;
@@ -50,45 +50,45 @@ static inline int fr__heq(fr__h a, fr__h b)
 }
 
 /* Clamp into [lo, hi]; NaN (which fails both comparisons) lands on lo. */
-static inline fr__h fr__hclamp(fr__h x, fr__h lo, fr__h hi) { return x > lo ? (x < hi ? x : hi) : lo; }
-static inline fr__h fr__hunit(fr__h x) { return fr__hclamp(x, fr__hc(0.0f), fr__hc(1.0f)); }
-static inline fr__h fr__heta(fr__h x) { return fr__hclamp(x, fr__hc(FRESNEL_F16_ETA_MIN), fr__hc(FRESNEL_F16_ETA_MAX)); }
-static inline fr__h fr__hkappa(fr__h x) { return fr__hclamp(x, fr__hc(0.0f), fr__hc(FRESNEL_F16_KAPPA_MAX)); }
+static inline fresnel_i_h fresnel_i_hclamp(fresnel_i_h x, fresnel_i_h lo, fresnel_i_h hi) { return x > lo ? (x < hi ? x : hi) : lo; }
+static inline fresnel_i_h fresnel_i_hunit(fresnel_i_h x) { return fresnel_i_hclamp(x, fresnel_i_hc(0.0f), fresnel_i_hc(1.0f)); }
+static inline fresnel_i_h fresnel_i_heta(fresnel_i_h x) { return fresnel_i_hclamp(x, fresnel_i_hc(FRESNEL_F16_ETA_MIN), fresnel_i_hc(FRESNEL_F16_ETA_MAX)); }
+static inline fresnel_i_h fresnel_i_hkappa(fresnel_i_h x) { return fresnel_i_hclamp(x, fresnel_i_hc(0.0f), fresnel_i_hc(FRESNEL_F16_KAPPA_MAX)); }
 
-static inline fr__h fr__hpow5(fr__h x)
+static inline fresnel_i_h fresnel_i_hpow5(fresnel_i_h x)
 {
-    fr__h x2 = fr__hmul(x, x);
-    return fr__hmul(fr__hmul(x2, x2), x);
+    fresnel_i_h x2 = fresnel_i_hmul(x, x);
+    return fresnel_i_hmul(fresnel_i_hmul(x2, x2), x);
 }
 
 /* (1 - c)^p as a GPU's pow: exp(p ln(1 - c)) with the logarithm, the
  * product and the exponential each rounded to half. c = 1 gives 0. */
-static inline fr__h fr__hpow_one_minus(fr__h c, fr__h p)
+static inline fresnel_i_h fresnel_i_hpow_one_minus(fresnel_i_h c, fresnel_i_h p)
 {
-    fr__h l, y;
-    if (!(c < fr__hc(1.0f)))
-        return fr__hc(0.0f);
-    l = (fr__h)log1pf(-(float)c);
-    y = fr__hmul(p, l);
-    return (fr__h)expf((float)y);
+    fresnel_i_h l, y;
+    if (!(c < fresnel_i_hc(1.0f)))
+        return fresnel_i_hc(0.0f);
+    l = (fresnel_i_h)log1pf(-(float)c);
+    y = fresnel_i_hmul(p, l);
+    return (fresnel_i_h)expf((float)y);
 }
 
 /* hypot without overflow: M sqrt(1 + (S/M)^2) for a, b >= 0. */
-static inline fr__h fr__hhypot(fr__h a, fr__h b)
+static inline fresnel_i_h fresnel_i_hhypot(fresnel_i_h a, fresnel_i_h b)
 {
-    fr__h big = a > b ? a : b, small = a > b ? b : a, r;
-    if (!(big > fr__hc(0.0f)))
-        return fr__hc(0.0f);
-    r = fr__hdiv(small, big);
-    return fr__hmul(big, fr__hsqrt(fr__hadd(fr__hc(1.0f), fr__hmul(r, r))));
+    fresnel_i_h big = a > b ? a : b, small = a > b ? b : a, r;
+    if (!(big > fresnel_i_hc(0.0f)))
+        return fresnel_i_hc(0.0f);
+    r = fresnel_i_hdiv(small, big);
+    return fresnel_i_hmul(big, fresnel_i_hsqrt(fresnel_i_hadd(fresnel_i_hc(1.0f), fresnel_i_hmul(r, r))));
 }
 
 /* Schlick in half (also used by the residual LUT). */
-fr__h fr__schlick_h(fr__h f0, fr__h c);
+FRESNEL_I_HIDDEN fresnel_i_h fresnel_i_schlick_h(fresnel_i_h f0, fresnel_i_h c);
 /* 1 - exact reflectance, for Cook-Torrance (exact_f16.c). */
-fr__h fr__conductor_transmittance_h(fr__h eta, fr__h kappa, fr__h c);
+FRESNEL_I_HIDDEN fresnel_i_h fresnel_i_conductor_transmittance_h(fresnel_i_h eta, fresnel_i_h kappa, fresnel_i_h c);
 /* the approximate conductor form for clamped n, k (approx_conductor_f16.c) */
-fr__h fr__approx_conductor_h(fr__h n, fr__h k, fr__h c);
+FRESNEL_I_HIDDEN fresnel_i_h fresnel_i_approx_conductor_h(fresnel_i_h n, fresnel_i_h k, fresnel_i_h c);
 
 #endif
 #endif

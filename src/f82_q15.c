@@ -11,50 +11,50 @@
 
 #if FRESNEL_HAS_FIXED
 
-#define FR__K1_FRAC_Q30 699418891u /* round((823543/46656 - 17) 2^30) */
-#define FR__K2_OVER_K1_Q30 496782080u /* round((49/6)/(823543/46656) 2^30) = 0.46266 */
+#define FRESNEL_I_K1_FRAC_Q30 699418891u /* round((823543/46656 - 17) 2^30) */
+#define FRESNEL_I_K2_OVER_K1_Q30 496782080u /* round((49/6)/(823543/46656) 2^30) = 0.46266 */
 
 /* g = K1 c x^6 in Q30 from x^5 in Q30 and c, x = 1 - c in Q15.
  * R: x^6 <= 2^30; c x^6 <= (6^6/7^7) 2^30 < 2^26; 17 c x^6 < 2^30.1 is
  * bounded by g <= 1 once the fraction is added: g <= 2^30. */
-static uint32_t fr__f82_g_q30(uint32_t x5, uint32_t c)
+static uint32_t fresnel_i_f82_g_q30(uint32_t x5, uint32_t c)
 {
-    uint32_t x6 = fr__mul_q30_q15(x5, FR__ONE_Q15 - c);
-    uint32_t t = fr__mul_q30_q15(x6, c);
-    FR__RANGE("f82 c x^6", t, 0, 60830459); /* (6^6/7^7) 2^30 */
-    return 17u * t + fr__mul_q30(t, FR__K1_FRAC_Q30);
+    uint32_t x6 = fresnel_i_mul_q30_q15(x5, FRESNEL_I_ONE_Q15 - c);
+    uint32_t t = fresnel_i_mul_q30_q15(x6, c);
+    FRESNEL_I_RANGE("f82 c x^6", t, 0, 60830459); /* (6^6/7^7) 2^30 */
+    return 17u * t + fresnel_i_mul_q30(t, FRESNEL_I_K1_FRAC_Q30);
 }
 
-static fresnel_q15 fr__f82_q15(uint32_t f0, uint32_t f82, uint32_t x5, uint32_t g)
+static fresnel_q15 fresnel_i_f82_q15(uint32_t f0, uint32_t f82, uint32_t x5, uint32_t g)
 {
     /* R: (F0 - F82) 2^15 in [-2^30, 2^30]; the K2/K1 term in [0, 0.4627 2^30] */
-    int32_t h = ((int32_t)f0 - (int32_t)f82) * 32768 + (int32_t)fr__mul_q30_q15(FR__K2_OVER_K1_Q30, FR__ONE_Q15 - f0);
+    int32_t h = ((int32_t)f0 - (int32_t)f82) * 32768 + (int32_t)fresnel_i_mul_q30_q15(FRESNEL_I_K2_OVER_K1_Q30, FRESNEL_I_ONE_Q15 - f0);
     uint32_t gh;
     int32_t f;
-    FR__RANGE("f82 h", h, -576960000, 1570524000); /* -0.5373, 1.4627 in Q30 */
-    FR__RANGE("f82 g", g, 0, 1u << 30);
-    /* R: |h| < 1.4627 2^30 < 2^31 and g <= 2^30, as fr__mul_q30 needs */
-    gh = fr__mul_q30(h < 0 ? (uint32_t)-h : (uint32_t)h, g);
+    FRESNEL_I_RANGE("f82 h", h, -576960000, 1570524000); /* -0.5373, 1.4627 in Q30 */
+    FRESNEL_I_RANGE("f82 g", g, 0, 1u << 30);
+    /* R: |h| < 1.4627 2^30 < 2^31 and g <= 2^30, as fresnel_i_mul_q30 needs */
+    gh = fresnel_i_mul_q30(h < 0 ? (uint32_t)-h : (uint32_t)h, g);
     /* R: Schlick part in [0, 2^30]; f in [-1.4627 2^30, 1.5373 2^30], inside int32 */
-    f = (int32_t)fr__schlick_q30(f0, x5) + (h < 0 ? (int32_t)gh : -(int32_t)gh);
-    FR__RANGE("f82 F", f, -1570524000, 1650702000);
-    return fr__q30s_to_q15(f);
+    f = (int32_t)fresnel_i_schlick_q30(f0, x5) + (h < 0 ? (int32_t)gh : -(int32_t)gh);
+    FRESNEL_I_RANGE("f82 F", f, -1570524000, 1650702000);
+    return fresnel_i_q30s_to_q15(f);
 }
 
 fresnel_q15 fresnel_f82_q15(int32_t f0, int32_t f82, int32_t c_in)
 {
-    uint32_t c = fr__q15_arg(c_in), x5 = fr__pow5_q30(FR__ONE_Q15 - c);
-    return fr__f82_q15(fr__q15_arg(f0), fr__q15_arg(f82), x5, fr__f82_g_q30(x5, c));
+    uint32_t c = fresnel_i_q15_arg(c_in), x5 = fresnel_i_pow5_q30(FRESNEL_I_ONE_Q15 - c);
+    return fresnel_i_f82_q15(fresnel_i_q15_arg(f0), fresnel_i_q15_arg(f82), x5, fresnel_i_f82_g_q30(x5, c));
 }
 
 fresnel_q15_rgb fresnel_f82_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f82, int32_t c_in)
 {
-    uint32_t c = fr__q15_arg(c_in), x5 = fr__pow5_q30(FR__ONE_Q15 - c), g = fr__f82_g_q30(x5, c);
-    FR__RGB_Q15(fr__f82_q15(fr__q15_arg(f0.r), fr__q15_arg(f82.r), x5, g),
-                fr__f82_q15(fr__q15_arg(f0.g), fr__q15_arg(f82.g), x5, g),
-                fr__f82_q15(fr__q15_arg(f0.b), fr__q15_arg(f82.b), x5, g));
+    uint32_t c = fresnel_i_q15_arg(c_in), x5 = fresnel_i_pow5_q30(FRESNEL_I_ONE_Q15 - c), g = fresnel_i_f82_g_q30(x5, c);
+    FRESNEL_I_RGB_Q15(fresnel_i_f82_q15(fresnel_i_q15_arg(f0.r), fresnel_i_q15_arg(f82.r), x5, g),
+                fresnel_i_f82_q15(fresnel_i_q15_arg(f0.g), fresnel_i_q15_arg(f82.g), x5, g),
+                fresnel_i_f82_q15(fresnel_i_q15_arg(f0.b), fresnel_i_q15_arg(f82.b), x5, g));
 }
 
 #else
-typedef int fr__f82_q15_disabled;
+typedef int fresnel_i_f82_q15_disabled;
 #endif

@@ -4,7 +4,7 @@
  *
  * 1. Plain fixed point, for Schlick, F82 and the LUTs: unsigned values in
  *    [0, 1] held as Q30 (1 = 2^30) and Q15 (1 = 2^15). A product of two Q30
- *    values is formed from 15-bit halves (fr__mul_q30), so x^5 keeps 30 bits
+ *    values is formed from 15-bit halves (fresnel_i_mul_q30), so x^5 keeps 30 bits
  *    without int64.
  *
  * 2. fresnel_qf, value = m 2^e with m in [2^30, 2^31), for the models whose
@@ -16,7 +16,7 @@
  *
  * Range analysis convention: the comment "R:" after a statement states the
  * range of what it computes; tests/test_fixed_bounds.c re-checks the
- * interesting ones through FR__RANGE (active only when the test build
+ * interesting ones through FRESNEL_I_RANGE (active only when the test build
  * defines FRESNEL_RANGE_CHECK).
  */
 #ifndef FRESNEL_FIXED_INTERNAL_H
@@ -28,38 +28,38 @@
 
 #if FRESNEL_HAS_FIXED
 
-#define FR__ONE_Q15 32768u
-#define FR__ONE_Q30 (1u << 30)
+#define FRESNEL_I_ONE_Q15 32768u
+#define FRESNEL_I_ONE_Q30 (1u << 30)
 
 /* Range assertions of the range analysis. A test build defines
- * FRESNEL_RANGE_CHECK and a function fr__range_fail that records the
+ * FRESNEL_RANGE_CHECK and a function fresnel_i_range_fail that records the
  * violation; the runtime build compiles them away. */
 #ifdef FRESNEL_RANGE_CHECK
-void fr__range_fail(const char *what, long long value);
-#define FR__RANGE(what, x, lo, hi)                                                                 \
+FRESNEL_I_HIDDEN void fresnel_i_range_fail(const char *what, long long value);
+#define FRESNEL_I_RANGE(what, x, lo, hi)                                                                 \
     do {                                                                                           \
         long long v_ = (long long)(x), lo_ = (long long)(lo), hi_ = (long long)(hi);              \
         if (v_ < lo_ || v_ > hi_)                                                                  \
-            fr__range_fail((what), v_);                                                            \
+            fresnel_i_range_fail((what), v_);                                                            \
     } while (0)
 #else
-#define FR__RANGE(what, x, lo, hi) ((void)0)
+#define FRESNEL_I_RANGE(what, x, lo, hi) ((void)0)
 #endif
 
 /* A Q15 argument as the API promises: any int32, clamped to [0, one]. */
-static inline uint32_t fr__q15_arg(int32_t x)
+static inline uint32_t fresnel_i_q15_arg(int32_t x)
 {
-    return x <= 0 ? 0u : (x >= 32768 ? FR__ONE_Q15 : (uint32_t)x);
+    return x <= 0 ? 0u : (x >= 32768 ? FRESNEL_I_ONE_Q15 : (uint32_t)x);
 }
 
 /* floor(a b / 2^15) for a < 2^31, b <= 2^15.
  * R: a>>15 < 2^16 and b <= 2^15 give (a>>15) b < 2^31; (a & 0x7fff) b < 2^30;
  * the sum is floor(a b / 2^15) < 2^31. Exact floor: a b / 2^15 =
  * (a>>15) b + (a & 0x7fff) b / 2^15. */
-static inline uint32_t fr__mul_q30_q15(uint32_t a, uint32_t b)
+static inline uint32_t fresnel_i_mul_q30_q15(uint32_t a, uint32_t b)
 {
-    FR__RANGE("mul_q30_q15 a", a, 0, 0x7fffffffu);
-    FR__RANGE("mul_q30_q15 b", b, 0, 1u << 15);
+    FRESNEL_I_RANGE("mul_q30_q15 a", a, 0, 0x7fffffffu);
+    FRESNEL_I_RANGE("mul_q30_q15 b", b, 0, 1u << 15);
     return (a >> 15) * b + (((a & 0x7fffu) * b) >> 15);
 }
 
@@ -68,11 +68,11 @@ static inline uint32_t fr__mul_q30_q15(uint32_t a, uint32_t b)
  * ah bh < 2^31; ah bl < 2^31; al bh <= 2^30; al bl < 2^30, >>15 < 2^15;
  * middle sum < 2^31 + 2^30 + 2^15 < 2^32; result = floor(a b / 2^30) < 2^31.
  * Exact floor: a b = ah bh 2^30 + (ah bl + al bh) 2^15 + al bl. */
-static inline uint32_t fr__mul_q30(uint32_t a, uint32_t b)
+static inline uint32_t fresnel_i_mul_q30(uint32_t a, uint32_t b)
 {
     uint32_t ah = a >> 15, al = a & 0x7fffu, bh = b >> 15, bl = b & 0x7fffu;
-    FR__RANGE("mul_q30 a", a, 0, 0x7fffffffu);
-    FR__RANGE("mul_q30 b", b, 0, 1u << 30);
+    FRESNEL_I_RANGE("mul_q30 a", a, 0, 0x7fffffffu);
+    FRESNEL_I_RANGE("mul_q30 b", b, 0, 1u << 30);
     return ah * bh + ((ah * bl + al * bh + ((al * bl) >> 15)) >> 15);
 }
 
@@ -80,78 +80,78 @@ static inline uint32_t fr__mul_q30(uint32_t a, uint32_t b)
  * R: x^2 <= 2^30 exact; x^4 = floor(x2 x2 / 2^30) <= 2^30; x^5 <= 2^30.
  * Error: two floors, each < 2^-30, the first multiplied by x <= 1:
  * x^5 is 0 to 2 units of 2^-30 low. */
-static inline uint32_t fr__pow5_q30(uint32_t x)
+static inline uint32_t fresnel_i_pow5_q30(uint32_t x)
 {
     uint32_t x2 = x * x;
-    FR__RANGE("pow5 x", x, 0, 1u << 15);
-    uint32_t x4 = fr__mul_q30(x2, x2);
-    return fr__mul_q30_q15(x4, x);
+    FRESNEL_I_RANGE("pow5 x", x, 0, 1u << 15);
+    uint32_t x4 = fresnel_i_mul_q30(x2, x2);
+    return fresnel_i_mul_q30_q15(x4, x);
 }
 
 /* Round a Q30 value in [0, 2^30] to Q15 (half up). R: v + 2^14 < 2^31. */
-static inline fresnel_q15 fr__q30_to_q15(uint32_t v)
+static inline fresnel_q15 fresnel_i_q30_to_q15(uint32_t v)
 {
-    FR__RANGE("result in Q30", v, 0, 1u << 30);
+    FRESNEL_I_RANGE("result in Q30", v, 0, 1u << 30);
     return (fresnel_q15)((v + (1u << 14)) >> 15);
 }
 
 /* Clamp a signed Q30 value to [0, 2^30] and round to Q15. */
-static inline fresnel_q15 fr__q30s_to_q15(int32_t v)
+static inline fresnel_q15 fresnel_i_q30s_to_q15(int32_t v)
 {
-    return v <= 0 ? (fresnel_q15)0 : (v >= (int32_t)FR__ONE_Q30 ? (fresnel_q15)FR__ONE_Q15 : fr__q30_to_q15((uint32_t)v));
+    return v <= 0 ? (fresnel_q15)0 : (v >= (int32_t)FRESNEL_I_ONE_Q30 ? (fresnel_q15)FRESNEL_I_ONE_Q15 : fresnel_i_q30_to_q15((uint32_t)v));
 }
 
 /* Schlick's F0 + (1 - F0) x5 in Q30 from F0 in Q15 and x5 in Q30.
  * R: f0 2^15 <= 2^30 - (1 - f0) 2^15 ... the sum is <= f0 2^15 + (2^15 - f0) 2^15 = 2^30. */
-static inline uint32_t fr__schlick_q30(uint32_t f0, uint32_t x5)
+static inline uint32_t fresnel_i_schlick_q30(uint32_t f0, uint32_t x5)
 {
-    FR__RANGE("schlick f0", f0, 0, 1u << 15);
-    FR__RANGE("schlick weight", x5, 0, 1u << 30);
-    return (f0 << 15) + fr__mul_q30_q15(x5, FR__ONE_Q15 - f0);
+    FRESNEL_I_RANGE("schlick f0", f0, 0, 1u << 15);
+    FRESNEL_I_RANGE("schlick weight", x5, 0, 1u << 30);
+    return (f0 << 15) + fresnel_i_mul_q30_q15(x5, FRESNEL_I_ONE_Q15 - f0);
 }
 
 /* ---- fresnel_qf (fixed_math.c). Non-negative values; zero is m == 0. */
-fresnel_qf fr__qf(uint32_t x, int32_t e); /* x 2^e, normalised (x any uint32) */
-fresnel_qf fr__qf_mul(fresnel_qf a, fresnel_qf b);
-fresnel_qf fr__qf_add(fresnel_qf a, fresnel_qf b);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf(uint32_t x, int32_t e); /* x 2^e, normalised (x any uint32) */
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf_mul(fresnel_qf a, fresnel_qf b);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf_add(fresnel_qf a, fresnel_qf b);
 /* |a - b|; *negative set when a < b (may be NULL when a >= b is known) */
-fresnel_qf fr__qf_sub(fresnel_qf a, fresnel_qf b, int *negative);
-fresnel_qf fr__qf_div(fresnel_qf a, fresnel_qf b); /* b != 0 */
-fresnel_qf fr__qf_sqrt(fresnel_qf a);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf_sub(fresnel_qf a, fresnel_qf b, int *negative);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf_div(fresnel_qf a, fresnel_qf b); /* b != 0 */
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf_sqrt(fresnel_qf a);
 /* round(a 2^frac), saturating at 2^32 - 1 */
-uint32_t fr__qf_to_fix(fresnel_qf a, int32_t frac);
+FRESNEL_I_HIDDEN uint32_t fresnel_i_qf_to_fix(fresnel_qf a, int32_t frac);
 /* a < b: -1, a == b: 0, a > b: 1 */
-int fr__qf_cmp(fresnel_qf a, fresnel_qf b);
+FRESNEL_I_HIDDEN int fresnel_i_qf_cmp(fresnel_qf a, fresnel_qf b);
 /* a 2^k */
-static inline fresnel_qf fr__qf_scale(fresnel_qf a, int32_t k)
+static inline fresnel_qf fresnel_i_qf_scale(fresnel_qf a, int32_t k)
 {
     a.e += k;
     return a;
 }
-static inline fresnel_qf fr__qf_one(void) { return fr__qf(1u, 0); }
+static inline fresnel_qf fresnel_i_qf_one(void) { return fresnel_i_qf(1u, 0); }
 /* a value clamped to [0, 1] as Q30 */
-static inline uint32_t fr__qf_to_q30_unit(fresnel_qf a)
+static inline uint32_t fresnel_i_qf_to_q30_unit(fresnel_qf a)
 {
-    uint32_t v = fr__qf_to_fix(a, 30);
-    return v > FR__ONE_Q30 ? FR__ONE_Q30 : v;
+    uint32_t v = fresnel_i_qf_to_fix(a, 30);
+    return v > FRESNEL_I_ONE_Q30 ? FRESNEL_I_ONE_Q30 : v;
 }
 
 /* The power function's tables (fixed_math.c), exposed for their test. */
-extern const uint16_t fr__log2_r[64];
-extern const uint32_t fr__log2_t[64];
-extern const uint32_t fr__exp2_t[64];
+FRESNEL_I_HIDDEN extern const uint16_t fresnel_i_log2_r[64];
+FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_log2_t[64];
+FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_exp2_t[64];
 
 /* x^p for x in Q15 ([0, 2^15]) and p in Q16.16 (p > 0): relative error
  * below 2^-24 for p <= 64, 2^-21 for p <= 1000 (fixed_math.c). */
-fresnel_qf fr__pow_q15(uint32_t x, uint32_t p);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_pow_q15(uint32_t x, uint32_t p);
 
 /* |eta^2 - kappa^2 - sin^2| of m at c with ~60 bits, and its sign (exact_q15.c). */
-fresnel_qf fr__a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative);
 
 /* 1 - exact Fresnel of m at c (exact_q15.c), in qf: Cook-Torrance's T(c). */
-fresnel_qf fr__conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c);
 
-#define FR__RGB_Q15(expr_r, expr_g, expr_b) \
+#define FRESNEL_I_RGB_Q15(expr_r, expr_g, expr_b) \
     do { fresnel_q15_rgb out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
 
 #endif /* FRESNEL_HAS_FIXED */

@@ -8,8 +8,8 @@ fresnel_nk fresnel_gulbrandsen_nk(float r, float g)
 {
     fresnel_nk out;
     float sr, nmin, nmax, k2;
-    r = fr__clamp(r, 0.0f, FRESNEL_GULBRANDSEN_R_MAX);
-    g = fr__unit(g);
+    r = fresnel_i_clamp(r, 0.0f, FRESNEL_GULBRANDSEN_R_MAX);
+    g = fresnel_i_unit(g);
     sr = sqrtf(r);
     nmin = (1.0f - r) / (1.0f + r);
     /* (1 + sqrt r)/(1 - sqrt r) = (1 + sqrt r)^2/(1 - r): 1 - r is exact for
@@ -31,8 +31,8 @@ fresnel_rg fresnel_gulbrandsen_rg(float n, float k)
     fresnel_rg out;
     float rc, omr, sr, nmax1, span;
     out.r = fresnel_f0_from_ior(n, k);
-    n = fr__eta(n);
-    k = fr__kappa(k);
+    n = fresnel_i_eta(n);
+    k = fresnel_i_kappa(k);
     /* 1 - r = 4n/((n+1)^2 + k^2) directly, and r clamped by it: 1 - r from
      * the rounded r has an absolute error of ulp(1)/2, a relative error of
      * 6e-8/(1 - r) in nmax, and g changes by 1/(1 - r) per unit of r. */
@@ -52,7 +52,7 @@ fresnel_rg fresnel_gulbrandsen_rg(float n, float k)
     nmax1 = 2.0f * sr * (1.0f + sr) / omr;
     span = nmax1 * (1.0f + sr) / (1.0f + rc);
     /* r = 0 (n 1, k 0) gives n = 1 for every g; report 0. */
-    out.g = span > 0.0f ? fr__unit((nmax1 - (n - 1.0f)) / span) : 0.0f;
+    out.g = span > 0.0f ? fresnel_i_unit((nmax1 - (n - 1.0f)) / span) : 0.0f;
     return out;
 }
 
@@ -64,10 +64,10 @@ float fresnel_gulbrandsen(float r, float g, float c)
 
 fresnel_rgb fresnel_gulbrandsen_rgb(fresnel_rgb r, fresnel_rgb g, float c)
 {
-    FR__RGB(fresnel_gulbrandsen(r.r, g.r, c), fresnel_gulbrandsen(r.g, g.g, c),
+    FRESNEL_I_RGB(fresnel_gulbrandsen(r.r, g.r, c), fresnel_gulbrandsen(r.g, g.g, c),
             fresnel_gulbrandsen(r.b, g.b, c));
 }
 
 #else
-typedef int fr__gulbrandsen_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+typedef int fresnel_i_gulbrandsen_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
 #endif

@@ -14,25 +14,25 @@
 
 fresnel_f16 fresnel_gulbrandsen_f16(fresnel_f16 r, fresnel_f16 g, fresnel_f16 c)
 {
-    fr__h one = fr__hc(1.0f), s, opr, omr, omg, ops, nmin, nmax, n, q, k2;
+    fresnel_i_h one = fresnel_i_hc(1.0f), s, opr, omr, omg, ops, nmin, nmax, n, q, k2;
     /* 0.9999 rounds to 1 in binary16: the largest half below 1 instead */
-    r = fr__hclamp(r, fr__hc(0.0f), fr__hc(1.0f - 1.0f / 2048.0f));
-    g = fr__hunit(g);
-    s = fr__hsqrt(r);
-    opr = fr__hadd(one, r);
-    omr = fr__hsub(one, r); /* exact for r >= 1/2 */
-    omg = fr__hsub(one, g); /* exact for g >= 1/2 */
-    ops = fr__hadd(one, s);
-    nmin = fr__hdiv(omr, opr);
-    nmax = fr__hdiv(fr__hmul(ops, ops), omr);
-    n = fr__hadd(fr__hmul(g, nmin), fr__hmul(omg, nmax));
-    q = fr__hdiv(fr__hmul(fr__hmul(fr__hc(2.0f), g), s), opr);
+    r = fresnel_i_hclamp(r, fresnel_i_hc(0.0f), fresnel_i_hc(1.0f - 1.0f / 2048.0f));
+    g = fresnel_i_hunit(g);
+    s = fresnel_i_hsqrt(r);
+    opr = fresnel_i_hadd(one, r);
+    omr = fresnel_i_hsub(one, r); /* exact for r >= 1/2 */
+    omg = fresnel_i_hsub(one, g); /* exact for g >= 1/2 */
+    ops = fresnel_i_hadd(one, s);
+    nmin = fresnel_i_hdiv(omr, opr);
+    nmax = fresnel_i_hdiv(fresnel_i_hmul(ops, ops), omr);
+    n = fresnel_i_hadd(fresnel_i_hmul(g, nmin), fresnel_i_hmul(omg, nmax));
+    q = fresnel_i_hdiv(fresnel_i_hmul(fresnel_i_hmul(fresnel_i_hc(2.0f), g), s), opr);
     /* the second term overflows to +inf only when k is far outside the
      * binary16 domain, where it is clamped; (1-g) first, so g = 1 gives 0 */
-    k2 = fr__hmul(q, fr__hadd(q, fr__hdiv(fr__hmul(fr__hmul(fr__hmul(fr__hc(4.0f), omg), s), nmax), omr)));
-    return fr__approx_conductor_h(fr__heta(n), fr__hkappa(fr__hsqrt(k2)), c);
+    k2 = fresnel_i_hmul(q, fresnel_i_hadd(q, fresnel_i_hdiv(fresnel_i_hmul(fresnel_i_hmul(fresnel_i_hmul(fresnel_i_hc(4.0f), omg), s), nmax), omr)));
+    return fresnel_i_approx_conductor_h(fresnel_i_heta(n), fresnel_i_hkappa(fresnel_i_hsqrt(k2)), c);
 }
 
 #else
-typedef int fr__gulbrandsen_f16_disabled;
+typedef int fresnel_i_gulbrandsen_f16_disabled;
 #endif

@@ -6,11 +6,11 @@
 
 /* nmin = (1 - r)/(1 + r) and nmax = (1 + sqrt r)^2 / (1 - r) (the form that
  * keeps its digits as r -> 1), for r < 1 as qf with 1 - r given exactly. */
-static void fr__nmin_nmax(fresnel_qf sr, fresnel_qf omr, fresnel_qf opr, fresnel_qf *nmin, fresnel_qf *nmax)
+static void fresnel_i_nmin_nmax(fresnel_qf sr, fresnel_qf omr, fresnel_qf opr, fresnel_qf *nmin, fresnel_qf *nmax)
 {
-    fresnel_qf ops = fr__qf_add(fr__qf_one(), sr);
-    *nmin = fr__qf_div(omr, opr);
-    *nmax = fr__qf_div(fr__qf_mul(ops, ops), omr);
+    fresnel_qf ops = fresnel_i_qf_add(fresnel_i_qf_one(), sr);
+    *nmin = fresnel_i_qf_div(omr, opr);
+    *nmax = fresnel_i_qf_div(fresnel_i_qf_mul(ops, ops), omr);
 }
 
 void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_q15_nk *out)
@@ -23,26 +23,26 @@ void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_q15_nk *out)
      * nmax - nmin = 2s(1+s) / ((1-s)(1+r)) all of k^2 becomes
      *   k^2 = q (q + 4 (1-g) s nmax / (1-r)),  q = 2 g s / (1+r),
      * products and sums of positive terms. */
-    uint32_t r = fr__q15_arg(r_in), g = fr__q15_arg(g_in);
+    uint32_t r = fresnel_i_q15_arg(r_in), g = fresnel_i_q15_arg(g_in);
     fresnel_qf s, omr, opr, nmin, nmax, gq, omg, q, k2;
     if (r > FRESNEL_Q15_GULBRANDSEN_R_MAX)
         r = FRESNEL_Q15_GULBRANDSEN_R_MAX;
-    s = fr__qf_sqrt(fr__qf(r, -15));
+    s = fresnel_i_qf_sqrt(fresnel_i_qf(r, -15));
     /* R: 1 - r >= 4 and 1 + r < 2^16 in Q15, both exact */
-    omr = fr__qf(FR__ONE_Q15 - r, -15);
-    opr = fr__qf(FR__ONE_Q15 + r, -15);
-    fr__nmin_nmax(s, omr, opr, &nmin, &nmax);
-    gq = fr__qf(g, -15);
-    omg = fr__qf(FR__ONE_Q15 - g, -15);
-    out->n = fr__qf_add(fr__qf_mul(gq, nmin), fr__qf_mul(omg, nmax));
+    omr = fresnel_i_qf(FRESNEL_I_ONE_Q15 - r, -15);
+    opr = fresnel_i_qf(FRESNEL_I_ONE_Q15 + r, -15);
+    fresnel_i_nmin_nmax(s, omr, opr, &nmin, &nmax);
+    gq = fresnel_i_qf(g, -15);
+    omg = fresnel_i_qf(FRESNEL_I_ONE_Q15 - g, -15);
+    out->n = fresnel_i_qf_add(fresnel_i_qf_mul(gq, nmin), fresnel_i_qf_mul(omg, nmax));
     /* fresnel_gulbrandsen feeds n to fresnel_approx_conductor, which clamps
      * it to fresnel.h's domain; r -> 1 with g = 1 gives n = nmin -> 0, so the
      * same model needs the same clamp (FRESNEL_ETA_MIN = 2^-10, FRESNEL_Q16_ETA_MIN) */
-    if (fr__qf_cmp(out->n, fr__qf(1u << 30, -40)) < 0)
-        out->n = fr__qf(1u << 30, -40);
-    q = fr__qf_div(fr__qf_scale(fr__qf_mul(gq, s), 1), opr);
-    k2 = fr__qf_mul(q, fr__qf_add(q, fr__qf_div(fr__qf_scale(fr__qf_mul(fr__qf_mul(omg, s), nmax), 2), omr)));
-    out->nk2 = fr__qf_add(fr__qf_mul(out->n, out->n), k2);
+    if (fresnel_i_qf_cmp(out->n, fresnel_i_qf(1u << 30, -40)) < 0)
+        out->n = fresnel_i_qf(1u << 30, -40);
+    q = fresnel_i_qf_div(fresnel_i_qf_scale(fresnel_i_qf_mul(gq, s), 1), opr);
+    k2 = fresnel_i_qf_mul(q, fresnel_i_qf_add(q, fresnel_i_qf_div(fresnel_i_qf_scale(fresnel_i_qf_mul(fresnel_i_qf_mul(omg, s), nmax), 2), omr)));
+    out->nk2 = fresnel_i_qf_add(fresnel_i_qf_mul(out->n, out->n), k2);
 }
 
 void fresnel_gulbrandsen_rg_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15 *r_out, fresnel_q15 *g_out)
@@ -52,29 +52,29 @@ void fresnel_gulbrandsen_rg_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15 
     uint32_t nn = n_in <= FRESNEL_Q16_ETA_MIN ? (uint32_t)FRESNEL_Q16_ETA_MIN : (uint32_t)n_in;
     uint32_t kk = k_in <= 0 ? 0u : (uint32_t)k_in;
     uint32_t em1 = nn >= 65536u ? nn - 65536u : 65536u - nn;
-    fresnel_qf one = fr__qf_one(), n = fr__qf(nn, -16), k = fr__qf(kk, -16);
-    fresnel_qf d = fr__qf(em1, -16), s = fr__qf(nn + 65536u, -16), k2 = fr__qf_mul(k, k);
-    fresnel_qf num = fr__qf_add(fr__qf_mul(d, d), k2), den = fr__qf_add(fr__qf_mul(s, s), k2);
-    fresnel_qf r = fr__qf_div(num, den), rmax = fr__qf(2147268900u, -31); /* round(0.9999 2^31) */
+    fresnel_qf one = fresnel_i_qf_one(), n = fresnel_i_qf(nn, -16), k = fresnel_i_qf(kk, -16);
+    fresnel_qf d = fresnel_i_qf(em1, -16), s = fresnel_i_qf(nn + 65536u, -16), k2 = fresnel_i_qf_mul(k, k);
+    fresnel_qf num = fresnel_i_qf_add(fresnel_i_qf_mul(d, d), k2), den = fresnel_i_qf_add(fresnel_i_qf_mul(s, s), k2);
+    fresnel_qf r = fresnel_i_qf_div(num, den), rmax = fresnel_i_qf(2147268900u, -31); /* round(0.9999 2^31) */
     fresnel_qf omr, opr, nmin, nmax, span, above;
     int n_above_nmax;
-    *r_out = fr__q30_to_q15(fr__qf_to_q30_unit(r));
-    if (fr__qf_cmp(r, rmax) > 0) {
+    *r_out = fresnel_i_q30_to_q15(fresnel_i_qf_to_q30_unit(r));
+    if (fresnel_i_qf_cmp(r, rmax) > 0) {
         r = rmax;
-        omr = fr__qf_sub(one, rmax, (int *)0);
+        omr = fresnel_i_qf_sub(one, rmax, (int *)0);
     } else {
         /* 1 - r = 4n / ((n+1)^2 + k^2), without cancellation */
-        omr = fr__qf_div(fr__qf_scale(n, 2), den);
+        omr = fresnel_i_qf_div(fresnel_i_qf_scale(n, 2), den);
     }
-    opr = fr__qf_add(one, r);
-    fr__nmin_nmax(fr__qf_sqrt(r), omr, opr, &nmin, &nmax);
-    span = fr__qf_sub(nmax, nmin, (int *)0);
-    above = fr__qf_sub(nmax, n, &n_above_nmax);
+    opr = fresnel_i_qf_add(one, r);
+    fresnel_i_nmin_nmax(fresnel_i_qf_sqrt(r), omr, opr, &nmin, &nmax);
+    span = fresnel_i_qf_sub(nmax, nmin, (int *)0);
+    above = fresnel_i_qf_sub(nmax, n, &n_above_nmax);
     if (span.m == 0 || n_above_nmax) {
         *g_out = 0; /* r = 0 (n 1, k 0) has no edge tint; n beyond nmax neither */
         return;
     }
-    *g_out = fr__q30_to_q15(fr__qf_to_q30_unit(fr__qf_div(above, span)));
+    *g_out = fresnel_i_q30_to_q15(fresnel_i_qf_to_q30_unit(fresnel_i_qf_div(above, span)));
 }
 
 fresnel_q15 fresnel_gulbrandsen_q15(int32_t r, int32_t g, int32_t c)
@@ -86,10 +86,10 @@ fresnel_q15 fresnel_gulbrandsen_q15(int32_t r, int32_t g, int32_t c)
 
 fresnel_q15_rgb fresnel_gulbrandsen_q15_rgb(fresnel_q15_rgb r, fresnel_q15_rgb g, int32_t c)
 {
-    FR__RGB_Q15(fresnel_gulbrandsen_q15(r.r, g.r, c), fresnel_gulbrandsen_q15(r.g, g.g, c),
+    FRESNEL_I_RGB_Q15(fresnel_gulbrandsen_q15(r.r, g.r, c), fresnel_gulbrandsen_q15(r.g, g.g, c),
                 fresnel_gulbrandsen_q15(r.b, g.b, c));
 }
 
 #else
-typedef int fr__gulbrandsen_q15_disabled;
+typedef int fresnel_i_gulbrandsen_q15_disabled;
 #endif

@@ -20,27 +20,27 @@
 #include <stdint.h>
 
 /* The error-free squares below rely on the IEEE binary32 layout. */
-typedef char fr__binary32_check[(FLT_MANT_DIG == 24 && FLT_MAX_EXP == 128) ? 1 : -1];
+typedef char fresnel_i_binary32_check[(FLT_MANT_DIG == 24 && FLT_MAX_EXP == 128) ? 1 : -1];
 
 /* Clamp into [lo, hi]. Written with comparisons so that NaN (which fails
  * both) lands on lo and +-Inf on the nearer end: this one line is the whole
  * input policy stated in fresnel.h. */
-static inline float fr__clamp(float x, float lo, float hi)
+static inline float fresnel_i_clamp(float x, float lo, float hi)
 {
     return x > lo ? (x < hi ? x : hi) : lo;
 }
 
-static inline float fr__unit(float x) { return fr__clamp(x, 0.0f, 1.0f); }
-static inline float fr__eta(float x) { return fr__clamp(x, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX); }
+static inline float fresnel_i_unit(float x) { return fresnel_i_clamp(x, 0.0f, 1.0f); }
+static inline float fresnel_i_eta(float x) { return fresnel_i_clamp(x, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX); }
 /* kappa below FRESNEL_KAPPA_TINY is 0: its square would underflow and the
  * interface could not tell it from a dielectric in any case. */
-static inline float fr__kappa(float x)
+static inline float fresnel_i_kappa(float x)
 {
     return x >= FRESNEL_KAPPA_TINY ? (x < FRESNEL_KAPPA_MAX ? x : FRESNEL_KAPPA_MAX) : 0.0f;
 }
 
 /* x^5 by three multiplications: no powf on the hot path. */
-static inline float fr__pow5(float x)
+static inline float fresnel_i_pow5(float x)
 {
     float x2 = x * x;
     return x2 * x2 * x;
@@ -48,7 +48,7 @@ static inline float fr__pow5(float x)
 
 /* x*x = hi + lo exactly (Dekker). The split keeps the top 12 significand bits
  * by masking, which no compiler contraction or reassociation can disturb. */
-static inline void fr__square_exact(float x, float *hi, float *lo)
+static inline void fresnel_i_square_exact(float x, float *hi, float *lo)
 {
 #ifdef FP_FAST_FMAF
     *hi = x * x;
@@ -74,11 +74,11 @@ static inline void fr__square_exact(float x, float *hi, float *lo)
  * (6e-8) would become an error of 1e-4 in the reflectance. Both squares are
  * formed exactly and summed with their rounding error carried (Knuth's
  * TwoSum), so the result is correct to a rounding of itself. */
-static inline float fr__eta2_minus_sin2(float eta, float c, float kappa2)
+static inline float fresnel_i_eta2_minus_sin2(float eta, float c, float kappa2)
 {
     float eh, el, ch, cl, s, t, err;
-    fr__square_exact(eta, &eh, &el);
-    fr__square_exact(c, &ch, &cl);
+    fresnel_i_square_exact(eta, &eh, &el);
+    fresnel_i_square_exact(c, &ch, &cl);
     s = eh + ch;
     t = s - eh;
     err = (eh - (s - t)) + (ch - t);
@@ -86,8 +86,8 @@ static inline float fr__eta2_minus_sin2(float eta, float c, float kappa2)
     return (s - 1.0f) + ((err + el + cl) - kappa2);
 }
 
-/* The top 12 significand bits of x, by masking (see fr__square_exact). */
-static inline float fr__split_hi(float x)
+/* The top 12 significand bits of x, by masking (see fresnel_i_square_exact). */
+static inline float fresnel_i_split_hi(float x)
 {
     union {
         float f;
@@ -103,16 +103,16 @@ static inline float fr__split_hi(float x)
  * formed exactly as hi + lo (Dekker) and exp(hi + lo) = exp(hi)(1 + lo):
  * the rounding of y would be an error of |y| 2^-24 relative, and |y| reaches
  * ln(a c), about 5, where the LSK compensation term matters. */
-static inline float fr__pow_one_minus(float c, float p)
+static inline float fresnel_i_pow_one_minus(float c, float p)
 {
     float l, hi, lo, e, ph, pl, lh, ll;
     if (!(c < 1.0f))
         return 0.0f;
     l = log1pf(-c);
     hi = p * l;
-    ph = fr__split_hi(p);
+    ph = fresnel_i_split_hi(p);
     pl = p - ph;
-    lh = fr__split_hi(l);
+    lh = fresnel_i_split_hi(l);
     ll = l - lh;
     lo = ((ph * lh - hi) + ph * ll + pl * lh) + pl * ll;
     e = expf(hi);
@@ -120,12 +120,12 @@ static inline float fr__pow_one_minus(float c, float p)
 }
 
 /* Apply a scalar model channel by channel. */
-#define FR__RGB(expr_r, expr_g, expr_b) \
+#define FRESNEL_I_RGB(expr_r, expr_g, expr_b) \
     do { fresnel_rgb out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
 
 /* 1 - fresnel_conductor(eta, kappa, c), computed directly so that it keeps
  * its relative precision when the reflectance is close to 1 (exact.c). */
-float fr__conductor_transmittance(float eta, float kappa, float c);
+FRESNEL_I_HIDDEN float fresnel_i_conductor_transmittance(float eta, float kappa, float c);
 
 #endif /* FRESNEL_HAS_FLOAT */
 #endif

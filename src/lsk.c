@@ -8,38 +8,38 @@
 float fresnel_lsk(float n, float k, float c)
 {
     float k2, num, den;
-    n = fr__eta(n);
-    k = fr__kappa(k);
-    c = fr__unit(c);
+    n = fresnel_i_eta(n);
+    k = fresnel_i_kappa(k);
+    c = fresnel_i_unit(c);
     k2 = k * k;
-    num = (n - 1.0f) * (n - 1.0f) + 4.0f * n * fr__pow5(1.0f - c) + k2;
+    num = (n - 1.0f) * (n - 1.0f) + 4.0f * n * fresnel_i_pow5(1.0f - c) + k2;
     den = (n + 1.0f) * (n + 1.0f) + k2;
-    return fr__unit(num / den);
+    return fresnel_i_unit(num / den);
 }
 
 fresnel_rgb fresnel_lsk_rgb(fresnel_rgb n, fresnel_rgb k, float c)
 {
-    FR__RGB(fresnel_lsk(n.r, k.r, c), fresnel_lsk(n.g, k.g, c), fresnel_lsk(n.b, k.b, c));
+    FRESNEL_I_RGB(fresnel_lsk(n.r, k.r, c), fresnel_lsk(n.g, k.g, c), fresnel_lsk(n.b, k.b, c));
 }
 
 float fresnel_lsk_comp(float n, float k, float a, float alpha, float c)
 {
     float comp;
-    c = fr__unit(c);
-    a = fr__clamp(a, 0.0f, FRESNEL_A_MAX);
-    alpha = fr__clamp(alpha, 0.0f, FRESNEL_ALPHA_MAX);
-    /* alpha reaches ~50 for metals: see fr__pow_one_minus. */
-    comp = alpha > 0.0f ? a * c * fr__pow_one_minus(c, alpha) : a * c;
-    return fr__unit(fresnel_lsk(n, k, c) - comp);
+    c = fresnel_i_unit(c);
+    a = fresnel_i_clamp(a, 0.0f, FRESNEL_A_MAX);
+    alpha = fresnel_i_clamp(alpha, 0.0f, FRESNEL_ALPHA_MAX);
+    /* alpha reaches ~50 for metals: see fresnel_i_pow_one_minus. */
+    comp = alpha > 0.0f ? a * c * fresnel_i_pow_one_minus(c, alpha) : a * c;
+    return fresnel_i_unit(fresnel_lsk(n, k, c) - comp);
 }
 
 fresnel_rgb fresnel_lsk_comp_rgb(fresnel_rgb n, fresnel_rgb k, fresnel_rgb a, fresnel_rgb alpha,
                                  float c)
 {
-    FR__RGB(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
+    FRESNEL_I_RGB(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
             fresnel_lsk_comp(n.b, k.b, a.b, alpha.b, c));
 }
 
 #else
-typedef int fr__lsk_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+typedef int fresnel_i_lsk_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
 #endif

@@ -5,30 +5,30 @@
 
 fresnel_f16 fresnel_lsk_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 c)
 {
-    fr__h one = fr__hc(1.0f), k2, nm, np, num, den;
-    n = fr__heta(n);
-    k = fr__hkappa(k);
-    c = fr__hunit(c);
-    k2 = fr__hmul(k, k);
-    nm = fr__hsub(n, one);
-    np = fr__hadd(n, one);
-    num = fr__hadd(fr__hadd(fr__hmul(nm, nm), fr__hmul(fr__hmul(fr__hc(4.0f), n), fr__hpow5(fr__hsub(one, c)))), k2);
-    den = fr__hadd(fr__hmul(np, np), k2);
-    return fr__hunit(fr__hdiv(num, den));
+    fresnel_i_h one = fresnel_i_hc(1.0f), k2, nm, np, num, den;
+    n = fresnel_i_heta(n);
+    k = fresnel_i_hkappa(k);
+    c = fresnel_i_hunit(c);
+    k2 = fresnel_i_hmul(k, k);
+    nm = fresnel_i_hsub(n, one);
+    np = fresnel_i_hadd(n, one);
+    num = fresnel_i_hadd(fresnel_i_hadd(fresnel_i_hmul(nm, nm), fresnel_i_hmul(fresnel_i_hmul(fresnel_i_hc(4.0f), n), fresnel_i_hpow5(fresnel_i_hsub(one, c)))), k2);
+    den = fresnel_i_hadd(fresnel_i_hmul(np, np), k2);
+    return fresnel_i_hunit(fresnel_i_hdiv(num, den));
 }
 
 fresnel_f16 fresnel_lsk_comp_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 a, fresnel_f16 alpha, fresnel_f16 c)
 {
-    fr__h comp;
-    c = fr__hunit(c);
-    a = fr__hclamp(a, fr__hc(0.0f), fr__hc(64.0f));
-    alpha = fr__hclamp(alpha, fr__hc(0.0f), fr__hc(FRESNEL_F16_P_MAX));
-    comp = fr__hmul(a, c);
-    if (alpha > fr__hc(0.0f))
-        comp = fr__hmul(comp, fr__hpow_one_minus(c, alpha));
-    return fr__hunit(fr__hsub(fresnel_lsk_f16(n, k, c), comp));
+    fresnel_i_h comp;
+    c = fresnel_i_hunit(c);
+    a = fresnel_i_hclamp(a, fresnel_i_hc(0.0f), fresnel_i_hc(64.0f));
+    alpha = fresnel_i_hclamp(alpha, fresnel_i_hc(0.0f), fresnel_i_hc(FRESNEL_F16_P_MAX));
+    comp = fresnel_i_hmul(a, c);
+    if (alpha > fresnel_i_hc(0.0f))
+        comp = fresnel_i_hmul(comp, fresnel_i_hpow_one_minus(c, alpha));
+    return fresnel_i_hunit(fresnel_i_hsub(fresnel_lsk_f16(n, k, c), comp));
 }
 
 #else
-typedef int fr__lsk_f16_disabled;
+typedef int fresnel_i_lsk_f16_disabled;
 #endif

@@ -7,14 +7,14 @@
 /* The number of nodes used of an n-node table (fresnel.h): none for n < 1,
  * at most FRESNEL_LUT_N_MAX, so that n - 1 and every position are exact
  * binary32 integers and the index never leaves the table. */
-static int fr__lut_n(int n)
+static int fresnel_i_lut_n(int n)
 {
     return n < 1 ? 0 : (n < FRESNEL_LUT_N_MAX ? n : FRESNEL_LUT_N_MAX);
 }
 
 /* Offset of channel ch (0, 1, 2) in an RGB table of n nodes per channel;
  * added as pointers, so 2n never overflows an int. */
-static const float *fr__lut_channel(const float *table, int n, int ch)
+static const float *fresnel_i_lut_channel(const float *table, int n, int ch)
 {
     const float *p = table;
     if (n > 0)
@@ -24,11 +24,11 @@ static const float *fr__lut_channel(const float *table, int n, int ch)
 }
 
 /* Interpolate table at position x in [0, 1] along its n nodes. */
-static float fr__interp(const float *table, int n, float x)
+static float fresnel_i_interp(const float *table, int n, float x)
 {
     float pos, t;
     int i;
-    n = fr__lut_n(n);
+    n = fresnel_i_lut_n(n);
     if (n < 2)
         return n == 1 ? table[0] : 0.0f;
     pos = x * (float)(n - 1);
@@ -43,11 +43,11 @@ static float fr__interp(const float *table, int n, float x)
  * table's ends, as a Hermite cubic on node differences (lut_f16.c explains
  * why differences): F = p1 + t (m1 + t (3d - 2 m1 - m2 + t (m1 + m2 - 2d))),
  * d = p2 - p1, m1 = (p2 - p0)/2, m2 = (p3 - p1)/2. */
-static float fr__cubic(const float *table, int n, float x)
+static float fresnel_i_cubic(const float *table, int n, float x)
 {
     float pos, t, p0, p1, p2, p3, d, m1, m2;
     int i;
-    n = fr__lut_n(n);
+    n = fresnel_i_lut_n(n);
     if (n < 2)
         return n == 1 ? table[0] : 0.0f;
     pos = x * (float)(n - 1);
@@ -68,62 +68,62 @@ static float fr__cubic(const float *table, int n, float x)
 
 float fresnel_lut_cubic(const float *table, int n, float c)
 {
-    return fr__unit(fr__cubic(table, n, sqrtf(fr__unit(c))));
+    return fresnel_i_unit(fresnel_i_cubic(table, n, sqrtf(fresnel_i_unit(c))));
 }
 
 fresnel_rgb fresnel_lut_cubic_rgb(const float *table, int n, float c)
 {
-    float x = sqrtf(fr__unit(c));
-    FR__RGB(fr__unit(fr__cubic(table, n, x)), fr__unit(fr__cubic(fr__lut_channel(table, n, 1), n, x)),
-            fr__unit(fr__cubic(fr__lut_channel(table, n, 2), n, x)));
+    float x = sqrtf(fresnel_i_unit(c));
+    FRESNEL_I_RGB(fresnel_i_unit(fresnel_i_cubic(table, n, x)), fresnel_i_unit(fresnel_i_cubic(fresnel_i_lut_channel(table, n, 1), n, x)),
+            fresnel_i_unit(fresnel_i_cubic(fresnel_i_lut_channel(table, n, 2), n, x)));
 }
 
 float fresnel_lut(const float *table, int n, float c)
 {
-    return fr__unit(fr__interp(table, n, sqrtf(fr__unit(c))));
+    return fresnel_i_unit(fresnel_i_interp(table, n, sqrtf(fresnel_i_unit(c))));
 }
 
 float fresnel_lut_linear(const float *table, int n, float c)
 {
-    return fr__unit(fr__interp(table, n, fr__unit(c)));
+    return fresnel_i_unit(fresnel_i_interp(table, n, fresnel_i_unit(c)));
 }
 
 float fresnel_lut_residual(float f0, const float *table, int n, float c)
 {
-    c = fr__unit(c);
-    return fr__unit(fresnel_schlick(f0, c) + fr__interp(table, n, sqrtf(c)));
+    c = fresnel_i_unit(c);
+    return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_interp(table, n, sqrtf(c)));
 }
 
 float fresnel_lut_linear_residual(float f0, const float *table, int n, float c)
 {
-    c = fr__unit(c);
-    return fr__unit(fresnel_schlick(f0, c) + fr__interp(table, n, c));
+    c = fresnel_i_unit(c);
+    return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_interp(table, n, c));
 }
 
 fresnel_rgb fresnel_lut_rgb(const float *table, int n, float c)
 {
-    FR__RGB(fresnel_lut(table, n, c), fresnel_lut(fr__lut_channel(table, n, 1), n, c), fresnel_lut(fr__lut_channel(table, n, 2), n, c));
+    FRESNEL_I_RGB(fresnel_lut(table, n, c), fresnel_lut(fresnel_i_lut_channel(table, n, 1), n, c), fresnel_lut(fresnel_i_lut_channel(table, n, 2), n, c));
 }
 
 fresnel_rgb fresnel_lut_linear_rgb(const float *table, int n, float c)
 {
-    FR__RGB(fresnel_lut_linear(table, n, c), fresnel_lut_linear(fr__lut_channel(table, n, 1), n, c),
-            fresnel_lut_linear(fr__lut_channel(table, n, 2), n, c));
+    FRESNEL_I_RGB(fresnel_lut_linear(table, n, c), fresnel_lut_linear(fresnel_i_lut_channel(table, n, 1), n, c),
+            fresnel_lut_linear(fresnel_i_lut_channel(table, n, 2), n, c));
 }
 
 fresnel_rgb fresnel_lut_residual_rgb(fresnel_rgb f0, const float *table, int n, float c)
 {
-    FR__RGB(fresnel_lut_residual(f0.r, table, n, c), fresnel_lut_residual(f0.g, fr__lut_channel(table, n, 1), n, c),
-            fresnel_lut_residual(f0.b, fr__lut_channel(table, n, 2), n, c));
+    FRESNEL_I_RGB(fresnel_lut_residual(f0.r, table, n, c), fresnel_lut_residual(f0.g, fresnel_i_lut_channel(table, n, 1), n, c),
+            fresnel_lut_residual(f0.b, fresnel_i_lut_channel(table, n, 2), n, c));
 }
 
 fresnel_rgb fresnel_lut_linear_residual_rgb(fresnel_rgb f0, const float *table, int n, float c)
 {
-    FR__RGB(fresnel_lut_linear_residual(f0.r, table, n, c),
-            fresnel_lut_linear_residual(f0.g, fr__lut_channel(table, n, 1), n, c),
-            fresnel_lut_linear_residual(f0.b, fr__lut_channel(table, n, 2), n, c));
+    FRESNEL_I_RGB(fresnel_lut_linear_residual(f0.r, table, n, c),
+            fresnel_lut_linear_residual(f0.g, fresnel_i_lut_channel(table, n, 1), n, c),
+            fresnel_lut_linear_residual(f0.b, fresnel_i_lut_channel(table, n, 2), n, c));
 }
 
 #else
-typedef int fr__lut_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+typedef int fresnel_i_lut_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
 #endif

@@ -4,39 +4,39 @@
 
 #if FRESNEL_HAS_FIXED
 
-/* The node count as the functions read it: n above FR__LUT_N_MAX is taken
- * as FR__LUT_N_MAX (so only entries the caller's table has are read), n <= 0
+/* The node count as the functions read it: n above FRESNEL_I_LUT_N_MAX is taken
+ * as FRESNEL_I_LUT_N_MAX (so only entries the caller's table has are read), n <= 0
  * as 0, for which the callers read no entry at all. */
-#define FR__LUT_N_MAX 32768
-static int fr__lut_n(int n) { return n <= 0 ? 0 : (n > FR__LUT_N_MAX ? FR__LUT_N_MAX : n); }
+#define FRESNEL_I_LUT_N_MAX 32768
+static int fresnel_i_lut_n(int n) { return n <= 0 ? 0 : (n > FRESNEL_I_LUT_N_MAX ? FRESNEL_I_LUT_N_MAX : n); }
 
-/* Position of x (Q30, [0, 2^30]) along n nodes (1 <= n <= FR__LUT_N_MAX, as
- * fr__lut_n gives it and the callers have checked n != 0),
- * as the node i before it (FR__NEXT the one after) and a 15-bit fraction, rounded to
+/* Position of x (Q30, [0, 2^30]) along n nodes (1 <= n <= FRESNEL_I_LUT_N_MAX, as
+ * fresnel_i_lut_n gives it and the callers have checked n != 0),
+ * as the node i before it (FRESNEL_I_NEXT the one after) and a 15-bit fraction, rounded to
  * nearest (a floor would cost up to one LSB on a steep two-node table).
  * R: n - 1 <= 2^15 - 1: (x >> 15)(n-1) < 2^30, (x & 0x7fff)(n-1) + 2^14 <
  * 2^31, and the position is at most (n-1) 2^15, index <= n - 1. x = 1 lands
  * on the last segment's end: index n - 2 with fraction 2^15. One node is a
  * constant curve: i = 0, t = 0. */
-typedef struct fr__pos {
+typedef struct fresnel_i_pos {
     int i;
     uint32_t t;
-} fr__pos;
+} fresnel_i_pos;
 
 /* The node after i: i itself for a one-node table. */
-#define FR__NEXT(p, n) ((p).i + ((n) > 1))
+#define FRESNEL_I_NEXT(p, n) ((p).i + ((n) > 1))
 
-static fr__pos fr__position(uint32_t x, int n)
+static fresnel_i_pos fresnel_i_position(uint32_t x, int n)
 {
-    fr__pos p;
+    fresnel_i_pos p;
     uint32_t nodes = (uint32_t)n - 1u, pos;
-    FR__RANGE("lut n", n, 1, FR__LUT_N_MAX);
+    FRESNEL_I_RANGE("lut n", n, 1, FRESNEL_I_LUT_N_MAX);
     p.i = 0;
     p.t = 0;
     if (nodes == 0)
         return p;
     pos = (x >> 15) * nodes + (((x & 0x7fffu) * nodes + (1u << 14)) >> 15);
-    FR__RANGE("lut position", pos, 0, nodes << 15);
+    FRESNEL_I_RANGE("lut position", pos, 0, nodes << 15);
     p.i = (int)(pos >> 15);
     p.t = pos & 0x7fffu;
     if (p.i >= (int)nodes) {
@@ -59,11 +59,11 @@ static fr__pos fr__position(uint32_t x, int n)
  * remainder of a floor root) and r <= 2^30 at the end, so r <= 2^29 before
  * the last step: 4 rem <= 4r <= 2^31 where rem <= r, and
  * 4 (rem - r - 1) + 3 < 4r where rem > r. */
-static uint32_t fr__sqrt_w(int32_t c)
+static uint32_t fresnel_i_sqrt_w(int32_t c)
 {
-    uint32_t x = fr__q15_arg(c) << 15, r = fresnel_isqrt_u32(x), rem = x - r * r;
+    uint32_t x = fresnel_i_q15_arg(c) << 15, r = fresnel_isqrt_u32(x), rem = x - r * r;
     int k;
-    FR__RANGE("lut sqrt remainder", rem, 0, 2 * r);
+    FRESNEL_I_RANGE("lut sqrt remainder", rem, 0, 2 * r);
     for (k = 0; k < 15; k++) {
         if (rem > r) {
             rem = ((rem - r - 1u) << 2) + 3u;
@@ -73,18 +73,18 @@ static uint32_t fr__sqrt_w(int32_t c)
             r <<= 1;
         }
     }
-    FR__RANGE("lut sqrt(c) in Q30", r, 0, FR__ONE_Q30);
-    FR__RANGE("lut sqrt final remainder", rem, 0, 2u * r);
+    FRESNEL_I_RANGE("lut sqrt(c) in Q30", r, 0, FRESNEL_I_ONE_Q30);
+    FRESNEL_I_RANGE("lut sqrt final remainder", rem, 0, 2u * r);
     return r;
 }
 
 /* c in Q30 for linear spacing. */
-static uint32_t fr__linear_w(int32_t c) { return fr__q15_arg(c) << 15; }
+static uint32_t fresnel_i_linear_w(int32_t c) { return fresnel_i_q15_arg(c) << 15; }
 
 /* Interpolate two values v0, v1 <= 2^15 with a 15-bit fraction: the result
  * is scaled by 2^15 (Q30 for Q15 values). R: v0 2^15 <= 2^30,
  * |v1 - v0| t <= 2^15 2^15; the sum is a convex combination in [0, 2^30]. */
-static uint32_t fr__lerp_q30(uint32_t v0, uint32_t v1, uint32_t t)
+static uint32_t fresnel_i_lerp_q30(uint32_t v0, uint32_t v1, uint32_t t)
 {
     return v1 >= v0 ? (v0 << 15) + (v1 - v0) * t : (v0 << 15) - (v0 - v1) * t;
 }
@@ -92,7 +92,7 @@ static uint32_t fr__lerp_q30(uint32_t v0, uint32_t v1, uint32_t t)
 /* round(v / 255) for v <= 255 2^15 without a division: (n 257) >> 16 with
  * n = v + 127 is n / 255.0039, so floor(n / 255) or one less, and the
  * remainder test settles it. R: n 257 <= (255 2^15 + 127) 257 < 2^31. */
-static uint32_t fr__div255_round(uint32_t v)
+static uint32_t fresnel_i_div255_round(uint32_t v)
 {
     uint32_t n = v + 127u, q = (n * 257u) >> 16;
     if (n - q * 255u >= 255u)
@@ -100,31 +100,31 @@ static uint32_t fr__div255_round(uint32_t v)
     return q;
 }
 
-static uint32_t fr__u16_q15(uint16_t v) { return v > FR__ONE_Q15 ? FR__ONE_Q15 : v; }
+static uint32_t fresnel_i_u16_q15(uint16_t v) { return v > FRESNEL_I_ONE_Q15 ? FRESNEL_I_ONE_Q15 : v; }
 
 /* Channel ch (0 for the scalar forms) of a table of n nodes per channel,
- * n as fr__lut_n gives it: 0 reads nothing. */
-static fresnel_q15 fr__lut_u16(const uint16_t *table, int n, int ch, uint32_t x)
+ * n as fresnel_i_lut_n gives it: 0 reads nothing. */
+static fresnel_q15 fresnel_i_lut_u16(const uint16_t *table, int n, int ch, uint32_t x)
 {
-    fr__pos p;
+    fresnel_i_pos p;
     if (n == 0)
         return 0;
     table += ch * n;
-    p = fr__position(x, n);
-    return fr__q30_to_q15(fr__lerp_q30(fr__u16_q15(table[p.i]), fr__u16_q15(table[FR__NEXT(p, n)]), p.t));
+    p = fresnel_i_position(x, n);
+    return fresnel_i_q30_to_q15(fresnel_i_lerp_q30(fresnel_i_u16_q15(table[p.i]), fresnel_i_u16_q15(table[FRESNEL_I_NEXT(p, n)]), p.t));
 }
 
 /* uint8 nodes mean v / 255: interpolated in units of 2^-15 / 255 (the lerp
  * of the raw codes, <= 255 2^15) and divided by 255 once, so the encoding
  * adds no rounding of its own. */
-static fresnel_q15 fr__lut_u8(const uint8_t *table, int n, int ch, uint32_t x)
+static fresnel_q15 fresnel_i_lut_u8(const uint8_t *table, int n, int ch, uint32_t x)
 {
-    fr__pos p;
+    fresnel_i_pos p;
     if (n == 0)
         return 0;
     table += ch * n;
-    p = fr__position(x, n);
-    return (fresnel_q15)fr__div255_round(fr__lerp_q30(table[p.i], table[FR__NEXT(p, n)], p.t));
+    p = fresnel_i_position(x, n);
+    return (fresnel_q15)fresnel_i_div255_round(fresnel_i_lerp_q30(table[p.i], table[FRESNEL_I_NEXT(p, n)], p.t));
 }
 
 /* Signed residual nodes v0, v1 (|v| <= 2^15) scaled by 2^-frac, interpolated
@@ -137,50 +137,50 @@ static fresnel_q15 fr__lut_u8(const uint8_t *table, int n, int ch, uint32_t x)
  * [-2^30, 2^30 - 1]: Schlick is in [0, 2^30], so a residual of -2^30 or less
  * gives zero and one of 2^30 - 1 or more one (2^30 - 1 rounds to one), and
  * Schlick plus the residual stays inside int32. */
-static int32_t fr__residual_q30(int32_t v0, int32_t v1, uint32_t t, int frac)
+static int32_t fresnel_i_residual_q30(int32_t v0, int32_t v1, uint32_t t, int frac)
 {
     int32_t v = v0 * 32768 + (v1 - v0) * (int32_t)t;
     uint32_t mag = (uint32_t)(v < 0 ? -v : v);
     int sh = frac - 15;
-    FR__RANGE("lut residual", v, -(1 << 30), 1 << 30);
+    FRESNEL_I_RANGE("lut residual", v, -(1 << 30), 1 << 30);
     if (sh > 0)
         mag = (mag + (1u << (sh - 1))) >> sh;
     else if (sh < 0)
         mag <<= -sh;
-    if (mag > FR__ONE_Q30 - (v < 0 ? 0u : 1u))
-        mag = FR__ONE_Q30 - (v < 0 ? 0u : 1u);
+    if (mag > FRESNEL_I_ONE_Q30 - (v < 0 ? 0u : 1u))
+        mag = FRESNEL_I_ONE_Q30 - (v < 0 ? 0u : 1u);
     return v < 0 ? -(int32_t)mag : (int32_t)mag;
 }
 
 /* Schlick (Q30) plus a residual (Q30, in [-2^30, 2^30 - 1]), clamped and
  * rounded. R: the sum is in [-2^30, 2^31 - 1]. */
-static fresnel_q15 fr__plus_schlick(int32_t f0, int32_t c, int32_t residual)
+static fresnel_q15 fresnel_i_plus_schlick(int32_t f0, int32_t c, int32_t residual)
 {
-    uint32_t s = fr__schlick_q30(fr__q15_arg(f0), fr__pow5_q30(FR__ONE_Q15 - fr__q15_arg(c)));
-    return fr__q30s_to_q15((int32_t)s + residual);
+    uint32_t s = fresnel_i_schlick_q30(fresnel_i_q15_arg(f0), fresnel_i_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_q15_arg(c)));
+    return fresnel_i_q30s_to_q15((int32_t)s + residual);
 }
 
-static int fr__frac(int frac, int lo, int hi) { return frac < lo ? lo : (frac > hi ? hi : frac); }
+static int fresnel_i_frac(int frac, int lo, int hi) { return frac < lo ? lo : (frac > hi ? hi : frac); }
 
 /* Residual tables: no node (n = 0) is a zero residual, Schlick alone. */
-static fresnel_q15 fr__lut_s16(int32_t f0, const int16_t *table, int n, int ch, int frac, uint32_t x, int32_t c)
+static fresnel_q15 fresnel_i_lut_s16(int32_t f0, const int16_t *table, int n, int ch, int frac, uint32_t x, int32_t c)
 {
-    fr__pos p;
+    fresnel_i_pos p;
     if (n == 0)
-        return fr__plus_schlick(f0, c, 0);
+        return fresnel_i_plus_schlick(f0, c, 0);
     table += ch * n;
-    p = fr__position(x, n);
-    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[FR__NEXT(p, n)], p.t, fr__frac(frac, 14, 30)));
+    p = fresnel_i_position(x, n);
+    return fresnel_i_plus_schlick(f0, c, fresnel_i_residual_q30(table[p.i], table[FRESNEL_I_NEXT(p, n)], p.t, fresnel_i_frac(frac, 14, 30)));
 }
 
-static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int ch, int frac, uint32_t x, int32_t c)
+static fresnel_q15 fresnel_i_lut_s8(int32_t f0, const int8_t *table, int n, int ch, int frac, uint32_t x, int32_t c)
 {
-    fr__pos p;
+    fresnel_i_pos p;
     if (n == 0)
-        return fr__plus_schlick(f0, c, 0);
+        return fresnel_i_plus_schlick(f0, c, 0);
     table += ch * n;
-    p = fr__position(x, n);
-    return fr__plus_schlick(f0, c, fr__residual_q30(table[p.i], table[FR__NEXT(p, n)], p.t, fr__frac(frac, 6, 22)));
+    p = fresnel_i_position(x, n);
+    return fresnel_i_plus_schlick(f0, c, fresnel_i_residual_q30(table[p.i], table[FRESNEL_I_NEXT(p, n)], p.t, fresnel_i_frac(frac, 6, 22)));
 }
 
 /* Catmull-Rom weights in Q15 for a fraction t in [0, 2^15], s = 1 - t:
@@ -188,148 +188,148 @@ static fresnel_q15 fr__lut_s8(int32_t f0, const int8_t *table, int n, int ch, in
  * (w1 = s + t s (3s - 1)/2 up to rounding: taking it from the sum keeps a
  * constant table constant). The negative weights are kept as magnitudes.
  * R: t s <= 2^28 -> ts <= 2^13; ts s, ts t <= 2^28; 3 ts t <= 3 2^28. */
-typedef struct fr__cubic_w {
+typedef struct fresnel_i_cubic_w {
     int32_t w0, w1, w2, w3; /* w0, w3: magnitudes of the negative weights */
-} fr__cubic_w;
+} fresnel_i_cubic_w;
 
-static fr__cubic_w fr__cubic_weights(uint32_t t)
+static fresnel_i_cubic_w fresnel_i_cubic_weights(uint32_t t)
 {
-    fr__cubic_w w;
-    uint32_t s = FR__ONE_Q15 - t, ts = (t * s + (1u << 14)) >> 15;
+    fresnel_i_cubic_w w;
+    uint32_t s = FRESNEL_I_ONE_Q15 - t, ts = (t * s + (1u << 14)) >> 15;
     w.w0 = (int32_t)((ts * s + (1u << 15)) >> 16);
     w.w3 = (int32_t)((ts * t + (1u << 15)) >> 16);
     w.w2 = (int32_t)(t + ((3u * ts * t + (1u << 15)) >> 16)) - (int32_t)((ts + 1u) >> 1);
-    w.w1 = (int32_t)FR__ONE_Q15 + w.w0 + w.w3 - w.w2;
+    w.w1 = (int32_t)FRESNEL_I_ONE_Q15 + w.w0 + w.w3 - w.w2;
     return w;
 }
 
 /* R: node values <= 2^15; |w| sum <= 1.25 2^15 + 4, so |sum| < 1.3 2^30.
  * The outer nodes repeat the end ones (index clamped to [0, n-1]). */
-static fresnel_q15 fr__cubic_u16(const uint16_t *table, int n, int ch, fr__pos p, fr__cubic_w w)
+static fresnel_q15 fresnel_i_cubic_u16(const uint16_t *table, int n, int ch, fresnel_i_pos p, fresnel_i_cubic_w w)
 {
     int last = n - 1;
     int32_t v0, v1, v2, v3;
     table += ch * n;
-    v0 = (int32_t)fr__u16_q15(table[p.i > 0 ? p.i - 1 : 0]);
-    v1 = (int32_t)fr__u16_q15(table[p.i]);
-    v2 = (int32_t)fr__u16_q15(table[FR__NEXT(p, n)]);
-    v3 = (int32_t)fr__u16_q15(table[FR__NEXT(p, n) + 1 <= last ? FR__NEXT(p, n) + 1 : last]);
-    return fr__q30s_to_q15(w.w1 * v1 + w.w2 * v2 - w.w0 * v0 - w.w3 * v3);
+    v0 = (int32_t)fresnel_i_u16_q15(table[p.i > 0 ? p.i - 1 : 0]);
+    v1 = (int32_t)fresnel_i_u16_q15(table[p.i]);
+    v2 = (int32_t)fresnel_i_u16_q15(table[FRESNEL_I_NEXT(p, n)]);
+    v3 = (int32_t)fresnel_i_u16_q15(table[FRESNEL_I_NEXT(p, n) + 1 <= last ? FRESNEL_I_NEXT(p, n) + 1 : last]);
+    return fresnel_i_q30s_to_q15(w.w1 * v1 + w.w2 * v2 - w.w0 * v0 - w.w3 * v3);
 }
 
 fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n_in, int32_t c)
 {
-    int n = fr__lut_n(n_in);
-    fr__pos p;
+    int n = fresnel_i_lut_n(n_in);
+    fresnel_i_pos p;
     if (n == 0)
         return 0;
-    p = fr__position(fr__sqrt_w(c), n);
-    return fr__cubic_u16(table, n, 0, p, fr__cubic_weights(p.t));
+    p = fresnel_i_position(fresnel_i_sqrt_w(c), n);
+    return fresnel_i_cubic_u16(table, n, 0, p, fresnel_i_cubic_weights(p.t));
 }
 
 fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n_in, int32_t c)
 {
-    int n = fr__lut_n(n_in);
-    fr__pos p;
-    fr__cubic_w w;
+    int n = fresnel_i_lut_n(n_in);
+    fresnel_i_pos p;
+    fresnel_i_cubic_w w;
     if (n == 0)
-        FR__RGB_Q15(0, 0, 0);
-    p = fr__position(fr__sqrt_w(c), n);
-    w = fr__cubic_weights(p.t);
-    FR__RGB_Q15(fr__cubic_u16(table, n, 0, p, w), fr__cubic_u16(table, n, 1, p, w), fr__cubic_u16(table, n, 2, p, w));
+        FRESNEL_I_RGB_Q15(0, 0, 0);
+    p = fresnel_i_position(fresnel_i_sqrt_w(c), n);
+    w = fresnel_i_cubic_weights(p.t);
+    FRESNEL_I_RGB_Q15(fresnel_i_cubic_u16(table, n, 0, p, w), fresnel_i_cubic_u16(table, n, 1, p, w), fresnel_i_cubic_u16(table, n, 2, p, w));
 }
 
 fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c)
 {
-    return fr__lut_u16(table, fr__lut_n(n), 0, fr__sqrt_w(c));
+    return fresnel_i_lut_u16(table, fresnel_i_lut_n(n), 0, fresnel_i_sqrt_w(c));
 }
 fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c)
 {
-    return fr__lut_u16(table, fr__lut_n(n), 0, fr__linear_w(c));
+    return fresnel_i_lut_u16(table, fresnel_i_lut_n(n), 0, fresnel_i_linear_w(c));
 }
 fresnel_q15 fresnel_lut_q15_u8(const uint8_t *table, int n, int32_t c)
 {
-    return fr__lut_u8(table, fr__lut_n(n), 0, fr__sqrt_w(c));
+    return fresnel_i_lut_u8(table, fresnel_i_lut_n(n), 0, fresnel_i_sqrt_w(c));
 }
 fresnel_q15 fresnel_lut_linear_q15_u8(const uint8_t *table, int n, int32_t c)
 {
-    return fr__lut_u8(table, fr__lut_n(n), 0, fr__linear_w(c));
+    return fresnel_i_lut_u8(table, fresnel_i_lut_n(n), 0, fresnel_i_linear_w(c));
 }
 fresnel_q15 fresnel_lut_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s16(f0, table, fr__lut_n(n), 0, frac, fr__sqrt_w(c), c);
+    return fresnel_i_lut_s16(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_sqrt_w(c), c);
 }
 fresnel_q15 fresnel_lut_linear_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s16(f0, table, fr__lut_n(n), 0, frac, fr__linear_w(c), c);
+    return fresnel_i_lut_s16(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_linear_w(c), c);
 }
 fresnel_q15 fresnel_lut_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s8(f0, table, fr__lut_n(n), 0, frac, fr__sqrt_w(c), c);
+    return fresnel_i_lut_s8(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_sqrt_w(c), c);
 }
 fresnel_q15 fresnel_lut_linear_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
-    return fr__lut_s8(f0, table, fr__lut_n(n), 0, frac, fr__linear_w(c), c);
+    return fresnel_i_lut_s8(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_linear_w(c), c);
 }
 
-/* RGB: n red nodes, then n green, then n blue (n as fr__lut_n gives it). */
+/* RGB: n red nodes, then n green, then n blue (n as fresnel_i_lut_n gives it). */
 fresnel_q15_rgb fresnel_lut_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
 {
-    uint32_t x = fr__sqrt_w(c);
-    n = fr__lut_n(n);
-    FR__RGB_Q15(fr__lut_u16(table, n, 0, x), fr__lut_u16(table, n, 1, x), fr__lut_u16(table, n, 2, x));
+    uint32_t x = fresnel_i_sqrt_w(c);
+    n = fresnel_i_lut_n(n);
+    FRESNEL_I_RGB_Q15(fresnel_i_lut_u16(table, n, 0, x), fresnel_i_lut_u16(table, n, 1, x), fresnel_i_lut_u16(table, n, 2, x));
 }
 fresnel_q15_rgb fresnel_lut_linear_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
 {
-    uint32_t x = fr__linear_w(c);
-    n = fr__lut_n(n);
-    FR__RGB_Q15(fr__lut_u16(table, n, 0, x), fr__lut_u16(table, n, 1, x), fr__lut_u16(table, n, 2, x));
+    uint32_t x = fresnel_i_linear_w(c);
+    n = fresnel_i_lut_n(n);
+    FRESNEL_I_RGB_Q15(fresnel_i_lut_u16(table, n, 0, x), fresnel_i_lut_u16(table, n, 1, x), fresnel_i_lut_u16(table, n, 2, x));
 }
 fresnel_q15_rgb fresnel_lut_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
 {
-    uint32_t x = fr__sqrt_w(c);
-    n = fr__lut_n(n);
-    FR__RGB_Q15(fr__lut_u8(table, n, 0, x), fr__lut_u8(table, n, 1, x), fr__lut_u8(table, n, 2, x));
+    uint32_t x = fresnel_i_sqrt_w(c);
+    n = fresnel_i_lut_n(n);
+    FRESNEL_I_RGB_Q15(fresnel_i_lut_u8(table, n, 0, x), fresnel_i_lut_u8(table, n, 1, x), fresnel_i_lut_u8(table, n, 2, x));
 }
 fresnel_q15_rgb fresnel_lut_linear_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
 {
-    uint32_t x = fr__linear_w(c);
-    n = fr__lut_n(n);
-    FR__RGB_Q15(fr__lut_u8(table, n, 0, x), fr__lut_u8(table, n, 1, x), fr__lut_u8(table, n, 2, x));
+    uint32_t x = fresnel_i_linear_w(c);
+    n = fresnel_i_lut_n(n);
+    FRESNEL_I_RGB_Q15(fresnel_i_lut_u8(table, n, 0, x), fresnel_i_lut_u8(table, n, 1, x), fresnel_i_lut_u8(table, n, 2, x));
 }
 fresnel_q15_rgb fresnel_lut_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n, int frac,
                                                  int32_t c)
 {
-    uint32_t x = fr__sqrt_w(c);
-    n = fr__lut_n(n);
-    FR__RGB_Q15(fr__lut_s16(f0.r, table, n, 0, frac, x, c), fr__lut_s16(f0.g, table, n, 1, frac, x, c),
-                fr__lut_s16(f0.b, table, n, 2, frac, x, c));
+    uint32_t x = fresnel_i_sqrt_w(c);
+    n = fresnel_i_lut_n(n);
+    FRESNEL_I_RGB_Q15(fresnel_i_lut_s16(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s16(f0.g, table, n, 1, frac, x, c),
+                fresnel_i_lut_s16(f0.b, table, n, 2, frac, x, c));
 }
 fresnel_q15_rgb fresnel_lut_linear_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n,
                                                         int frac, int32_t c)
 {
-    uint32_t x = fr__linear_w(c);
-    n = fr__lut_n(n);
-    FR__RGB_Q15(fr__lut_s16(f0.r, table, n, 0, frac, x, c), fr__lut_s16(f0.g, table, n, 1, frac, x, c),
-                fr__lut_s16(f0.b, table, n, 2, frac, x, c));
+    uint32_t x = fresnel_i_linear_w(c);
+    n = fresnel_i_lut_n(n);
+    FRESNEL_I_RGB_Q15(fresnel_i_lut_s16(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s16(f0.g, table, n, 1, frac, x, c),
+                fresnel_i_lut_s16(f0.b, table, n, 2, frac, x, c));
 }
 fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n, int frac,
                                                 int32_t c)
 {
-    uint32_t x = fr__sqrt_w(c);
-    n = fr__lut_n(n);
-    FR__RGB_Q15(fr__lut_s8(f0.r, table, n, 0, frac, x, c), fr__lut_s8(f0.g, table, n, 1, frac, x, c),
-                fr__lut_s8(f0.b, table, n, 2, frac, x, c));
+    uint32_t x = fresnel_i_sqrt_w(c);
+    n = fresnel_i_lut_n(n);
+    FRESNEL_I_RGB_Q15(fresnel_i_lut_s8(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s8(f0.g, table, n, 1, frac, x, c),
+                fresnel_i_lut_s8(f0.b, table, n, 2, frac, x, c));
 }
 fresnel_q15_rgb fresnel_lut_linear_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n,
                                                        int frac, int32_t c)
 {
-    uint32_t x = fr__linear_w(c);
-    n = fr__lut_n(n);
-    FR__RGB_Q15(fr__lut_s8(f0.r, table, n, 0, frac, x, c), fr__lut_s8(f0.g, table, n, 1, frac, x, c),
-                fr__lut_s8(f0.b, table, n, 2, frac, x, c));
+    uint32_t x = fresnel_i_linear_w(c);
+    n = fresnel_i_lut_n(n);
+    FRESNEL_I_RGB_Q15(fresnel_i_lut_s8(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s8(f0.g, table, n, 1, frac, x, c),
+                fresnel_i_lut_s8(f0.b, table, n, 2, frac, x, c));
 }
 
 #else
-typedef int fr__lut_q15_disabled;
+typedef int fresnel_i_lut_q15_disabled;
 #endif

@@ -6,40 +6,40 @@
 
 float fresnel_schlick(float f0, float c)
 {
-    f0 = fr__unit(f0);
-    return fr__unit(f0 + (1.0f - f0) * fr__pow5(1.0f - fr__unit(c)));
+    f0 = fresnel_i_unit(f0);
+    return fresnel_i_unit(f0 + (1.0f - f0) * fresnel_i_pow5(1.0f - fresnel_i_unit(c)));
 }
 
 fresnel_rgb fresnel_schlick_rgb(fresnel_rgb f0, float c)
 {
-    FR__RGB(fresnel_schlick(f0.r, c), fresnel_schlick(f0.g, c), fresnel_schlick(f0.b, c));
+    FRESNEL_I_RGB(fresnel_schlick(f0.r, c), fresnel_schlick(f0.g, c), fresnel_schlick(f0.b, c));
 }
 
 float fresnel_schlick_gen(float f0, float f90, float p, float c)
 {
-    float x = 1.0f - fr__unit(c);
+    float x = 1.0f - fresnel_i_unit(c);
     float t;
-    f0 = fr__unit(f0);
-    f90 = fr__unit(f90);
-    p = fr__clamp(p, FRESNEL_P_MIN, FRESNEL_P_MAX);
-    t = p == 5.0f ? fr__pow5(x) : fr__pow_one_minus(fr__unit(c), p);
-    return fr__unit(f0 + (f90 - f0) * t);
+    f0 = fresnel_i_unit(f0);
+    f90 = fresnel_i_unit(f90);
+    p = fresnel_i_clamp(p, FRESNEL_P_MIN, FRESNEL_P_MAX);
+    t = p == 5.0f ? fresnel_i_pow5(x) : fresnel_i_pow_one_minus(fresnel_i_unit(c), p);
+    return fresnel_i_unit(f0 + (f90 - f0) * t);
 }
 
 fresnel_rgb fresnel_schlick_gen_rgb(fresnel_rgb f0, fresnel_rgb f90, float p, float c)
 {
-    FR__RGB(fresnel_schlick_gen(f0.r, f90.r, p, c), fresnel_schlick_gen(f0.g, f90.g, p, c),
+    FRESNEL_I_RGB(fresnel_schlick_gen(f0.r, f90.r, p, c), fresnel_schlick_gen(f0.g, f90.g, p, c),
             fresnel_schlick_gen(f0.b, f90.b, p, c));
 }
 
 float fresnel_schlick_internal(float f0, float eta, float c)
 {
     float ct2;
-    eta = fr__eta(eta);
-    c = fr__unit(c);
+    eta = fresnel_i_eta(eta);
+    c = fresnel_i_unit(c);
     if (eta >= 1.0f)
         return fresnel_schlick(f0, c);
-    ct2 = fr__eta2_minus_sin2(eta, c, 0.0f); /* eta^2 ct^2 */
+    ct2 = fresnel_i_eta2_minus_sin2(eta, c, 0.0f); /* eta^2 ct^2 */
     if (!(ct2 > 0.0f))
         return 1.0f;
     return fresnel_schlick(f0, sqrtf(ct2) / eta);
@@ -47,7 +47,7 @@ float fresnel_schlick_internal(float f0, float eta, float c)
 
 fresnel_rgb fresnel_schlick_internal_rgb(fresnel_rgb f0, float eta, float c)
 {
-    FR__RGB(fresnel_schlick_internal(f0.r, eta, c), fresnel_schlick_internal(f0.g, eta, c),
+    FRESNEL_I_RGB(fresnel_schlick_internal(f0.r, eta, c), fresnel_schlick_internal(f0.g, eta, c),
             fresnel_schlick_internal(f0.b, eta, c));
 }
 
@@ -57,33 +57,33 @@ float fresnel_f0_in_medium(float f0, float eta_e)
      * rebuilt from 1 - s = 2/(etaE+1) and 1 - r = (1 - F0)/(1 + r), each exact
      * to a rounding: the direct 1 - r s cancels when F0 and etaE are both large. */
     float r, one_minus_s, one_minus_r, q;
-    eta_e = fr__eta(eta_e);
-    f0 = fr__unit(f0);
+    eta_e = fresnel_i_eta(eta_e);
+    f0 = fresnel_i_unit(f0);
     r = sqrtf(f0);
     if (eta_e < 1.0f) {
         /* s < 0: r - s and 1 - r s are sums of positive terms, and the
          * direct form rounds least. */
         float s = (eta_e - 1.0f) / (eta_e + 1.0f);
         q = (r - s) / (1.0f - r * s);
-        return fr__unit(q * q);
+        return fresnel_i_unit(q * q);
     }
     one_minus_s = 2.0f / (eta_e + 1.0f);
     one_minus_r = (1.0f - f0) / (1.0f + r);
     q = (one_minus_s - one_minus_r) / (one_minus_r + r * one_minus_s); /* denominator > 0 */
-    return fr__unit(q * q);
+    return fresnel_i_unit(q * q);
 }
 
 float fresnel_f0_from_ior(float eta, float kappa)
 {
     float k2, num, den;
-    eta = fr__eta(eta);
-    kappa = fr__kappa(kappa);
+    eta = fresnel_i_eta(eta);
+    kappa = fresnel_i_kappa(kappa);
     k2 = kappa * kappa;
     num = (eta - 1.0f) * (eta - 1.0f) + k2;
     den = (eta + 1.0f) * (eta + 1.0f) + k2;
-    return fr__unit(num / den);
+    return fresnel_i_unit(num / den);
 }
 
 #else
-typedef int fr__schlick_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
+typedef int fresnel_i_schlick_disabled; /* FRESNEL_CFG_NO_FLOAT: ISO C wants a declaration */
 #endif

@@ -58,8 +58,8 @@ static char *read_all(const char *path)
 static double pl_ref(const uint16_t *t, int n, int32_t c)
 {
     uint32_t x = (uint32_t)c - ((uint32_t)c >> 15), j = x >> 9;
-    uint32_t p = fresnel_fast__sqrt_pl[j] +
-                 (((uint32_t)(fresnel_fast__sqrt_pl[j + 1] - fresnel_fast__sqrt_pl[j]) * (x & 511u)) >> 9);
+    uint32_t p = fresnel_i_fast_sqrt_pl[j] +
+                 (((uint32_t)(fresnel_i_fast_sqrt_pl[j + 1] - fresnel_i_fast_sqrt_pl[j]) * (x & 511u)) >> 9);
     double pos = p / 32768.0 * (n - 1), w;
     int i = (int)pos;
     if (i > n - 2)

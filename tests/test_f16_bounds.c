@@ -43,8 +43,8 @@ static int in_f16_domain(const test_material *t)
 
 static void check_arithmetic(void)
 {
-    fr__h a = fr__hc(1.0f + 1.0f / 1024.0f);
-    fr__h r = fr__hsub(fr__hmul(a, a), fr__hc(1.0f));
+    fresnel_i_h a = fresnel_i_hc(1.0f + 1.0f / 1024.0f);
+    fresnel_i_h r = fresnel_i_hsub(fresnel_i_hmul(a, a), fresnel_i_hc(1.0f));
     int i, differs = 0;
     /* (1 + 2^-10)^2 = 1 + 2^-9 + 2^-20: the square rounds to 1 + 2^-9 in
      * binary16, so the difference is 2^-9 exactly; with excess precision it
@@ -52,7 +52,7 @@ static void check_arithmetic(void)
     CHECK("f16 helpers round each operation to binary16", (float)r == 1.0f / 512.0f, "got %.9g", (double)(float)r);
     /* and the library's Schlick differs from Schlick in float rounded once */
     for (i = 0; i < NC && !differs; i += 7) {
-        fresnel_f16 c = half_from_bits((unsigned)i), f0 = fr__hc(0.04f);
+        fresnel_f16 c = half_from_bits((unsigned)i), f0 = fresnel_i_hc(0.04f);
         float x = 1.0f - (float)c, once = (float)f0 + (1.0f - (float)f0) * x * x * x * x * x;
         differs = (float)fresnel_schlick_f16(f0, c) != (float)(fresnel_f16)once;
     }

@@ -2,7 +2,7 @@
  * every cos code 0..32768, every material of tests/fixed_materials.h, every
  * model of the model table; results within [0, one] and within the bound
  * the header documents. Built from range-checked copies of the fixed-point
- * sources (Makefile: FRESNEL_RANGE_CHECK), so every FR__RANGE of the range
+ * sources (Makefile: FRESNEL_RANGE_CHECK), so every FRESNEL_I_RANGE of the range
  * analysis is checked on all of these inputs as well; under the sanitizer
  * pass, UBSan checks the signed arithmetic. */
 #include <limits.h>
@@ -27,9 +27,9 @@
 static long range_failures;
 static char range_first[160];
 
-/* Called by FR__RANGE in the range-checked fixed-point objects. */
-void fr__range_fail(const char *what, long long value);
-void fr__range_fail(const char *what, long long value)
+/* Called by FRESNEL_I_RANGE in the range-checked fixed-point objects. */
+void fresnel_i_range_fail(const char *what, long long value);
+void fresnel_i_range_fail(const char *what, long long value)
 {
     if (range_failures++ == 0)
         snprintf(range_first, sizeof range_first, "%s = %lld", what, value);
@@ -640,14 +640,14 @@ int main(void)
     check_prepare(mat, nmat);
     check_variants(mat, nmat);
     check_luts(mat, nmat);
-    CHECK("every intermediate inside the range its FR__RANGE states", range_failures == 0,
+    CHECK("every intermediate inside the range its FRESNEL_I_RANGE states", range_failures == 0,
           "%ld violations, first: %s", range_failures, range_first);
-    /* and the checks do fire: a product outside fr__mul_q30's domain */
+    /* and the checks do fire: a product outside fresnel_i_mul_q30's domain */
     {
         volatile uint32_t big = 1u << 31;
         long before = range_failures;
-        (void)fr__mul_q30(big, 5u);
-        CHECK("FR__RANGE reports an argument outside its stated range", range_failures == before + 1,
+        (void)fresnel_i_mul_q30(big, 5u);
+        CHECK("FRESNEL_I_RANGE reports an argument outside its stated range", range_failures == before + 1,
               "%ld reports", range_failures - before);
     }
     return harness_exit();

@@ -95,7 +95,7 @@ static void check_sqrt(void)
     double worst_e = 0.0;
     int32_t c, at = 0;
     for (c = 1; c <= ONE; c++) {
-        double e = fabs(fresnel_fast__sqrt_q22((uint32_t)c) / 4194304.0 - sqrt(c / 32768.0));
+        double e = fabs(fresnel_i_fast_sqrt_q22((uint32_t)c) / 4194304.0 - sqrt(c / 32768.0));
         if (e > worst_e)
             worst_e = e, at = c;
     }
@@ -165,7 +165,7 @@ static void check_lut(const test_material *mat, int nmat)
 static double pl_position(int32_t c)
 {
     int32_t x = c - (c >> 15), j = x >> 9;
-    double s0 = fresnel_fast__sqrt_pl[j], s1 = fresnel_fast__sqrt_pl[j + 1];
+    double s0 = fresnel_i_fast_sqrt_pl[j], s1 = fresnel_i_fast_sqrt_pl[j + 1];
     return (s0 + (s1 - s0) * (x & 511) / 512.0) / 32768.0;
 }
 
@@ -180,7 +180,7 @@ static void check_lut_pl(const test_material *mat, int nmat)
     memset(&w, 0, sizeof w);
     memset(&tir, 0, sizeof tir);
     for (k = 0; k <= 64; k++)
-        knots_ok &= fresnel_fast__sqrt_pl[k] == (uint16_t)floor(32768.0 * sqrt(k / 64.0) + 0.5);
+        knots_ok &= fresnel_i_fast_sqrt_pl[k] == (uint16_t)floor(32768.0 * sqrt(k / 64.0) + 0.5);
     CHECK("fixed fast LUT pl: knots are round(32768 sqrt(k/64))", knots_ok, "a knot differs");
     for (k = 0; k < nmat; k += 4)
         for (is = 0; is < (int)(sizeof sizes / sizeof sizes[0]); is++) {

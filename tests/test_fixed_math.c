@@ -124,18 +124,18 @@ static void check_qf(void)
     uint32_t i, denorm = 0;
     int j;
     for (i = 0; i < 2000000u; i++) {
-        fresnel_qf a = fr__qf(rng() >> (rng() % 32), (int32_t)(rng() % 81) - 40 - 15);
-        fresnel_qf b = fr__qf(rng() >> (rng() % 32), (int32_t)(rng() % 81) - 40 - 15);
+        fresnel_qf a = fresnel_i_qf(rng() >> (rng() % 32), (int32_t)(rng() % 81) - 40 - 15);
+        fresnel_qf b = fresnel_i_qf(rng() >> (rng() % 32), (int32_t)(rng() % 81) - 40 - 15);
         double da = qv(a), db = qv(b), r[6], e[6];
         fresnel_qf res[5];
         int neg;
         if (a.m == 0 || b.m == 0)
             continue;
-        res[0] = fr__qf_mul(a, b);
-        res[1] = fr__qf_add(a, b);
-        res[2] = fr__qf_sub(a, b, &neg);
-        res[3] = fr__qf_div(a, b);
-        res[4] = fr__qf_sqrt(a);
+        res[0] = fresnel_i_qf_mul(a, b);
+        res[1] = fresnel_i_qf_add(a, b);
+        res[2] = fresnel_i_qf_sub(a, b, &neg);
+        res[3] = fresnel_i_qf_div(a, b);
+        res[4] = fresnel_i_qf_sqrt(a);
         r[0] = da * db;
         r[1] = da + db;
         r[2] = fabs(da - db);
@@ -150,7 +150,7 @@ static void check_qf(void)
         /* to_fix at a scale that keeps the result below 2^31 */
         {
             int32_t frac = 30 - a.e - 31;
-            uint32_t fx = fr__qf_to_fix(a, frac);
+            uint32_t fx = fresnel_i_qf_to_fix(a, frac);
             r[5] = ldexp(da, frac);
             e[5] = fabs(fx - r[5]) <= 0.5 ? 0.0 : 1.0;
         }
@@ -180,16 +180,16 @@ static void check_pow(void)
     double worst = 0.0, worst64 = 0.0, wp = 0, wx = 0;
     for (j = 0; j < 64; j++) {
         double r = floor(65536.0 / (1.0 + (j + 0.5) / 64.0) + 0.5);
-        bad += fr__log2_r[j] != (uint16_t)r;
-        bad += fr__log2_t[j] != (uint32_t)floor(log2(65536.0 / r) * 1073741824.0 + 0.5);
-        bad += fr__exp2_t[j] != (uint32_t)floor(1073741824.0 * exp2(-j / 64.0) + 0.5);
+        bad += fresnel_i_log2_r[j] != (uint16_t)r;
+        bad += fresnel_i_log2_t[j] != (uint32_t)floor(log2(65536.0 / r) * 1073741824.0 + 0.5);
+        bad += fresnel_i_exp2_t[j] != (uint32_t)floor(1073741824.0 * exp2(-j / 64.0) + 0.5);
     }
     CHECK("pow tables equal their definitions", bad == 0, "%d entries differ", bad);
     for (ip = 0; ip < sizeof ps / sizeof ps[0]; ip++) {
         uint32_t p = (uint32_t)floor(ps[ip] * 65536.0 + 0.5), x;
         double pd = p / 65536.0;
         for (x = 0; x <= 32768u; x++) {
-            double want = pow(x / 32768.0, pd), got = qv(fr__pow_q15(x, p));
+            double want = pow(x / 32768.0, pd), got = qv(fresnel_i_pow_q15(x, p));
             double err = want > 0 ? fabs(got - want) / want : fabs(got);
             if (want < 1e-300)
                 continue; /* below double's range the qf value is still meaningful, the comparison is not */

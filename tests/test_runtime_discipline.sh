@@ -29,3 +29,25 @@ if grep -nE '#include <(stdio|stdlib|errno|string)\.h>' src/*.c src/*.h include/
 else
     echo "PASS runtime includes no stdio, stdlib, errno or string headers"
 fi
+# Names: every global symbol of the archive carries the public prefix
+# fresnel_ (internal helpers fresnel_i_*), and a shared library built from
+# src/ exports no internal helper (FRESNEL_I_HIDDEN).
+foreign=$(nm -g --defined-only "$lib" | awk 'NF==3 {print $3}' | grep -v '^fresnel_' | sort -u | tr '\n' ' ')
+if [ -z "$foreign" ]; then
+    echo "PASS every global symbol of the runtime starts with fresnel_"
+else
+    echo "FAIL global symbols outside the fresnel_ prefix: $foreign"
+fi
+so=$(mktemp -d)
+if ${CC:-cc} -std=c99 -O1 -fPIC -shared -Iinclude -fno-math-errno src/*.c -o "$so/libfresnel.so" -lm 2>"$so/err"; then
+    exported=$(nm -D --defined-only "$so/libfresnel.so" | awk 'NF==3 {print $3}')
+    internal=$(printf '%s\n' "$exported" | grep '^fresnel_i_' | tr '\n' ' ')
+    if [ -z "$internal" ] && printf '%s\n' "$exported" | grep -q '^fresnel_schlick$'; then
+        echo "PASS a shared library from src/ exports no fresnel_i_* helper ($(printf '%s\n' "$exported" | grep -c '^fresnel_') fresnel_* symbols)"
+    else
+        echo "FAIL shared library exports internal helpers: $internal"
+    fi
+else
+    echo "FAIL shared library from src/ does not build: $(head -3 "$so/err")"
+fi
+rm -rf "$so"

@@ -17,8 +17,8 @@
  * NAMES
  *   The C names: fresnel_schlick, fresnel_schlick_rgb (vec3), ...; vec3
  *   stands for fresnel_rgb, vec2 for fresnel_nk and fresnel_rg. Internal
- *   helpers are fresnel_i_*, macros FRESNEL_* (GLSL reserves names with "__",
- *   so the C helpers' fr__ prefix is not available).
+ *   helpers are fresnel_i_*, as in the C runtime; macros FRESNEL_* (GLSL, like
+ *   C++, reserves names with "__").
  *
  * CONVENTIONS (as in fresnel.h)
  *   c is cos(theta) in the incident medium, clamped to [0, 1] BEFORE 1 - c is
