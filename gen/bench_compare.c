@@ -88,8 +88,8 @@ float cmp_pbrt_conductor(float eta, float kappa, float c)
     return 0.5f * (cx_norm(r_par) + cx_norm(r_perp));
 }
 
-/* An earlier form of fresnel_conductor, the careful real form: u and v
- * from sqrt and eta kappa / u, 3 divisions. Kept here to measure what changed. */
+/* The careful real form of the exact conductor: u and v from sqrt and
+ * eta kappa / u, 3 divisions; the baseline for the one-division form. */
 float cmp_careful_conductor(float eta, float kappa, float c)
 {
     float ek, a, m, u, v, p, q, num_s, den_s, num_p, den_p, rs, rp;

@@ -26,8 +26,8 @@ float cmp_mitsuba_conductor(float eta, float kappa, float c);
  * t2 = Im z / (2 t1) (swapped, with signs, for Re z < 0). c clamped to [0, 1]. */
 float cmp_pbrt_conductor(float eta, float kappa, float c);
 
-/* An earlier form of this project's fresnel_conductor, 3 divisions and 2
- * square roots: the careful real form, kept as a point of comparison. */
+/* The exact conductor in the careful real form with 3 divisions and 2
+ * square roots: what folding the division into the ratios saves. */
 float cmp_careful_conductor(float eta, float kappa, float c);
 
 #endif

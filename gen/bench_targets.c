@@ -141,7 +141,7 @@ static const struct {
     {"conductor-batch", batch_conductor_batch},
     {"mitsuba-style", batch_mitsuba},
     {"pbrt-style", batch_pbrt},
-    {"careful-f7f9c7c", batch_careful},
+    {"conductor-3div", batch_careful},
     {"lut16-f32", batch_lut16},
     {"lut32-f32", batch_lut32},
     {"lut16-q15", batch_lut16_q15},

@@ -12,7 +12,7 @@ typedef struct bench_target_row {
     double ratio_to_schlick; /* ns / ns of row 0 ("schlick") of the same run */
     /* Largest |result - double reference| (NaN if a result was NaN):
      *   schlick*: against ref_schlick, F0 in 0..1 by 1/64;
-     *   conductor rows (ours, mitsuba-style, pbrt-style, careful-f7f9c7c):
+     *   conductor rows (ours, mitsuba-style, pbrt-style, conductor-3div):
      *     against ref_conductor over the "ordinary" grid: eta 0.1..5 (49,
      *     log), kappa 0 and 0.01..10 (48, log), 2060 cosines in [0, 1]
      *     (uniform in c and in angle, and 0, 1 and points within 1e-6 of them);

@@ -199,8 +199,7 @@ fresnel_rgb fresnel_lsk_rgb(fresnel_rgb n, fresnel_rgb k, float c);
  * (log1pf, expf and two products on the term); tests/test_float_bounds
  * prints the measured maximum ("lsk-comp over its domain"). For larger a the float
  * rounding of the exponent alpha ln(1-c) is multiplied by the term's size:
- * about 6e-8 |a c (1-c)^alpha alpha ln(1-c)| (1.2e-6 at a = 1e6, found by
- * fuzzing).
+ * about 6e-8 |a c (1-c)^alpha alpha ln(1-c)| (1.2e-6 at a = 1e6).
  * Cost: 15 flops, div, expf, log1pf. */
 float fresnel_lsk_comp(float n, float k, float a, float alpha, float c);
 fresnel_rgb fresnel_lsk_comp_rgb(fresnel_rgb n, fresnel_rgb k, fresnel_rgb a,
@@ -301,7 +300,7 @@ float fresnel_conductor(float eta, float kappa, float c);
 fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
 
 /* The same exact conductor with one material's constants prepared once
- * (issue 8: shading many cosines of one material):
+ * (for shading many cosines of one material):
  *   fresnel_conductor_prep p = fresnel_conductor_prepare(eta, kappa);
  *   r = fresnel_conductor_prepared(&p, c);              one cosine
  *   fresnel_conductor_batch(&p, cos_array, out, n);     out[i] for c[i], i < n

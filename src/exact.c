@@ -6,8 +6,8 @@
  * nearly equal numbers (gold in the red: eta 0.15, kappa 3.5 loses about
  * half its digits in binary32). Here a = u and b = v are the real and
  * imaginary parts of sqrt((eta + i kappa)^2 - sin^2), and the smaller of the
- * two is taken from u v = eta kappa instead. Since issue 8 that division is
- * folded into the ratios and Rs + Rp is one division (fresnel_i_exact_f), and a
+ * two is taken from u v = eta kappa instead. That division is folded into
+ * the ratios and Rs + Rp is one division (fresnel_i_exact_f), and a
  * material may be prepared once for many cosines (fresnel_conductor_prepare). */
 #include "internal.h"
 

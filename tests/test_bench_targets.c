@@ -13,7 +13,7 @@
 int main(void)
 {
     static const char *const names[] = {"schlick", "schlick-q15", "conductor", "conductor-prepared",
-                                        "conductor-batch", "mitsuba-style", "pbrt-style", "careful-f7f9c7c",
+                                        "conductor-batch", "mitsuba-style", "pbrt-style", "conductor-3div",
                                         "lut16-f32", "lut32-f32", "lut16-q15", "lut32-q15",
                                         "lut16-linear-f32", "lut16-linear-q15", "lut16-cubic-f32", "lut16-cubic-q15", "lut32-q15-fast"};
     enum { ROWS = (int)(sizeof names / sizeof names[0]) };

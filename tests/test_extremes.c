@@ -1,4 +1,4 @@
-/* Properties on the extreme and stiff cases of issue 7 (the cases
+/* Properties on the extreme and stiff cases (the cases
  * `fresnel extremes` prints, gen/extremes.h), in every number type of the
  * runtime (binary32, Q15, binary16 where the compiler has _Float16):
  *   - no NaN or Inf, result in [0, 1], for every input including NaN, +-Inf
@@ -30,11 +30,11 @@
 
 #define GRID_MAX 2100
 
-/* Findings reported to the lead (issue 7): none stands, so every check
- * below asserts. F5 (q15 Gulbrandsen at r -> 1, g = 1) was fixed in
- * eeae237; F4 (f16 exact forms at a critical angle) and F6 (f16 F82 on
- * far-apart F0, F82) lie within the bounds fresnel_f16.h documents since
- * (no bound at a critical angle; 4.0e-3 for F82 over a grid of pairs). */
+/* Fuzz findings: none stands, so every check below asserts. F5 (q15
+ * Gulbrandsen at r -> 1, g = 1) is fixed; F4 (f16 exact forms at a critical
+ * angle) and F6 (f16 F82 on far-apart F0, F82) lie within the bounds
+ * fresnel_f16.h documents (no bound at a critical angle; 4.0e-3 for F82 over
+ * a grid of pairs). */
 
 /* Binary32, Q15 and binary16 steps of the cosine in [0.5, 1). */
 static double ulp_upper(const extreme_type *ty)
@@ -452,7 +452,7 @@ static void test_gulbrandsen(void)
     }
 }
 
-/* fresnel_conductor_prepared and fresnel_conductor_batch (issue 8) on every
+/* fresnel_conductor_prepared and fresnel_conductor_batch on every
  * extreme case and cosine, the binary32 input policy included: results in
  * [0, 1]; c < 0, -0, NaN, -Inf exactly f(0) and c > 1, +Inf exactly f(1);
  * the batch bit for bit the prepared function; matched index 0 at every c;

@@ -85,7 +85,7 @@ static void check_f0_helpers(void)
 }
 
 /* fresnel_conductor_prepared and fresnel_conductor_batch (one prepared
- * material, issue 8) on the same grid as the model table: every eta, kappa
+ * material) on the same grid as the model table: every eta, kappa
  * (kappa = 0 included: the prepared form covers dielectrics too) and n1,
  * against ref_conductor. The batch runs over the whole cosine array and must
  * give exactly the prepared function's results; short batches check its

@@ -1,4 +1,4 @@
-/* Shared by the fuzz targets (issue 7): turning arbitrary bytes into inputs,
+/* Shared by the fuzz targets: turning arbitrary bytes into inputs,
  * and reporting an oracle violation.
  *
  * Built two ways. Under libFuzzer (`make fuzz`) a violation prints what was

@@ -1,5 +1,5 @@
 /* Differential fuzzing of the binary16 runtime (fresnel_f16.h) against the
- * double reference (gen/reference.c), issue 7.
+ * double reference (gen/reference.c).
  *
  * Needs _Float16, which clang 14 on x86-64 lacks: `make fuzz` compiles this
  * file and src/\*_f16.c with gcc (ASan, UBSan and gcc's comparison tracing,
@@ -28,7 +28,7 @@
 
 #if FRESNEL_HAS_F16
 
-/* Findings (reported to the lead, issue 7). The documented binary16 bounds
+/* Findings. The documented binary16 bounds
  * are maxima over tests/test_f16_bounds.c's material set; for arbitrary
  * binary16 inputs inside the domain the fuzzer exceeds most of them, some
  * by far:

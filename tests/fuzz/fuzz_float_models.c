@@ -1,5 +1,5 @@
 /* Differential fuzzing of every binary32 runtime function against the double
- * reference (gen/reference.c), issue 7.
+ * reference (gen/reference.c).
  *
  * Oracle, for every input including NaN, +-Inf and subnormals:
  *   - the result is in [0, 1] and not NaN (fresnel.h CONVENTIONS);
@@ -17,8 +17,7 @@
 #include "fresnel.h"
 #include "reference.h"
 
-/* Findings of this fuzzer that are in the runtime, not in the tests, and are
- * reported to the lead (issue 7). Each entry replaces ONE documented bound in
+/* Findings of this fuzzer that are in the runtime, not in the tests. Each entry replaces ONE documented bound in
  * ONE region by the error measured there, so the fuzzer keeps checking the
  * rest; delete an entry when the runtime is fixed (the crash inputs are in
  * the corpus and must then pass with the documented bound).

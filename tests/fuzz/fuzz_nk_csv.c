@@ -1,5 +1,5 @@
 /* Fuzzes the n,k table reader (gen/load_nk.c, with the CSV line reader every
- * data file goes through) and its resampling (gen/resample.c), issue 7.
+ * data file goes through) and its resampling (gen/resample.c).
  *
  * Oracle, for any bytes as data/<id>.csv:
  *   - no crash, no sanitizer report, no leak (LeakSanitizer under libFuzzer);

@@ -1,4 +1,4 @@
-/* Fuzzes the scene manifest parser (gen/scene.c), issue 7.
+/* Fuzzes the scene manifest parser (gen/scene.c).
  *
  * Oracle, for any bytes as a manifest:
  *   - no crash, no sanitizer report, no leak;
