@@ -20,6 +20,12 @@ typedef struct emit_input {
 
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
 void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
+/* One material's float parameters for the scene's models, through the back
+ * end's syntax for an RGB triple and a scalar. */
+typedef void (*emit_rgb_fn)(FILE *f, const char *prefix, const char *name, const double v[3], const char *why);
+typedef void (*emit_float_fn)(FILE *f, const char *prefix, const char *name, double v, const char *why);
+void emit_material_params(FILE *f, const scene *sc, const material_params *p, const char *prefix, emit_rgb_fn rgb,
+                          emit_float_fn flt);
 /* A LUT model's table for one material (3n values, malloc'd; NULL when out
  * of memory) and the model's name as a C identifier part (lut16-residual ->
  * lut16_residual) in name[32]; *n and *form describe the table. */

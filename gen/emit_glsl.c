@@ -308,10 +308,7 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
     lut_spacing spacing = scene_lut_spacing(sc);
     glsl_layout l;
     char guard[96], scene_prefix[96];
-    int i, m, status, residual = 0, form;
-    for (m = 0; m < sc->model_count; m++)
-        if (scene_model_lut_size(sc->models[m], &form) && form == LUT_RESIDUAL)
-            residual = 1;
+    int i, m, status;
     for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
         guard[i] = (char)toupper((unsigned char)in->name[i]);
     guard[i] = '\0';
@@ -364,37 +361,7 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
         char prefix[160];
         snprintf(prefix, sizeof prefix, "%s_%s", scene_prefix, p->info.id);
         fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
-        if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") ||
-            residual)
-            emit_rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");
-        if (scene_has_model(sc, "f82"))
-            emit_rgb(f, prefix, "f82", p->f82, "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
-        if (scene_has_model(sc, "exact") || scene_has_model(sc, "lsk") || scene_has_model(sc, "lsk-comp") ||
-            scene_has_model(sc, "approx-conductor")) {
-            emit_rgb(f, prefix, "eta", p->eta_fit, "eta fitted to the ground truth (exact, lsk, approx-conductor)");
-            emit_rgb(f, prefix, "kappa", p->kappa_fit, "kappa fitted to the ground truth");
-        }
-        if (scene_has_model(sc, "lsk-comp")) {
-            emit_rgb(f, prefix, "lsk_a", p->lsk_a, "LSK compensation weight a (fresnel_lsk_comp_rgb)");
-            emit_rgb(f, prefix, "lsk_alpha", p->lsk_alpha, "LSK compensation exponent alpha");
-        }
-        if (scene_has_model(sc, "exact-gaussian")) {
-            emit_rgb(f, prefix, "eta_gaussian", p->eta_gauss, "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
-            emit_rgb(f, prefix, "kappa_gaussian", p->kappa_gauss, "Metzgar: kappa' in a Gaussian window");
-        }
-        if (scene_has_model(sc, "exact-point")) {
-            emit_rgb(f, prefix, "eta_point", p->eta_point, "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
-            emit_rgb(f, prefix, "kappa_point", p->kappa_point, "kappa point-sampled at the dominant wavelengths");
-        }
-        if (scene_has_model(sc, "gulbrandsen")) {
-            emit_rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
-            emit_rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen edge tint g from F0 and the fitted eta");
-        }
-        if (scene_has_model(sc, "cook-torrance")) {
-            emit_float(f, prefix, "ct_eta", p->ct_eta,
-                       "Cook-Torrance representative IOR at the green wavelength (fresnel_cook_torrance_rgb)");
-            emit_float(f, prefix, "ct_kappa", p->ct_kappa, "Cook-Torrance representative kappa");
-        }
+        emit_material_params(f, sc, p, prefix, emit_rgb, emit_float);
         for (m = 0; m < sc->model_count; m++) {
             const glsl_lut *u = layout_find(&l, i, m);
             if (u)

@@ -136,6 +136,44 @@ static int params_fit_float(const emit_input *in, const material_params *p)
     return 0;
 }
 
+/* One material's floating-point parameters, those its scene's models need:
+ * the same list in C and GLSL, each back end giving its own syntax. */
+void emit_material_params(FILE *f, const scene *sc, const material_params *p, const char *prefix, emit_rgb_fn rgb,
+                          emit_float_fn flt)
+{
+    if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") ||
+        scene_has_residual_lut(sc))
+        rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");
+    if (scene_has_model(sc, "f82"))
+        rgb(f, prefix, "f82", p->f82, "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
+    if (scene_has_model(sc, "exact") || scene_has_model(sc, "lsk") || scene_has_model(sc, "lsk-comp") ||
+        scene_has_model(sc, "approx-conductor")) {
+        rgb(f, prefix, "eta", p->eta_fit, "eta fitted to the ground truth (exact, lsk, approx-conductor)");
+        rgb(f, prefix, "kappa", p->kappa_fit, "kappa fitted to the ground truth");
+    }
+    if (scene_has_model(sc, "lsk-comp")) {
+        rgb(f, prefix, "lsk_a", p->lsk_a, "LSK compensation weight a (fresnel_lsk_comp_rgb)");
+        rgb(f, prefix, "lsk_alpha", p->lsk_alpha, "LSK compensation exponent alpha");
+    }
+    if (scene_has_model(sc, "exact-gaussian")) {
+        rgb(f, prefix, "eta_gaussian", p->eta_gauss, "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
+        rgb(f, prefix, "kappa_gaussian", p->kappa_gauss, "Metzgar: kappa' in a Gaussian window");
+    }
+    if (scene_has_model(sc, "exact-point")) {
+        rgb(f, prefix, "eta_point", p->eta_point, "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
+        rgb(f, prefix, "kappa_point", p->kappa_point, "kappa point-sampled at the dominant wavelengths");
+    }
+    if (scene_has_model(sc, "gulbrandsen")) {
+        rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
+        rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen edge tint g from F0 and the fitted eta");
+    }
+    if (scene_has_model(sc, "cook-torrance")) {
+        flt(f, prefix, "ct_eta", p->ct_eta,
+            "Cook-Torrance representative IOR at the green wavelength (fresnel_cook_torrance_rgb)");
+        flt(f, prefix, "ct_kappa", p->ct_kappa, "Cook-Torrance representative kappa");
+    }
+}
+
 /* What a user ships when they ship generated constants (C and GLSL). */
 void emit_licence_comment(FILE *f)
 {
@@ -194,37 +232,7 @@ int emit_header(FILE *f, const emit_input *in)
             return CLI_BAD_INPUT;
         if (!scene_has_type(sc, "f32"))
             continue;
-        if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") ||
-            scene_has_residual_lut(sc))
-            emit_rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");
-        if (scene_has_model(sc, "f82"))
-            emit_rgb(f, prefix, "f82", p->f82, "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
-        if (scene_has_model(sc, "exact") || scene_has_model(sc, "lsk") || scene_has_model(sc, "lsk-comp") ||
-            scene_has_model(sc, "approx-conductor")) {
-            emit_rgb(f, prefix, "eta", p->eta_fit, "eta fitted to the ground truth (exact, lsk, approx-conductor)");
-            emit_rgb(f, prefix, "kappa", p->kappa_fit, "kappa fitted to the ground truth");
-        }
-        if (scene_has_model(sc, "lsk-comp")) {
-            emit_rgb(f, prefix, "lsk_a", p->lsk_a, "LSK compensation weight a (fresnel_lsk_comp_rgb)");
-            emit_rgb(f, prefix, "lsk_alpha", p->lsk_alpha, "LSK compensation exponent alpha");
-        }
-        if (scene_has_model(sc, "exact-gaussian")) {
-            emit_rgb(f, prefix, "eta_gaussian", p->eta_gauss, "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
-            emit_rgb(f, prefix, "kappa_gaussian", p->kappa_gauss, "Metzgar: kappa' in a Gaussian window");
-        }
-        if (scene_has_model(sc, "exact-point")) {
-            emit_rgb(f, prefix, "eta_point", p->eta_point, "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
-            emit_rgb(f, prefix, "kappa_point", p->kappa_point, "kappa point-sampled at the dominant wavelengths");
-        }
-        if (scene_has_model(sc, "gulbrandsen")) {
-            emit_rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
-            emit_rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen edge tint g from F0 and the fitted eta");
-        }
-        if (scene_has_model(sc, "cook-torrance")) {
-            emit_float(f, prefix, "ct_eta", p->ct_eta,
-                       "Cook-Torrance representative IOR at the green wavelength (fresnel_cook_torrance_rgb)");
-            emit_float(f, prefix, "ct_kappa", p->ct_kappa, "Cook-Torrance representative kappa");
-        }
+        emit_material_params(f, sc, p, prefix, emit_rgb, emit_float);
         for (m = 0; m < sc->model_count; m++)
             if (scene_model_lut_size(sc->models[m], NULL) &&
                 emit_lut(f, in, prefix, sc->models[m], p, in->spectra[i], g, spacing))
