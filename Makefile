@@ -23,13 +23,13 @@ MATH_FLAGS := -fno-math-errno -fno-trapping-math
 CFLAGS_LIB := $(WARN) $(OPT) $(MATH_FLAGS) $(SAN) -Iinclude -MMD -MP
 # Other renderers' algorithms, timed against ours by `fresnel bench
 # --targets`: compiled with the same math flags, so the race is fair.
-$(BUILD)/obj/gen/bench_compare.o: CFLAGS_GEN += $(MATH_FLAGS)
+$(BUILD)/obj/gen/bench/bench_compare.o: CFLAGS_GEN += $(MATH_FLAGS)
 CFLAGS_GEN := $(WARN) $(OPT) $(SAN) -D_POSIX_C_SOURCE=200809L -DFRESNEL_DATA_DIR=\"$(CURDIR)/data\" \
-              -DFRESNEL_CFLAGS='"$(CC) $(OPT) $(MATH_FLAGS) $(SAN), no LTO"' -Iinclude -Isrc -Igen -MMD -MP
+              -DFRESNEL_CFLAGS='"$(CC) $(OPT) $(MATH_FLAGS) $(SAN), no LTO"' -Iinclude -Igen -MMD -MP
 LDLIBS     := -lm
 
 LIB_SRC  := $(wildcard src/*.c)
-GEN_SRC  := $(filter-out gen/main.c,$(wildcard gen/*.c))
+GEN_SRC  := $(wildcard gen/*/*.c)
 TEST_SRC := $(wildcard tests/test_*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o)
@@ -70,7 +70,7 @@ $(BUILD)/fresnel: $(BUILD)/obj/gen/main.o $(GEN_OBJ) $(BUILD)/libfresnel.a
 
 $(BUILD)/tests/%: tests/%.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+	$(CC) $(CFLAGS_GEN) -Isrc -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
 test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example
 
@@ -135,8 +135,9 @@ FUZZ_SECONDS ?= 60
 FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
                 -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Igen -Itests/fuzz
 # Host code the targets exercise, linked into each with the whole runtime.
-FUZZ_GEN     := gen/reference.c gen/cli.c gen/load_nk.c gen/resample.c gen/scene.c \
-                gen/colour_space.c gen/colorimetry.c gen/models.c gen/fixed_params.c
+FUZZ_GEN     := gen/model/reference.c gen/cli/cli.c gen/1_spectral/load_nk.c gen/1_spectral/resample.c \
+                gen/scene/scene.c gen/1_spectral/colour_space.c gen/1_spectral/colorimetry.c \
+                gen/model/models.c gen/3_encode/fixed_params.c
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 
 .PHONY: fuzz fuzz-bins
@@ -164,7 +165,7 @@ $(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(LIB_
 	    $(FUZZ_GEN) -lm -o $@
 
 # The end-to-end generator target links `fresnel gen` and what it calls.
-FUZZ_GEN_HEADER := gen/cmd_gen.c $(filter-out gen/main.c gen/cmd_%.c gen/bench%.c gen/report%.c gen/svg.c,$(GEN_SRC))
+FUZZ_GEN_HEADER := gen/cli/cmd_gen.c $(filter-out gen/cli/cmd_%.c gen/bench/% gen/report/%,$(GEN_SRC))
 $(BUILD)/fuzz/fuzz_gen_header: tests/fuzz/fuzz_gen_header.c tests/header_check.h $(wildcard tests/fuzz/*.h) \
                                $(LIB_SRC) $(wildcard src/*.h) $(FUZZ_GEN_HEADER)
 	@mkdir -p $(@D)
@@ -203,7 +204,7 @@ $(BUILD)/obj/rc/src/%.o: src/%.c
 	$(CC) $(CFLAGS_LIB) -DFRESNEL_RANGE_CHECK -c $< -o $@
 $(BUILD)/tests/test_fixed_bounds: tests/test_fixed_bounds.c $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+	$(CC) $(CFLAGS_GEN) -Isrc -Itests -o $@ $< $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
 # Cross builds (ports/, ports/cross.sh): the fixed-point conformance program
 # run under qemu on a Cortex-M0, a Cortex-M4F and an RV32IMC, compared bit for

@@ -3,9 +3,9 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli.h"
+#include "cli/cli.h"
 #include "fresnel.h"
-#include "spectral.h"
+#include "1_spectral/spectral.h"
 
 struct command {
     const char *name;

@@ -33,7 +33,7 @@
  *   result   always in [0, 1], never NaN or Inf, for every input including
  *            NaN and Inf.
  *   Error bounds are absolute, against this project's double-precision
- *   reference of the SAME model with the same binary32 inputs (gen/reference.c),
+ *   reference of the SAME model with the same binary32 inputs (gen/model/reference.c),
  *   measured by tests/test_float_bounds.c over eta in [0.01, 100], kappa in
  *   {0} u [1e-3, 1000], incident index n1 in {1, 1.33, 1.5, 2.42} and a dense
  *   set of c including 0, 1 and points within 1e-6 of each
@@ -185,7 +185,7 @@ fresnel_rgb fresnel_lsk_rgb(fresnel_rgb n, fresnel_rgb k, float c);
 /* LSK with error compensation [LS05]:
  *   F = fresnel_lsk(n, k, c) - a c (1 - c)^alpha,   clamped to [0, 1].
  * a and alpha are derived material constants made on the host
- * (`fresnel params`, ref_lsk_fit in gen/reference.c): a = 2n (the slope of
+ * (`fresnel params`, ref_lsk_fit in gen/model/reference.c): a = 2n (the slope of
  * exact Fresnel at c = 0 for large k), alpha such that the term equals
  * exact - rescaled at c = 0.15. Where exact - rescaled >= 0 at 0.15, or the fit
  * would need alpha <= 0, the host sets a = 0: no compensation.

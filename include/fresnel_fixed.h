@@ -42,7 +42,7 @@
  *                ("block floating point", as CMSIS-DSP's arm_divide_q15
  *                returns a mantissa and a shift).
  *   A per-material "prepared" struct holds what a model needs; the host fills
- *   it (the generator, or gen/fixed_params.c from double eta and kappa), or
+ *   it (the generator, or gen/3_encode/fixed_params.c from double eta and kappa), or
  *   the *_prepare functions below fill it at run time from Q16.16 inputs.
  *
  * ERROR BOUNDS
@@ -52,7 +52,7 @@
  *   eta, kappa of au cu ag al cr fe pt ti ni zn at 450, 550 and 650 nm from
  *   data/\*.csv and the same metals under water, bk7 and water from both
  *   sides, and corners of the domain; tests/fixed_materials.h), where
- *   "reference" is the double model of gen/reference.c at the same c and
+ *   "reference" is the double model of gen/model/reference.c at the same c and
  *   parameters (model_params_round_fixed): the Q15 inputs (F0, F82, F90, r,
  *   g) as the codes given, the Q16.16 ones (p, alpha) as the codes given,
  *   and eta, kappa as the double values the prepared constants were made
@@ -153,7 +153,7 @@ typedef struct fresnel_q15_rgb {
 
 /* ------------------------------------------------------------ prepared constants
  *
- * LAYOUT (what `fresnel gen` must emit; gen/fixed_params.c is the reference
+ * LAYOUT (what `fresnel gen` must emit; gen/3_encode/fixed_params.c is the reference
  * implementation in double). For a double x > 0, its fresnel_qf is
  *     frexp(x, &k) -> f in [0.5, 1);  m = round(f * 2^31);  e = k - 31;
  *     if m == 2^31 then { m = 2^30; e += 1; }       and x = 0 is {0, 0}.

@@ -10,7 +10,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "spectral.h"
+#include "1_spectral/spectral.h"
 
 #define TM_MAX 96
 

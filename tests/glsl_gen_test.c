@@ -1,7 +1,7 @@
 /* `fresnel gen --glsl` in a real GL pipeline: a scene's generated GLSL,
  * compiled after ports/glsl/fresnel.glsl, evaluates on the GPU (OSMesa,
  * llvmpipe) to what the C runtime computes from the same manifest
- * (gen/scene_eval.c, the evaluation `fresnel curve` and the report use),
+ * (gen/scene/scene_eval.c, the evaluation `fresnel curve` and the report use),
  * for every material and model of the scene, in GLSL 3.30, ES 3.00 and
  * ES 1.00. ES 1.00 reads the LUT models from the packed RGBA8 texture that
  * `--glsl-texture` wrote (included here as FR_TEX_HEADER, the C header a
@@ -20,14 +20,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-#include "emit_glsl.h"
-#include "generator.h"
+#include "cli/cli.h"
+#include "4_emit/emit_glsl.h"
+#include "3_encode/encode.h"
 #include "glctx.h"
 #include "harness.h"
-#include "scene.h"
-#include "scene_eval.h"
-#include "spectral.h"
+#include "scene/scene.h"
+#include "scene/scene_eval.h"
+#include "1_spectral/spectral.h"
 
 #include FR_TEX_HEADER
 

@@ -1,10 +1,10 @@
-/* The timing harness (gen/bench.c) runs on a tiny batch and returns a sane
+/* The timing harness (gen/bench/bench.c) runs on a tiny batch and returns a sane
  * number. No timing assertions: speeds are measured by `make bench` and
  * `make report`, never asserted by tests. */
 #include <math.h>
 #include <string.h>
 
-#include "bench.h"
+#include "bench/bench.h"
 #include "fresnel.h"
 #include "harness.h"
 

@@ -1,4 +1,4 @@
-/* bench_speed_targets (gen/bench_targets.c), the rows of `fresnel bench
+/* bench_speed_targets (gen/bench/bench_targets.c), the rows of `fresnel bench
  * --targets` and of the report's targets table: on a tiny untimed workload
  * (runs = 0), the documented rows in their order, and the errors it
  * measures for this runtime within the documented bounds. No timing
@@ -6,14 +6,14 @@
 #include <math.h>
 #include <string.h>
 
-#include "bench_targets.h"
+#include "bench/bench_targets.h"
 #include "fresnel.h"
 #include "harness.h"
 
 int main(void)
 {
     static const char *const names[] = {"schlick", "schlick-q15", "conductor", "conductor-prepared",
-                                        "conductor-batch", "mitsuba-style", "pbrt-style", "conductor-3div",
+                                        "conductor-batch", "mitsuba-style", "pbrt-style",
                                         "lut16-f32", "lut32-f32", "lut16-q15", "lut32-q15",
                                         "lut16-linear-f32", "lut16-linear-q15", "lut16-cubic-f32", "lut16-cubic-q15", "lut32-q15-fast"};
     enum { ROWS = (int)(sizeof names / sizeof names[0]) };

@@ -1,13 +1,13 @@
-/* CIELAB and CIEDE2000 (gen/colour_difference.c): the published test data of
+/* CIELAB and CIEDE2000 (gen/1_spectral/colour_difference.c): the published test data of
  * Sharma, Wu, Dalal 2005, properties of the formula, and the Lab white of
  * every colour space of the data pack. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "colour_difference.h"
+#include "1_spectral/colour_difference.h"
 #include "harness.h"
-#include "spectral.h"
+#include "1_spectral/spectral.h"
 
 /* Table 1 of G. Sharma, W. Wu, E. N. Dalal, "The CIEDE2000 color-difference
  * formula: implementation notes, supplementary test data, and mathematical

@@ -1,5 +1,5 @@
 /* Properties on the extreme and stiff cases (the cases
- * `fresnel extremes` prints, gen/extremes.h), in every number type of the
+ * `fresnel extremes` prints, gen/report/extremes.h), in every number type of the
  * runtime (binary32, Q15, binary16 where the compiler has _Float16):
  *   - no NaN or Inf, result in [0, 1], for every input including NaN, +-Inf
  *     (Q15: every int32 cosine code, the extreme ones included);
@@ -20,13 +20,13 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "extremes.h"
+#include "report/extremes.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
-#include "models.h"
-#include "reference.h"
+#include "model/models.h"
+#include "model/reference.h"
 
 #define GRID_MAX 2100
 

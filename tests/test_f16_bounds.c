@@ -16,8 +16,8 @@
 #include "worst.h"
 #include "f16_internal.h"
 #include "fixed_materials.h"
-#include "models.h"
-#include "reference.h"
+#include "model/models.h"
+#include "model/reference.h"
 
 #define NC 15361 /* binary16 values 0x0000 .. 0x3c00: every half in [0, 1] */
 

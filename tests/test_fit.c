@@ -5,9 +5,9 @@
 #include <stdio.h>
 #include <time.h>
 
-#include "fit.h"
+#include "2_derive/fit.h"
 #include "harness.h"
-#include "reference.h"
+#include "model/reference.h"
 
 #define ANGLES 91
 #define PI 3.14159265358979323846

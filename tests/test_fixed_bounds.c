@@ -12,15 +12,15 @@
 #include <string.h>
 
 #include "fixed_materials.h"
-#include "fixed_params.h"
+#include "3_encode/fixed_params.h"
 #include "fresnel.h"
 #include "fresnel_fixed.h"
 #define FRESNEL_RANGE_CHECK /* the inline helpers in this file check too */
 #include "fixed_internal.h"
 #include "harness.h"
 #include "worst.h"
-#include "models.h"
-#include "reference.h"
+#include "model/models.h"
+#include "model/reference.h"
 
 #define ONE 32768
 

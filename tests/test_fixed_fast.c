@@ -13,13 +13,13 @@
 #include <string.h>
 
 #include "fixed_materials.h"
-#include "fixed_params.h"
-#include "generator.h"
+#include "3_encode/fixed_params.h"
+#include "3_encode/encode.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
 #include "worst.h"
-#include "models.h"
-#include "reference.h"
+#include "model/models.h"
+#include "model/reference.h"
 
 #define ONE 32768
 

@@ -8,8 +8,8 @@
 #include "fresnel.h"
 #include "grid.h"
 #include "harness.h"
-#include "models.h"
-#include "reference.h"
+#include "model/models.h"
+#include "model/reference.h"
 
 struct worst {
     double err, eta, kappa, n1, c, ref, got;

@@ -13,7 +13,7 @@ case "$B" in
 esac
 out="$B/fuzz-replay"
 mkdir -p "$out" || exit 1
-gen_obj=$(ls "$B"/obj/gen/*.o 2>/dev/null | grep -v '/main\.o$')
+gen_obj=$(ls "$B"/obj/gen/*/*.o 2>/dev/null | grep -v '/main\.o$')
 if [ -z "$gen_obj" ] || [ ! -f "$B/libfresnel.a" ]; then
     echo "FAIL fuzz replay: $B has no generator objects or libfresnel.a (run make test-bins)"
     exit 1

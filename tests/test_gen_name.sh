@@ -1,7 +1,7 @@
 #!/bin/sh
 # The scene's part of the generated identifiers: the manifest's `name` key
 # (a C identifier part, else a file:line error, exit 2, no output), or the
-# manifest's file name mapped to a valid identifier part (gen/scene.h,
+# manifest's file name mapped to a valid identifier part (gen/scene/scene.h,
 # FORMAT). Headers of two manifests with different names compile in one
 # translation unit, as C99 and as C++17; each opening comment states the
 # licence of the constants.

@@ -5,16 +5,16 @@
 #include <stdlib.h>
 
 #include "fresnel.h"
-#include "generator.h"
+#include "3_encode/encode.h"
 #include "harness.h"
-#include "reference.h"
-#include "scene_eval.h"
+#include "model/reference.h"
+#include "scene/scene_eval.h"
 
 static const char *const metals[] = {"ag", "cu", "au", "commercial_bronze", "brass", "al", "pd",
                                      "ni", "ti",  "hg", "pt", "fe", "zn", "cr", "pb", "w", NULL};
 
 /* The LUT encoding is a least-squares fit through the runtime's
- * interpolation (gen/encode_lut.c). Recomputed here independently: the
+ * interpolation (gen/3_encode/encode_lut.c). Recomputed here independently: the
  * squared error over theta every 0.05 degrees and the nodes, in double at
  * the double node values. */
 #define FIT_STEPS 1800

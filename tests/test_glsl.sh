@@ -23,7 +23,7 @@ fi
 mkdir -p "$out"
 # shellcheck disable=SC2086,SC2046
 if ! $CC -std=c99 -Wall -Wextra -Wpedantic -Werror -O1 -g $san -Iinclude -Igen -Iports/glsl/host -Itests \
-    -o "$out/glsl_test" tests/glsl_test.c ports/glsl/host/glctx.c ports/glsl/host/png.c gen/reference.c "$BUILD/libfresnel.a" \
+    -o "$out/glsl_test" tests/glsl_test.c ports/glsl/host/glctx.c ports/glsl/host/png.c gen/model/reference.c "$BUILD/libfresnel.a" \
     $(pkg-config --cflags --libs osmesa) -lm >"$out/build.log" 2>&1; then
     echo "FAIL glsl: tests/glsl_test.c does not build:"
     cat "$out/build.log"

@@ -17,7 +17,7 @@ san=
 if nm "$BUILD/libfresnel.a" 2>/dev/null | grep -q '__asan_'; then
     san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 fi
-gen_obj=$(ls "$BUILD"/obj/gen/*.o | grep -v '/main\.o$')
+gen_obj=$(ls "$BUILD"/obj/gen/*/*.o | grep -v '/main\.o$')
 cat >"$out/glsl_all_models.scene" <<'SCENE'
 # every analytic model and every LUT kind, nodes uniform in sqrt(cos theta)
 materials = au ag bk7

@@ -4,7 +4,7 @@
 # must name file:line (a missing file has no line: it names the file), exit
 # with status 2 and leave no output or temp file; a table that only partly
 # covers 360-830 nm proceeds with a file:line warning.
-# Decisions (gen/load_nk.c, gen/resample.c): a table that misses 360-830 nm
+# Decisions (gen/1_spectral/load_nk.c, gen/1_spectral/resample.c): a table that misses 360-830 nm
 # entirely is an error; lines longer than 4096 bytes and tables of more than
 # 100000 rows are errors, so a 100 MB file is rejected after reading ~3 MB.
 F="$BUILD/fresnel"

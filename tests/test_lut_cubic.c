@@ -12,7 +12,7 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
-#include "reference.h"
+#include "model/reference.h"
 
 static double cubic_ref(const double *t, int n, double c)
 {

@@ -7,11 +7,11 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "fixed_params.h"
+#include "3_encode/fixed_params.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
-#include "report.h"
-#include "scene_eval.h"
+#include "report/report.h"
+#include "scene/scene_eval.h"
 
 static const char *const metals[] = {"ag", "cu", "au", "commercial_bronze", "brass", "al", "pd",
                                      "ni", "ti", "hg", "pt", "fe", "zn", "cr", NULL};

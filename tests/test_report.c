@@ -8,7 +8,7 @@
 
 #include "fresnel.h"
 #include "harness.h"
-#include "report.h"
+#include "report/report.h"
 
 int main(void)
 {

@@ -7,10 +7,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli.h"
+#include "cli/cli.h"
 #include "harness.h"
-#include "scene.h"
-#include "spectral.h"
+#include "scene/scene.h"
+#include "1_spectral/spectral.h"
 
 static char tmp_dir[] = "/tmp/test_scene.XXXXXX";
 static int manifest_count;

@@ -1,4 +1,4 @@
-/* The generator's spectral pipeline (gen/spectral.h, steps up to the ground
+/* The generator's spectral pipeline (gen/1_spectral/spectral.h, steps up to the ground
  * truth), each step against an independent computation written here. */
 #include <fcntl.h>
 #include <math.h>
@@ -7,10 +7,10 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli.h"
+#include "cli/cli.h"
 #include "harness.h"
-#include "reference.h"
-#include "spectral.h"
+#include "model/reference.h"
+#include "1_spectral/spectral.h"
 
 #define MAX_MATERIALS 256
 

@@ -1,4 +1,4 @@
-/* The SVG writer (gen/svg.c): well-formed, deterministic output, clipping,
+/* The SVG writer (gen/report/svg.c): well-formed, deterministic output, clipping,
  * escaping, sRGB encoding. With "--write PATH" it only writes its sample plot
  * to PATH, for tests/test_svg.sh to hand to an XML parser. */
 #include <math.h>
@@ -8,7 +8,7 @@
 #include <unistd.h>
 
 #include "harness.h"
-#include "svg.h"
+#include "report/svg.h"
 
 /* The kind of figure the report draws: a 0-90 degree panel and a 70-90 zoom
  * with curves leaving the zoom's range, a log-scale scatter with labelled

@@ -6,9 +6,9 @@
 #include <stdio.h>
 
 #include "fixed_materials.h"
-#include "fixed_params.h"
-#include "models.h"
-#include "reference.h"
+#include "3_encode/fixed_params.h"
+#include "model/models.h"
+#include "model/reference.h"
 
 static void qf(const char *name, fresnel_qf v) { printf(" .%s = {%uu, %d},", name, (unsigned)v.m, (int)v.e); }
 

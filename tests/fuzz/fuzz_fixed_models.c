@@ -1,10 +1,10 @@
 /* Differential fuzzing of the Q15 fixed-point runtime (fresnel_fixed.h)
- * against the double reference (gen/reference.c).
+ * against the double reference (gen/model/reference.c).
  *
  * Inputs: cosine and reflectance codes as arbitrary int32 (the API takes
  * int32 so that a signed dot product can be passed), Q16.16 eta, kappa, p,
  * a, alpha as arbitrary int32, a material as double eta, kappa prepared on
- * the host (gen/fixed_params.c, as `fresnel gen` does), and LUTs of random
+ * the host (gen/3_encode/fixed_params.c, as `fresnel gen` does), and LUTs of random
  * nodes.
  * Oracle:
  *   - every result is a code in [0, 32768], whatever the input;
@@ -18,11 +18,11 @@
 
 #include "fuzz.h"
 
-#include "fixed_params.h"
+#include "3_encode/fixed_params.h"
 #include "fresnel.h"
 #include "fresnel_fixed.h"
-#include "models.h"
-#include "reference.h"
+#include "model/models.h"
+#include "model/reference.h"
 
 #define LSB (1.0 / 32768.0)
 

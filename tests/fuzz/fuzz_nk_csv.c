@@ -1,5 +1,5 @@
-/* Fuzzes the n,k table reader (gen/load_nk.c, with the CSV line reader every
- * data file goes through) and its resampling (gen/resample.c).
+/* Fuzzes the n,k table reader (gen/1_spectral/load_nk.c, with the CSV line reader every
+ * data file goes through) and its resampling (gen/1_spectral/resample.c).
  *
  * Oracle, for any bytes as data/<id>.csv:
  *   - no crash, no sanitizer report, no leak (LeakSanitizer under libFuzzer);
@@ -15,8 +15,8 @@
  *     anything printed is a "path:N: warning:" line. */
 #include "fuzz_parser.h"
 
-#include "cli.h"
-#include "spectral.h"
+#include "cli/cli.h"
+#include "1_spectral/spectral.h"
 
 static spectrum spec;
 

@@ -1,17 +1,17 @@
-/* Fuzzes the scene manifest parser (gen/scene.c).
+/* Fuzzes the scene manifest parser (gen/scene/scene.c).
  *
  * Oracle, for any bytes as a manifest:
  *   - no crash, no sanitizer report, no leak;
  *   - scene_load either succeeds, prints nothing, and returns a scene that
- *     keeps every rule of gen/scene.h (required keys set, ids [a-z0-9_]+ of
+ *     keeps every rule of gen/scene/scene.h (required keys set, ids [a-z0-9_]+ of
  *     at most 31 characters, no duplicates, known models, types, space and
  *     spacing, sigma and n1 in range); or returns CLI_BAD_INPUT with exactly
  *     one message "path:N: ..." naming a line of the file. */
 #include "fuzz_parser.h"
 
-#include "cli.h"
-#include "scene.h"
-#include "spectral.h"
+#include "cli/cli.h"
+#include "scene/scene.h"
+#include "1_spectral/spectral.h"
 
 static scene sc;
 

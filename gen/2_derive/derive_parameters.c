@@ -1,0 +1,95 @@
+/* Stage 2, derive: the parameters each model needs, derived from the spectral ground
+ * truth [Hof20 "Computing RGB Parameter Values From Spectral IOR Data"] and
+ * from Metzgar's Gaussian window [MS18]. */
+#include <math.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "1_spectral/colour_difference.h"
+#include "2_derive/fit.h"
+#include "2_derive/derive.h"
+#include "model/reference.h"
+
+int gen_context_load(const char *dir, const char *space, gen_context *g)
+{
+    g->dir = dir;
+    if (colorimetry_load(dir, &g->cm) || colour_space_load(dir, space, &g->cm, &g->cs))
+        return CLI_BAD_INPUT;
+    dominant_wavelengths(&g->cm, &g->cs, g->nm);
+    return 0;
+}
+
+void ground_truth_clamped(const spectrum *s, const gen_context *g, double n1, double c, double rgb[3])
+{
+    int ch;
+    ground_truth(s, &g->cm, &g->cs, n1, c, rgb);
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = ref_clamp(rgb[ch], 0.0, 1.0);
+}
+
+int derive_parameters(const gen_context *g, const char *id, double sigma, double n1, spectrum *s,
+                      material_params *p)
+{
+    double cosines[GEN_FIT_ANGLES], target[3][GEN_FIT_ANGLES], weight[3][GEN_FIT_ANGLES], rgb[3], green[3], eta[3],
+        kappa[3];
+    lab_space ls;
+    int i, ch;
+    memset(p, 0, sizeof *p);
+    if (material_lookup(g->dir, id, &p->info, "material") || spectrum_load(g->dir, id, s))
+        return CLI_BAD_INPUT;
+    p->measured_lo = s->measured_lo;
+    p->measured_hi = s->measured_hi;
+    p->n1 = n1;
+    p->sigma = sigma;
+    memcpy(p->nm, g->nm, sizeof p->nm);
+
+    ground_truth(s, &g->cm, &g->cs, n1, 1.0, p->f0_unclamped);
+    ground_truth_clamped(s, g, n1, 1.0, p->f0);
+    ground_truth_clamped(s, g, n1, 1.0 / 7.0, p->f82);
+
+    gaussian_window(s, g->nm, sigma, eta, kappa);
+    for (ch = 0; ch < 3; ch++) {
+        p->eta_gauss[ch] = eta[ch] / n1;
+        p->kappa_gauss[ch] = kappa[ch] / n1;
+    }
+    /* Hoffman's representative IOR is one sampled wavelength; green's
+     * dominant wavelength is where the eye is most sensitive. */
+    gaussian_window(s, g->nm, 0.0, eta, kappa);
+    for (ch = 0; ch < 3; ch++) {
+        p->eta_point[ch] = eta[ch] / n1;
+        p->kappa_point[ch] = kappa[ch] / n1;
+    }
+    p->ct_eta = eta[1] / n1;
+    p->ct_kappa = kappa[1] / n1;
+
+    /* The fit minimises colour error, not reflectance error: each sample's
+     * residual is weighted by how much CIEDE2000 one unit of reflectance in
+     * that channel costs there (dark curves and blue are cheap in
+     * reflectance and dear in dE). Hoffman's table measures RMS dE. */
+    lab_space_init(&ls, &g->cs);
+    for (i = 0; i < GEN_FIT_ANGLES; i++) {
+        cosines[i] = cos(i * (3.14159265358979323846 / 180.0));
+        ground_truth_clamped(s, g, n1, cosines[i], rgb);
+        for (ch = 0; ch < 3; ch++) {
+            double moved[3], lab0[3], lab1[3], h = rgb[ch] > 0.5 ? -1e-4 : 1e-4;
+            memcpy(moved, rgb, sizeof moved);
+            moved[ch] += h;
+            lab_space_lab(&ls, rgb, lab0);
+            lab_space_lab(&ls, moved, lab1);
+            target[ch][i] = rgb[ch];
+            weight[ch][i] = fmax(ciede2000(lab0, lab1) / 1e-4, 1e-3);
+        }
+    }
+    ground_truth_clamped(s, g, n1, 0.15, green); /* LSK's matching point */
+    for (ch = 0; ch < 3; ch++) {
+        fit_report rep;
+        if (fit_eta_kappa_weighted(cosines, target[ch], weight[ch], GEN_FIT_ANGLES, &p->eta_fit[ch],
+                                   &p->kappa_fit[ch], &rep))
+            return cli_error(id, "fitting eta, kappa to the ground truth failed");
+        p->fit_rms[ch] = rep.rms;
+        ref_lsk_fit_target(p->eta_fit[ch], p->kappa_fit[ch], green[ch], &p->lsk_a[ch], &p->lsk_alpha[ch]);
+        p->gulb_r[ch] = p->f0[ch];
+        p->gulb_g[ch] = ref_gulbrandsen_g(p->f0[ch], p->eta_fit[ch]);
+    }
+    return 0;
+}

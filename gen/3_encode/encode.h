@@ -1,0 +1,26 @@
+/* Stage 3 of the generator: LUT node positions and values for the runtime's
+ * table models (include/fresnel.h, src/lut.c), fitted to the ground truth. */
+#ifndef FRESNEL_ENCODE_H
+#define FRESNEL_ENCODE_H
+
+#include "2_derive/derive.h"
+
+/* LUT_GRAZING: nodes uniform in sqrt(c); LUT_UNIFORM: in c; LUT_GRAZING_PL:
+ * uniform in fresnel_fixed.h's 64-piece linear stand-in for sqrt(c), the
+ * position of fresnel_lut_q15_u16_pl_fast. */
+typedef enum lut_spacing { LUT_GRAZING, LUT_UNIFORM, LUT_GRAZING_PL } lut_spacing;
+/* cos theta of node i of n. */
+double lut_node_cos(lut_spacing spacing, int i, int n);
+/* The runtime's LUT forms: linear interpolation of the curve (fresnel_lut),
+ * of its residual from Schlick(F0) (fresnel_lut_residual), Catmull-Rom of
+ * the curve (fresnel_lut_cubic). */
+typedef enum lut_form { LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC } lut_form;
+/* table[ch * n + i]: node i of channel ch, least-squares fitted through the
+ * form's interpolation to the clamped ground truth (minus Schlick(F0) for
+ * LUT_RESIDUAL) at theta every 0.05 degrees and at the nodes; curve nodes
+ * that would leave [0, 1] are held at the bound and the others refitted.
+ * 0, or -1 when out of memory. */
+int encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing, int n,
+               lut_form form, double *table);
+
+#endif

@@ -1,0 +1,99 @@
+/* Double -> fixed-point parameters (see fixed_params.h and the LAYOUT section
+ * of include/fresnel_fixed.h). */
+#include "3_encode/fixed_params.h"
+
+#include <math.h>
+
+#include "fresnel.h"
+#include "model/reference.h"
+
+fresnel_qf fixed_qf(double x)
+{
+    fresnel_qf q = {0, 0};
+    int k;
+    double f, m;
+    if (!(x > 0.0))
+        return q;
+    f = frexp(x, &k); /* [0.5, 1) */
+    m = floor(f * 2147483648.0 + 0.5);
+    q.e = k - 31;
+    if (m >= 2147483648.0) {
+        m = 1073741824.0;
+        q.e += 1;
+    }
+    q.m = (uint32_t)m;
+    return q;
+}
+
+double fixed_qf_value(fresnel_qf x) { return ldexp((double)x.m, x.e); }
+
+int32_t fixed_q15(double x)
+{
+    return (int32_t)floor(ref_clamp(x, 0.0, 1.0) * 32768.0 + 0.5);
+}
+
+fresnel_q16 fixed_q16(double x)
+{
+    double v = floor(x * 65536.0 + 0.5);
+    return v >= 2147483647.0 ? 2147483647 : (v <= -2147483648.0 ? (fresnel_q16)-2147483647 - 1 : (fresnel_q16)v);
+}
+
+static double eta_dom(double x) { return ref_clamp(x, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX); }
+static double kappa_dom(double x)
+{
+    return x >= FRESNEL_KAPPA_TINY ? (x < FRESNEL_KAPPA_MAX ? x : FRESNEL_KAPPA_MAX) : 0.0;
+}
+
+void fixed_ior(double eta, double kappa, fresnel_q15_ior *out)
+{
+    double eh, el, d, x, hi;
+    int s;
+    eta = eta_dom(eta);
+    kappa = kappa_dom(kappa);
+    /* D = eta^2 - kappa^2 - 1 with eta^2 exact in two doubles (fma): near
+     * eta = 1, the dielectric critical-angle case, D has all its digits */
+    eh = eta * eta;
+    el = fma(eta, eta, -eh);
+    d = ((eh - 1.0) + el) - kappa * kappa;
+    /* the smallest shift whose ROUNDED a0 leaves room for c^2 in int32 */
+    for (s = 0;; s++) {
+        x = fabs(d) * ldexp(1.0, 30 - s);
+        hi = floor(x + 0.5);
+        if (s == 30 || hi + ldexp(1.0, 30 - s) <= 2147483647.0)
+            break;
+    }
+    if (hi + ldexp(1.0, 30 - s) > 2147483647.0) { /* beyond the domain: saturate */
+        hi = 2147483646.0;
+        x = hi;
+    }
+    out->shift = s;
+    out->a0 = d < 0.0 ? -(int32_t)hi : (int32_t)hi;
+    /* x - hi is exact (both near each other), and at most 1/2 */
+    out->a0_lo = (int32_t)floor((x - hi) * 1073741824.0 + 0.5) * (d < 0.0 ? -1 : 1);
+    out->b = fixed_qf(2.0 * eta * kappa);
+    out->n4 = fixed_qf((eta * eta + kappa * kappa) * (eta * eta + kappa * kappa));
+    out->t1_inv = fixed_qf(((eta + 1.0) * (eta + 1.0) + kappa * kappa) / (4.0 * eta));
+    out->inv_eta2 = fixed_qf(1.0 / (eta * eta));
+}
+
+void fixed_nk(double n, double k, fresnel_q15_nk *out)
+{
+    n = eta_dom(n);
+    k = kappa_dom(k);
+    out->n = fixed_qf(n);
+    out->nk2 = fixed_qf(n * n + k * k);
+}
+
+void fixed_lsk(double n, double k, double a, double alpha, fresnel_q15_lsk *out)
+{
+    out->f0 = (uint32_t)floor(ref_f0_from_ior(n, k) * 1073741824.0 + 0.5);
+    out->a = fixed_qf(ref_clamp(a, 0.0, FRESNEL_A_MAX));
+    out->alpha = fixed_q16(ref_clamp(alpha, 0.0, FRESNEL_ALPHA_MAX));
+}
+
+int32_t fixed_f82_a_q12(int32_t f0, int32_t f82)
+{
+    double F0 = (f0 < 0 ? 0 : (f0 > 32768 ? 32768 : f0)) / 32768.0;
+    double F82 = (f82 < 0 ? 0 : (f82 > 32768 ? 32768 : f82)) / 32768.0;
+    return (int32_t)lround(4096.0 * ((823543.0 / 46656.0) * (F0 - F82) + (49.0 / 6.0) * (1.0 - F0)));
+}

@@ -1,0 +1,39 @@
+/* Stage 4: emitting a scene's header (C: emit_header.c, Q15: emit_fixed.c, GLSL: emit_glsl.c). */
+#ifndef FRESNEL_EMIT_H
+#define FRESNEL_EMIT_H
+
+#include <stdio.h>
+
+#include "3_encode/encode.h"
+#include "scene/scene.h"
+
+typedef struct emit_input {
+    const scene *sc;
+    const char *name;          /* C identifier part: fresnel_<name>_<material>_<param> */
+    const char *manifest_name; /* for the leading comment */
+    const char *manifest_path; /* for errors: path:line */
+    const gen_context *g;
+    const material_params *params; /* one per scene material, in order */
+    spectrum *const *spectra;      /* the same */
+    int glsl; /* 0: C header for include/fresnel.h; 1: GLSL for ports/glsl/fresnel.glsl */
+} emit_input;
+
+int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
+void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
+/* One material's float parameters for the scene's models, through the back
+ * end's syntax for an RGB triple and a scalar. */
+typedef void (*emit_rgb_fn)(FILE *f, const char *prefix, const char *name, const double v[3], const char *why);
+typedef void (*emit_float_fn)(FILE *f, const char *prefix, const char *name, double v, const char *why);
+void emit_material_params(FILE *f, const scene *sc, const material_params *p, const char *prefix, emit_rgb_fn rgb,
+                          emit_float_fn flt);
+/* A LUT model's table for one material (3n values, malloc'd; NULL when out
+ * of memory) and the model's name as a C identifier part (lut16-residual ->
+ * lut16_residual) in name[32]; *n and *form describe the table. */
+double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
+                       lut_spacing spacing, int *n, lut_form *form, char name[32]);
+
+/* One material's Q1.15 constants and tables (emit_fixed.c); prefix is
+ * fresnel_<scene>_<material>. */
+int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix);
+
+#endif

@@ -1,0 +1,295 @@
+/* Stage 4, emit, fixed point: a scene's constants and tables in the formats of
+ * include/fresnel_fixed.h (its LAYOUT section), converted from the derived
+ * double parameters by gen/3_encode/fixed_params.c.
+ *
+ * Every value is checked against its C type and the range the runtime
+ * documents before it is written; one that does not fit stops the run with
+ * the manifest's file:line (the caller removes the partial output), because
+ * a wrapped or clamped constant compiles into a silently wrong reflectance.
+ * Structs are written with positional initialisers in declaration order
+ * (C++ before C++20 has no designated initialisers); a comment above each
+ * table names the fields. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "4_emit/emit.h"
+#include "3_encode/fixed_params.h"
+#include "model/reference.h"
+#include "scene/scene.h"
+
+/* Where a value that does not fit is reported, and whether one did. */
+typedef struct fx_out {
+    FILE *f;
+    const emit_input *in;
+    int bad;
+} fx_out;
+
+/* v must be an integer in [lo, hi]; else report it once (the first). */
+static long fx_check(fx_out *o, double v, double lo, double hi, const char *type, const char *what, const char *id)
+{
+    if (!(v >= lo && v <= hi && v == floor(v))) {
+        if (!o->bad) {
+            char where[1100];
+            snprintf(where, sizeof where, "%s:%d", o->in->manifest_path, o->in->sc->models_line);
+            cli_error(where, "%s of %s is %.17g, which does not fit %s [%.17g, %.17g]; no header written", what, id, v,
+                      type, lo, hi);
+        }
+        o->bad = 1;
+        return 0;
+    }
+    return (long)v;
+}
+
+/* The value a constant derives from must be finite (NaN or an infinity
+ * would turn into an arbitrary code). */
+static void fx_finite(fx_out *o, double v, const char *what, const char *id)
+{
+    if (!(v - v == 0.0))
+        fx_check(o, v, -1e300, 1e300, "a finite number", what, id);
+}
+
+/* A qf as the LAYOUT defines it: {0, 0}, or m in [2^30, 2^31). */
+static void put_qf(fx_out *o, fresnel_qf q, const char *what, const char *id)
+{
+    if (q.m != 0 || q.e != 0)
+        fx_check(o, (double)q.m, 1073741824.0, 2147483647.0, "fresnel_qf.m [2^30, 2^31)", what, id);
+    fprintf(o->f, "{%lu, %ld}", (unsigned long)q.m, (long)q.e);
+}
+
+/* A reflectance-like value in Q1.15: round(v 32768) in [0, hi]. */
+static long q15_code(fx_out *o, double v, long hi, const char *what, const char *id)
+{
+    fx_finite(o, v, what, id);
+    return fx_check(o, v - v == 0.0 ? floor(v * 32768.0 + 0.5) : 0.0, 0.0, (double)hi, "Q1.15 [0, one]", what, id);
+}
+
+static void emit_q15_rgb(fx_out *o, const char *prefix, const char *name, const double v[3], long hi,
+                         const char *why)
+{
+    char id[160];
+    long q[3];
+    int ch;
+    snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
+    for (ch = 0; ch < 3; ch++)
+        q[ch] = q15_code(o, v[ch], hi, why, id);
+    fprintf(o->f, "/* %s, Q1.15 (r, g, b) */\nstatic const fresnel_q15_rgb %s FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
+            why, id, q[0], q[1], q[2]);
+}
+
+/* eta, kappa are clamped to fresnel.h's domain by fixed_ior, as the binary32
+ * runtime clamps them. */
+static void put_ior(fx_out *o, double eta, double kappa, const char *id)
+{
+    fresnel_q15_ior q;
+    fx_finite(o, eta, "eta", id);
+    fx_finite(o, kappa, "kappa", id);
+    fixed_ior(eta, kappa, &q);
+    fx_check(o, q.shift, 0.0, 30.0, "shift [0, 30]", "the ior's shift", id);
+    fx_check(o, (double)q.a0 + ldexp(1.0, 30 - (q.shift < 0 || q.shift > 30 ? 0 : (int)q.shift)),
+             -2147483647.0 - 1.0, 2147483647.0, "int32_t (a0 + 2^(30 - shift))", "the ior's a0", id);
+    fx_check(o, q.a0_lo, -536870912.0, 536870912.0, "a0_lo [-2^29, 2^29]", "the ior's a0_lo", id);
+    fprintf(o->f, "{%ld, %ld, %ld, ", (long)q.a0, (long)q.a0_lo, (long)q.shift);
+    put_qf(o, q.b, "the ior's b", id);
+    fputs(", ", o->f);
+    put_qf(o, q.n4, "the ior's n4", id);
+    fputs(", ", o->f);
+    put_qf(o, q.t1_inv, "the ior's t1_inv", id);
+    fputs(", ", o->f);
+    put_qf(o, q.inv_eta2, "the ior's inv_eta2", id);
+    fputc('}', o->f);
+}
+
+#define IOR_FIELDS "fields a0, a0_lo, shift, b, n4, t1_inv, inv_eta2 (fresnel_fixed.h LAYOUT)"
+
+static void emit_ior3(fx_out *o, const char *prefix, const char *name, const double *eta, const double *kappa,
+                      const char *why)
+{
+    char id[160];
+    int ch;
+    snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
+    fprintf(o->f, "/* %s: prepared complex index per channel (fresnel_conductor_q15_rgb);\n * " IOR_FIELDS " */\n"
+                  "static const fresnel_q15_ior %s[3] FRESNEL_GEN_UNUSED = {\n",
+            why, id);
+    for (ch = 0; ch < 3; ch++) {
+        fputs("    ", o->f);
+        put_ior(o, eta[ch], kappa[ch], id);
+        fputs(ch < 2 ? ",\n" : "\n};\n", o->f);
+    }
+}
+
+static void emit_nk3(fx_out *o, const char *prefix, const material_params *p)
+{
+    char id[160];
+    int ch;
+    snprintf(id, sizeof id, "%s_nk_q15", prefix);
+    fprintf(o->f, "/* approximate conductor on the fitted eta, kappa (fresnel_approx_conductor_q15_rgb);\n"
+                  " * fields n, nk2 */\n"
+                  "static const fresnel_q15_nk %s[3] FRESNEL_GEN_UNUSED = {\n",
+            id);
+    for (ch = 0; ch < 3; ch++) {
+        fresnel_q15_nk q;
+        fx_finite(o, p->eta_fit[ch], "eta", id);
+        fx_finite(o, p->kappa_fit[ch], "kappa", id);
+        fixed_nk(p->eta_fit[ch], p->kappa_fit[ch], &q);
+        fputs("    {", o->f);
+        put_qf(o, q.n, "n", id);
+        fputs(", ", o->f);
+        put_qf(o, q.nk2, "nk2", id);
+        fputs(ch < 2 ? "},\n" : "}\n};\n", o->f);
+    }
+}
+
+static void emit_lsk3(fx_out *o, const char *prefix, const char *name, const material_params *p, int comp)
+{
+    char id[160];
+    int ch;
+    snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
+    fprintf(o->f, "/* LSK%s on the fitted eta, kappa (fresnel_lsk%s_q15_rgb); fields f0, a, alpha */\n"
+                  "static const fresnel_q15_lsk %s[3] FRESNEL_GEN_UNUSED = {\n",
+            comp ? " with compensation" : " rescaled", comp ? "_comp" : "", id);
+    for (ch = 0; ch < 3; ch++) {
+        fresnel_q15_lsk q;
+        double f0;
+        fx_finite(o, p->eta_fit[ch], "eta", id);
+        fx_finite(o, p->kappa_fit[ch], "kappa", id);
+        if (comp) {
+            fx_finite(o, p->lsk_a[ch], "the compensation weight a", id);
+            fx_finite(o, p->lsk_alpha[ch], "the compensation exponent alpha", id);
+        }
+        fixed_lsk(p->eta_fit[ch], p->kappa_fit[ch], comp ? p->lsk_a[ch] : 0.0, comp ? p->lsk_alpha[ch] : 0.0, &q);
+        f0 = floor(ref_f0_from_ior(p->eta_fit[ch], p->kappa_fit[ch]) * 1073741824.0 + 0.5);
+        fx_check(o, f0 == f0 ? f0 : -1.0, 0.0, 1073741824.0, "Q30 F0 [0, 2^30]", "LSK f0", id);
+        fx_check(o, q.alpha, 0.0, FRESNEL_Q16_ALPHA_MAX, "Q16.16 alpha [0, 1000]", "LSK alpha", id);
+        fprintf(o->f, "    {%lu, ", (unsigned long)q.f0);
+        put_qf(o, q.a, "LSK a", id);
+        fprintf(o->f, ", %ld%s", (long)q.alpha, ch < 2 ? "},\n" : "}\n};\n");
+    }
+}
+
+static int emit_lut_q15(fx_out *o, const char *prefix, const char *model, const material_params *p,
+                        const spectrum *s, const gen_context *g, lut_spacing spacing)
+{
+    FILE *f = o->f;
+    int residual, n, i, frac = 0, fits;
+    lut_form form;
+    char name[32], id[160];
+    double *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
+    if (!t)
+        return cli_oom("fresnel gen");
+    snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
+    residual = form == LUT_RESIDUAL;
+    if (residual) {
+        /* the most fraction bits, in fresnel_fixed.h's [14, 30], that keep
+         * every rounded node inside int16_t; encode_lut holds the nodes to
+         * [-1, 1], which frac 14 always holds */
+        for (frac = 30; frac > 14; frac--) {
+            for (fits = 1, i = 0; i < 3 * n && fits; i++) {
+                double v = floor(t[i] * ldexp(1.0, frac) + 0.5);
+                fits = v >= -32768.0 && v <= 32767.0;
+            }
+            if (fits)
+                break;
+        }
+        fprintf(f, "/* %s in Q1.15: residual (GT - Schlick(F0)) * 2^%d as int16. Evaluate with\n"
+                   " * fresnel_lut_%sresidual_q15_s16_rgb(f0_q15, table, %d, %s_%s_frac, c). */\n"
+                   "enum { %s_%s_frac = %d };\n"
+                   "static const int16_t %s[%d] FRESNEL_GEN_UNUSED = {",
+                model, frac, spacing == LUT_UNIFORM ? "linear_" : "", n, prefix, name, prefix, name, frac, id,
+                3 * n);
+    } else {
+        if (spacing == LUT_GRAZING_PL)
+            fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_fixed.h's\n"
+                       " * piecewise-linear sqrt(c). Evaluate per channel with\n"
+                       " * fresnel_lut_q15_u16_pl_fast(table + ch * %d, %d, c). */\n"
+                       "static const uint16_t %s[%d] FRESNEL_GEN_UNUSED = {",
+                    model, n, n, id, 3 * n);
+        else
+            fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1). Evaluate with\n"
+                       " * fresnel_lut_%sq15_u16_rgb(table, %d, c). */\n"
+                       "static const uint16_t %s[%d] FRESNEL_GEN_UNUSED = {",
+                    model, form == LUT_CUBIC ? "cubic_" : (spacing == LUT_UNIFORM ? "linear_" : ""), n, id, 3 * n);
+    }
+    for (i = 0; i < 3 * n; i++) {
+        long v;
+        fx_finite(o, t[i], "a LUT node", id);
+        if (residual)
+            v = fx_check(o, t[i] - t[i] == 0.0 ? floor(t[i] * ldexp(1.0, frac) + 0.5) : 0.0, -32768.0, 32767.0,
+                         "int16_t", "a residual LUT node", id);
+        else
+            v = q15_code(o, t[i], 32768, "a LUT node", id);
+        fprintf(f, "%s%ld%s", i % 12 == 0 ? "\n    " : " ", v, i + 1 < 3 * n ? "," : "");
+    }
+    fprintf(f, "\n};\n");
+    free(t);
+    return 0;
+}
+
+int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefix)
+{
+    const scene *sc = in->sc;
+    const material_params *p = &in->params[mi];
+    lut_spacing spacing = scene_lut_spacing(sc);
+    int m, residual_lut = 0;
+    fx_out o;
+    o.f = f;
+    o.in = in;
+    o.bad = 0;
+    for (m = 0; m < sc->model_count; m++) {
+        int form = LUT_PLAIN;
+        if (scene_model_lut_size(sc->models[m], &form) && form == LUT_RESIDUAL)
+            residual_lut = 1;
+    }
+    if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") || residual_lut)
+        emit_q15_rgb(&o, prefix, "f0", p->f0, 32768, "F0");
+    if (scene_has_model(sc, "f82")) {
+        int ch;
+        char id[160];
+        long a[3];
+        emit_q15_rgb(&o, prefix, "f82", p->f82, 32768, "F82");
+        snprintf(id, sizeof id, "%s_f82_a_q12", prefix);
+        for (ch = 0; ch < 3; ch++) {
+            fx_finite(&o, p->f0[ch], "F0", id);
+            fx_finite(&o, p->f82[ch], "F82", id);
+            /* fresnel_f82_q15_fast documents |a_q12| <= 73000 */
+            a[ch] = fx_check(&o, (double)fixed_f82_a_q12(fixed_q15(p->f0[ch]), fixed_q15(p->f82[ch])), -73000.0,
+                             73000.0, "a_q12 [-73000, 73000]", "F82's a", id);
+        }
+        fprintf(f, "/* F82's a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) times 4096, from the Q1.15 F0 and F82\n"
+                   " * (fresnel_f82_q15_fast(f0.r, a[0], c)) */\n"
+                   "static const int32_t %s[3] FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
+                id, a[0], a[1], a[2]);
+    }
+    if (scene_has_model(sc, "gulbrandsen")) {
+        emit_q15_rgb(&o, prefix, "gulbrandsen_r", p->gulb_r, 32768, "Gulbrandsen r");
+        emit_q15_rgb(&o, prefix, "gulbrandsen_g", p->gulb_g, 32768, "Gulbrandsen g");
+    }
+    if (scene_has_model(sc, "lsk"))
+        emit_lsk3(&o, prefix, "lsk", p, 0);
+    if (scene_has_model(sc, "lsk-comp"))
+        emit_lsk3(&o, prefix, "lsk_comp", p, 1);
+    if (scene_has_model(sc, "exact"))
+        emit_ior3(&o, prefix, "ior", p->eta_fit, p->kappa_fit, "eta, kappa fitted to the ground truth");
+    if (scene_has_model(sc, "exact-gaussian"))
+        emit_ior3(&o, prefix, "ior_gaussian", p->eta_gauss, p->kappa_gauss, "Metzgar's Gaussian-window eta', kappa'");
+    if (scene_has_model(sc, "exact-point"))
+        emit_ior3(&o, prefix, "ior_point", p->eta_point, p->kappa_point, "eta, kappa point-sampled");
+    if (scene_has_model(sc, "approx-conductor"))
+        emit_nk3(&o, prefix, p);
+    if (scene_has_model(sc, "cook-torrance")) {
+        char id[160];
+        snprintf(id, sizeof id, "%s_ct_ior_q15", prefix);
+        fprintf(f, "/* Cook-Torrance's representative IOR (fresnel_cook_torrance_q15_rgb);\n * " IOR_FIELDS " */\n"
+                   "static const fresnel_q15_ior %s FRESNEL_GEN_UNUSED = ",
+                id);
+        put_ior(&o, p->ct_eta, p->ct_kappa, id);
+        fputs(";\n", f);
+    }
+    for (m = 0; m < sc->model_count && !o.bad; m++)
+        if (scene_model_lut_size(sc->models[m], NULL) &&
+            emit_lut_q15(&o, prefix, sc->models[m], p, in->spectra[mi], in->g, spacing))
+            return CLI_BAD_INPUT;
+    return o.bad ? CLI_BAD_INPUT : 0;
+}

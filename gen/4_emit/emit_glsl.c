@@ -1,0 +1,377 @@
+/* `fresnel gen --glsl` (see emit_glsl.h). One GLSL file serves every dialect
+ * of ports/glsl/fresnel.glsl: LUT tables are const arrays where
+ * FRESNEL_LUT_ARRAYS is 1 (GLSL ES 3.00+, desktop 1.30+) and strips of a
+ * packed RGBA8 texture where it is 0 (GLSL ES 1.00: no array constructors,
+ * constant-index-only arrays in fragment shaders, 16 uniform vectors
+ * guaranteed, float textures optional). Output depends only on the manifest
+ * and the data. */
+#include "4_emit/emit_glsl.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+
+#define WHERE "fresnel gen"
+
+/* A binary32 literal that reads back to the same float, without suffix
+ * (GLSL ES 1.00 has none): 9 significant digits, always a '.' or exponent. */
+static void put_float(FILE *f, double v)
+{
+    char buf[40];
+    snprintf(buf, sizeof buf, "%.9g", (double)(float)v);
+    fputs(buf, f);
+    if (!strpbrk(buf, ".e"))
+        fputs(".0", f);
+}
+
+/* Highp constants: the highp functions (conductor, Gulbrandsen, ...) then
+ * get binary32 parameters even in a mediump-default shader. */
+static void emit_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
+{
+    fprintf(f, "/* %s */\nconst FRESNEL_HIGHP vec3 %s_%s = vec3(", why, prefix, name);
+    put_float(f, v[0]);
+    fputs(", ", f);
+    put_float(f, v[1]);
+    fputs(", ", f);
+    put_float(f, v[2]);
+    fputs(");\n", f);
+}
+
+static void emit_float(FILE *f, const char *prefix, const char *name, double v, const char *why)
+{
+    fprintf(f, "/* %s */\nconst FRESNEL_HIGHP float %s_%s = ", why, prefix, name);
+    put_float(f, v);
+    fputs(";\n", f);
+}
+
+/* GLSL reserves identifiers containing "__"; fresnel_<scene>_<material>_...
+ * has one when a part starts or ends with '_' or contains "__". */
+static int glsl_part_ok(const char *s)
+{
+    size_t n = strlen(s);
+    return n > 0 && s[0] != '_' && s[n - 1] != '_' && !strstr(s, "__");
+}
+
+int emit_glsl_check(const scene *sc, const char *manifest, const char *name)
+{
+    char where[1100];
+    int i;
+    if (scene_lut_spacing(sc) == LUT_GRAZING_PL) {
+        snprintf(where, sizeof where, "%s:%d", manifest, sc->lut_spacing_line ? sc->lut_spacing_line : 1);
+        return cli_error(where,
+                         "expected lut_spacing grazing or uniform with --glsl: grazing-pl tables are read by "
+                         "fresnel_lut_q15_u16_pl_fast, which ports/glsl/fresnel.glsl does not have");
+    }
+    if (!glsl_part_ok(name))
+        return cli_error(manifest,
+                         "expected a file name giving a scene name without leading, trailing or double '_' "
+                         "with --glsl (GLSL reserves identifiers containing \"__\"), got '%s'", name);
+    snprintf(where, sizeof where, "%s:%d", manifest, sc->materials_line);
+    for (i = 0; i < sc->material_count; i++)
+        if (!glsl_part_ok(sc->materials[i]))
+            return cli_error(where,
+                             "expected material ids without leading, trailing or double '_' with --glsl "
+                             "(GLSL reserves identifiers containing \"__\"), got '%s'", sc->materials[i]);
+    return 0;
+}
+
+long emit_glsl_node_code(double v)
+{
+    double q = floor((double)(float)v * 32768.0 + 0.5) + 16384.0;
+    return q >= 0.0 && q <= 65535.0 ? (long)q : -1;
+}
+
+/* One LUT of one material and its place in the texture. */
+typedef struct glsl_lut {
+    int material, model, n;
+    lut_form form;
+    char name[32];
+    double *t; /* 3n nodes */
+    int x0, row; /* first texel and row in the texture */
+} glsl_lut;
+
+typedef struct glsl_layout {
+    glsl_lut *luts;
+    int count;
+    int block, width, height; /* texels per strip slot, texture size */
+} glsl_layout;
+
+static int pow2_at_least(int v)
+{
+    int p = 1;
+    while (p < v)
+        p *= 2;
+    return p;
+}
+
+static void layout_free(glsl_layout *l)
+{
+    int i;
+    for (i = 0; i < l->count; i++)
+        free(l->luts[i].t);
+    free(l->luts);
+    l->luts = NULL;
+    l->count = 0;
+}
+
+/* Every LUT of the scene, material-major, one per strip slot; slots of
+ * `block` texels (a power of two >= 3 n_max) in columns of `height` rows,
+ * the number of columns the smallest power of two that keeps the texture no
+ * taller than wide. Power-of-two sizes: no NPOT restrictions in ES 2.0. */
+static int layout_build(const emit_input *in, glsl_layout *l)
+{
+    const scene *sc = in->sc;
+    lut_spacing spacing = scene_lut_spacing(sc);
+    int i, m, nmax = 0, cols = 1, rows;
+    memset(l, 0, sizeof *l);
+    l->luts = calloc((size_t)sc->material_count * (size_t)sc->model_count + 1, sizeof *l->luts);
+    if (!l->luts)
+        return cli_error(WHERE, "out of memory");
+    for (i = 0; i < sc->material_count; i++)
+        for (m = 0; m < sc->model_count; m++) {
+            glsl_lut *u = &l->luts[l->count];
+            if (!scene_model_lut_size(sc->models[m], NULL))
+                continue;
+            u->material = i;
+            u->model = m;
+            u->t = emit_lut_table(sc->models[m], &in->params[i], in->spectra[i], in->g, spacing, &u->n, &u->form,
+                                  u->name);
+            if (!u->t) {
+                layout_free(l);
+                return cli_error(WHERE, "out of memory");
+            }
+            l->count++;
+            if (u->n > nmax)
+                nmax = u->n;
+        }
+    if (l->count == 0)
+        return 0;
+    l->block = pow2_at_least(3 * nmax);
+    while ((rows = (l->count + cols - 1) / cols) > cols * l->block)
+        cols *= 2;
+    l->height = pow2_at_least(rows);
+    l->width = cols * l->block;
+    for (i = 0; i < l->count; i++) {
+        l->luts[i].x0 = (i / l->height) * l->block;
+        l->luts[i].row = i % l->height;
+    }
+    return 0;
+}
+
+static const glsl_lut *layout_find(const glsl_layout *l, int material, int model)
+{
+    int i;
+    for (i = 0; i < l->count; i++)
+        if (l->luts[i].material == material && l->luts[i].model == model)
+            return &l->luts[i];
+    return NULL;
+}
+
+/* The GLSL function name part of a model: lsk-comp -> lsk_comp. */
+static void model_ident(const char *model, char out[32])
+{
+    int i;
+    for (i = 0; model[i] && i < 31; i++)
+        out[i] = model[i] == '-' ? '_' : model[i];
+    out[i] = '\0';
+}
+
+static void emit_lut_data(FILE *f, const char *scene_prefix, const char *prefix, const glsl_lut *u,
+                          const glsl_layout *l, lut_spacing spacing)
+{
+    int i;
+    fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
+               " * fitted to the ground truth through %s interpolation. */\n",
+            u->name, u->n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
+            u->form == LUT_CUBIC ? "Catmull-Rom" : "linear");
+    fprintf(f, "#if FRESNEL_LUT_ARRAYS\nconst FRESNEL_HIGHP float %s_%s[%d] = float[%d](", prefix, u->name, 3 * u->n,
+            3 * u->n);
+    for (i = 0; i < 3 * u->n; i++) {
+        fputs(i % 6 == 0 ? "\n    " : " ", f);
+        put_float(f, u->t[i]);
+        if (i + 1 < 3 * u->n)
+            fputc(',', f);
+    }
+    fprintf(f, "\n);\n#else\n/* strip in %s_lut_texture: texels %d..%d of row %d */\nconst FRESNEL_HIGHP vec3 %s_%s_strip = vec3(",
+            scene_prefix, u->x0, u->x0 + 3 * u->n - 1, u->row, prefix, u->name);
+    put_float(f, (u->x0 + 0.5) / l->width);
+    fputs(", ", f);
+    put_float(f, (u->row + 0.5) / l->height);
+    fputs(", ", f);
+    put_float(f, 1.0 / l->width);
+    fputs(");\n#endif\n", f);
+}
+
+/* vec3 <prefix>_<model>_rgb(c): the model for this material, as
+ * gen/scene/scene_eval.c evaluates it with the C runtime. */
+static void emit_model_function(FILE *f, const char *scene_prefix, const char *prefix, const char *model,
+                                const glsl_lut *u, lut_spacing spacing)
+{
+    char id[32];
+    model_ident(model, id);
+    fprintf(f, "vec3 %s_%s_rgb(FRESNEL_HIGHP float c)\n{\n", prefix, id);
+    if (u) {
+        const char *kind = u->form == LUT_CUBIC ? "cubic_" : (u->form == LUT_RESIDUAL ? "residual_" : "");
+        const char *lin = spacing == LUT_UNIFORM ? "linear_" : "";
+        char f0[192] = "";
+        if (u->form == LUT_RESIDUAL)
+            snprintf(f0, sizeof f0, "%s_f0, ", prefix);
+        fprintf(f, "#if FRESNEL_LUT_ARRAYS\n    return FRESNEL_LUT_%s%sARRAY_RGB(%s%s_%s, %d, c);\n#else\n",
+                spacing == LUT_UNIFORM ? "LINEAR_" : "",
+                u->form == LUT_CUBIC ? "CUBIC_" : (u->form == LUT_RESIDUAL ? "RESIDUAL_" : ""), f0, prefix, u->name,
+                u->n);
+        fprintf(f, "    return fresnel_lut_%s%spacked_rgb(%s%s_lut_texture, %s_%s_strip, %d.0, c);\n#endif\n}\n", lin,
+                kind, f0, scene_prefix, prefix, u->name, u->n);
+        return;
+    }
+    if (!strcmp(model, "schlick"))
+        fprintf(f, "    return fresnel_schlick_rgb(%s_f0, c);\n", prefix);
+    else if (!strcmp(model, "lsk"))
+        fprintf(f, "    return fresnel_lsk_rgb(%s_eta, %s_kappa, c);\n", prefix, prefix);
+    else if (!strcmp(model, "lsk-comp"))
+        fprintf(f, "    return fresnel_lsk_comp_rgb(%s_eta, %s_kappa, %s_lsk_a, %s_lsk_alpha, c);\n", prefix, prefix,
+                prefix, prefix);
+    else if (!strcmp(model, "f82"))
+        fprintf(f, "    return fresnel_f82_rgb(%s_f0, %s_f82, c);\n", prefix, prefix);
+    else if (!strcmp(model, "gulbrandsen"))
+        fprintf(f, "    return fresnel_gulbrandsen_rgb(%s_gulbrandsen_r, %s_gulbrandsen_g, c);\n", prefix, prefix);
+    else if (!strcmp(model, "cook-torrance"))
+        fprintf(f, "    return fresnel_cook_torrance_rgb(%s_f0, %s_ct_eta, %s_ct_kappa, c);\n", prefix, prefix, prefix);
+    else if (!strcmp(model, "exact"))
+        fprintf(f, "    return fresnel_conductor_rgb(%s_eta, %s_kappa, c);\n", prefix, prefix);
+    else if (!strcmp(model, "exact-gaussian"))
+        fprintf(f, "    return fresnel_conductor_rgb(%s_eta_gaussian, %s_kappa_gaussian, c);\n", prefix, prefix);
+    else if (!strcmp(model, "exact-point"))
+        fprintf(f, "    return fresnel_conductor_rgb(%s_eta_point, %s_kappa_point, c);\n", prefix, prefix);
+    else /* approx-conductor: the manifest admits no other name */
+        fprintf(f, "    return fresnel_approx_conductor_rgb(%s_eta, %s_kappa, c);\n", prefix, prefix);
+    fputs("}\n", f);
+}
+
+static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, const char *guard)
+{
+    unsigned char *px = calloc((size_t)l->width * (size_t)l->height * 4, 1);
+    size_t i, total = (size_t)l->width * (size_t)l->height * 4;
+    int k, ch, j;
+    if (!px)
+        return cli_error(WHERE, "out of memory");
+    for (k = 0; k < l->count; k++) {
+        const glsl_lut *u = &l->luts[k];
+        for (ch = 0; ch < 3; ch++)
+            for (j = 0; j < u->n; j++) {
+                long a = emit_glsl_node_code(u->t[ch * u->n + j]);
+                long b = emit_glsl_node_code(u->t[ch * u->n + (j + 1 < u->n ? j + 1 : j)]);
+                unsigned char *t = px + 4 * ((size_t)u->row * (size_t)l->width + (size_t)(u->x0 + ch * u->n + j));
+                if (a < 0 || b < 0) {
+                    free(px);
+                    return cli_error(WHERE,
+                                     "%s %s: a LUT node (%g) outside the packed texture's range [-0.5, 1.5)",
+                                     in->params[u->material].info.id, in->sc->models[u->model],
+                                     a < 0 ? u->t[ch * u->n + j] : u->t[ch * u->n + j + 1]);
+                }
+                t[0] = (unsigned char)(a >> 8);
+                t[1] = (unsigned char)(a & 255);
+                t[2] = (unsigned char)(b >> 8);
+                t[3] = (unsigned char)(b & 255);
+            }
+    }
+    fprintf(f, "/* LUT texture of the Fresnel scene \"%s\" for its GLSL (fresnel gen %s --glsl from %s).\n"
+               " * Do not edit: regenerate. Upload as the sampler uniform fresnel_%s_lut_texture:\n"
+               " *   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, FRESNEL_%s_LUT_TEXTURE_WIDTH,\n"
+               " *                FRESNEL_%s_LUT_TEXTURE_HEIGHT, 0, GL_RGBA, GL_UNSIGNED_BYTE, fresnel_%s_lut_texture);\n"
+               " * with GL_NEAREST filters, GL_CLAMP_TO_EDGE and no mipmaps (rows bottom to top, as GL\n"
+               " * reads them). Needed where the GLSL has FRESNEL_LUT_ARRAYS 0 (GLSL ES 1.00, desktop\n"
+               " * 1.10 and 1.20). Texel layout and node code: fresnel_lut_packed_rgb in\n"
+               " * ports/glsl/fresnel.glsl. */\n",
+            in->name, GEN_VERSION, in->manifest_name, in->name, guard, guard, in->name);
+    fprintf(f, "#ifndef FRESNEL_SCENE_%s_LUT_TEXTURE_H\n#define FRESNEL_SCENE_%s_LUT_TEXTURE_H\n\n", guard, guard);
+    fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
+               "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n\n");
+    fprintf(f, "#define FRESNEL_%s_LUT_TEXTURE_WIDTH %d\n#define FRESNEL_%s_LUT_TEXTURE_HEIGHT %d\n", guard, l->width,
+            guard, l->height);
+    fprintf(f, "static const unsigned char fresnel_%s_lut_texture[%d * %d * 4] FRESNEL_GEN_UNUSED = {", in->name,
+            l->height, l->width);
+    for (i = 0; i < total; i++)
+        fprintf(f, "%s%u%s", i % 16 == 0 ? "\n    " : " ", (unsigned)px[i], i + 1 < total ? "," : "");
+    fprintf(f, "\n};\n\n#endif\n");
+    free(px);
+    return 0;
+}
+
+int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
+{
+    const scene *sc = in->sc;
+    const gen_context *g = in->g;
+    lut_spacing spacing = scene_lut_spacing(sc);
+    glsl_layout l;
+    char guard[96], scene_prefix[96];
+    int i, m, status;
+    for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
+        guard[i] = (char)toupper((unsigned char)in->name[i]);
+    guard[i] = '\0';
+    snprintf(scene_prefix, sizeof scene_prefix, "fresnel_%s", in->name);
+    if ((status = layout_build(in, &l)))
+        return status;
+    if (tex && l.count == 0) {
+        layout_free(&l);
+        return cli_error(WHERE, "--glsl-texture: scene %s has no LUT model, so no texture to write", in->manifest_name);
+    }
+
+    fprintf(f, "/* Fresnel scene \"%s\", generated by fresnel gen %s from %s. Do not edit: regenerate.\n", in->name,
+            GEN_VERSION, in->manifest_name);
+    emit_licence_comment(f);
+    fprintf(f, " * Colour space %s (white x %.4f y %.4f); dominant wavelengths R %.2f G %.2f B %.2f nm;\n", sc->space,
+            g->cs.white[0], g->cs.white[1], g->nm[0], g->nm[1], g->nm[2]);
+    fprintf(f, " * Gaussian window sigma %g nm; incident medium n1 %g (eta, kappa below are relative to it).\n",
+            sc->sigma, sc->n1);
+    fprintf(f, " * Ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs -> linear RGB, clamped per\n"
+               " * channel to [0, 1] (out-of-gamut policy, gen/2_derive/generator.h).\n * Models:");
+    for (m = 0; m < sc->model_count; m++)
+        fprintf(f, " %s", sc->models[m]);
+    fprintf(f, ".\n * Materials (file in the data pack, dataset, measured range; outside it the end values are held):\n");
+    for (i = 0; i < sc->material_count; i++) {
+        const material_params *p = &in->params[i];
+        fprintf(f, " *   %-18s %s.csv, %s, %s, %.1f-%.1f nm\n", p->info.id, p->info.id, p->info.name,
+                p->info.dataset, p->measured_lo, p->measured_hi);
+    }
+    fprintf(f, " * GLSL for every dialect of ports/glsl/fresnel.glsl (GLSL ES 1.00, ES 3.00, desktop 3.30 and\n"
+               " * later): paste after it. Each material and model has vec3 %s_<material>_<model>_rgb(c)\n"
+               " * (lsk-comp -> lsk_comp), computing what the C runtime computes from the C header of the\n"
+               " * same manifest.\n",
+            scene_prefix);
+    if (l.count)
+        fprintf(f, " * LUT models: const float arrays where FRESNEL_LUT_ARRAYS is 1 (GLSL ES 3.00+, desktop 1.30+);\n"
+                   " * where it is 0 (GLSL ES 1.00, desktop 1.10 and 1.20) a strip of the packed RGBA8 texture\n"
+                   " * in the sampler uniform %s_lut_texture, %d x %d texels, 16 bits per node\n"
+                   " * (quantisation <= 2^-16), whose\n"
+                   " * bytes `fresnel gen %s --glsl -o OUT.glsl --glsl-texture OUT_TEX.h` writes as a C array;\n"
+                   " * in fragment shaders (ES 2.0 promises no vertex texture units).\n",
+                scene_prefix, l.width, l.height, in->manifest_name);
+    fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_GLSL\n#define FRESNEL_SCENE_%s_GLSL\n", guard, guard);
+    fprintf(f, "#if !defined(FRESNEL_GLSL) || !defined(FRESNEL_LUT_ARRAYS)\n"
+               "#error \"paste ports/glsl/fresnel.glsl (with FRESNEL_LUT_ARRAYS) before this file\"\n#endif\n");
+    if (l.count)
+        fprintf(f, "#if !FRESNEL_LUT_ARRAYS\nuniform FRESNEL_HIGHP sampler2D %s_lut_texture;\n#endif\n", scene_prefix);
+
+    for (i = 0; i < sc->material_count; i++) {
+        const material_params *p = &in->params[i];
+        char prefix[160];
+        snprintf(prefix, sizeof prefix, "%s_%s", scene_prefix, p->info.id);
+        fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
+        emit_material_params(f, sc, p, prefix, emit_rgb, emit_float);
+        for (m = 0; m < sc->model_count; m++) {
+            const glsl_lut *u = layout_find(&l, i, m);
+            if (u)
+                emit_lut_data(f, scene_prefix, prefix, u, &l, spacing);
+        }
+        for (m = 0; m < sc->model_count; m++)
+            emit_model_function(f, scene_prefix, prefix, sc->models[m], layout_find(&l, i, m), spacing);
+    }
+    fprintf(f, "\n#endif\n");
+    status = tex ? emit_texture(tex, in, &l, guard) : 0;
+    layout_free(&l);
+    return status;
+}

@@ -1,0 +1,484 @@
+/* Error reporting, number parsing, option values, name suggestions and safe
+ * output for the CLI. */
+#include "cli/cli.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <float.h>
+#include <limits.h>
+#include <math.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <unistd.h>
+
+/* Writes s to stderr with every control byte (and DEL) shown as \n, \t,
+ * \r or \xNN, so input quoted in a message cannot move the cursor, clear
+ * the terminal or hide part of the message. */
+static void put_escaped(const char *s)
+{
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '\n')
+            fputs("\\n", stderr);
+        else if (c == '\t')
+            fputs("\\t", stderr);
+        else if (c == '\r')
+            fputs("\\r", stderr);
+        else if (c < 0x20 || c == 0x7f)
+            fprintf(stderr, "\\x%02x", c);
+        else if (c == 0xc2 && (unsigned char)s[1] >= 0x80 && (unsigned char)s[1] <= 0x9f)
+            fprintf(stderr, "\\u%04x", (unsigned char)*++s); /* a C1 control (U+0080-U+009F) in UTF-8 */
+        else
+            fputc(c, stderr);
+    }
+}
+
+void cli_verror(const char *where, const char *fmt, va_list ap)
+{
+    char small[512], *msg = small;
+    va_list copy;
+    int n;
+    va_copy(copy, ap);
+    n = vsnprintf(small, sizeof small, fmt, copy);
+    va_end(copy);
+    if (n >= (int)sizeof small && (msg = malloc((size_t)n + 1)) != NULL)
+        vsnprintf(msg, (size_t)n + 1, fmt, ap);
+    if (!msg)
+        msg = small; /* truncated rather than lost */
+    put_escaped(where);
+    fputs(": ", stderr);
+    put_escaped(n < 0 ? fmt : msg);
+    fputc('\n', stderr);
+    if (msg != small)
+        free(msg);
+}
+
+int cli_error(const char *where, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    cli_verror(where, fmt, ap);
+    va_end(ap);
+    return CLI_BAD_INPUT;
+}
+
+int cli_oom(const char *where)
+{
+    cli_error(where, "out of memory");
+    return CLI_NO_MEMORY;
+}
+
+int cli_parse_double(const char *s, double *out)
+{
+    char *end;
+    double v;
+    if (s == NULL || *s == '\0')
+        return -1;
+    errno = 0;
+    v = strtod(s, &end);
+    if (end == s || *end != '\0' || !isfinite(v))
+        return -1;
+    /* strtod reports ERANGE for underflow too: a subnormal (1e-310) or a
+     * value that rounds to zero (1e-400) is still a finite number. Only
+     * overflow (returned as +-HUGE_VAL, caught above) is out of range. */
+    if (errno == ERANGE && fabs(v) > DBL_MIN)
+        return -1;
+    *out = v;
+    return 0;
+}
+
+int cli_parse_int(const char *s, int lo, int hi, int *out)
+{
+    char *end;
+    long v;
+    if (s == NULL || *s == '\0')
+        return -1;
+    errno = 0;
+    v = strtol(s, &end, 10);
+    if (end == s || *end != '\0' || errno == ERANGE || v < lo || v > hi)
+        return -1;
+    *out = (int)v;
+    return 0;
+}
+
+int cli_looks_like_option(const char *s)
+{
+    return s[0] == '-' && (s[1] == '-' || isalpha((unsigned char)s[1]));
+}
+
+const char *cli_option_value(const char *where, int argc, char **argv, int *i)
+{
+    if (*i + 1 >= argc || cli_looks_like_option(argv[*i + 1])) {
+        cli_error(where, "option '%s' needs a value (see %s --help)", argv[*i], where);
+        return NULL;
+    }
+    return argv[++*i];
+}
+
+int cli_in_list(const char *s, const char *const *list)
+{
+    int i;
+    for (i = 0; list[i]; i++)
+        if (!strcmp(s, list[i]))
+            return 1;
+    return 0;
+}
+
+int cli_bad_argument(const char *where, const char *arg, const char *const *options)
+{
+    const char *near;
+    if (!cli_looks_like_option(arg))
+        return cli_error(where, "unexpected argument '%s' (see %s --help)", arg, where);
+    if ((near = cli_suggest(arg, options)) != NULL)
+        return cli_error(where, "unknown option '%s' (did you mean '%s'?)", arg, near);
+    return cli_error(where, "unknown option '%s' (see %s --help)", arg, where);
+}
+
+/* Edit distance counting an insertion, deletion, substitution or swap of
+ * two neighbours as one edit (optimal string alignment), ASCII case folded,
+ * for names of up to 63 bytes. */
+static int distance(const char *a, const char *b)
+{
+    int d[3][64], la = (int)strlen(a), lb = (int)strlen(b), i, j;
+    if (la > 63 || lb > 63)
+        return INT_MAX;
+    for (j = 0; j <= lb; j++)
+        d[0][j] = j;
+    for (i = 1; i <= la; i++) {
+        int *row = d[i % 3], *up = d[(i - 1) % 3], *up2 = d[(i + 1) % 3];
+        row[0] = i;
+        for (j = 1; j <= lb; j++) {
+            int ca = tolower((unsigned char)a[i - 1]), cb = tolower((unsigned char)b[j - 1]);
+            int best = up[j - 1] + (ca != cb);
+            if (up[j] + 1 < best)
+                best = up[j] + 1;
+            if (row[j - 1] + 1 < best)
+                best = row[j - 1] + 1;
+            if (i > 1 && j > 1 && ca == tolower((unsigned char)b[j - 2]) &&
+                tolower((unsigned char)a[i - 2]) == cb && up2[j - 2] + 1 < best)
+                best = up2[j - 2] + 1;
+            row[j] = best;
+        }
+    }
+    return d[la % 3][lb];
+}
+
+const char *cli_suggest(const char *name, const char *const *candidates)
+{
+    const char *best = NULL;
+    int best_d = INT_MAX, len = (int)strlen(name), limit, i;
+    /* Close enough to be a typo: one edit for short names, up to a third
+     * of the name for longer ones. */
+    limit = len <= 4 ? 1 : len / 3 < 3 ? len / 3 : 3;
+    if (limit < 1)
+        limit = 1;
+    for (i = 0; candidates[i]; i++) {
+        int d = distance(name, candidates[i]);
+        if (d < best_d) {
+            best_d = d;
+            best = candidates[i];
+        }
+    }
+    return best_d <= limit ? best : NULL;
+}
+
+int cli_unknown(const char *where, const char *what, const char *name, const char *const *candidates)
+{
+    const char *near = cli_suggest(name, candidates);
+    char list[512] = "";
+    size_t used = 0;
+    int i;
+    if (near)
+        return cli_error(where, "unknown %s '%s' (did you mean '%s'?)", what, name, near);
+    for (i = 0; candidates[i]; i++) {
+        int n = snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", candidates[i]);
+        if (n < 0 || (size_t)n >= sizeof list - used)
+            break;
+        used += (size_t)n;
+    }
+    return cli_error(where, "unknown %s '%s' (expected one of: %s)", what, name, list);
+}
+
+size_t cli_skip_bom(const char *s)
+{
+    return !strncmp(s, "\xEF\xBB\xBF", 3) ? 3 : 0;
+}
+
+/* ---- standard streams ---------------------------------------------------- */
+
+int cli_check_input(const char *where, FILE *f, const char *name)
+{
+    if (!ferror(f))
+        return 0;
+    cli_error(where, "reading %s: %s", name, errno ? strerror(errno) : "read error");
+    return CLI_FAILURE;
+}
+
+int cli_finish_stdout(const char *where)
+{
+    int bad;
+    errno = 0;
+    bad = fflush(stdout) != 0 || ferror(stdout);
+    if (!bad && fclose(stdout) != 0)
+        bad = 1;
+    if (!bad)
+        return 0;
+    cli_error(where, "writing <stdout>: %s", errno ? strerror(errno) : "write error");
+    return CLI_FAILURE;
+}
+
+/* ---- safe output ---------------------------------------------------------- */
+
+/* Temporary files that exist right now, for the signal handler: it may only
+ * call async-signal-safe functions, so the paths live in static buffers and
+ * a slot is published (used = 1) only after its path is complete. */
+#define CLI_TMP_SLOTS 8
+static char tmp_paths[CLI_TMP_SLOTS][CLI_PATH_MAX + 32];
+static volatile sig_atomic_t tmp_used[CLI_TMP_SLOTS];
+static int handlers_installed;
+
+static void on_signal(int sig)
+{
+    int i;
+    for (i = 0; i < CLI_TMP_SLOTS; i++)
+        if (tmp_used[i])
+            unlink(tmp_paths[i]);
+    signal(sig, SIG_DFL);
+    raise(sig);
+}
+
+static void install_handlers(void)
+{
+    static const int sigs[] = {SIGHUP, SIGINT, SIGQUIT, SIGTERM, SIGPIPE};
+    size_t i;
+    if (handlers_installed)
+        return;
+    handlers_installed = 1;
+    for (i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
+        struct sigaction sa, old;
+        if (sigaction(sigs[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+            continue; /* started with the signal ignored (nohup): keep it so */
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(sigs[i], &sa, NULL);
+    }
+}
+
+void cli_out_test_signal_cleanup(int sig)
+{
+    on_signal(sig);
+}
+
+static int claim_slot(void)
+{
+    int i;
+    for (i = 0; i < CLI_TMP_SLOTS; i++)
+        if (!tmp_used[i] && tmp_paths[i][0] == '\0')
+            return i;
+    return -1;
+}
+
+static void release_slot(cli_outfile *o)
+{
+    if (o->slot >= 0) {
+        tmp_used[o->slot] = 0;
+        tmp_paths[o->slot][0] = '\0';
+        o->slot = -1;
+    }
+}
+
+static int out_fail(cli_outfile *o, const char *what, int err)
+{
+    cli_error(o->shown, "%s: %s", what, strerror(err));
+    return CLI_FAILURE;
+}
+
+/* Follows a chain of symbolic links from path to the file they finally name
+ * (which need not exist yet); 0 or -1 with errno set. */
+static int resolve_links(const char *path, char *out, size_t size, int *via_proc)
+{
+    char cur[CLI_PATH_MAX], link[CLI_PATH_MAX];
+    struct stat st;
+    int hops;
+    if (strlen(path) >= sizeof cur) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    strcpy(cur, path);
+    for (hops = 0; hops < 40; hops++) {
+        ssize_t n;
+        if (lstat(cur, &st) != 0 || !S_ISLNK(st.st_mode))
+            break;
+        n = readlink(cur, link, sizeof link - 1);
+        if (n < 0)
+            return -1;
+        link[n] = '\0';
+        if (!strncmp(link, "/proc/", 6))
+            *via_proc = 1;
+        if (link[0] == '/') {
+            strcpy(cur, link);
+        } else {
+            char *slash = strrchr(cur, '/');
+            size_t keep = slash ? (size_t)(slash - cur) + 1 : 0;
+            if (keep + (size_t)n >= sizeof cur) {
+                errno = ENAMETOOLONG;
+                return -1;
+            }
+            memcpy(cur + keep, link, (size_t)n + 1);
+        }
+    }
+    if (hops == 40) {
+        errno = ELOOP;
+        return -1;
+    }
+    if (strlen(cur) >= size) {
+        errno = ENAMETOOLONG;
+        return -1;
+    }
+    strcpy(out, cur);
+    return 0;
+}
+
+int cli_out_open(cli_outfile *o, const char *path)
+{
+    struct stat st;
+    mode_t mode;
+    int fd, exists, via_proc;
+    char *slash;
+    o->f = NULL;
+    o->kind = CLI_OUT_ATOMIC;
+    o->slot = -1;
+    snprintf(o->shown, sizeof o->shown, "%s", path);
+    if (!strcmp(path, "-")) {
+        o->kind = CLI_OUT_STDOUT;
+        snprintf(o->shown, sizeof o->shown, "<stdout>");
+        o->f = stdout;
+        return 0;
+    }
+    via_proc = 0;
+    if (resolve_links(path, o->path, sizeof o->path, &via_proc))
+        return out_fail(o, "cannot resolve", errno);
+    /* /dev/stdout and the like lead through /proc/self/fd to an open file
+     * description, which may be a pipe ("pipe:[123]", no path at all) or a
+     * file the shell opened for appending: written in place, appending. */
+    exists = stat(via_proc ? path : o->path, &st) == 0;
+    if (!exists && errno != ENOENT)
+        return out_fail(o, "cannot write", errno);
+    if (exists && S_ISDIR(st.st_mode))
+        return out_fail(o, "cannot write", EISDIR);
+    if (exists && (via_proc || !S_ISREG(st.st_mode))) {
+        /* A device, FIFO or socket is written in place: renaming a file over
+         * /dev/null would replace the device node. */
+        o->kind = CLI_OUT_DIRECT;
+        fd = open(via_proc ? path : o->path, O_WRONLY | O_NOCTTY | (via_proc ? O_APPEND : 0));
+        if (fd < 0)
+            return out_fail(o, "cannot write", errno);
+        if (!(o->f = fdopen(fd, "wb"))) {
+            int err = errno;
+            close(fd);
+            return out_fail(o, "cannot write", err);
+        }
+        return 0;
+    }
+    /* Read-only means no write bit at all, even for root, whom access(2)
+     * lets write anything: replacing such a file would silently defeat a
+     * protection its owner set. */
+    if (exists && access(o->path, W_OK) != 0)
+        return out_fail(o, "cannot write", errno);
+    if (exists && (st.st_mode & 0222) == 0)
+        return out_fail(o, "cannot write a read-only file", EACCES);
+    if (exists) {
+        mode = st.st_mode & 07777;
+    } else {
+        mode_t mask = umask(0);
+        umask(mask);
+        mode = 0666 & ~mask;
+    }
+    /* The temporary is created next to the target (so rename is atomic) by
+     * mkstemp: an unpredictable name, opened O_CREAT|O_EXCL, so a file or
+     * symlink planted in advance is never followed or overwritten. */
+    if ((o->slot = claim_slot()) < 0)
+        return out_fail(o, "cannot write", EMFILE);
+    slash = strrchr(o->path, '/');
+    if ((size_t)snprintf(tmp_paths[o->slot], sizeof tmp_paths[o->slot], "%.*s.%s.XXXXXX",
+                         slash ? (int)(slash - o->path) + 1 : 0, o->path, slash ? slash + 1 : o->path) >=
+        sizeof tmp_paths[o->slot]) {
+        tmp_paths[o->slot][0] = '\0';
+        o->slot = -1;
+        return out_fail(o, "cannot write", ENAMETOOLONG);
+    }
+    install_handlers();
+    {
+        /* Signals are held while the name is created and published, so a
+         * signal in between cannot leave an unlisted temporary behind. */
+        sigset_t all, old;
+        sigfillset(&all);
+        sigprocmask(SIG_BLOCK, &all, &old);
+        fd = mkstemp(tmp_paths[o->slot]);
+        if (fd >= 0)
+            tmp_used[o->slot] = 1;
+        sigprocmask(SIG_SETMASK, &old, NULL);
+    }
+    if (fd < 0) {
+        int err = errno;
+        tmp_paths[o->slot][0] = '\0';
+        o->slot = -1;
+        return out_fail(o, "cannot create a temporary file beside it", err);
+    }
+    if (fchmod(fd, mode) != 0 || !(o->f = fdopen(fd, "wb"))) {
+        int err = errno;
+        close(fd);
+        unlink(tmp_paths[o->slot]);
+        release_slot(o);
+        return out_fail(o, "cannot write", err);
+    }
+    return 0;
+}
+
+int cli_out_commit(cli_outfile *o)
+{
+    int err = 0;
+    errno = 0;
+    if (fflush(o->f) != 0 || ferror(o->f))
+        err = errno ? errno : EIO;
+    if (o->kind == CLI_OUT_STDOUT) {
+        o->f = NULL;
+        return err ? out_fail(o, "write error", err) : 0;
+    }
+    if (fclose(o->f) != 0 && !err)
+        err = errno ? errno : EIO;
+    o->f = NULL;
+    if (o->kind == CLI_OUT_DIRECT)
+        return err ? out_fail(o, "write error", err) : 0;
+    if (!err && rename(tmp_paths[o->slot], o->path) != 0)
+        err = errno;
+    if (err)
+        unlink(tmp_paths[o->slot]);
+    release_slot(o);
+    return err ? out_fail(o, "write error", err) : 0;
+}
+
+void cli_out_abort(cli_outfile *o)
+{
+    if (o->f && o->kind != CLI_OUT_STDOUT)
+        fclose(o->f);
+    o->f = NULL;
+    if (o->kind == CLI_OUT_ATOMIC && o->slot >= 0) {
+        unlink(tmp_paths[o->slot]);
+        release_slot(o);
+    }
+}
+
+int cli_out_is_input(const char *out, const char *in)
+{
+    struct stat a, b;
+    if (!strcmp(out, "-") || stat(out, &a) != 0 || stat(in, &b) != 0)
+        return 0;
+    return a.st_dev == b.st_dev && a.st_ino == b.st_ino;
+}

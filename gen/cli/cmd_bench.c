@@ -1,0 +1,158 @@
+/* fresnel bench: time per RGB evaluation of each model and number type for
+ * one material (`make bench`); with --runs 0 it is the fixed workload the
+ * report hands to callgrind for instruction counts. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench/bench.h"
+#include "bench/bench_targets.h"
+#include "cli/cli.h"
+#include "report/report.h"
+
+#define WHERE "fresnel bench"
+
+/* --targets: one row per line. */
+static int bench_targets_print(int count, int runs)
+{
+    bench_target_row rows[BENCH_TARGET_ROWS];
+    int n = bench_speed_targets_run(rows, BENCH_TARGET_ROWS, count, runs), i;
+    if (n < 0)
+        return cli_oom(WHERE);
+    printf("name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n");
+    for (i = 0; i < n; i++) {
+        printf("%s,%.3f,%.2f,%.3g,", rows[i].name, rows[i].ns, rows[i].ratio_to_schlick, rows[i].max_abs_err);
+        if (rows[i].matched_c0 == -1.0) /* not a conductor row */
+            printf("-,-\n");
+        else if (isnan(rows[i].matched_c0)) /* printf's NaN may carry a sign */
+            printf("nan,%.9g\n", rows[i].matched_c1e4);
+        else
+            printf("%.9g,%.9g\n", rows[i].matched_c0, rows[i].matched_c1e4);
+    }
+    return 0;
+}
+
+int cmd_bench(int argc, char **argv)
+{
+    const char *scene_path = "data/scenes/report.scene", *material = "au", *only_model = NULL, *only_type = NULL,
+               *dir_option = NULL;
+    int count = 1 << 20, runs = 5, i, m, t, status = 0, targets = 0, count_set = 0, runs_set = 0,
+        scene_options = 0;
+    static const char *const options[] = {"--scene", "--material", "--model", "--type", "--data", "--count",
+                                          "--runs", "--targets", "--help", NULL};
+    const char *v;
+    scene sc;
+    gen_context *g = NULL;
+    spectrum *s = NULL;
+    material_params p;
+    for (i = 1; i < argc; i++) {
+        const char *o = argv[i];
+        if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
+            printf("usage: fresnel bench [--scene FILE] [--material ID] [--model NAME] [--type f32|q15|f16]\n"
+                   "                     [--count N] [--runs R] [--data DIR]\n"
+                   "       fresnel bench --targets [--count N] [--runs R]\n\n"
+                   "Prints CSV model,type,ns_per_rgb_eval: the median of R timed batches (default 5) of N\n"
+                   "evaluations (default 2^20) over fixed pseudo-random cosines, for each model of the\n"
+                   "scene (default data/scenes/report.scene) and material ID (default au). --runs 0\n"
+                   "runs one untimed batch (the callgrind workload of `make report`).\n\n"
+                   "--targets: the library's speed targets, CSV\n"
+                   "  name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n"
+                   "one channel of copper at 650 nm (eta 0.24, kappa 3.63), every row timed back to back\n"
+                   "in R rounds (default %d) of N cosines (default %d), the median; ratio to the\n"
+                   "schlick row of the same run; max_abs_err against the double reference on the grid\n"
+                   "gen/bench/bench_targets.h describes; matched_*: the result at eta = 1, kappa = 0 (exact: 0;\n"
+                   "'-': not a conductor row).\n"
+                   "mitsuba-style and pbrt-style are this project's binary32 re-implementations of those\n"
+                   "renderers' published algorithms (gen/bench/bench_compare.c), compiled out of line as the\n"
+                   "runtime's functions are.\n%s\n",
+                   BENCH_TARGETS_RUNS, BENCH_TARGETS_COUNT, bench_compiler());
+            return 0;
+        }
+        if (!strcmp(o, "--targets")) {
+            targets = 1;
+            continue;
+        }
+        if (!cli_in_list(o, options))
+            return cli_bad_argument(WHERE, o, options);
+        if (!(v = cli_option_value(WHERE, argc, argv, &i)))
+            return CLI_BAD_INPUT;
+        scene_options += strcmp(o, "--count") && strcmp(o, "--runs");
+        if (!strcmp(o, "--scene"))
+            scene_path = v;
+        else if (!strcmp(o, "--material"))
+            material = v;
+        else if (!strcmp(o, "--model"))
+            only_model = v;
+        else if (!strcmp(o, "--type")) {
+            static const char *const types[] = {"f32", "q15", "f16", NULL};
+            only_type = !strcmp(v, "fixed") ? "q15" : v;
+            if (!cli_in_list(only_type, types))
+                return cli_unknown(WHERE, "type", v, types);
+        } else if (!strcmp(o, "--data"))
+            dir_option = v;
+        else if (!strcmp(o, "--count")) {
+            if (cli_parse_int(v, 1, 1 << 26, &count))
+                return cli_error(WHERE, "--count expects an integer 1..2^26, got '%s'", v);
+            count_set = 1;
+        } else {
+            if (cli_parse_int(v, 0, 101, &runs))
+                return cli_error(WHERE, "--runs expects an integer 0..101, got '%s'", v);
+            runs_set = 1;
+        }
+    }
+    if (targets) {
+        if (scene_options)
+            return cli_error(WHERE, "--targets takes only --count and --runs (see fresnel bench --help)");
+        return bench_targets_print(count_set ? count : BENCH_TARGETS_COUNT, runs_set ? runs : BENCH_TARGETS_RUNS);
+    }
+    if ((status = scene_load(scene_path, &sc)))
+        return status;
+    if (scene_lut_spacing(&sc) == LUT_GRAZING_PL)
+        return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `fresnel bench --targets` and "
+                                     "`make cross-count` time fresnel_lut_q15_u16_pl_fast");
+    if (only_model && !scene_has_model(&sc, only_model)) {
+        const char *names[SCENE_MAX_MODELS + 1];
+        for (m = 0; m < sc.model_count; m++)
+            names[m] = sc.models[m];
+        names[m] = NULL;
+        return cli_unknown(WHERE, "model (of the scene)", only_model, names);
+    }
+    if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
+        status = cli_oom(WHERE);
+        goto done;
+    }
+    if ((status = gen_context_load(data_dir(dir_option), sc.space, g)) ||
+        (status = derive_parameters(g, material, sc.sigma, sc.n1, s, &p)))
+        goto done;
+    if (runs > 0)
+        printf("model,type,ns_per_rgb_eval\n");
+    for (m = 0; m < sc.model_count; m++) {
+        scene_model sm;
+        report_prepared *q;
+        if (only_model && strcmp(only_model, sc.models[m]))
+            continue;
+        if ((status = scene_model_prepare(sc.models[m], scene_lut_spacing(&sc),
+                                          s, g, &p, &sm)))
+            goto done;
+        if (!(q = report_prepare(&sm, &p))) {
+            scene_model_free(&sm);
+            status = cli_oom(WHERE);
+            goto done;
+        }
+        for (t = 0; t < report_type_count; t++) {
+            double ns;
+            if (only_type && strcmp(only_type, report_types[t].name))
+                continue;
+            ns = report_time(&report_types[t], q, count, runs);
+            if (runs > 0)
+                printf("%s,%s,%.3f\n", sc.models[m], report_types[t].name, ns);
+        }
+        report_prepared_free(q);
+        scene_model_free(&sm);
+    }
+done:
+    free(g);
+    free(s);
+    return status;
+}

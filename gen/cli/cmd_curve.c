@@ -1,0 +1,109 @@
+/* fresnel curve: the spectral ground truth of one material over angle, and
+ * every model evaluated with its derived parameters. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "cli/material_options.h"
+#include "scene/scene.h"
+#include "scene/scene_eval.h"
+
+#define WHERE "fresnel curve"
+#define MAX_MODELS 32
+
+static const char default_models[] =
+    "schlick lsk lsk-comp f82 gulbrandsen cook-torrance exact exact-gaussian approx-conductor lut16 lut32";
+
+int cmd_curve(int argc, char **argv)
+{
+    material_options o;
+    gen_context *g = NULL;
+    spectrum *s = NULL;
+    material_params p;
+    scene_model models[MAX_MODELS];
+    char *names = NULL, *tok;
+    const char *model_list = default_models;
+    static const char *const options[] = {"--material", "--space", "--sigma", "--n1", "--data", "--samples",
+                                          "--models", "--lut-spacing", "--help", NULL};
+    const char *val;
+    int samples = 91, n_models = 0, i, r, status = 0;
+    lut_spacing spacing = LUT_GRAZING;
+    material_options_init(&o);
+    for (i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            printf("usage: fresnel curve --material ID [--space NAME] [--sigma S] [--samples N]\n"
+                   "                     [--models \"NAME ...\"] [--lut-spacing grazing|uniform] [--n1 X] [--data DIR]\n\n"
+                   "Prints CSV: theta_deg,cos,gt_r,gt_g,gt_b (the spectral ground truth, clamped to\n"
+                   "[0,1] as the generator's out-of-gamut policy says), then <model>_r,_g,_b for each\n"
+                   "model, evaluated by the binary32 runtime with the parameters `fresnel params`\n"
+                   "prints. N rows (default 91), theta uniform from 0 to 90 degrees.\n"
+                   "Default models: %s\n\n%s"
+                   "  --samples N     rows, 2..100000\n",
+                   default_models, material_options_help);
+            return 0;
+        }
+        if (!cli_in_list(argv[i], options))
+            return cli_bad_argument(WHERE, argv[i], options);
+        if (!(val = cli_option_value(WHERE, argc, argv, &i)))
+            return CLI_BAD_INPUT;
+        r = material_option(WHERE, argv[i - 1], val, &o);
+        if (r == CLI_BAD_INPUT)
+            return r;
+        if (r == 0) {
+            if (!strcmp(argv[i - 1], "--samples")) {
+                if (cli_parse_int(val, 2, 100000, &samples))
+                    return cli_error(WHERE, "--samples expects an integer 2..100000, got '%s'", val);
+            } else if (!strcmp(argv[i - 1], "--models")) {
+                model_list = val;
+            } else {
+                static const char *const spacings[] = {"grazing", "uniform", NULL};
+                if (!strcmp(val, "uniform"))
+                    spacing = LUT_UNIFORM;
+                else if (strcmp(val, "grazing"))
+                    return cli_unknown(WHERE, "--lut-spacing", val, spacings);
+            }
+        }
+    }
+    if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s)) || !(names = malloc(strlen(model_list) + 1))) {
+        status = cli_oom(WHERE);
+        goto done;
+    }
+    if ((status = material_options_derive(WHERE, &o, g, s, &p)))
+        goto done;
+    strcpy(names, model_list);
+    for (tok = strtok(names, " \t,"); tok; tok = strtok(NULL, " \t,")) {
+        if (n_models == MAX_MODELS) {
+            status = cli_error(WHERE, "at most %d models", MAX_MODELS);
+            goto done;
+        }
+        if ((status = scene_model_prepare(tok, spacing, s, g, &p, &models[n_models])))
+            goto done;
+        n_models++;
+    }
+    printf("theta_deg,cos,gt_r,gt_g,gt_b");
+    for (i = 0; i < n_models; i++)
+        printf(",%s_r,%s_g,%s_b", models[i].name, models[i].name, models[i].name);
+    printf("\n");
+    for (r = 0; r < samples; r++) {
+        double theta = 90.0 * r / (samples - 1), c = r == samples - 1 ? 0.0 : cos(theta * (3.14159265358979323846 / 180.0));
+        double gt[3];
+        int m;
+        ground_truth_clamped(s, g, p.n1, c, gt);
+        printf("%.6g,%.9g,%.9g,%.9g,%.9g", theta, c, gt[0], gt[1], gt[2]);
+        for (m = 0; m < n_models; m++) {
+            float v[3];
+            scene_model_eval(&models[m], &p, (float)c, v);
+            printf(",%.9g,%.9g,%.9g", v[0], v[1], v[2]);
+        }
+        printf("\n");
+    }
+done:
+    for (i = 0; i < n_models; i++)
+        scene_model_free(&models[i]);
+    free(names);
+    free(g);
+    free(s);
+    return status;
+}

@@ -1,0 +1,60 @@
+/* fresnel report: accuracy, speed and size of every model x number type for
+ * the materials of a scene, as report.md plus SVG plots. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "report/report.h"
+
+#define WHERE "fresnel report"
+
+static void report_usage(FILE *out)
+{
+    fprintf(out, "usage: fresnel report [--scene FILE] [-o DIR] [--data DIR] [--cross FILE] [--no-timing]\n"
+                 "                      [--no-instructions]\n\n"
+                 "Measures every material x model x number type of the scene (default\n"
+                 "data/scenes/report.scene) against the spectral ground truth and writes\n"
+                 "DIR/report.md, DIR/pareto.svg, DIR/sigma.svg and DIR/curves/<material>.svg\n"
+                 "(default DIR build/report). Timing: median of 5 batches of 2^20 evaluations;\n"
+                 "instructions: valgrind --tool=callgrind (skipped when valgrind is missing).\n"
+                 "--no-timing and --no-instructions skip those (for tests). --cross FILE: the\n"
+                 "output of `make cross-count` and `make size`, for the targets table's Cortex-M0\n"
+                 "rows (make report passes it).\n");
+}
+
+int cmd_report(int argc, char **argv)
+{
+    report_options o;
+    static const char *const options[] = {"--scene", "-o", "--cross", "--data", "--no-timing", "--no-instructions",
+                                          "--help", NULL};
+    int i;
+    memset(&o, 0, sizeof o);
+    o.scene_path = "data/scenes/report.scene";
+    o.out_dir = "build/report";
+    o.timing = o.instructions = 1;
+    for (i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            report_usage(stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--no-timing")) {
+            o.timing = 0;
+        } else if (!strcmp(argv[i], "--no-instructions")) {
+            o.instructions = 0;
+        } else if (!cli_in_list(argv[i], options)) {
+            return cli_bad_argument(WHERE, argv[i], options);
+        } else {
+            const char *v = cli_option_value(WHERE, argc, argv, &i);
+            if (!v)
+                return CLI_BAD_INPUT;
+            if (!strcmp(argv[i - 1], "--scene"))
+                o.scene_path = v;
+            else if (!strcmp(argv[i - 1], "-o"))
+                o.out_dir = v;
+            else if (!strcmp(argv[i - 1], "--cross"))
+                o.cross_path = v;
+            else
+                o.data_dir = v;
+        }
+    }
+    return report_write(&o);
+}

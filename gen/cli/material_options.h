@@ -1,0 +1,29 @@
+/* Options shared by the commands that look at one material in one colour
+ * space: --material ID, --space NAME, --sigma S, --n1 X, --data DIR. */
+#ifndef FRESNEL_MATERIAL_OPTIONS_H
+#define FRESNEL_MATERIAL_OPTIONS_H
+
+#include "2_derive/derive.h"
+
+typedef struct material_options {
+    const char *material;
+    const char *space;
+    const char *data;
+    double sigma, n1;
+} material_options;
+
+void material_options_init(material_options *o);
+/* If opt is one of the shared options, consume val: returns 1, or
+ * CLI_BAD_INPUT after a message for a bad value; returns 0 for any other
+ * option. */
+int material_option(const char *where, const char *opt, const char *val, material_options *o);
+extern const char material_options_help[];
+/* The shared options' names, NULL-terminated (with --help). */
+extern const char *const material_option_names[];
+
+/* Load the colour space and derive the material's parameters; 0 or
+ * CLI_BAD_INPUT. */
+int material_options_derive(const char *where, const material_options *o, gen_context *g, spectrum *s,
+                            material_params *p);
+
+#endif

@@ -1,0 +1,457 @@
+/* The report: every material x model x number type of a scene measured
+ * against the spectral ground truth, timed, and written as report.md with
+ * its plots (report.h). */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "cli/cli.h"
+#include "bench/bench.h"
+#include "model/reference.h"
+#include "report/report.h"
+
+#define WHERE "fresnel report"
+#define hoffman report_hoffman
+
+/* Host instructions per RGB evaluation: callgrind counting only inside the
+ * timed batch functions of `fresnel bench --runs 0` (one batch of count
+ * evaluations), so start-up, data loading and fitting are not counted. */
+static double callgrind_instructions(const char *scene_path, const char *material, const char *model,
+                                     const char *type)
+{
+    const int count = 20000;
+    char cmd[2048], line[512];
+    double collected = NAN;
+    FILE *p;
+    snprintf(cmd, sizeof cmd,
+             "valgrind --tool=callgrind --toggle-collect='batch_*' --callgrind-out-file=/dev/null "
+             "/proc/%ld/exe bench --scene '%s' --material '%s' --model '%s' --type '%s' --count %d --runs 0 2>&1",
+             (long)getpid(), scene_path, material, model, type, count);
+    if (!(p = popen(cmd, "r")))
+        return NAN;
+    while (fgets(line, sizeof line, p)) {
+        const char *k = strstr(line, "Collected : ");
+        if (k)
+            collected = strtod(k + 12, NULL);
+    }
+    if (pclose(p) != 0)
+        return NAN;
+    return collected / count;
+}
+
+static int open_out(cli_outfile *o, const char *dir, const char *name)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    return cli_out_open(o, path);
+}
+
+static int commit_out(cli_outfile *o)
+{
+    return cli_out_commit(o);
+}
+
+static void write_accuracy_tables(report_run *r, FILE *f)
+{
+    int i, m, t;
+    fprintf(f, "## Summary over the metals\n\n"
+               "Mean over the %s metals of each material's mean CIEDE2000 (theta 0-90 deg, 1 deg steps, "
+               "against the clamped spectral ground truth in %s), the worst maximum, the largest deviation "
+               "from the same model evaluated in double precision, and the cost.\n\n"
+               "Cost: ns and host instructions (callgrind) per RGB evaluation of %s, one model and type at a "
+               "time; %s.\n\n"
+               "| model | type | mean dE2000 | worst max dE2000 | max vs own double | ns per RGB eval | instructions |\n"
+               "|---|---|---:|---:|---:|---:|---:|\n",
+            "report scene's", r->sc.space, r->mats[r->timed_material].p.info.id, bench_compiler());
+    for (m = 0; m < r->sc.model_count; m++)
+        for (t = 0; t < report_type_count; t++) {
+            double mean, worst, vs = 0.0;
+            report_metal_summary(r, m, t, &mean, &worst);
+            for (i = 0; i < r->sc.material_count; i++)
+                if (report_cell_at(r, i, m, t)->vs_ref_max > vs)
+                    vs = report_cell_at(r, i, m, t)->vs_ref_max;
+            fprintf(f, "| %s | %s | ", r->sc.models[m], report_types[t].name);
+            if (isnan(mean)) /* a scene without metals: nothing to average */
+                fprintf(f, "no metals | - | ");
+            else
+                fprintf(f, "%.3f | %.3f | ", mean, worst);
+            fprintf(f, "%.1e | ", vs);
+            if (isnan(r->ns[m * report_type_count + t]))
+                fprintf(f, "not measured | ");
+            else
+                fprintf(f, "%.2f | ", r->ns[m * report_type_count + t]);
+            if (isnan(r->instr[m * report_type_count + t]))
+                fprintf(f, "not measured |\n");
+            else
+                fprintf(f, "%.0f |\n", r->instr[m * report_type_count + t]);
+        }
+    fprintf(f, "\n## Every material, model and type\n\n"
+               "CIEDE2000 against the clamped ground truth (mean, RMS, max over 91 angles); max |error| per "
+               "channel; max |this type - the same model in double|.\n\n"
+               "| material | model | type | mean | RMS | max | max err r | g | b | vs own double |\n"
+               "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (i = 0; i < r->sc.material_count; i++)
+        for (m = 0; m < r->sc.model_count; m++)
+            for (t = 0; t < report_type_count; t++) {
+                report_cell *c = report_cell_at(r, i, m, t);
+                fprintf(f, "| %s | %s | %s | %.4f | %.4f | %.4f | %.2e | %.2e | %.2e | %.1e |\n", r->mats[i].p.info.id,
+                        r->sc.models[m], report_types[t].name, c->de_mean, c->de_rms, c->de_max, c->abs_max[0],
+                        c->abs_max[1], c->abs_max[2], c->vs_ref_max);
+            }
+    fprintf(f, "\n## The out-of-gamut clamp\n\nCIEDE2000 between the ground truth and the same clamped to [0, 1] "
+               "per channel (the generator's policy; models are measured against the clamped curve). Materials "
+               "not listed are inside the gamut at every angle.\n\n| material | F0 unclamped | mean dE2000 | max dE2000 |\n"
+               "|---|---|---:|---:|\n");
+    for (i = 0; i < r->sc.material_count; i++)
+        if (r->mats[i].clamp_de_max > 0.0)
+            fprintf(f, "| %s | %.4f %.4f %.4f | %.4f | %.4f |\n", r->mats[i].p.info.id, r->mats[i].p.f0_unclamped[0],
+                    r->mats[i].p.f0_unclamped[1], r->mats[i].p.f0_unclamped[2], r->mats[i].clamp_de_mean,
+                    r->mats[i].clamp_de_max);
+}
+
+/* Metzgar's Fig. 13 for every material: exact Fresnel on the Gaussian-window
+ * eta', kappa' against the ground truth, as sigma grows. */
+
+static void sigma_sweep(report_run *r, double (*de)[REPORT_SIGMAS], double (*err)[REPORT_SIGMAS])
+{
+    int i, k, a, ch;
+    for (i = 0; i < r->sc.material_count; i++) {
+        report_material *rm = &r->mats[i];
+        for (k = 0; k < REPORT_SIGMAS; k++) {
+            double eta[3], kappa[3], rgb[REPORT_ANGLES][3], rms, worst = 0.0;
+            gaussian_window(rm->s, r->g->nm, report_sigmas[k], eta, kappa);
+            for (a = 0; a < REPORT_ANGLES; a++)
+                for (ch = 0; ch < 3; ch++) {
+                    rgb[a][ch] = ref_conductor(eta[ch] / rm->p.n1, kappa[ch] / rm->p.n1, report_cos(a));
+                    if (fabs(rgb[a][ch] - rm->gt[a][ch]) > worst)
+                        worst = fabs(rgb[a][ch] - rm->gt[a][ch]);
+                }
+            report_curve_de(&r->ls, (const double(*)[3])rm->gt, (const double(*)[3])rgb, &de[i][k], &rms, &rms);
+            err[i][k] = worst;
+        }
+    }
+}
+
+static void write_sigma(report_run *r, FILE *f, double (*de)[REPORT_SIGMAS], double (*err)[REPORT_SIGMAS])
+{
+    int i, k;
+    fprintf(f, "\n## Gaussian window width (Metzgar Fig. 13)\n\nExact Fresnel on the Gaussian-window eta', kappa' "
+               "(sigma = 0 is point sampling at the dominant wavelengths) against the ground truth: mean CIEDE2000 "
+               "and max |error| over the three channels. Plot: sigma.svg.\n\n| material |");
+    for (k = 0; k < REPORT_SIGMAS; k++)
+        fprintf(f, " sigma %g: mean dE | max err |", report_sigmas[k]);
+    fprintf(f, "\n|---|");
+    for (k = 0; k < REPORT_SIGMAS; k++)
+        fprintf(f, "---:|---:|");
+    fprintf(f, "\n");
+    for (i = 0; i < r->sc.material_count; i++) {
+        fprintf(f, "| %s |", r->mats[i].p.info.id);
+        for (k = 0; k < REPORT_SIGMAS; k++)
+            fprintf(f, " %.3f | %.4f |", de[i][k], err[i][k]);
+        fprintf(f, "\n");
+    }
+}
+
+static int model_index(report_run *r, const char *name)
+{
+    int m;
+    for (m = 0; m < r->sc.model_count; m++)
+        if (!strcmp(r->sc.models[m], name))
+            return m;
+    return -1;
+}
+
+static void write_approaches(report_run *r, FILE *f)
+{
+    static const char *const order[] = {"exact-gaussian", "exact-point", "schlick", "f82", "exact", "gulbrandsen",
+                                        "lsk", "lsk-comp", "cook-torrance", "approx-conductor", "lut8", "lut16",
+                                        "lut32", "lut16-residual", "lut16-cubic", "lut32-cubic", NULL};
+    int i, k;
+    fprintf(f, "\n## The approaches the papers argue about, side by side\n\n"
+               "Mean CIEDE2000 per material (f32): Metzgar's exact Fresnel on Gaussian-window eta', kappa' "
+               "(exact-gaussian, sigma %g nm); point-sampled eta, kappa (exact-point); Hoffman's Schlick and F82 "
+               "with spectral F0/F82; exact Fresnel on fitted eta, kappa (exact); Gulbrandsen r/g; LSK rescaled "
+               "and compensated; Cook-Torrance interpolation; the approximate conductor form; LUTs.\n\n| material |",
+            r->sc.sigma);
+    for (k = 0; order[k]; k++)
+        if (model_index(r, order[k]) >= 0)
+            fprintf(f, " %s |", order[k]);
+    fprintf(f, "\n|---|");
+    for (k = 0; order[k]; k++)
+        if (model_index(r, order[k]) >= 0)
+            fprintf(f, "---:|");
+    fprintf(f, "\n");
+    for (i = 0; i < r->sc.material_count; i++) {
+        fprintf(f, "| %s |", r->mats[i].p.info.id);
+        for (k = 0; order[k]; k++) {
+            int m = model_index(r, order[k]);
+            if (m >= 0)
+                fprintf(f, " %.3f |", report_cell_at(r, i, m, 0)->de_mean);
+        }
+        fprintf(f, "\n");
+    }
+}
+
+/* Hoffman's table recomputed in ACEScg: Schlick, fitted eta/kappa and point
+ * sampling, RMS CIEDE2000 over 91 angles. */
+static int compute_hoffman(report_run *r)
+{
+    gen_context *g = malloc(sizeof *g);
+    spectrum *s = malloc(sizeof *s);
+    lab_space ls;
+    int i, a, ch, status = 0;
+    if (!g || !s) {
+        status = cli_oom(WHERE);
+        goto done;
+    }
+    if ((status = gen_context_load(r->g->dir, "acescg", g)))
+        goto done;
+    lab_space_init(&ls, &g->cs);
+    for (i = 0; i < REPORT_HOFFMAN; i++) {
+        material_params p;
+        double gt[REPORT_ANGLES][3], sch[REPORT_ANGLES][3], fit[REPORT_ANGLES][3], ps[REPORT_ANGLES][3];
+        double mean, max;
+        if ((status = derive_parameters(g, hoffman[i].id, 25.0, 1.0, s, &p)))
+            goto done;
+        r->hoffman_in_gamut[i] = 1;
+        for (ch = 0; ch < 3; ch++)
+            r->hoffman_in_gamut[i] &= p.f0_unclamped[ch] >= 0.0 && p.f0_unclamped[ch] <= 1.0;
+        for (a = 0; a < REPORT_ANGLES; a++) {
+            double c = report_cos(a);
+            ground_truth_clamped(s, g, 1.0, c, gt[a]);
+            for (ch = 0; ch < 3; ch++) {
+                sch[a][ch] = ref_schlick(p.f0[ch], c);
+                fit[a][ch] = ref_conductor(p.eta_fit[ch], p.kappa_fit[ch], c);
+                ps[a][ch] = ref_conductor(p.eta_point[ch], p.kappa_point[ch], c);
+            }
+        }
+        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])sch, &mean, &r->hoffman_rms[i][0], &max);
+        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])fit, &mean, &r->hoffman_rms[i][1], &max);
+        report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])ps, &mean, &r->hoffman_rms[i][2], &max);
+    }
+done:
+    free(g);
+    free(s);
+    return status;
+}
+
+static void write_hoffman(report_run *r, FILE *f)
+{
+    int i;
+    fprintf(f, "\n## Reproducing Hoffman's table (ACEScg)\n\n"
+               "RMS CIEDE2000 over theta = 0..90 deg (1 deg steps) in ACEScg, ours beside Hoffman's published "
+               "numbers [Hof20]. Differences have known causes: he lit with a D60 SPD, we light with D65 and adapt "
+               "to the ACES white with Bradford (data/ has no D60); several metals come from other measurements "
+               "than his (e.g. our zinc is REELS data the data pack flags as too reflective); "
+               "his angle sampling and fitting error are not stated; our fit, per channel, weights each "
+               "reflectance residual by its dE sensitivity, which ignores how the channels combine in dE.\n\n"
+               "| metal | Schlick (ours) | Schlick (Hoffman) | fitted eta,kappa (ours) | fitted (Hoffman) | "
+               "point-sampled (ours) | point-sampled (Hoffman) |\n|---|---:|---:|---:|---:|---:|---:|\n");
+    for (i = 0; i < REPORT_HOFFMAN; i++)
+        fprintf(f, "| %s (%s) | %.2f | %.2f | %.3f | %.2f | %.2f | %.2f |\n", hoffman[i].his_name, hoffman[i].id,
+                r->hoffman_rms[i][0], hoffman[i].schlick, r->hoffman_rms[i][1], hoffman[i].fitted,
+                r->hoffman_rms[i][2], hoffman[i].point_sampled);
+}
+
+/* "Which model for which budget": the models on the Pareto front of cost
+ * against mean error over the metals, cheapest first, each with what it
+ * costs and buys over the previous one. Cost is host instructions
+ * (callgrind: deterministic) where measured, else time. */
+static void write_budget(report_run *r, FILE *f)
+{
+    int n = r->sc.model_count * report_type_count, k, j, nf = 0, a, b, use_instr = 1;
+    int *front = malloc((size_t)n * sizeof *front);
+    const double *cost;
+    if (!front)
+        return;
+    {
+        double mean, worst;
+        report_metal_summary(r, 0, 0, &mean, &worst);
+        if (isnan(mean)) {
+            fprintf(f, "\n## Which model for which budget\n\nNo metals in this scene: no error over the metals to "
+                       "rank the models by.\n");
+            free(front);
+            return;
+        }
+    }
+    for (k = 0; k < n; k++)
+        if (isnan(r->instr[k]))
+            use_instr = 0;
+    cost = use_instr ? r->instr : r->ns;
+    for (k = 0; k < n; k++) {
+        double mean_k, worst_k;
+        int dominated = 0;
+        if (isnan(cost[k]))
+            continue;
+        report_metal_summary(r, k / report_type_count, k % report_type_count, &mean_k, &worst_k);
+        for (j = 0; j < n && !dominated; j++) {
+            double mean_j, worst_j;
+            if (j == k || isnan(cost[j]))
+                continue;
+            report_metal_summary(r, j / report_type_count, j % report_type_count, &mean_j, &worst_j);
+            dominated = cost[j] <= cost[k] && mean_j <= mean_k && (cost[j] < cost[k] || mean_j < mean_k);
+        }
+        if (!dominated)
+            front[nf++] = k;
+    }
+    for (a = 0; a < nf; a++)
+        for (b = a + 1; b < nf; b++)
+            if (cost[front[b]] < cost[front[a]]) {
+                int tmp = front[a];
+                front[a] = front[b];
+                front[b] = tmp;
+            }
+    fprintf(f, "\n## Which model for which budget\n\nThe models no other model beats on both cost (%s per RGB "
+               "evaluation on this host) and mean error over the metals, cheapest first, each with what it costs "
+               "and buys over the one before (pareto.svg draws the same front against time).\n\n",
+            use_instr ? "callgrind instructions" : "ns");
+    for (a = 0; a < nf; a++) {
+        double mean, worst, pm, pw;
+        int k0 = front[a];
+        report_metal_summary(r, k0 / report_type_count, k0 % report_type_count, &mean, &worst);
+        fprintf(f, "- **%s (%s)**: %.0f %s", r->sc.models[k0 / report_type_count], report_types[k0 % report_type_count].name,
+                cost[k0], use_instr ? "instructions" : "ns");
+        if (use_instr && !isnan(r->ns[k0]))
+            fprintf(f, ", %.2f ns", r->ns[k0]);
+        fprintf(f, "; mean dE2000 %.3f, worst max %.3f", mean, worst);
+        if (a > 0) {
+            report_metal_summary(r, front[a - 1] / report_type_count, front[a - 1] % report_type_count, &pm, &pw);
+            fprintf(f, " (%.1fx the cost of the previous, %.1fx lower mean error)", cost[k0] / cost[front[a - 1]],
+                    mean > 0.0 ? pm / mean : INFINITY);
+        }
+        fprintf(f, ".\n");
+    }
+    if (!nf)
+        fprintf(f, "(costs not measured in this run)\n");
+    free(front);
+}
+
+int report_write(const report_options *o)
+{
+    report_run r;
+    const char *scene_path = o->scene_path;
+    int timing = o->timing, instructions = o->instructions, i, m, t, status = 0;
+    double (*sig_de)[REPORT_SIGMAS] = NULL, (*sig_err)[REPORT_SIGMAS] = NULL;
+    cli_outfile out;
+    char path[1024];
+    memset(&r, 0, sizeof r);
+    r.out_dir = o->out_dir;
+    r.cross_path = o->cross_path;
+    if ((status = scene_load(scene_path, &r.sc)))
+        return status;
+    r.timing = timing;
+    if (scene_lut_spacing(&r.sc) == LUT_GRAZING_PL)
+        return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only and the report measures every number "
+                                     "type; its targets table measures them itself");
+    r.g = malloc(sizeof *r.g);
+    r.mats = calloc((size_t)r.sc.material_count, sizeof *r.mats);
+    r.cells = calloc((size_t)r.sc.material_count * r.sc.model_count * report_type_count, sizeof *r.cells);
+    r.ns = malloc((size_t)r.sc.model_count * report_type_count * sizeof *r.ns);
+    r.instr = malloc((size_t)r.sc.model_count * report_type_count * sizeof *r.instr);
+    sig_de = calloc((size_t)r.sc.material_count, sizeof *sig_de);
+    sig_err = calloc((size_t)r.sc.material_count, sizeof *sig_err);
+    if (!r.g || !r.mats || !r.cells || !r.ns || !r.instr || !sig_de || !sig_err) {
+        status = cli_oom(WHERE);
+        goto done;
+    }
+    if ((status = gen_context_load(data_dir(o->data_dir), r.sc.space, r.g)))
+        goto done;
+    lab_space_init(&r.ls, &r.g->cs);
+    for (i = 0; i < r.sc.material_count; i++) {
+        report_material *rm = &r.mats[i];
+        char where[1100];
+        snprintf(where, sizeof where, "%s:%d", scene_path, r.sc.materials_line);
+        if ((status = material_lookup(r.g->dir, r.sc.materials[i], &rm->p.info, where)))
+            goto done;
+        if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models)) ||
+            !(rm->prepared = calloc((size_t)r.sc.model_count, sizeof *rm->prepared))) {
+            status = cli_oom(WHERE);
+            goto done;
+        }
+        if ((status = derive_parameters(r.g, r.sc.materials[i], r.sc.sigma, r.sc.n1, rm->s, &rm->p)))
+            goto done;
+        report_ground_truth(r.g, &r.ls, rm);
+        for (m = 0; m < r.sc.model_count; m++) {
+            lut_spacing sp = scene_lut_spacing(&r.sc);
+            if ((status = scene_model_prepare(r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
+                goto done;
+            if (!(rm->prepared[m] = report_prepare(&rm->models[m], &rm->p))) {
+                status = cli_oom(WHERE);
+                goto done;
+            }
+            for (t = 0; t < report_type_count; t++)
+                report_measure(&r.ls, rm, m, &report_types[t], report_cell_at(&r, i, m, t));
+        }
+    }
+    for (i = 0; i < r.sc.model_count * report_type_count; i++)
+        r.ns[i] = r.instr[i] = NAN;
+    /* Costs barely depend on the material: gold if the scene has it. */
+    for (i = 0; i < r.sc.material_count; i++)
+        if (!strcmp(r.mats[i].p.info.id, "au"))
+            r.timed_material = i;
+    if (instructions && system("valgrind --version >/dev/null 2>&1") != 0) {
+        fprintf(stderr, "%s: valgrind not found: instruction counts not measured\n", WHERE);
+        instructions = 0;
+    }
+    for (m = 0; m < r.sc.model_count; m++)
+        for (t = 0; t < report_type_count; t++) {
+            int k = m * report_type_count + t;
+            if (timing)
+                r.ns[k] = report_time(&report_types[t], r.mats[r.timed_material].prepared[m], 1 << 20, 5);
+            if (instructions)
+                r.instr[k] = callgrind_instructions(scene_path, r.mats[r.timed_material].p.info.id, r.sc.models[m],
+                                                    report_types[t].name);
+            if (timing || instructions)
+                fprintf(stderr, "%s: %s %s: %.2f ns, %.0f instructions\n", WHERE, r.sc.models[m],
+                        report_types[t].name, r.ns[k], r.instr[k]);
+        }
+    sigma_sweep(&r, sig_de, sig_err);
+    if ((status = compute_hoffman(&r)))
+        goto done;
+
+    mkdir(r.out_dir, 0777);
+    snprintf(path, sizeof path, "%s/curves", r.out_dir);
+    mkdir(path, 0777);
+    if ((status = open_out(&out, r.out_dir, "report.md")))
+        goto done;
+    fprintf(out.f, "# Fresnel models: error against run time\n\nWritten by `build/fresnel report --scene %s` "
+                   "(`make report`). Colour space %s, Gaussian window sigma %g nm, incident medium n1 %g; "
+                   "ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs, clamped to [0, 1] per channel.\n\n",
+            scene_path, r.sc.space, r.sc.sigma, r.sc.n1);
+    report_targets(&r, out.f);
+    write_accuracy_tables(&r, out.f);
+    write_sigma(&r, out.f, sig_de, sig_err);
+    write_approaches(&r, out.f);
+    write_hoffman(&r, out.f);
+    write_budget(&r, out.f);
+    if ((status = commit_out(&out)))
+        goto done;
+    if ((status = report_plots(&r, (const double(*)[REPORT_SIGMAS])sig_de)))
+        goto done;
+    printf("fresnel report: wrote %s/report.md, %s/pareto.svg, %s/sigma.svg, %s/curves/*.svg\n", r.out_dir, r.out_dir,
+           r.out_dir, r.out_dir);
+done:
+    if (r.mats)
+        for (i = 0; i < r.sc.material_count; i++) {
+            for (m = 0; m < r.sc.model_count; m++) {
+                if (r.mats[i].models)
+                    scene_model_free(&r.mats[i].models[m]);
+                if (r.mats[i].prepared)
+                    report_prepared_free(r.mats[i].prepared[m]);
+            }
+            free(r.mats[i].models);
+            free(r.mats[i].prepared);
+            free(r.mats[i].s);
+        }
+    free(r.mats);
+    free(r.cells);
+    free(r.ns);
+    free(r.instr);
+    free(r.g);
+    free(sig_de);
+    free(sig_err);
+    return status;
+}

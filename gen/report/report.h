@@ -1,0 +1,112 @@
+/* `fresnel report`: every material x model x number type on accuracy, speed
+ * and size. One file per part: report_accuracy.c measures,
+ * report_plots.c draws, cmd_report.c runs and writes report.md. */
+#ifndef FRESNEL_REPORT_H
+#define FRESNEL_REPORT_H
+
+#include <stdio.h>
+
+#include "1_spectral/colour_difference.h"
+#include "2_derive/derive.h"
+#include "scene/scene.h"
+#include "scene/scene_eval.h"
+
+#define REPORT_ANGLES 91 /* theta = 0, 1, ..., 90 degrees */
+#define REPORT_MAX_TYPES 4
+#define REPORT_HOFFMAN 14 /* metals in Hoffman's table */
+
+double report_cos(int angle); /* cos of angle degrees; exactly 0 at 90 */
+
+/* A model prepared for one material in every number type (report_types.c). */
+typedef struct report_prepared report_prepared;
+
+typedef struct report_material {
+    material_params p;
+    spectrum *s;
+    double gt[REPORT_ANGLES][3];     /* clamped ground truth: what models are measured against */
+    double gt_raw[REPORT_ANGLES][3]; /* before the out-of-gamut clamp */
+    double clamp_de_mean, clamp_de_max; /* CIEDE2000 of the clamp itself */
+    scene_model *models;             /* one per report model */
+    report_prepared **prepared;      /* the same, prepared for every type */
+} report_material;
+
+report_prepared *report_prepare(const scene_model *m, const material_params *p); /* NULL: out of memory */
+void report_prepared_free(report_prepared *q);
+
+/* A number type the runtime offers: f32, q15 (Q1.15) and, where the compiler
+ * has _Float16, f16. */
+typedef struct report_type {
+    const char *name;
+    void (*eval)(const report_prepared *q, double c, double rgb[3]);
+} report_type;
+extern const report_type report_types[];
+extern const int report_type_count;
+/* ns per RGB evaluation of q in type t (bench.c): median of runs batches of n. */
+double report_time(const report_type *t, const report_prepared *q, int n, int runs);
+
+typedef struct report_cell {
+    double de_mean, de_rms, de_max; /* CIEDE2000 against the clamped ground truth */
+    double abs_max[3];              /* max |model - GT| per channel */
+    double vs_ref_max;              /* max |model in this type - same model in double| */
+} report_cell;
+
+/* One run of the report: the scene, its materials and every measurement. */
+typedef struct report_run {
+    const char *out_dir;
+    scene sc;
+    gen_context *g;
+    lab_space ls;
+    report_material *mats;
+    report_cell *cells; /* [material][model][type] */
+    double *ns;         /* [model][type] ns per RGB evaluation; NaN when not measured */
+    double *instr;      /* [model][type] host instructions per RGB evaluation (callgrind); NaN when not measured */
+    int timed_material; /* the material timings use */
+    double hoffman_rms[REPORT_HOFFMAN][3]; /* ours in ACEScg: Schlick, fitted eta/kappa, point-sampled */
+    int hoffman_in_gamut[REPORT_HOFFMAN];  /* F0 inside ACEScg, unclamped */
+    const char *cross_path;                /* make cross-count + make size output, or NULL */
+    int timing;                            /* 0: --no-timing */
+} report_run;
+
+/* Hoffman's table [Hof20]: his 14 metals with our ids and his RMS CIEDE2000
+ * columns (ACEScg). */
+typedef struct report_hoffman_row {
+    const char *id, *his_name;
+    double schlick, fitted, point_sampled;
+} report_hoffman_row;
+extern const report_hoffman_row report_hoffman[REPORT_HOFFMAN];
+/* Index of material id in the run, or -1. */
+int report_material_index(const report_run *r, const char *id);
+/* The library's targets: each with its measured value and a pass/miss mark
+ * (report_targets.c). Needs hoffman_rms filled. */
+void report_targets(report_run *r, FILE *f);
+
+report_cell *report_cell_at(report_run *r, int mat, int model, int type);
+int report_is_metal(const report_material *rm);
+/* Mean over the scene's metals of each material's mean CIEDE2000, and the
+ * worst max: what the summary and the Pareto plot show. */
+void report_metal_summary(report_run *r, int model, int type, double *mean, double *worst);
+
+#define REPORT_SIGMAS 4
+extern const double report_sigmas[REPORT_SIGMAS]; /* 0, 12, 25, 50 nm */
+
+/* pareto.svg, sigma.svg, curves/<material>.svg (report_plots.c). */
+int report_plots(report_run *r, const double (*sigma_de)[REPORT_SIGMAS]);
+
+/* Ground truth and the clamp's cost for one material. */
+void report_ground_truth(const gen_context *g, const lab_space *ls, report_material *rm);
+/* Accuracy of one prepared model in one type. */
+void report_measure(const lab_space *ls, const report_material *rm, int model, const report_type *t,
+                    report_cell *out);
+/* Mean, RMS and max CIEDE2000 of a whole curve given per angle (rgb[REPORT_ANGLES][3]). */
+void report_curve_de(const lab_space *ls, const double (*gt)[3], const double (*rgb)[3], double *mean,
+                     double *rms, double *max);
+
+/* What `fresnel report` was asked for; report_write measures and writes it:
+ * 0, or a CLI_* status after a message. */
+typedef struct report_options {
+    const char *scene_path, *out_dir, *cross_path, *data_dir; /* data_dir NULL: the default */
+    int timing, instructions; /* 0: skip timing / callgrind counts */
+} report_options;
+int report_write(const report_options *o);
+
+#endif

@@ -1,0 +1,368 @@
+/* The library's targets, each with the value this run measured and a pass/miss
+ * mark, plus the LUT ablation that shows which encoding choice bought what.
+ * Accuracy comes from the run's own materials (the 14 metals of Hoffman's
+ * table must be in the scene), host speed from bench_targets.c, Cortex-M0
+ * counts and sizes from the output of `make cross-count` and `make size`
+ * (--cross FILE; make report passes it). */
+#include <math.h>
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench/bench_targets.h"
+#include "3_encode/fixed_params.h"
+#include "fresnel_fixed.h"
+#include "report/report.h"
+
+enum { MISS, PASS, UNMEASURED };
+
+static void target(FILE *f, const char *what, const char *goal, int status, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(f, "| %s | %s | ", what, goal);
+    va_start(ap, fmt);
+    vfprintf(f, fmt, ap);
+    va_end(ap);
+    fprintf(f, " | %s |\n", status == PASS ? "**pass**" : (status == MISS ? "**MISS**" : "not measured"));
+}
+
+/* ---- LUTs in Q1.15 on Hoffman's metals */
+
+typedef struct lut_variant {
+    const char *what;
+    int n;
+    lut_spacing spacing;
+    int fitted, cubic;
+} lut_variant;
+
+static const lut_variant lut_variants[] = {
+    {"16 nodes uniform in c, values on the curve, linear", 16, LUT_UNIFORM, 0, 0},
+    {"16 nodes uniform in sqrt(c), values on the curve, linear (the naive LUT)", 16, LUT_GRAZING, 0, 0},
+    {"16 nodes uniform in c, fitted values, linear", 16, LUT_UNIFORM, 1, 0},
+    {"16 nodes uniform in sqrt(c), fitted values, linear (lut16)", 16, LUT_GRAZING, 1, 0},
+    {"16 nodes uniform in sqrt(c), values on the curve, Catmull-Rom", 16, LUT_GRAZING, 0, 1},
+    {"16 nodes uniform in sqrt(c), fitted values, Catmull-Rom (lut16-cubic)", 16, LUT_GRAZING, 1, 1},
+    {"32 nodes uniform in sqrt(c), values on the curve, linear", 32, LUT_GRAZING, 0, 0},
+    {"32 nodes uniform in sqrt(c), fitted values, linear (lut32)", 32, LUT_GRAZING, 1, 0},
+    {"32 nodes uniform in sqrt(c), fitted values, Catmull-Rom (lut32-cubic)", 32, LUT_GRAZING, 1, 1},
+    {"16 nodes uniform in a piecewise-linear sqrt(c), fitted, linear (lut16, grazing-pl)", 16, LUT_GRAZING_PL, 1, 0},
+    {"32 nodes uniform in a piecewise-linear sqrt(c), fitted, linear (lut32, grazing-pl)", 32, LUT_GRAZING_PL, 1, 0},
+};
+#define N_VARIANTS ((int)(sizeof lut_variants / sizeof lut_variants[0]))
+#define V_LUT16_CUBIC 5
+#define V_LUT32 7
+#define V_LUT32_PL 10
+
+typedef struct lut_result {
+    int measured;
+    double worst_mean, worst_max, gold_mean, gold_max;
+    const char *worst_mean_at, *worst_max_at;
+} lut_result;
+
+/* One metal through one variant in Q1.15: mean and max CIEDE2000. */
+static int lut_metal(report_run *r, const report_material *rm, const lut_variant *v, double *mean, double *max)
+{
+    double table[3 * 32], rgb[REPORT_ANGLES][3], rms;
+    uint16_t q[3 * 32];
+    int i, ch, a;
+    if (v->fitted) {
+        if (encode_lut(rm->s, r->g, &rm->p, v->spacing, v->n, v->cubic ? LUT_CUBIC : LUT_PLAIN, table))
+            return -1;
+    } else
+        for (i = 0; i < v->n; i++) {
+            double gt[3];
+            ground_truth_clamped(rm->s, r->g, rm->p.n1, lut_node_cos(v->spacing, i, v->n), gt);
+            for (ch = 0; ch < 3; ch++)
+                table[ch * v->n + i] = gt[ch];
+        }
+    for (i = 0; i < 3 * v->n; i++)
+        q[i] = (uint16_t)fixed_q15(table[i]);
+    for (a = 0; a < REPORT_ANGLES; a++) {
+        int32_t c = fixed_q15(report_cos(a));
+        fresnel_q15_rgb o;
+        if (v->spacing == LUT_GRAZING_PL) { /* the Cortex-M0 fast path, channel by channel */
+            o.r = fresnel_lut_q15_u16_pl_fast(q, v->n, c);
+            o.g = fresnel_lut_q15_u16_pl_fast(q + v->n, v->n, c);
+            o.b = fresnel_lut_q15_u16_pl_fast(q + 2 * v->n, v->n, c);
+        } else
+            o = v->cubic ? fresnel_lut_cubic_q15_u16_rgb(q, v->n, c)
+                         : (v->spacing == LUT_UNIFORM ? fresnel_lut_linear_q15_u16_rgb(q, v->n, c)
+                                                      : fresnel_lut_q15_u16_rgb(q, v->n, c));
+        rgb[a][0] = o.r / 32768.0;
+        rgb[a][1] = o.g / 32768.0;
+        rgb[a][2] = o.b / 32768.0;
+    }
+    report_curve_de(&r->ls, (const double(*)[3])rm->gt, (const double(*)[3])rgb, mean, &rms, max);
+    return 0;
+}
+
+static void lut_measure(report_run *r, lut_result *out)
+{
+    int v, i;
+    memset(out, 0, N_VARIANTS * sizeof *out);
+    for (i = 0; i < REPORT_HOFFMAN; i++)
+        if (report_material_index(r, report_hoffman[i].id) < 0)
+            return; /* all 14 or nothing */
+    for (v = 0; v < N_VARIANTS; v++) {
+        lut_result *o = &out[v];
+        o->measured = 1;
+        for (i = 0; i < REPORT_HOFFMAN; i++) {
+            const report_material *rm = &r->mats[report_material_index(r, report_hoffman[i].id)];
+            double mean, max;
+            if (lut_metal(r, rm, &lut_variants[v], &mean, &max)) {
+                o->measured = 0;
+                break;
+            }
+            if (mean >= o->worst_mean) {
+                o->worst_mean = mean;
+                o->worst_mean_at = report_hoffman[i].id;
+            }
+            if (max >= o->worst_max) {
+                o->worst_max = max;
+                o->worst_max_at = report_hoffman[i].id;
+            }
+            if (!strcmp(report_hoffman[i].id, "au")) {
+                o->gold_mean = mean;
+                o->gold_max = max;
+            }
+        }
+    }
+}
+
+static void lut_target(FILE *f, const char *what, const lut_result *o, double mean, double max)
+{
+    char goal[64];
+    snprintf(goal, sizeof goal, "<= %g mean, <= %g max dE2000, each metal", mean, max);
+    if (!o->measured)
+        target(f, what, goal, UNMEASURED, "the scene lacks Hoffman's 14 metals");
+    else
+        target(f, what, goal, o->worst_mean <= mean && o->worst_max <= max ? PASS : MISS,
+               "worst mean %.4f (%s), worst max %.4f (%s)", o->worst_mean, o->worst_mean_at, o->worst_max,
+               o->worst_max_at);
+}
+
+static void hoffman_target(report_run *r, FILE *f)
+{
+    int i, beaten = 0, counted = 0;
+    char misses[256] = "";
+    double lo = INFINITY, hi = 0.0;
+    for (i = 0; i < REPORT_HOFFMAN; i++) {
+        if (!r->hoffman_in_gamut[i])
+            continue;
+        counted++;
+        if (r->hoffman_rms[i][1] <= report_hoffman[i].fitted + 0.005) /* his table has two decimals */
+            beaten++;
+        else
+            snprintf(misses + strlen(misses), sizeof misses - strlen(misses), " %s %.3f vs %.2f;", report_hoffman[i].id,
+                     r->hoffman_rms[i][1], report_hoffman[i].fitted);
+        lo = fmin(lo, r->hoffman_rms[i][1]);
+        hi = fmax(hi, r->hoffman_rms[i][1]);
+    }
+    target(f, "Fitted RGB eta, kappa (exact Fresnel), RMS dE2000 in ACEScg",
+           "<= Hoffman's \"Fitted\" column per metal with F0 in gamut (his two decimals: <= his + 0.005)", beaten == counted ? PASS : MISS,
+           "%d of %d metals at or below his value (ours %.3f-%.3f, his 0.01-0.08)%s%s", beaten, counted, lo, hi,
+           *misses ? "; above:" : "", misses);
+}
+
+static void write_ablation(FILE *f, const lut_result *o)
+{
+    int v;
+    if (!o[0].measured)
+        return;
+    fprintf(f, "\nWhich LUT choice bought what (Q1.15 tables, 2 bytes per node and channel, through the Q1.15 "
+               "runtime; CIEDE2000 over Hoffman's 14 metals, worst per-metal mean and max, and gold, whose red F0 "
+               "is out of the sRGB gamut and clamped):\n\n"
+               "| LUT | bytes per material | worst mean | worst max | gold mean / max |\n|---|---:|---:|---:|---:|\n");
+    for (v = 0; v < N_VARIANTS; v++)
+        fprintf(f, "| %s | %d | %.4f (%s) | %.4f (%s) | %.4f / %.4f |\n", lut_variants[v].what, 6 * lut_variants[v].n,
+                o[v].worst_mean, o[v].worst_mean_at, o[v].worst_max, o[v].worst_max_at, o[v].gold_mean,
+                o[v].gold_max);
+}
+
+/* ---- host speed (bench_targets.c), one channel per evaluation */
+
+static const bench_target_row *speed_row(const bench_target_row *rows, int n, const char *name)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (!strcmp(rows[i].name, name))
+            return &rows[i];
+    return NULL;
+}
+
+static void speed_targets(FILE *f, int timing)
+{
+    bench_target_row rows[BENCH_TARGET_ROWS];
+    const bench_target_row *mit, *pbrt, *best = NULL;
+    static const char *const ours[] = {"conductor", "conductor-prepared", "conductor-batch"};
+    static const char *const luts[][2] = {{"lut16-cubic-f32", "lut16-cubic-q15"}, {"lut32-f32", "lut32-q15"},
+                                          {"lut32-f32", "lut32-q15-fast"}};
+    int n = timing ? bench_speed_targets(rows, BENCH_TARGET_ROWS) : -1, k;
+    char list[256] = "";
+    if (n <= 0) {
+        target(f, "Exact conductor f32 against Mitsuba's algorithm", "<= 1.2x its time, <= 1e-6 abs error",
+               UNMEASURED, "timing off in this run");
+        return;
+    }
+    mit = speed_row(rows, n, "mitsuba-style");
+    pbrt = speed_row(rows, n, "pbrt-style");
+    for (k = 0; k < 3; k++) {
+        const bench_target_row *o = speed_row(rows, n, ours[k]);
+        if (!o)
+            continue;
+        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s %.2fx Schlick, err %.1e", *list ? "; " : "",
+                 o->name, o->ratio_to_schlick, o->max_abs_err);
+        if (o->max_abs_err <= 1e-6 && (!best || o->ns < best->ns))
+            best = o;
+    }
+    if (mit && best)
+        target(f, "Exact conductor f32 (ours) against Mitsuba 3's algorithm (ours written from it, same run)",
+               "<= 1.2x its time, <= 1e-6 abs error", best->ns <= 1.2 * mit->ns ? PASS : MISS,
+               "best %s: %.2fx Mitsuba's time; Mitsuba-style %.2fx Schlick, err %.1e, matched index at c = 1e-4: "
+               "%.3g; ours: %s",
+               best->name, best->ns / mit->ns, mit->ratio_to_schlick, mit->max_abs_err, mit->matched_c1e4, list);
+    if (pbrt && best)
+        target(f, "Exact conductor f32 (ours) against pbrt-v4's FrComplex algorithm", ">= 2x faster",
+               pbrt->ns >= 2.0 * best->ns ? PASS : MISS, "%.2fx faster (%s); pbrt-style %.2fx Schlick, err %.1e",
+               pbrt->ns / best->ns, best->name, pbrt->ratio_to_schlick, pbrt->max_abs_err);
+    for (k = 0; k < 3; k++) {
+        const bench_target_row *a = speed_row(rows, n, luts[k][0]), *b = speed_row(rows, n, luts[k][1]);
+        const bench_target_row *sq = speed_row(rows, n, "schlick-q15");
+        char what[96];
+        if (!a || !b || !sq)
+            continue;
+        snprintf(what, sizeof what, "LUT evaluation, %s and %s", luts[k][0], luts[k][1]);
+        target(f, what, "<= 1.5x Schlick in the same number type (one channel, same run)",
+               a->ratio_to_schlick <= 1.5 && b->ns <= 1.5 * sq->ns ? PASS : MISS,
+               "f32 %.2fx binary32 Schlick; Q1.15 %.2fx Q1.15 Schlick (%.2fx binary32 Schlick)", a->ratio_to_schlick,
+               b->ns / sq->ns, b->ratio_to_schlick);
+    }
+}
+
+/* ---- Cortex-M0 (make cross-count, make size output) */
+
+/* Mean instructions of row `name` in the "== m0 fixed point" section: the
+ * row is the name, spaces, then mean, min and max. NaN when absent. */
+static double m0_count(const char *path, const char *name)
+{
+    FILE *in = fopen(path, "r");
+    char line[512];
+    int in_m0 = 0;
+    double v = NAN;
+    size_t len = strlen(name);
+    if (!in)
+        return NAN;
+    while (fgets(line, sizeof line, in)) {
+        if (!strncmp(line, "== ", 3))
+            in_m0 = !strncmp(line, "== m0 fixed point", 17);
+        else if (in_m0 && !strncmp(line, name, len) && line[len] == ' ') {
+            char *end;
+            double x = strtod(line + len, &end);
+            if (end != line + len)
+                v = x;
+        }
+    }
+    fclose(in);
+    return v;
+}
+
+/* The numbers after ".text " and ".rodata " on the line starting with
+ * prefix; -1 when absent. */
+static void size_line(const char *path, const char *prefix, long *text, long *rodata, long *more_text,
+                      long *more_rodata)
+{
+    FILE *in = fopen(path, "r");
+    char line[512];
+    *text = *rodata = *more_text = *more_rodata = -1;
+    if (!in)
+        return;
+    while (fgets(line, sizeof line, in))
+        if (!strncmp(line, prefix, strlen(prefix))) {
+            char *p = strstr(line, ".text "), *q;
+            if (p)
+                *text = strtol(p + 6, NULL, 10);
+            if ((q = strstr(line, ".rodata ")))
+                *rodata = strtol(q + 8, NULL, 10);
+            if ((p = strstr(line, "per further material: .text ")))
+                *more_text = strtol(p + 28, NULL, 10);
+            if (p && (q = strstr(p, ".rodata ")))
+                *more_rodata = strtol(q + 8, NULL, 10);
+        }
+    fclose(in);
+}
+
+static void m0_targets(const report_run *r, FILE *f)
+{
+    static const struct {
+        const char *what, *row, *library_row;
+        double goal;
+    } counts[] = {{"Schlick", "schlick fast", "schlick", 20},
+                  {"LUT (u16, 64 nodes, grazing-pl spacing)", "lut u16 pl fast", NULL, 30},
+                  {"LUT (u16, 64 nodes, nodes uniform in sqrt(c))", "lut u16 fast", "lut u16", 30},
+                  {"F82", "f82 fast", "f82", 35},
+                  {"exact conductor", "exact-conductor fast", "exact-conductor", 150}};
+    long t, ro, mt, mr;
+    int k;
+    if (!r->cross_path) {
+        target(f, "Cortex-M0 instructions and sizes", "", UNMEASURED, "run through `make report` (--cross)");
+        return;
+    }
+    for (k = 0; k < 5; k++) {
+        double fast = m0_count(r->cross_path, counts[k].row);
+        double lib = counts[k].library_row ? m0_count(r->cross_path, counts[k].library_row) : NAN;
+        char what[160], goal[32];
+        snprintf(what, sizeof what, "Cortex-M0 fixed point, %s: instructions per evaluation (qemu trace)",
+                 counts[k].what);
+        snprintf(goal, sizeof goal, "<= %.0f", counts[k].goal);
+        if (isnan(fast) && isnan(lib))
+            target(f, what, goal, UNMEASURED, "not in the cross-count output");
+        else if (isnan(fast))
+            target(f, what, goal, lib <= counts[k].goal ? PASS : MISS, "%.0f (library function; no fast path)", lib);
+        else if (isnan(lib))
+            target(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (its only form)", fast);
+        else
+            target(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (library function %.0f)",
+                   fast, lib);
+    }
+    size_line(r->cross_path, "schlick-only fixed scene:", &t, &ro, &mt, &mr);
+    if (t >= 0)
+        target(f, "Cortex-M0 -Os, a Schlick-only fixed scene, one channel per material", "<= 64 B .text, <= 8 B .rodata per material",
+               t <= 64 && mr <= 8 ? PASS : MISS, ".text %ld B; .rodata %ld B per further material", t, mr);
+    size_line(r->cross_path, "schlick-only fixed scene, RGB", &t, &ro, &mt, &mr);
+    if (t >= 0)
+        target(f, "Cortex-M0 -Os, the same scene in RGB (an F0 triple per material)", "<= 64 B .text, <= 8 B .rodata per material",
+               t <= 64 && mr <= 8 ? PASS : MISS, ".text %ld B; .rodata %ld B per further material", t, mr);
+    size_line(r->cross_path, "whole fixed runtime", &t, &ro, &mt, &mr);
+    if (t >= 0)
+        target(f, "Cortex-M0 -Os, the whole fixed-point runtime (every model's Q15 code)", "<= 2048 B .text",
+               t <= 2048 ? PASS : MISS, ".text %ld B", t);
+}
+
+void report_targets(report_run *r, FILE *f)
+{
+    lut_result luts[N_VARIANTS];
+    lut_measure(r, luts);
+    fprintf(f, "## Targets\n\nEach target of the library with the value this run measured. Accuracy: "
+               "theta 0-90 deg in 1 deg steps, linear %s, against the clamped spectral ground truth, on the 14 "
+               "metals of Hoffman's table.\n\n| target | goal | measured | |\n|---|---|---|---|\n",
+            r->sc.space);
+    lut_target(f, "LUT, 16 nodes per channel in Q1.15 (96 bytes per material): lut16-cubic", &luts[V_LUT16_CUBIC],
+               0.01, 0.05);
+    lut_target(f, "LUT, 32 nodes per channel in Q1.15 (192 bytes): lut32", &luts[V_LUT32], 0.005, 0.03);
+    lut_target(f, "LUT, 32 nodes per channel in Q1.15 for the Cortex-M0 fast path: lut32, lut_spacing grazing-pl",
+               &luts[V_LUT32_PL], 0.005, 0.03);
+    hoffman_target(r, f);
+    if (luts[V_LUT16_CUBIC].measured)
+        target(f, "Gold (red F0 1.04 in linear sRGB, out of gamut): clamp per channel, then the LUT targets",
+               "lut16: <= 0.01 / 0.05; lut32: <= 0.005 / 0.03",
+               luts[V_LUT16_CUBIC].gold_mean <= 0.01 && luts[V_LUT16_CUBIC].gold_max <= 0.05 &&
+                       luts[V_LUT32].gold_mean <= 0.005 && luts[V_LUT32].gold_max <= 0.03
+                   ? PASS
+                   : MISS,
+               "lut16-cubic %.4f / %.4f, lut32 %.4f / %.4f", luts[V_LUT16_CUBIC].gold_mean,
+               luts[V_LUT16_CUBIC].gold_max, luts[V_LUT32].gold_mean, luts[V_LUT32].gold_max);
+    speed_targets(f, r->timing);
+    m0_targets(r, f);
+    write_ablation(f, luts);
+    fprintf(f, "\n");
+}

@@ -1,0 +1,496 @@
+/* Scene manifest parser (format in scene.h). */
+#include "scene/scene.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/types.h>
+
+#include "cli/cli.h"
+#include "3_encode/encode.h"
+#include "1_spectral/spectral.h"
+
+const char *const scene_model_names[] = {"schlick",        "lsk",  "lsk-comp",
+                                         "f82",            "gulbrandsen",
+                                         "cook-torrance",  "exact",
+                                         "exact-gaussian", "exact-point", "approx-conductor",
+                                         NULL};
+/* Number types the generator can emit; a new type is one more entry here. */
+const char *const scene_type_names[] = {"f32", "q15", NULL};
+const char *const scene_lut_spacing_names[] = {"uniform", "grazing", "grazing-pl", NULL};
+
+enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
+                 KEY_LUT_SPACING, KEY_NAME, KEY_COUNT };
+static const char *const key_names[] = {"materials", "models", "space",       "sigma",
+                                        "n1",        "types",  "lut_spacing", "name", NULL};
+
+#define SIGMA_MAX 200.0
+#define SCENE_MAX_ERRORS 50
+#define N1_MIN 1.0
+#define N1_MAX 4.0
+
+static int *key_line(scene *s, int key)
+{
+    switch (key) {
+    case KEY_MATERIALS: return &s->materials_line;
+    case KEY_MODELS: return &s->models_line;
+    case KEY_SPACE: return &s->space_line;
+    case KEY_SIGMA: return &s->sigma_line;
+    case KEY_N1: return &s->n1_line;
+    case KEY_TYPES: return &s->types_line;
+    case KEY_NAME: return &s->name_line;
+    default: return &s->lut_spacing_line;
+    }
+}
+
+/* Messages echo whole user values, so neither part has a fixed length bound;
+ * both are sized with a measuring vsnprintf before cli_error prints them. */
+static int report(const char *path, int line, const char *fmt, ...)
+{
+    va_list ap;
+    int len, where_len;
+    char *msg, *where;
+    va_start(ap, fmt);
+    len = vsnprintf(NULL, 0, fmt, ap);
+    va_end(ap);
+    where_len = line > 0 ? snprintf(NULL, 0, "%s:%d", path, line) : (int)strlen(path);
+    msg = malloc((size_t)(len > 0 ? len : 0) + 1);
+    where = malloc((size_t)where_len + 1);
+    if (msg == NULL || where == NULL) {
+        free(msg);
+        free(where);
+        return cli_error(path, "out of memory reporting an error at line %d", line);
+    }
+    va_start(ap, fmt);
+    vsnprintf(msg, (size_t)len + 1, fmt, ap);
+    va_end(ap);
+    if (line > 0)
+        snprintf(where, (size_t)where_len + 1, "%s:%d", path, line);
+    else
+        memcpy(where, path, (size_t)where_len + 1);
+    cli_error(where, "%s", msg);
+    free(msg);
+    free(where);
+    return CLI_BAD_INPUT;
+}
+
+/* " (did you mean 'x'?)" when a name of table is a near miss of s, else "". */
+static const char *hint(const char *const *table, const char *s, char *buf, size_t size)
+{
+    const char *near = cli_suggest(s, table);
+    if (!near)
+        return "";
+    snprintf(buf, size, " (did you mean '%s'?)", near);
+    return buf;
+}
+
+static int table_index(const char *const *table, const char *s)
+{
+    int i;
+    for (i = 0; table[i] != NULL; i++)
+        if (strcmp(table[i], s) == 0)
+            return i;
+    return -1;
+}
+
+/* "a, b, c" for messages; fits every table here with room to spare. */
+static const char *table_list(const char *const *table, char *buf, size_t size)
+{
+    size_t used = 0;
+    int i;
+    buf[0] = '\0';
+    for (i = 0; table[i] != NULL; i++) {
+        int n = snprintf(buf + used, size - used, "%s%s", i ? ", " : "", table[i]);
+        if (n < 0 || (size_t)n >= size - used)
+            break;
+        used += (size_t)n;
+    }
+    return buf;
+}
+
+static char *trim(char *s)
+{
+    char *end;
+    while (isspace((unsigned char)*s))
+        s++;
+    end = s + strlen(s);
+    while (end > s && isspace((unsigned char)end[-1]))
+        end--;
+    *end = '\0';
+    return s;
+}
+
+/* Split off the next whitespace-separated token of *cursor, NUL-terminating
+ * it in place; NULL when none is left. */
+static char *next_token(char **cursor)
+{
+    char *p = *cursor, *start;
+    while (isspace((unsigned char)*p))
+        p++;
+    if (*p == '\0') {
+        *cursor = p;
+        return NULL;
+    }
+    start = p;
+    while (*p != '\0' && !isspace((unsigned char)*p))
+        p++;
+    if (*p != '\0')
+        *p++ = '\0';
+    *cursor = p;
+    return start;
+}
+
+int scene_model_lut_size(const char *model, int *form)
+{
+    const char *p;
+    int n = 0, digits = 0, f;
+    if (model == NULL || strncmp(model, "lut", 3) != 0)
+        return 0;
+    p = model + 3;
+    if (*p == '0') /* one spelling per size, so duplicates are caught by name */
+        return 0;
+    while (isdigit((unsigned char)*p) && digits < 4) {
+        n = n * 10 + (*p - '0');
+        p++;
+        digits++;
+    }
+    if (digits == 0 || n < SCENE_LUT_MIN || n > SCENE_LUT_MAX)
+        return 0;
+    if (*p == '\0')
+        f = LUT_PLAIN;
+    else if (strcmp(p, "-residual") == 0)
+        f = LUT_RESIDUAL;
+    else if (strcmp(p, "-cubic") == 0)
+        f = LUT_CUBIC;
+    else
+        return 0;
+    if (form)
+        *form = f;
+    return n;
+}
+
+int scene_model_known(const char *model)
+{
+    return model != NULL &&
+           (table_index(scene_model_names, model) >= 0 || scene_model_lut_size(model, NULL) > 0);
+}
+
+static int material_id_ok(const char *id)
+{
+    for (; *id; id++)
+        if (!((*id >= 'a' && *id <= 'z') || (*id >= '0' && *id <= '9') || *id == '_'))
+            return 0;
+    return 1;
+}
+
+static int find_in(char (*list)[SCENE_NAME_SIZE], int count, const char *s)
+{
+    int i;
+    for (i = 0; i < count; i++)
+        if (strcmp(list[i], s) == 0)
+            return i;
+    return -1;
+}
+
+static int parse_materials(const char *path, int line, char *value, scene *s)
+{
+    char *cursor = value, *id;
+    int i;
+    while ((id = next_token(&cursor)) != NULL) {
+        if (!material_id_ok(id))
+            return report(path, line, "expected material ids made of a-z, 0-9 and _, got '%s'", id);
+        if (strlen(id) >= SCENE_ID_SIZE)
+            return report(path, line, "expected a material id of at most %d characters, got '%s'",
+                          SCENE_ID_SIZE - 1, id);
+        for (i = 0; i < s->material_count; i++)
+            if (strcmp(s->materials[i], id) == 0)
+                return report(path, line, "expected each material once, '%s' is listed twice", id);
+        if (s->material_count == SCENE_MAX_MATERIALS)
+            return report(path, line, "expected at most %d materials", SCENE_MAX_MATERIALS);
+        strcpy(s->materials[s->material_count++], id);
+    }
+    return 0;
+}
+
+static int parse_models(const char *path, int line, char *value, scene *s)
+{
+    char *cursor = value, *model, names[256];
+    while ((model = next_token(&cursor)) != NULL) {
+        if (!scene_model_known(model)) {
+            if (strncmp(model, "lut", 3) == 0)
+                return report(path, line,
+                              "expected lutN, lutN-residual or lutN-cubic with N an integer in %d..%d "
+                              "(no leading zeros), got '%s'",
+                              SCENE_LUT_MIN, SCENE_LUT_MAX, model);
+            char near[SCENE_NAME_SIZE + 32];
+            return report(path, line,
+                          "expected a model (one of %s, lutN, lutN-residual, lutN-cubic), got '%s'%s",
+                          table_list(scene_model_names, names, sizeof names), model,
+                          hint(scene_model_names, model, near, sizeof near));
+        }
+        if (find_in(s->models, s->model_count, model) >= 0)
+            return report(path, line, "expected each model once, '%s' is listed twice", model);
+        if (s->model_count == SCENE_MAX_MODELS)
+            return report(path, line, "expected at most %d models", SCENE_MAX_MODELS);
+        strcpy(s->models[s->model_count++], model);
+    }
+    return 0;
+}
+
+static int parse_types(const char *path, int line, char *value, scene *s)
+{
+    char *cursor = value, *type, names[256];
+    s->type_count = 0; /* replaces the default */
+    while ((type = next_token(&cursor)) != NULL) {
+        char near[SCENE_NAME_SIZE + 32];
+        if (strcmp(type, "fixed") == 0)
+            type = "q15"; /* the older name of the Q15 type */
+        if (table_index(scene_type_names, type) < 0)
+            return report(path, line, "expected a number type (one of %s), got '%s'%s",
+                          table_list(scene_type_names, names, sizeof names), type,
+                          hint(scene_type_names, type, near, sizeof near));
+        if (find_in(s->types, s->type_count, type) >= 0)
+            return report(path, line, "expected each type once, '%s' is listed twice", type);
+        if (s->type_count == SCENE_MAX_TYPES)
+            return report(path, line, "expected at most %d types", SCENE_MAX_TYPES);
+        /* Bounded: the type table is meant to grow. */
+        snprintf(s->types[s->type_count++], SCENE_NAME_SIZE, "%s", type);
+    }
+    return 0;
+}
+
+/* A value that must be one name of `table`, copied to dst. */
+static int parse_choice(const char *path, int line, const char *what,
+                        const char *const *table, const char *value, char *dst)
+{
+    char names[256], near[SCENE_NAME_SIZE + 32];
+    if (table == colour_space_ids && colour_space_find(value))
+        value = colour_space_find(value); /* any case, common aliases */
+    if (table_index(table, value) < 0)
+        return report(path, line, "expected a %s (one of %s), got '%s'%s", what,
+                      table_list(table, names, sizeof names), value, hint(table, value, near, sizeof near));
+    snprintf(dst, SCENE_NAME_SIZE, "%s", value); /* dst is a SCENE_NAME_SIZE field */
+    return 0;
+}
+
+static int parse_number(const char *path, int line, const char *key, const char *value,
+                        double lo, double hi, double *out)
+{
+    double v;
+    if (cli_parse_double(value, &v) != 0 || !(v >= lo && v <= hi))
+        return report(path, line, "expected %s as a number in [%g, %g], got '%s'", key, lo, hi,
+                      value);
+    *out = v;
+    return 0;
+}
+
+int scene_name_ok(const char *name)
+{
+    size_t i, len = strlen(name);
+    if (len == 0 || len >= SCENE_PREFIX_SIZE || name[0] == '_' || name[len - 1] == '_')
+        return 0;
+    for (i = 0; i < len; i++)
+        if (!(isalnum((unsigned char)name[i]) && (unsigned char)name[i] < 128) &&
+            !(name[i] == '_' && name[i + 1] != '_'))
+            return 0;
+    return 1;
+}
+
+static int parse_name(const char *path, int line, const char *value, scene *s)
+{
+    if (!scene_name_ok(value))
+        return report(path, line,
+                      "expected name as a C identifier part: 1 to %d of A-Z a-z 0-9 _, no '_' at either end "
+                      "and no '__' (C++ reserves it), got '%s'",
+                      SCENE_PREFIX_SIZE - 1, value);
+    strcpy(s->name, value);
+    return 0;
+}
+
+void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE])
+{
+    const char *base = strrchr(path, '/'), *end;
+    size_t i = 0;
+    base = base ? base + 1 : path;
+    end = base + strlen(base);
+    if ((size_t)(end - base) > 6 && strcmp(end - 6, ".scene") == 0)
+        end -= 6;
+    for (; base < end && i + 1 < SCENE_PREFIX_SIZE; base++) {
+        unsigned char ch = (unsigned char)*base;
+        char c = ch < 128 && isalnum(ch) ? (char)tolower(ch) : '_';
+        if (c == '_' && (i == 0 || out[i - 1] == '_'))
+            continue; /* no leading '_', no '__' */
+        out[i++] = c;
+    }
+    while (i > 0 && out[i - 1] == '_')
+        i--;
+    if (i == 0)
+        memcpy(out, "scene", (i = 5));
+    out[i] = '\0';
+}
+
+static int parse_value(const char *path, int line, int key, char *value, scene *s)
+{
+    switch (key) {
+    case KEY_MATERIALS: return parse_materials(path, line, value, s);
+    case KEY_MODELS: return parse_models(path, line, value, s);
+    case KEY_TYPES: return parse_types(path, line, value, s);
+    case KEY_NAME: return parse_name(path, line, value, s);
+    case KEY_SPACE:
+        return parse_choice(path, line, "colour space", colour_space_ids, value, s->space);
+    case KEY_LUT_SPACING:
+        return parse_choice(path, line, "LUT spacing", scene_lut_spacing_names, value,
+                            s->lut_spacing);
+    case KEY_SIGMA: return parse_number(path, line, "sigma (nm)", value, 0.0, SIGMA_MAX, &s->sigma);
+    default: return parse_number(path, line, "n1", value, N1_MIN, N1_MAX, &s->n1);
+    }
+}
+
+static void set_defaults(scene *s)
+{
+    memset(s, 0, sizeof *s);
+    strcpy(s->space, "srgb");
+    strcpy(s->lut_spacing, "grazing");
+    strcpy(s->types[0], "f32");
+    s->type_count = 1;
+    s->sigma = 25.0;
+    s->n1 = 1.0;
+}
+
+/* One non-blank, non-comment line, comments already cut off. */
+static int parse_line(const char *path, int line, char *text, scene *s)
+{
+    char *eq = strchr(text, '='), *key, *value, names[256];
+    int k, *where;
+    if (eq == NULL)
+        return report(path, line, "expected 'key = value', got '%s'", text);
+    *eq = '\0';
+    key = trim(text);
+    value = trim(eq + 1);
+    if (*key == '\0')
+        return report(path, line, "expected a key before '='");
+    k = table_index(key_names, key);
+    if (k < 0) {
+        char near[SCENE_NAME_SIZE + 32];
+        return report(path, line, "expected a key (one of %s), got '%s'%s",
+                      table_list(key_names, names, sizeof names), key, hint(key_names, key, near, sizeof near));
+    }
+    where = key_line(s, k);
+    if (*where != 0)
+        return report(path, line, "expected '%s' once, it is already set at line %d", key, *where);
+    if (*value == '\0')
+        return report(path, line, "expected a value after '%s ='", key);
+    *where = line;
+    return parse_value(path, line, k, value, s);
+}
+
+int scene_load(const char *path, scene *out)
+{
+    FILE *f;
+    char *buf = NULL;
+    size_t cap = 0;
+    ssize_t len;
+    int line = 0, rc = 0, read_errno, errors = 0;
+    set_defaults(out);
+    f = fopen(path, "rb");
+    if (f == NULL)
+        return report(path, 0, "cannot read: %s", strerror(errno));
+    for (;;) {
+        char *text, *hash;
+        errno = 0;
+        len = getline(&buf, &cap, f);
+        read_errno = errno;
+        if (len < 0)
+            break;
+        line++;
+        text = buf;
+        if (strlen(text) != (size_t)len) {
+            rc = report(path, line, "expected text, found a NUL byte");
+            if (++errors == SCENE_MAX_ERRORS)
+                break;
+            continue;
+        }
+        if (line == 1 && len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
+            text += 3;
+        hash = strchr(text, '#');
+        if (hash != NULL)
+            *hash = '\0';
+        text = trim(text);
+        if (*text == '\0')
+            continue;
+        /* Every bad line is reported, each at its line, so one run lists
+         * all there is to fix. */
+        if (parse_line(path, line, text, out) != 0) {
+            rc = CLI_BAD_INPUT;
+            if (++errors == SCENE_MAX_ERRORS) {
+                report(path, line, "stopping after %d errors", SCENE_MAX_ERRORS);
+                break;
+            }
+        }
+    }
+    free(buf);
+    if (rc == 0 && ferror(f)) {
+        fclose(f);
+        report(path, 0, "cannot read: %s", strerror(read_errno ? read_errno : EIO));
+        return CLI_FAILURE; /* the file failed, not its content */
+    }
+    fclose(f);
+    if (rc != 0)
+        return rc;
+    if (out->materials_line == 0)
+        return report(path, line > 0 ? line : 1,
+                      "expected a 'materials = id ...' line, the required key is missing");
+    if (out->models_line == 0)
+        return report(path, line > 0 ? line : 1,
+                      "expected a 'models = name ...' line, the required key is missing");
+    if (strcmp(out->lut_spacing, "grazing-pl") == 0) {
+        int m, form, n;
+        if (out->type_count != 1 || strcmp(out->types[0], "q15") != 0)
+            return report(path, out->lut_spacing_line ? out->lut_spacing_line : 1,
+                          "expected types = q15 with lut_spacing grazing-pl (its tables are for "
+                          "fresnel_lut_q15_u16_pl_fast only)");
+        for (m = 0; m < out->model_count; m++)
+            if ((n = scene_model_lut_size(out->models[m], &form)) && (form != LUT_PLAIN || n > 64))
+                return report(path, out->models_line,
+                              "expected lutN with N <= 64 and no -cubic or -residual with lut_spacing grazing-pl, "
+                              "got '%s'",
+                              out->models[m]);
+    }
+    if (strcmp(out->lut_spacing, "uniform") == 0) {
+        int m, form;
+        for (m = 0; m < out->model_count; m++)
+            if (scene_model_lut_size(out->models[m], &form) && form == LUT_CUBIC)
+                return report(path, out->models_line,
+                              "expected lut_spacing grazing with '%s' (the cubic reads nodes uniform in "
+                              "sqrt(cos theta)), lut_spacing is uniform at line %d",
+                              out->models[m], out->lut_spacing_line);
+    }
+    return 0;
+}
+
+int scene_has_model(const scene *sc, const char *model)
+{
+    int i;
+    for (i = 0; i < sc->model_count; i++)
+        if (!strcmp(sc->models[i], model))
+            return 1;
+    return 0;
+}
+
+lut_spacing scene_lut_spacing(const scene *sc)
+{
+    return !strcmp(sc->lut_spacing, "uniform") ? LUT_UNIFORM
+                                                : (!strcmp(sc->lut_spacing, "grazing-pl") ? LUT_GRAZING_PL : LUT_GRAZING);
+}
+
+int scene_has_type(const scene *sc, const char *type)
+{
+    int i;
+    for (i = 0; i < sc->type_count; i++)
+        if (!strcmp(sc->types[i], type))
+            return 1;
+    return 0;
+}

@@ -1,0 +1,129 @@
+/* Scene manifests: which materials, models and number types one generated C
+ * header contains (host only).
+ *
+ * FORMAT (the reference for users)
+ *   UTF-8 or ASCII text, one `key = value` per line. Blank lines and lines
+ *   whose first non-blank character is `#` are ignored; a `#` after a value
+ *   starts a comment running to the end of the line (no value contains `#`).
+ *   Whitespace around keys and values is trimmed; CRLF line ends and a UTF-8
+ *   byte-order mark at the start of the file are accepted. Each key may appear
+ *   at most once.
+ *
+ *   materials    required. Whitespace-separated material ids, each matching
+ *                [a-z0-9_]+ and at most 31 characters, at most 64 of them,
+ *                no duplicates. Whether they exist in the data pack is the
+ *                caller's check (report it at scene.materials_line).
+ *   models       required. Whitespace-separated, no duplicates, each one of
+ *                scene_model_names[] (schlick, lsk, lsk-comp, f82, gulbrandsen,
+ *                cook-torrance, exact, exact-gaussian, exact-point, approx-conductor) or a
+ *                lookup table `lutN` / `lutN-residual` / `lutN-cubic` with N an
+ *                integer in SCENE_LUT_MIN..SCENE_LUT_MAX written without
+ *                leading zeros (lut16, lut32-residual, lut16-cubic). At most
+ *                SCENE_MAX_MODELS entries. lutN-cubic needs lut_spacing
+ *                grazing (the runtime's cubic reads nodes uniform in sqrt(c)).
+ *   space        optional, default srgb; one of colour_space_ids[] in
+ *                spectral.h (srgb, display-p3, dci-p3, adobe-rgb, rec2020,
+ *                acescg).
+ *   sigma        optional, default 25; Gaussian window width in nm, a finite
+ *                number in [0, 200] (0 = point sampling).
+ *   n1           optional, default 1; real index of the incident medium, a
+ *                finite number in [1, 4].
+ *   types        optional, default f32; whitespace-separated number types
+ *                from scene_type_names[], no duplicates.
+ *   lut_spacing  optional, default grazing; one of scene_lut_spacing_names[]:
+ *                uniform (LUT nodes uniform in cos theta), grazing (nodes
+ *                uniform in sqrt(cos theta), denser towards cos theta = 0) or
+ *                grazing-pl (uniform in a 64-piece linear stand-in for
+ *                sqrt(cos theta), read by fresnel_lut_q15_u16_pl_fast
+ *                without a square root: types = q15 only, lutN with N <= 64).
+ *   name         optional; the scene's part of every C identifier in the
+ *                header (fresnel_<name>_<material>_<constant>, include guard
+ *                FRESNEL_SCENE_<NAME>_H): 1 to SCENE_PREFIX_SIZE - 1 of
+ *                A-Z a-z 0-9 _, no '_' at either end and no "__" (C++
+ *                reserves identifiers containing it). Without it the name
+ *                comes from the manifest's file name (scene_name_from_path):
+ *                a final ".scene" dropped, letters lower-cased, every run of
+ *                other characters but a-z 0-9 one '_', none at either end,
+ *                "scene" if nothing is left (2metals.scene -> 2metals,
+ *                x.v1 -> x_v1). Two manifests whose file names map to the
+ *                same name need the key to tell their headers apart.
+ *
+ *   Example:
+ *       # metals for the demo scene
+ *       materials = gold silver copper
+ *       models    = schlick f82 lut32-residual
+ *       space     = display-p3   # the panel's gamut
+ *       sigma     = 20
+ *
+ * ERRORS
+ *   Reported on stderr as "path:line: what was expected" (cli_error) and
+ *   returned as CLI_BAD_INPUT: a line without `=`, an empty key or value, an
+ *   unknown key, a key given twice (the message names both lines), a malformed
+ *   or out-of-range number, an unknown space/model/type/spacing, a bad or
+ *   repeated list entry, too many entries. A missing required key is reported
+ *   at the file's last line (line 1 for an empty file), where it would be
+ *   added. An unreadable file gives "path: cannot read: <reason>". */
+#ifndef FRESNEL_SCENE_H
+#define FRESNEL_SCENE_H
+
+#include "3_encode/encode.h"
+
+#define SCENE_MAX_MATERIALS 64
+#define SCENE_ID_SIZE 32 /* material id, NUL included: matches material_info.id */
+#define SCENE_MAX_MODELS 64
+#define SCENE_NAME_SIZE 24 /* model, type, space or spacing name, NUL included */
+#define SCENE_MAX_TYPES 16
+#define SCENE_LUT_MIN 4
+#define SCENE_LUT_MAX 256
+#define SCENE_PREFIX_SIZE 41 /* scene name, NUL included */
+
+/* The vocabulary, NULL-terminated, for reuse in --help text (colour spaces:
+ * colour_space_ids in spectral.h). The LUT models are a pattern rather than
+ * names: see scene_model_lut_size. */
+extern const char *const scene_model_names[];
+extern const char *const scene_type_names[];
+extern const char *const scene_lut_spacing_names[];
+
+typedef struct scene {
+    /* Line of the file where each key was set; 0 where the default applies. */
+    int materials_line, models_line, space_line, sigma_line, n1_line, types_line,
+        lut_spacing_line, name_line;
+    char name[SCENE_PREFIX_SIZE]; /* the name key; "" when not given */
+
+    int material_count;
+    char materials[SCENE_MAX_MATERIALS][SCENE_ID_SIZE];
+    int model_count;
+    char models[SCENE_MAX_MODELS][SCENE_NAME_SIZE];
+    int type_count;
+    char types[SCENE_MAX_TYPES][SCENE_NAME_SIZE];
+    char space[SCENE_NAME_SIZE];
+    char lut_spacing[SCENE_NAME_SIZE];
+    double sigma; /* nm */
+    double n1;
+} scene;
+
+/* Read and validate a manifest. Returns 0, or CLI_BAD_INPUT after printing
+ * one message; *out is filled on success and unspecified on error. Lists
+ * keep the file's order. */
+int scene_load(const char *path, scene *out);
+
+/* N for "lutN", "lutN-residual" or "lutN-cubic" (N in
+ * SCENE_LUT_MIN..SCENE_LUT_MAX, no leading zeros), setting *form (if not
+ * NULL) to its lut_form (generator.h: LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC); 0 for every other string. */
+int scene_model_lut_size(const char *model, int *form);
+
+/* 1 if name is a valid value of the name key, else 0. */
+int scene_name_ok(const char *name);
+/* The scene name derived from a manifest's path, as FORMAT describes. */
+void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE]);
+
+/* 1 if the model name is one the manifest accepts, else 0. */
+int scene_model_known(const char *model);
+
+/* 1 if the loaded scene names this model / number type, else 0. */
+int scene_has_model(const scene *sc, const char *model);
+int scene_has_type(const scene *sc, const char *type);
+/* The loaded scene's LUT spacing. */
+lut_spacing scene_lut_spacing(const scene *sc);
+
+#endif
