@@ -328,7 +328,7 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
     fprintf(f, " * Gaussian window sigma %g nm; incident medium n1 %g (eta, kappa below are relative to it).\n",
             sc->sigma, sc->n1);
     fprintf(f, " * Ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs -> linear RGB, clamped per\n"
-               " * channel to [0, 1] (out-of-gamut policy, gen/2_derive/generator.h).\n * Models:");
+               " * channel to [0, 1] (out-of-gamut policy, gen/2_derive/derive.h).\n * Models:");
     for (m = 0; m < sc->model_count; m++)
         fprintf(f, " %s", sc->models[m]);
     fprintf(f, ".\n * Materials (file in the data pack, dataset, measured range; outside it the end values are held):\n");

@@ -182,7 +182,7 @@ int emit_header(FILE *f, const emit_input *in)
     fprintf(f, " * Gaussian window sigma %g nm; incident medium n1 %g (eta, kappa below are relative to it).\n",
             sc->sigma, sc->n1);
     fprintf(f, " * Ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs -> linear RGB, clamped per\n"
-               " * channel to [0, 1] (out-of-gamut policy, gen/2_derive/generator.h).\n");
+               " * channel to [0, 1] (out-of-gamut policy, gen/2_derive/derive.h).\n");
     fprintf(f, " * Models:");
     for (m = 0; m < sc->model_count; m++)
         fprintf(f, " %s", sc->models[m]);
