@@ -109,7 +109,7 @@ int scene_load(const char *path, scene *out);
 
 /* N for "lutN", "lutN-residual" or "lutN-cubic" (N in
  * SCENE_LUT_MIN..SCENE_LUT_MAX, no leading zeros), setting *form (if not
- * NULL) to its lut_form (generator.h: LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC); 0 for every other string. */
+ * NULL) to its lut_form (3_encode/encode.h: LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC); 0 for every other string. */
 int scene_model_lut_size(const char *model, int *form);
 
 /* 1 if name is a valid value of the name key, else 0. */
