@@ -12,7 +12,7 @@
 
 #include <math.h>
 
-#include "internal.h" /* the runtime's clamps and exact squares, for cmp_careful_conductor */
+#include "f32/internal.h" /* the runtime's clamps and exact squares, for cmp_careful_conductor */
 
 static float clamp01(float c) { return c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f; }
 static float sqrt0(float x) { return sqrtf(x > 0.0f ? x : 0.0f); }

@@ -14,7 +14,10 @@
  *     float c = dot(n, v);                               // any float; clamped
  *     float r = fresnel_schlick(0.04f, c);               // glass-like
  *     fresnel_rgb cu = fresnel_conductor_rgb(eta, kappa, c);
- *   Link src/\*.c (or the installed libfresnel.a) and -lm.
+ *   Link src/f32/\*.c (or the installed libfresnel.a) and -lm. Each number
+ *   type's code is one self-contained folder: src/f32/ (this header),
+ *   src/q15/ (fresnel_fixed.h), src/f16/ (fresnel_f16.h). A vendoring
+ *   project copies include/ and the folders of the types it uses.
  *
  * CONVENTIONS (every function)
  *   c        cosine of the angle of incidence, measured in the incident medium.
@@ -55,10 +58,10 @@
  *   says it is fast (FP_FAST_FMAF).
  *   Build src/ without -ffast-math, -ffinite-math-only, -fassociative-math
  *   and -Ofast: the NaN policy needs NaN comparisons, and the exact forms
- *   (critical angles) need IEEE rounding. src/internal.h stops the build
+ *   (critical angles) need IEEE rounding. src/f32/internal.h stops the build
  *   with #error where the compiler says it is on (__FAST_MATH__,
  *   __FINITE_MATH_ONLY__); a vendoring user with such a global flag compiles
- *   src/\*.c with -fno-fast-math (gcc, clang) or without it.
+ *   src/f32/\*.c with -fno-fast-math (gcc, clang) or without it.
  *
  * REFERENCES
  *   [Sch94]  C. Schlick, An inexpensive BRDF model for physically-based rendering, 1994.
@@ -121,7 +124,7 @@ typedef struct fresnel_rgb {
 } fresnel_rgb;
 
 /* The functions below are left out by -DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT
- * (fresnel_config.h), with their code in src/: a fixed-point-only build
+ * (fresnel_config.h), with their code in src/f32/: a fixed-point-only build
  * can compile all of src/ and contains no binary32 function. The limits,
  * bounds and fresnel_rgb above stay, for code that only describes materials. */
 #if FRESNEL_HAS_FLOAT

@@ -6,14 +6,15 @@
  *   normal 2^-14), as a mobile GPU evaluates a mediump shader. They exist to
  *   show, and to test, what GLSL/HLSL ports of this library get in fp16; the
  *   measured errors below are the numbers to compare with a GPU.
- *   Sources: src/\*_f16.c. Scalar functions only: a shader applies the same
+ *   Sources: the folder src/f16/, self-contained: a vendoring project
+ *   copies it and include/. Scalar functions only: a shader applies the same
  *   scalar operations to each channel of a vec3.
  *
  * AVAILABILITY
  *   Declared when the compiler has _Float16 (gcc on x86-64, on Arm with
  *   -mfp16-format=ieee or an FP16 unit, on AArch64) and the build did not
  *   set FRESNEL_CFG_NO_F16 (fresnel_config.h); otherwise this header declares
- *   nothing and src/\*_f16.c compile to nothing, so the rest of the library
+ *   nothing and src/f16/\*.c compile to nothing, so the rest of the library
  *   builds with any C99 compiler (clang 14 on x86-64 has no _Float16).
  *
  * ARITHMETIC

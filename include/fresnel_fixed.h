@@ -5,8 +5,9 @@
  *   integer arithmetic only: no float, no double, no libm, no soft-float
  *   helper, no integer division instruction (divisions are bit-by-bit), no
  *   int64 anywhere. For microcontrollers without an FPU (Cortex-M0, RV32IMC).
- *   Sources: src/\*_q15.c and src/fixed_math.c. This header does not need
- *   fresnel.h; a fixed-point-only build compiles those files, or all of src/
+ *   Sources: the folder src/q15/, self-contained: a vendoring project
+ *   copies it and include/. This header does not need fresnel.h; a
+ *   fixed-point-only build compiles src/q15/\*.c, or all of src/
  *   with -DFRESNEL_CONFIG='FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16', which
  *   leaves the others empty (see fresnel_config.h, ports/README.md).
  *
@@ -411,7 +412,7 @@ fresnel_q15_rgb fresnel_lut_linear_residual_q15_s8_rgb(fresnel_q15_rgb f0, const
 fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n, int32_t c);
 fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n, int32_t c);
 
-/* ------------------------------------------------------------- fixed_math.c */
+/* ------------------------------------------------------------- math_q15.c */
 
 /* floor(sqrt(x)) for every uint32_t x, digit by digit (16 steps, no
  * multiply, no division). Tested on every x < 2^24 and at k^2 - 1, k^2 for

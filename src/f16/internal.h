@@ -1,4 +1,4 @@
-/* Helpers shared by the binary16 model files (src/\*_f16.c); not public.
+/* Helpers shared by the binary16 model files (src/f16/\*.c); not public.
  *
  * Every arithmetic operation goes through one of the fresnel_i_h* helpers, whose
  * return converts to _Float16: in C99 that conversion (like an assignment

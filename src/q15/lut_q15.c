@@ -1,6 +1,6 @@
 /* Lookup tables of reflectance curves in fixed point (fresnel_fixed.h):
  * linear interpolation at a position in Q15 node units, no division. */
-#include "fixed_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

@@ -1,6 +1,6 @@
 /* Schlick, generalized Schlick, Schlick internal and the F0 helpers in
  * fixed point (fresnel_fixed.h). */
-#include "fixed_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

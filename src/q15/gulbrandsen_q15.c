@@ -1,6 +1,6 @@
 /* Gulbrandsen's edge tint in fixed point (fresnel_fixed.h), in fresnel_qf,
  * with nmax in gulbrandsen.c's form and k^2 as a sum of positive terms. */
-#include "fixed_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 
