@@ -12,6 +12,7 @@
 #include "bench_targets.h"
 #include "fixed_params.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "report.h"
 
 enum { MISS, PASS, UNMEASURED };

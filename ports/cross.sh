@@ -246,7 +246,7 @@ cmd_size() {
             echo "$row"
         done
     done
-    # The inline fast paths of fresnel_fixed.h ("fast paths"), fixed point only.
+    # The inline fast paths of fresnel_fixed_fast.h, fixed point only.
     for mj in schlick-fast:16 f82-fast:17 lut-u16-fast:18 lut-u16-pl-fast:21; do
         m=${mj%:*} j=${mj#*:}
         row="| $m | fixed |"

@@ -9,6 +9,7 @@
 
 #include "fixed_params.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "harness.h"
 #include "report.h"
 #include "scene_eval.h"

@@ -21,6 +21,7 @@
 #include "fixed_params.h"
 #include "fresnel.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "models.h"
 #include "reference.h"
 
