@@ -11,11 +11,10 @@
 /* ================================================================ fast paths
  *
  * Inline fixed-point evaluations for a Cortex-M0-class core, traded against
- * the functions above: fewer instructions (ports/README.md, `make
- * cross-count`), a larger but measured error, and preconditions instead of
- * clamps. Integer only like the rest of this header (int32/uint32, no int64,
- * no division, no float); C99 static inline, so a firmware that uses one of
- * them links no library code for it.
+ * the functions of fresnel_fixed.h: fewer instructions (ports/README.md,
+ * `make cross-count`), a larger error, and preconditions instead of clamps.
+ * Integer only (int32/uint32, no int64, no division, no float); C99 static
+ * inline, so a firmware that uses one of them links no library code for it.
  *
  * PRECONDITIONS (outside them the behaviour is undefined):
  *   f0 in [0, FRESNEL_Q15_ONE]; LUT entries in [0, FRESNEL_Q15_ONE];
@@ -26,18 +25,11 @@
  *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
  *   as that many nodes; with n a compile-time constant these tests fold
  *   away). The table must hold min(n, that maximum) entries.
- * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them
- * (tests/test_fixed_edges.c: each precondition at its edge and one past).
- * ERROR BOUNDS (LSB of Q15, FRESNEL_Q15_BOUND_*_FAST) are the largest
- * |result/32768 - reference| measured by tests/test_fixed_fast.c, against
- * the same double references as tests/test_fixed_bounds.c, over every cos
- * code 0..32768 (see each function for the parameter sets).
- *
- * Where the error comes from: x^5 = (1 - c)^5 is three Q15 products with a
- * single rounding constant (on a Cortex-M0 each costs instructions), about
- * 2.8 LSB;
- * fresnel_schlick_q15 keeps 30 bits with split products for 0.5 LSB at
- * 3.5x the instructions. Both are far inside Schlick's own model error.
+ * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them.
+ * ERROR BOUNDS (LSB of Q15, FRESNEL_Q15_BOUND_*_FAST) bound
+ * |result/32768 - reference| over every cos code 0..32768, against the
+ * references of fresnel_fixed.h's ERROR BOUNDS; tests/README.md names the
+ * tests and parameter sets.
  */
 #if FRESNEL_HAS_FIXED
 
@@ -49,16 +41,19 @@
 #define FRESNEL_FAST_INLINE static inline
 #endif
 
-#define FRESNEL_Q15_BOUND_SCHLICK_FAST 2.9     /* measured 2.87615 (every 16th F0) */
-#define FRESNEL_Q15_BOUND_F82_FAST 5.8         /* measured 5.72677 (1/32 grid), 5.58885 (materials) */
-#define FRESNEL_Q15_BOUND_LUT_FAST 1.0         /* 2 <= n <= 64; measured 0.98962 */
-#define FRESNEL_Q15_BOUND_LUT_FAST_1024 2.8    /* n <= 1024; measured 2.76231 (1024-node TIR table) */
-#define FRESNEL_Q15_BOUND_LUT_PL_FAST 3.4      /* n <= 64; measured 3.35845 */
-#define FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge; measured 15.16331 */
+#define FRESNEL_Q15_BOUND_SCHLICK_FAST 2.9
+#define FRESNEL_Q15_BOUND_F82_FAST 5.8
+#define FRESNEL_Q15_BOUND_LUT_FAST 1.0         /* 2 <= n <= 64 */
+#define FRESNEL_Q15_BOUND_LUT_FAST_1024 2.8    /* n <= 1024 */
+#define FRESNEL_Q15_BOUND_LUT_PL_FAST 3.4      /* n <= 64 */
+#define FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge */
 
 /* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
  * truncated, so that the errors straddle zero with one constant (every
- * product <= 2^30; x = one gives one exactly). */
+ * product <= 2^30; x = one gives one exactly). Three Q15 products with a
+ * single rounding constant are about 2.8 LSB, where fresnel_schlick_q15's
+ * split products keep 30 bits for 0.5 LSB at 3.5x the instructions; both
+ * are far inside Schlick's own model error. */
 FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
 {
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15;
@@ -71,7 +66,7 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
  * takes three), else by the conditional. c in (one, FRESNEL_Q15_FAST_C_MAX] needs
  * nothing: 1 - c wraps to 2^32 - k, whose square is k^2 mod 2^32, so x^2 is
  * ceil(k^2 / 2^15) < 182, x^4 = 0 and x^5 = x^6 = 0: the result is F0, the
- * value at c = one (tests/test_fixed_edges.c, every such c and F0). */
+ * value at c = one. */
 #define FRESNEL_Q15_FAST_C_MAX (32768 + 2435)
 FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_c(int32_t c)
 {
@@ -85,17 +80,15 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_blend(uint32_t f0, uint32_t x5)
 }
 
 /* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 in [0, one] and c as
- * PRECONDITIONS says: x^5 as fresnel_i_fast_pow5 and a truncated blend. Error <=
- * FRESNEL_Q15_BOUND_SCHLICK_FAST LSB (every 16th F0 code, every c code;
- * every F0 code with FRESNEL_TEST_EXHAUSTIVE=1). c = 0 gives exactly one,
- * c = one exactly F0. Cost: 4 mul. */
+ * PRECONDITIONS says; c = 0 gives exactly one, c = one exactly F0.
+ * Error <= FRESNEL_Q15_BOUND_SCHLICK_FAST LSB. Cost: 4 mul. */
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 {
     return (fresnel_q15)fresnel_i_fast_blend((uint32_t)f0, fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c)));
 }
 
-/* The same for three channels: x^5 once, three blends; each channel equals
- * fresnel_schlick_q15_fast's. Cost: 6 mul. */
+/* The same for three channels; each channel equals fresnel_schlick_q15_fast's.
+ * Cost: 6 mul (x^5 once, three blends). */
 FRESNEL_FAST_INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
 {
     uint32_t x5 = fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c));
@@ -106,25 +99,24 @@ FRESNEL_FAST_INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb
     return r;
 }
 
-/* Hoffman's F82 model, F = F0 + (1 - F0) x^5 - a c x^6, with the
- * per-material a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) prepared on the host
- * as a_q12 = round(4096 a) (`fresnel gen` emits it for scenes with f82 and
- * q15; any F0, F82 in [0, 1] give a in [-9.4847, 17.6514], a_q12 in
- * [-38849, 72300]). The arithmetic is exact for a_q12 in
- * [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX]: c x^6 in Q18
- * is at most 14852 (c = 4654), so F0 = one with a_q12 below -72296 would
- * overflow int32 (tests/test_fixed_edges.c computes both ends).
- * Schlick as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
- * error matters: a c multiplies it), c x^6 in Q18 (<= 14870), the sum in
- * units of 2^-30 (|a_q12 c x^6| < 2^30.1, Schlick 2^30), clamped to [0, one]
- * as fresnel_f82 clamps. a multiplies the error of x^6, so the bound is
- * reached only at unphysical corners (F0 = 1, F82 = 0: a = 17.7). Error <= FRESNEL_Q15_BOUND_F82_FAST LSB (F0 and F82 on a 1/32 grid
- * and the test materials, every c code, against ref_f82 at the unrounded
- * a). Cost: 7 mul. */
+/* Hoffman's F82 model (fresnel_f82), F = F0 + (1 - F0) x^5 - a c x^6,
+ * x = 1 - c, clamped to [0, one], with the per-material
+ * a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) prepared on the host as
+ * a_q12 = round(4096 a) (`fresnel gen` emits it for scenes with f82 and q15;
+ * any F0, F82 in [0, 1] give a in [-9.4847, 17.6514], a_q12 in
+ * [-38849, 72300]). Domain: f0 and c as PRECONDITIONS says, a_q12 in
+ * [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX].
+ * Error <= FRESNEL_Q15_BOUND_F82_FAST LSB against fresnel_f82 at the
+ * unrounded a, reached only at unphysical corners (F0 = 1, F82 = 0:
+ * a = 17.7). Cost: 7 mul. */
 #define FRESNEL_Q15_F82_FAST_A_MIN (-72296)
 #define FRESNEL_Q15_F82_FAST_A_MAX 144592
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
+    /* Schlick as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
+     * error matters: a c multiplies it), c x^6 in Q18 (at most 14852, at
+     * c = 4654, so F0 = one with a_q12 below -72296 would overflow int32),
+     * the sum in units of 2^-30 (|a_q12 c x^6| < 2^30.1, Schlick 2^30). */
     uint32_t cu = fresnel_i_fast_c(c), x = 32768u - cu;
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
     uint32_t cx6 = (cu * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
@@ -171,7 +163,7 @@ static const uint16_t fresnel_i_fast_sqrt_k[97] = {
  * delta = (d + delta (dh - delta)) k  (dh = r_(j+1) - r_j, k the chord slope):
  * delta1 = d k (the chord), delta2 = (d + delta1 (dh - delta1)) k (one
  * fixed-point step, contraction dh/(r_j + r_(j+1)) <= 2^-7). Every term is
- * non-negative (delta1 <= dh). Measured |error| <= 2^-20.7 (test_fixed_fast). */
+ * non-negative (delta1 <= dh). |error| <= 2^-20.7. */
 FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
 {
     uint32_t m = 0, j, d, k, r0, dh, d1;
@@ -189,17 +181,11 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
 }
 
 /* fresnel_lut_q15_u16 (nodes uniform in sqrt(c), node i at c = (i/(n-1))^2)
- * with the position from fresnel_i_fast_sqrt_q22 instead of the exact root:
- * pos = round(sqrt(c) (n-1) 2^15), segment i = (pos - 1) >> 15 (so c = one
- * reads nodes n-2 and n-1 with weight one), linear interpolation rounded.
- * n and c outside [2, 1024] and [0, one]: as PRECONDITIONS says. Error
- * against the double interpolation at the exact sqrt(c) (tables of 2 to
- * 1024 nodes as in test_fixed_bounds.c) <= FRESNEL_Q15_BOUND_LUT_FAST LSB for
- * n <= 64 and FRESNEL_Q15_BOUND_LUT_FAST_1024 up to 1024 nodes: the
- * position's own error is below 2^-20.7 (n - 1) of a segment, which shows
- * times the steepest node-to-node step (a 1024-node table across a critical
- * angle). Cost: 5 mul
- * (plus 2 shifts per halving of c below 1/4). */
+ * with an approximate square root; n and c as PRECONDITIONS says.
+ * Error against the double interpolation at the exact sqrt(c)
+ * <= FRESNEL_Q15_BOUND_LUT_FAST LSB for n <= 64 and
+ * FRESNEL_Q15_BOUND_LUT_FAST_1024 LSB for n <= 1024.
+ * Cost: 5 mul (plus 2 shifts per halving of c below 1/4). */
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, int n, int32_t c)
 {
     uint32_t pos, i, t;
@@ -210,6 +196,10 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, 
         n = 1024;
     if (((uint32_t)c - 1u) >> 15) /* c <= 0, or c > one */
         return c <= 0 ? table[0] : table[n - 1];
+    /* pos = round(sqrt(c) (n-1) 2^15), segment i = (pos - 1) >> 15, so that
+     * c = one reads nodes n-2 and n-1 with weight one. The root's error,
+     * below 2^-20.7 (n - 1) of a segment, shows times the steepest
+     * node-to-node step (a 1024-node table across a critical angle). */
     pos = (fresnel_i_fast_sqrt_q22((uint32_t)c) * (uint32_t)(n - 1) + 64u) >> 7;
     i = (pos - 1u) >> 15;
     t = pos - (i << 15);
@@ -218,21 +208,14 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, 
     return (fresnel_q15)((v0 * 32768 + (v1 - v0) * (int32_t)t + 16384) >> 15);
 }
 
-/* Tables whose nodes are uniform in P(c), a 64-piece linear stand-in for
- * sqrt(c) (lut_spacing = grazing-pl in a scene; `fresnel gen` fits the node
- * values through exactly this position): P is the linear interpolation of
- * fresnel_lut_pl_knots_q15[k] = round(32768 sqrt(k/64)) between c = k/64 and
- * (k+1)/64, so it needs no root, and still crowds the nodes toward grazing
- * incidence (the first piece is 1/8 of the range, 1/64 of c).
- *   p = S[j] + ((S[j+1] - S[j]) (c mod 512)) >> 9, j = c >> 9  (c = one read
- *       as one - 2^-15, so that p < one and the last segment is n-2)
- *   pos = p (n-1), node i = pos >> 15, linear interpolation, truncated.
- * The bound needs 2 <= n <= 64 (P has 15 bits: its truncation moves the
- * position by up to (n-1) 2^-15 of a segment); n and c outside: as
- * PRECONDITIONS says. Error <= FRESNEL_Q15_BOUND_LUT_PL_FAST LSB against the same
- * interpolation in double at the same P, FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR
- * across a total-reflection edge (a step of up to one between two nodes)
- * (tests/test_fixed_fast.c). Cost: 3 mul, 4 loads. */
+/* The grazing-pl node position (lut_spacing = grazing-pl in a scene):
+ * P(c), a 64-piece linear stand-in for sqrt(c), is the linear interpolation
+ * of the knots fresnel_lut_pl_knots_q15[k] = round(32768 sqrt(k/64)) between
+ * c = k/64 and (k+1)/64. A grazing-pl table's node i sits where
+ * P(c) = i/(n-1); `fresnel gen` places its nodes through this table, and
+ * fresnel_lut_q15_u16_pl_fast reads them through it. It needs no root and
+ * still crowds the nodes toward grazing incidence (the first piece is 1/8
+ * of the range, 1/64 of c). */
 static const uint16_t fresnel_lut_pl_knots_q15[65] = {
     0u,     4096u,  5793u,  7094u,  8192u,  9159u,  10033u, 10837u, 11585u, 12288u, 12953u, 13585u, 14189u,
     14768u, 15326u, 15864u, 16384u, 16888u, 17378u, 17854u, 18318u, 18770u, 19212u, 19644u, 20066u, 20480u,
@@ -240,6 +223,16 @@ static const uint16_t fresnel_lut_pl_knots_q15[65] = {
     25580u, 25905u, 26227u, 26545u, 26859u, 27170u, 27477u, 27780u, 28081u, 28378u, 28672u, 28963u, 29251u,
     29537u, 29819u, 30099u, 30377u, 30652u, 30924u, 31194u, 31462u, 31727u, 31991u, 32252u, 32511u, 32768u};
 
+/* fresnel_lut_q15_u16 on nodes uniform in P(c) (S = fresnel_lut_pl_knots_q15):
+ *   p = S[j] + ((S[j+1] - S[j]) (c mod 512)) >> 9, j = c >> 9  (c = one read
+ *       as one - 2^-15, so that p < one and the last segment is n-2)
+ *   pos = p (n-1), node i = pos >> 15, linear interpolation, truncated.
+ * n and c as PRECONDITIONS says. Error against the same interpolation in
+ * double at the same P <= FRESNEL_Q15_BOUND_LUT_PL_FAST LSB for
+ * 2 <= n <= 64 (P has 15 bits: its truncation moves the position by up to
+ * (n-1) 2^-15 of a segment), FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR across a
+ * total-reflection edge (a step of up to one between two nodes).
+ * Cost: 3 mul, 4 loads. */
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x, p, pos, t;
