@@ -29,7 +29,7 @@
  *   a C constant expression below, where an unknown identifier
  *   (FRESNEL_CFG_NO_FLOT) is a hard error, and bits outside the known flags
  *   are rejected too. The spellings people try first (FRESNEL_NO_FLOAT, ...)
- *   stop the build with a pointer here. tests/test_config.sh builds each case.
+ *   stop the build with a pointer here.
  */
 #ifndef FRESNEL_CONFIG_H
 #define FRESNEL_CONFIG_H

@@ -5,7 +5,7 @@
  *   rounded to binary16 (11-bit significand, largest finite 65504, smallest
  *   normal 2^-14), as a mobile GPU evaluates a mediump shader. They exist to
  *   show, and to test, what GLSL/HLSL ports of this library get in fp16; the
- *   measured errors below are the numbers to compare with a GPU.
+ *   error bounds below are the numbers to compare with a GPU.
  *   Sources: the folder src/f16/, self-contained: a vendoring project
  *   copies it and include/. Scalar functions only: a shader applies the same
  *   scalar operations to each channel of a vec3.
@@ -24,8 +24,7 @@
  *   precision, whatever FLT_EVAL_METHOD the compiler uses for _Float16 (gcc
  *   12 evaluates _Float16 in _Float16 on x86-64 and Arm:
  *   __FLT_EVAL_METHOD_TS_18661_3__ == 0; clang may evaluate in float unless
- *   told otherwise). No fused multiply-add. tests/test_f16_bounds.c checks
- *   per-operation rounding at run time ((1 + 2^-10)^2 - 1 must give 2^-9).
+ *   told otherwise). No fused multiply-add.
  *   sqrt is sqrtf of the half value rounded to half: that is the correctly
  *   rounded binary16 square root (binary32 has more than 2*11+2 bits, so the
  *   double rounding is harmless). (1-c)^p (generalized Schlick with p != 5,
