@@ -19,6 +19,39 @@
  *   src/q15/ (fresnel_fixed.h), src/f16/ (fresnel_f16.h). A vendoring
  *   project copies include/ and the folders of the types it uses.
  *
+ * NAMING (the rule of every public name, in this header and in
+ * fresnel_fixed.h, fresnel_fixed_fast.h, fresnel_f16.h)
+ *   fresnel_<model>[_<form>][_<storage>][_<type>][_rgb][_fast|_batch]
+ *     model    schlick, lsk, f82, gulbrandsen, approx_conductor,
+ *              cook_torrance, conductor, dielectric, f0, lut
+ *     form     the variant: gen, internal, comp, prepared, from_ior,
+ *              in_medium, nk, rg, linear, residual, linear_residual,
+ *              cubic, pl
+ *     storage  a table's element type where it is not the type: u16, u8,
+ *              s16, s8
+ *     type     empty for binary32, q15 (Q1.15 fixed point), f16 (binary16)
+ *     _rgb three channels; _fast an inline fast path; _batch many cosines
+ *   e.g. fresnel_lut_linear_residual_s16_q15_rgb,
+ *   fresnel_schlick_q15_rgb_fast, fresnel_lut_pl_u16_q15_fast. The type
+ *   comes last (before _rgb and the call form) so that a model's variants
+ *   and its types sort together and the type is read in one place.
+ *   Prepared constants: fresnel_<what>_prepare[_<type>](eta, kappa, ...)
+ *   returns a fresnel_<what>_prep[_<type>] by value, <what> the model, or
+ *   the quantity several models read (fresnel_conductor_prepare,
+ *   fresnel_ior_prepare_q15). Other types: fresnel_<what>[_<type>]
+ *   (fresnel_rgb, fresnel_rgb_q15); a number type is its type token
+ *   (fresnel_q15, fresnel_q16, fresnel_qf, fresnel_f16). Utilities name the
+ *   operation and the integer type (fresnel_isqrt_u32, fresnel_recip_q16).
+ *   Parameters: eta, kappa for a complex index, c for the cosine.
+ *   Macros: FRESNEL_<NAME>[_<TYPE>][_FAST][_<qualifier>], the binary32
+ *   name with the type appended, so that the types' limits sit together
+ *   (FRESNEL_ETA_MIN, FRESNEL_ETA_MIN_Q16, FRESNEL_ETA_MIN_F16). A bound is
+ *   FRESNEL_BOUND_ and the function's name without fresnel_, storage and
+ *   _rgb, in capitals (fresnel_lut_pl_u16_q15_fast:
+ *   FRESNEL_BOUND_LUT_PL_Q15_FAST); one bound for a family leaves out the
+ *   slot that varies (FRESNEL_BOUND_LUT_Q15). The runtime's internal
+ *   helpers are fresnel_i_* (fresnel_config.h).
+ *
  * CONVENTIONS (every function)
  *   c        cosine of the angle of incidence, measured in the incident medium.
  *            Domain [0, 1]. Values outside are clamped (c > 1 -> 1, c < 0 -> 0);
