@@ -69,7 +69,7 @@
  *   result   always in [0, 1], never NaN or Inf, for every input including
  *            NaN and Inf.
  *   Error bounds are absolute, against a double-precision evaluation of the
- *   SAME model with the same binary32 inputs (gen/reference.c). They hold for
+ *   SAME model with the same binary32 inputs (gen/model/reference.c). They hold for
  *   eta in [0.01, 100], kappa in {0} u [1e-3, 1000] (relative indices, such
  *   as eta/n1 for an incident medium n1) and every c; fresnel_lsk_comp's and
  *   fresnel_gulbrandsen_rg's over the whole eta, kappa domain. On the rest of
