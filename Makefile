@@ -28,7 +28,7 @@ CFLAGS_GEN := $(WARN) $(OPT) $(SAN) -D_POSIX_C_SOURCE=200809L -DFRESNEL_DATA_DIR
               -DFRESNEL_CFLAGS='"$(CC) $(OPT) $(MATH_FLAGS) $(SAN), no LTO"' -Iinclude -Igen -MMD -MP
 LDLIBS     := -lm
 
-LIB_SRC  := $(wildcard src/*.c)
+LIB_SRC  := $(wildcard src/*/*.c)
 GEN_SRC  := $(wildcard gen/*/*.c)
 TEST_SRC := $(wildcard tests/test_*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
@@ -143,31 +143,31 @@ FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 .PHONY: fuzz fuzz-bins
 fuzz-bins: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/%)
 
-$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(wildcard tests/fuzz/*.h) $(LIB_SRC) $(wildcard src/*.h) $(wildcard include/*.h) $(FUZZ_GEN)
+$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(wildcard tests/fuzz/*.h) $(LIB_SRC) $(wildcard src/*/*.h) $(wildcard include/*.h) $(FUZZ_GEN)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN) -lm -o $@
 
-# clang 14 on x86-64 has no _Float16: the binary16 target and src/*_f16.c
+# clang 14 on x86-64 has no _Float16: the binary16 target and src/f16/
 # are compiled by gcc (ASan, UBSan, and comparison tracing that libFuzzer's
 # value profile reads) and linked into the clang-built fuzzer; the other
 # sources are clang's, with full coverage.
 FUZZ_GCC       ?= gcc
 FUZZ_GCC_FLAGS  = $(WARN) -g -O1 $(F16_CFLAGS) -fsanitize=address,undefined -fno-sanitize-recover=all \
                   -fsanitize-coverage=trace-cmp -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Igen -Itests/fuzz
-FUZZ_F16_SRC   := tests/fuzz/fuzz_f16_models.c $(filter %_f16.c,$(LIB_SRC))
+FUZZ_F16_SRC   := tests/fuzz/fuzz_f16_models.c $(wildcard src/f16/*.c)
 FUZZ_F16_OBJ   := $(FUZZ_F16_SRC:%.c=$(BUILD)/fuzz/gcc/%.o)
-$(BUILD)/fuzz/gcc/%.o: %.c $(wildcard tests/fuzz/*.h) $(wildcard src/*.h) $(wildcard include/*.h)
+$(BUILD)/fuzz/gcc/%.o: %.c $(wildcard tests/fuzz/*.h) $(wildcard src/*/*.h) $(wildcard include/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_GCC) $(FUZZ_GCC_FLAGS) -c $< -o $@
 $(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(LIB_SRC) $(FUZZ_GEN)
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(filter-out %_f16.c,$(LIB_SRC)) \
+	$(FUZZ_CC) $(FUZZ_FLAGS) $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(filter-out src/f16/%,$(LIB_SRC)) \
 	    $(FUZZ_GEN) -lm -o $@
 
 # The end-to-end generator target links `fresnel gen` and what it calls.
 FUZZ_GEN_HEADER := gen/cli/cmd_gen.c $(filter-out gen/cli/cmd_%.c gen/bench/% gen/report/%,$(GEN_SRC))
 $(BUILD)/fuzz/fuzz_gen_header: tests/fuzz/fuzz_gen_header.c tests/header_check.h $(wildcard tests/fuzz/*.h) \
-                               $(LIB_SRC) $(wildcard src/*.h) $(FUZZ_GEN_HEADER)
+                               $(LIB_SRC) $(wildcard src/*/*.h) $(FUZZ_GEN_HEADER)
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN_HEADER) -lm -o $@
 
@@ -191,13 +191,13 @@ fuzz: fuzz-bins
 # are the same, and the library still references only libm. (F16C: every
 # x86-64 CPU since 2012.)
 F16_CFLAGS := $(if $(findstring x86_64,$(shell $(CC) -dumpmachine 2>/dev/null)),-mf16c)
-$(BUILD)/obj/src/%_f16.o: CFLAGS_LIB += $(F16_CFLAGS)
+$(BUILD)/obj/src/f16/%.o: CFLAGS_LIB += $(F16_CFLAGS)
 
 # The exhaustive fixed-point test links its own copy of the fixed-point
 # sources built with FRESNEL_RANGE_CHECK, which turns the range analysis in
 # the sources (FRESNEL_I_RANGE) into checks; linked before libfresnel.a, these
 # objects provide every fixed-point symbol, so no archive member is pulled.
-FIXED_SRC := src/fixed_math.c $(wildcard src/*_q15.c)
+FIXED_SRC := $(wildcard src/q15/*.c)
 FIXED_RC_OBJ := $(FIXED_SRC:%.c=$(BUILD)/obj/rc/%.o)
 $(BUILD)/obj/rc/src/%.o: src/%.c
 	@mkdir -p $(@D)

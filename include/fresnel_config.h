@@ -10,16 +10,16 @@
  * contain only what it asked for.
  *
  *   FRESNEL_CFG_NO_FLOAT  no binary32 functions (fresnel.h's declarations,
- *                         the other src/\*.c and src/internal.h). The
- *                         fixed-point-only Cortex-M0 build (ports/cross.sh)
- *                         compiles all of src/ with NO_FLOAT|NO_F16.
- *   FRESNEL_CFG_NO_F16    no _Float16 functions (fresnel_f16.h, src/\*_f16.c).
+ *                         src/f32/). The fixed-point-only Cortex-M0 build
+ *                         (ports/cross.sh) compiles all of src/ with
+ *                         NO_FLOAT|NO_F16.
+ *   FRESNEL_CFG_NO_F16    no _Float16 functions (fresnel_f16.h, src/f16/).
  *                         Implied when the compiler has no _Float16. Code
  *                         built by a compiler that has it (gcc, g++) against
  *                         a library built by one that has not (clang 14 on
  *                         x86-64) must say NO_F16 too.
  *   FRESNEL_CFG_NO_FIXED  no fixed-point functions (fresnel_fixed.h,
- *                         src/\*_q15.c, src/fixed_math.c).
+ *                         src/q15/).
  *
  * WHY ONE MACRO
  *   A misspelled stb-style switch (-DFRESNEL_NO_FLOT) is silently ignored by
@@ -29,7 +29,7 @@
  *   a C constant expression below, where an unknown identifier
  *   (FRESNEL_CFG_NO_FLOT) is a hard error, and bits outside the known flags
  *   are rejected too. The spellings people try first (FRESNEL_NO_FLOAT, ...)
- *   stop the build with a pointer here. tests/test_config.sh builds each case.
+ *   stop the build with a pointer here.
  */
 #ifndef FRESNEL_CONFIG_H
 #define FRESNEL_CONFIG_H

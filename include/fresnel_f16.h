@@ -5,15 +5,16 @@
  *   rounded to binary16 (11-bit significand, largest finite 65504, smallest
  *   normal 2^-14), as a mobile GPU evaluates a mediump shader. They exist to
  *   show, and to test, what GLSL/HLSL ports of this library get in fp16; the
- *   measured errors below are the numbers to compare with a GPU.
- *   Sources: src/\*_f16.c. Scalar functions only: a shader applies the same
+ *   error bounds below are the numbers to compare with a GPU.
+ *   Sources: the folder src/f16/, self-contained: a vendoring project
+ *   copies it and include/. Scalar functions only: a shader applies the same
  *   scalar operations to each channel of a vec3.
  *
  * AVAILABILITY
  *   Declared when the compiler has _Float16 (gcc on x86-64, on Arm with
  *   -mfp16-format=ieee or an FP16 unit, on AArch64) and the build did not
  *   set FRESNEL_CFG_NO_F16 (fresnel_config.h); otherwise this header declares
- *   nothing and src/\*_f16.c compile to nothing, so the rest of the library
+ *   nothing and src/f16/\*.c compile to nothing, so the rest of the library
  *   builds with any C99 compiler (clang 14 on x86-64 has no _Float16).
  *
  * ARITHMETIC
@@ -23,8 +24,7 @@
  *   precision, whatever FLT_EVAL_METHOD the compiler uses for _Float16 (gcc
  *   12 evaluates _Float16 in _Float16 on x86-64 and Arm:
  *   __FLT_EVAL_METHOD_TS_18661_3__ == 0; clang may evaluate in float unless
- *   told otherwise). No fused multiply-add. tests/test_f16_bounds.c checks
- *   per-operation rounding at run time ((1 + 2^-10)^2 - 1 must give 2^-9).
+ *   told otherwise). No fused multiply-add.
  *   sqrt is sqrtf of the half value rounded to half: that is the correctly
  *   rounded binary16 square root (binary32 has more than 2*11+2 bits, so the
  *   double rounding is harmless). (1-c)^p (generalized Schlick with p != 5,
@@ -47,11 +47,12 @@
  *
  * ERROR BOUNDS
  *   FRESNEL_F16_BOUND_*: absolute, against the double reference of the same
- *   model at the same binary16 inputs, measured by tests/test_f16_bounds.c on
- *   every binary16 cosine in [0, 1] (15361 values) and the material set of
- *   fresnel_fixed.h: they hold there, not over the whole domain.
- *   FRESNEL_F16_DOMAIN_*: the same over the whole domain (below).
- *   binary16 ulp(1) = 9.8e-4, ulp(0.5) = 4.9e-4.
+ *   model at the same binary16 inputs, on every binary16 cosine in [0, 1]
+ *   and the materials of tests/fixed_materials.h (ten metals at 450, 550 and
+ *   650 nm in air and under water, BK7 and water from both sides, corners of
+ *   the domain); FRESNEL_F16_DOMAIN_*: the same over the whole domain of
+ *   CONVENTIONS. binary16 ulp(1) = 9.8e-4, ulp(0.5) = 4.9e-4. tests/README.md
+ *   names the test behind each figure.
  */
 #ifndef FRESNEL_F16_H
 #define FRESNEL_F16_H
@@ -66,57 +67,43 @@
 /* Most nodes a binary16 LUT uses: n - 1 <= 2048 is an exact half. */
 #define FRESNEL_F16_LUT_N_MAX 2049
 
-/* Measured error bounds (see ERROR BOUNDS); measured maxima in brackets,
- * from `build/tests/test_f16_bounds`. Most models lose 2-8 half-ulps: the
- * rounding of 1 - c (ulp 2^-11 near 1) is multiplied by the slope of
- * (1-c)^5. The exact models, Cook-Torrance and Schlick internal have no
- * bound at all near a dielectric's critical angle (eta < 1, kappa 0): the
- * reflectance's slope is infinite there, and binary16's rounding of
- * (eta-1)(eta+1) + c^2 decides total reflection, so where the critical
- * angle lies within a binary16 step of a cosine the result can be 1 for
- * 0.5 (eta 0.0703 at c = 1 - 2^-11: 0.485 off). binary32 needs exact squares
- * there, and the GLSL port evaluates these models in highp for this reason.
- * FRESNEL_F16_BOUND_NONCRITICAL is every model's error at least 1/64 in c
- * away from a critical angle. The LUT bound is the position's rounding
- * times the steepest table step: sqrt(c) (n-1), the root and the product
- * each rounded to half (ulp 1/8 for positions in [128, 256)). */
-#define FRESNEL_F16_BOUND_SCHLICK 2.6e-3 /* [2.527e-3 over every binary16 F0 (FRESNEL_TEST_EXHAUSTIVE=1); 2.16e-3 on the materials] */
-#define FRESNEL_F16_BOUND_SCHLICK_GEN 2.6e-3 /* [2.16e-3 at p 5 (Schlick's path); 6.63e-4 over p in [0.25, 40]] */
-#define FRESNEL_F16_BOUND_SCHLICK_INTERNAL 1.0 /* no bound at a critical angle [0.113]; 4.45e-3 away */
-#define FRESNEL_F16_BOUND_F0 1.8e-3 /* [1.718e-3] */
-#define FRESNEL_F16_BOUND_F0_IN_MEDIUM 2.5e-3 /* [2.438e-3] */
-#define FRESNEL_F16_BOUND_LSK 2.8e-3 /* [2.797e-3] */
-#define FRESNEL_F16_BOUND_LSK_COMP 2.9e-3 /* [2.886e-3] */
-#define FRESNEL_F16_BOUND_F82 4.0e-3 /* [3.945e-3 on a 1/64 grid of F0, F82 pairs; 3.457e-3 on the materials] */
-#define FRESNEL_F16_BOUND_GULBRANDSEN 1.8e-3 /* [1.748e-3] */
-#define FRESNEL_F16_BOUND_APPROX_CONDUCTOR 1.6e-3 /* [1.584e-3] */
-#define FRESNEL_F16_BOUND_COOK_TORRANCE 1.0 /* no bound at a critical angle [0.246]; 4.02e-3 away */
-#define FRESNEL_F16_BOUND_CONDUCTOR 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
-#define FRESNEL_F16_BOUND_DIELECTRIC 1.0 /* no bound at a critical angle [0.485]; 4.05e-3 away */
-#define FRESNEL_F16_BOUND_LUT_CUBIC 9.0e-4 /* [8.68e-4 on reflectance curves, n <= 256; tests/test_lut_cubic] */
-#define FRESNEL_F16_BOUND_LUT 1.7e-2 /* [1.599e-2 nodes uniform in sqrt(c), a table with a total-reflection edge; 3.84e-3 uniform in c] */
-#define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3 /* [4.449e-3] */
-/* The bounds above hold where they were measured: every binary16 cosine on
- * the material set (and, where the bracket says so, every F0 or a grid of
- * F0/F82 pairs). Over the whole documented domain (eta in [2^-10, 16],
- * kappa 0 or in [1e-3, 16], F0, r, g in [0, 1], a and alpha in [2^-10, 64])
- * the errors are larger: tiny eta with tiny c (approximate conductor),
- * F0 near 0 in a dense medium (F0 in medium), Gulbrandsen with g near 0
- * and r near 1 (k clamped to 16), and near-dielectric conductors (kappa
- * 1e-3) at their critical angle. FRESNEL_F16_DOMAIN_* are the maxima of
- * 1e6 deterministic random points over that domain per function and of 10
- * minutes of `make fuzz` (its "f16 fuzz" NOTE lines), rounded up: measured,
- * not proven. tests/test_f16_bounds.c holds the random points and the
- * fuzzer's worst LSK point to them ("f16 domain" lines). */
-#define FRESNEL_F16_DOMAIN_SCHLICK 2.6e-3 /* [2.230e-3; 2.527e-3 exhaustive in F0, above] */
-#define FRESNEL_F16_DOMAIN_F0 2.1e-3 /* [2.029e-3] */
-#define FRESNEL_F16_DOMAIN_F0_IN_MEDIUM 5.2e-3 /* [5.162e-3] */
-#define FRESNEL_F16_DOMAIN_LSK 3.5e-3 /* [3.43e-3 fuzzing; 3.204e-3 random] */
-#define FRESNEL_F16_DOMAIN_LSK_COMP 3.7e-3 /* [3.64e-3 fuzzing; 3.292e-3 random] */
-#define FRESNEL_F16_DOMAIN_GULBRANDSEN 0.15 /* [0.148 fuzzing; 0.1428 random] */
-#define FRESNEL_F16_DOMAIN_APPROX_CONDUCTOR 1.9e-2 /* [1.858e-2] */
-#define FRESNEL_F16_DOMAIN_COOK_TORRANCE 1.0 /* [0.808, critical angle at kappa 1e-3] */
-#define FRESNEL_F16_DOMAIN_CONDUCTOR 1.0 /* [0.0649, critical angle at kappa 1e-3] */
+/* Error bounds on the material set (see ERROR BOUNDS). The exact models,
+ * Cook-Torrance and Schlick internal have no bound near a dielectric's
+ * critical angle (eta < 1, kappa 0): there the bound is 1, and
+ * FRESNEL_F16_BOUND_NONCRITICAL holds for every model at least 1/64 in c
+ * away from a critical angle. */
+#define FRESNEL_F16_BOUND_SCHLICK 2.6e-3 /* also every binary16 F0 */
+#define FRESNEL_F16_BOUND_SCHLICK_GEN 2.6e-3
+#define FRESNEL_F16_BOUND_SCHLICK_INTERNAL 1.0 /* critical angle */
+#define FRESNEL_F16_BOUND_F0 1.8e-3
+#define FRESNEL_F16_BOUND_F0_IN_MEDIUM 2.5e-3
+#define FRESNEL_F16_BOUND_LSK 2.8e-3
+#define FRESNEL_F16_BOUND_LSK_COMP 2.9e-3
+#define FRESNEL_F16_BOUND_F82 4.0e-3 /* also a 1/64 grid of F0, F82 pairs */
+#define FRESNEL_F16_BOUND_GULBRANDSEN 1.8e-3
+#define FRESNEL_F16_BOUND_APPROX_CONDUCTOR 1.6e-3
+#define FRESNEL_F16_BOUND_COOK_TORRANCE 1.0 /* critical angle */
+#define FRESNEL_F16_BOUND_CONDUCTOR 1.0 /* critical angle */
+#define FRESNEL_F16_BOUND_DIELECTRIC 1.0 /* critical angle */
+#define FRESNEL_F16_BOUND_LUT_CUBIC 9.0e-4 /* reflectance curves, n <= 256 */
+#define FRESNEL_F16_BOUND_LUT 1.7e-2 /* tables with a total-reflection edge included */
+#define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3
+/* Error bounds over the whole domain of CONVENTIONS (eta in [2^-10, 16],
+ * kappa 0 or in [1e-3, 16], F0, r, g in [0, 1], a and alpha in
+ * [2^-10, 64]), larger than the above for tiny eta with tiny c
+ * (approximate conductor), F0 near 0 in a dense medium (F0 in medium),
+ * Gulbrandsen with g near 0 and r near 1 (k clamped to 16), and
+ * near-dielectric conductors (kappa 1e-3) at their critical angle. They are
+ * measured maxima rounded up, not proven. */
+#define FRESNEL_F16_DOMAIN_SCHLICK 2.6e-3
+#define FRESNEL_F16_DOMAIN_F0 2.1e-3
+#define FRESNEL_F16_DOMAIN_F0_IN_MEDIUM 5.2e-3
+#define FRESNEL_F16_DOMAIN_LSK 3.5e-3
+#define FRESNEL_F16_DOMAIN_LSK_COMP 3.7e-3
+#define FRESNEL_F16_DOMAIN_GULBRANDSEN 0.15
+#define FRESNEL_F16_DOMAIN_APPROX_CONDUCTOR 1.9e-2
+#define FRESNEL_F16_DOMAIN_COOK_TORRANCE 1.0
+#define FRESNEL_F16_DOMAIN_CONDUCTOR 1.0
 
 #if FRESNEL_HAS_F16
 
@@ -128,38 +115,37 @@ extern "C" {
  * -Wpedantic quiet for code that only includes the header. */
 __extension__ typedef _Float16 fresnel_f16;
 
-/* F0 + (1 - F0)(1 - c)^5, (1-c)^5 by three multiplications. */
+/* Every function is the fresnel.h function of the same name without _f16:
+ * the same formula, clamps and NaN policy, on the domain of CONVENTIONS.
+ * Error <= FRESNEL_F16_BOUND_<MODEL> on the material set and
+ * FRESNEL_F16_DOMAIN_<MODEL> (where defined) over the domain.
+ * Cost: the binary32 function's operation counts, in binary16 operations;
+ * expf, log1pf and sqrtf on the half value, rounded to half. */
 fresnel_f16 fresnel_schlick_f16(fresnel_f16 f0, fresnel_f16 c);
-/* F0 + (F90 - F0)(1 - c)^p; p = 5 multiplies, other p use the GPU pow. */
+/* p = 5 multiplies; other p: exp(p ln(1-c)) as a GPU's pow. */
 fresnel_f16 fresnel_schlick_gen_f16(fresnel_f16 f0, fresnel_f16 f90, fresnel_f16 p, fresnel_f16 c);
-/* Schlick at the transmitted cosine for eta < 1, one past the critical angle. */
 fresnel_f16 fresnel_schlick_internal_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f16 c);
 fresnel_f16 fresnel_f0_in_medium_f16(fresnel_f16 f0, fresnel_f16 eta_e);
 fresnel_f16 fresnel_f0_from_ior_f16(fresnel_f16 eta, fresnel_f16 kappa);
 fresnel_f16 fresnel_lsk_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 c);
 fresnel_f16 fresnel_lsk_comp_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 a, fresnel_f16 alpha, fresnel_f16 c);
 fresnel_f16 fresnel_f82_f16(fresnel_f16 f0, fresnel_f16 f82, fresnel_f16 c);
-/* Gulbrandsen r, g -> n, k (r clamped to 1 - 2^-11 = 0.99951, the largest half below 1;
- * n and k clamped to the binary16 domain), then
- * the approximate conductor form. */
+/* r clamped to 1 - 2^-11 = 0.99951 (the largest half below 1); n and k
+ * clamped to the binary16 domain. */
 fresnel_f16 fresnel_gulbrandsen_f16(fresnel_f16 r, fresnel_f16 g, fresnel_f16 c);
 fresnel_f16 fresnel_approx_conductor_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 c);
 fresnel_f16 fresnel_cook_torrance_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);
-/* Lookup tables as fresnel_lut (nodes uniform in sqrt(c), the position
- * from the half root of c, as the GLSL port's fresnel_lut_pos) and
- * fresnel_lut_linear (uniform in c), plain and residual, binary16 nodes.
- * n as fresnel.h's LUTs, with FRESNEL_F16_LUT_N_MAX: no n reads outside
- * table[0 .. n-1]; n < 1 contributes 0, n = 1 is table[0], larger n than
- * the maximum use its first FRESNEL_F16_LUT_N_MAX nodes. Above 257 nodes
- * the half position keeps fewer than 3 fraction bits. */
+/* Lookup tables with binary16 nodes; n as fresnel.h's LUTs with
+ * FRESNEL_F16_LUT_N_MAX for FRESNEL_LUT_N_MAX. Nodes uniform in sqrt(c): the
+ * position sqrt(c) (n-1), root and product each rounded to half (as the GLSL
+ * port's fresnel_lut_pos), so above 257 nodes it keeps fewer than 3
+ * fraction bits. */
 fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);
-/* fresnel_lut_cubic (Catmull-Rom on fresnel_lut's nodes), one half rounding
- * per operation as a mediump shader computes it. */
 fresnel_f16 fresnel_lut_cubic_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 
 #ifdef __cplusplus

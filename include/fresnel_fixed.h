@@ -5,8 +5,9 @@
  *   integer arithmetic only: no float, no double, no libm, no soft-float
  *   helper, no integer division instruction (divisions are bit-by-bit), no
  *   int64 anywhere. For microcontrollers without an FPU (Cortex-M0, RV32IMC).
- *   Sources: src/\*_q15.c and src/fixed_math.c. This header does not need
- *   fresnel.h; a fixed-point-only build compiles those files, or all of src/
+ *   Sources: the folder src/q15/, self-contained: a vendoring project
+ *   copies it and include/. This header does not need fresnel.h; a
+ *   fixed-point-only build compiles src/q15/\*.c, or all of src/
  *   with -DFRESNEL_CONFIG='FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16', which
  *   leaves the others empty (see fresnel_config.h, ports/README.md).
  *
@@ -14,7 +15,7 @@
  *     #include "fresnel_fixed.h"
  *     int32_t c = dot_q15(n, v);                         // any int32; clamped to [0, one]
  *     fresnel_q15 r = fresnel_schlick_q15(1311, c);      // F0 = 0.04: 1311/32768
- *     static const fresnel_q15_ior gold_r = {...};       // made on the host (LAYOUT below)
+ *     static const fresnel_q15_ior gold_r = {...};       // made on the host (LAYOUT)
  *     fresnel_q15 au = fresnel_conductor_q15(&gold_r, c);
  *
  * NUMBER FORMATS
@@ -42,44 +43,26 @@
  *                ("block floating point", as CMSIS-DSP's arm_divide_q15
  *                returns a mantissa and a shift).
  *   A per-material "prepared" struct holds what a model needs; the host fills
- *   it (the generator, or gen/3_encode/fixed_params.c from double eta and kappa), or
+ *   it (the generator, or gen/fixed_params.c from double eta and kappa), or
  *   the *_prepare functions below fill it at run time from Q16.16 inputs.
  *
  * ERROR BOUNDS
- *   FRESNEL_Q15_BOUND_* are in LSB of Q15 (1 LSB = 2^-15 = 3.05e-5): the
- *   largest |result/32768 - reference| measured by tests/test_fixed_bounds.c
- *   for EVERY cos code 0..32768 and every material of the test set (66:
- *   eta, kappa of au cu ag al cr fe pt ti ni zn at 450, 550 and 650 nm from
- *   data/\*.csv and the same metals under water, bk7 and water from both
- *   sides, and corners of the domain; tests/fixed_materials.h), where
- *   "reference" is the double model of gen/model/reference.c at the same c and
- *   parameters (model_params_round_fixed): the Q15 inputs (F0, F82, F90, r,
- *   g) as the codes given, the Q16.16 ones (p, alpha) as the codes given,
+ *   FRESNEL_Q15_BOUND_* are in LSB of Q15 (1 LSB = 2^-15 = 3.05e-5): bounds
+ *   on |result/32768 - reference| for every cos code 0..32768 over the whole
+ *   domain eta in [2^-10, 32767], kappa in [0, 32767], where "reference" is
+ *   the double model (gen/model/reference.c) at the same parameters: the Q15 inputs
+ *   (F0, F82, F90, r, g) and the Q16.16 ones (p, alpha) as the codes given,
  *   and eta, kappa as the double values the prepared constants were made
- *   from, so the rounding of the constants is part of the measured error
- *   (eta is not adjusted: a0 and a0_lo hold eta^2 - kappa^2 - 1 to 60 bits,
- *   enough also at a dielectric's critical angle, where the reflectance is
- *   as sensitive to eta as the physics makes it). F82 and generalized Schlick are also measured on grids of
- *   their parameters, the LUTs on tables of 2 to 1024 nodes. The same bounds
- *   hold over the whole domain eta in [2^-10, 32767], kappa in [0, 32767]
- *   (check_domain: 304 eta, kappa pairs, log-uniform grids, dense toward
- *   eta -> 0, and random, every 5th code and every code within 64 of 0 and
- *   one: the largest maximum is LSK compensated's 0.50005; 4000 eta in
- *   [2^-10, 0.05] near normal incidence for the dielectric; Q16.16 eta
- *   codes from below 2^-10 and at every power of two of eta and kappa for
- *   fresnel_q15_ior_prepare), and the fuzzer (tests/fuzz/fuzz_fixed_models.c)
- *   holds every function to them there. Prepared on the host, eta or kappa
- *   above 46340 ((eta^2 - kappa^2 - 1) 2^-30 at shift 30 must fit int32)
- *   is outside the layout. Rounding the
- *   exact value to the nearest code is already 0.5 LSB. The test asserts
- *   each bound; `make test` prints the maxima. The same results, bit for
- *   bit, come out of the Cortex-M0, Cortex-M4F and RV32IMC builds
- *   (tests/test_cross.sh).
+ *   from, so the rounding of the constants is part of the error. Rounding
+ *   the exact value to the nearest code is already 0.5 LSB. Prepared on the
+ *   host, eta or kappa above 46340 is outside the layout. The Cortex-M0,
+ *   Cortex-M4F and RV32IMC builds give the host's results bit for bit.
+ *   tests/README.md names the test and grid behind each bound.
  *
  * COST
  *   "mul" = 32x32->32 multiply (one MULS on Cortex-M0), "qf op" = one
  *   mantissa-exponent multiply/add (~30 instructions), "qf div/sqrt" ~ 200.
- *   Instructions per call on Cortex-M0, measured under qemu, are in
+ *   Instructions per call on Cortex-M0, Cortex-M4F and RV32IMC are in
  *   ports/README.md (`make cross-count`).
  *
  * THREAD SAFETY
@@ -117,24 +100,9 @@ typedef struct fresnel_q15_rgb {
 #define FRESNEL_Q16_ALPHA_MAX (1000 * 65536)   /* LSK alpha: [0, 1000] */
 #define FRESNEL_Q15_GULBRANDSEN_R_MAX 32764    /* largest code below 0.9999 */
 
-/* Measured error bounds, LSB of Q15 (see ERROR BOUNDS). Rounding to the
- * nearest code is 0.5 LSB by itself: every model but the LUTs (and
- * generalized Schlick beyond p = 64) is within 0.001 LSB of that (what
- * shows of the 30-bit intermediates). The LUTs add
- * the position's error times the table's steepest node-to-node change: half
- * a position step, 2^-16 of a segment (0.5 LSB for a two-node table spanning
- * [0, 1]), and for nodes uniform in sqrt(c) the floor of sqrt(c) in Q30,
- * (n-1) 2^-30 of a segment. Measured maxima
- * (tests/test_fixed_bounds.c): Schlick 0.50003, generalized Schlick 0.50029
- * for p <= 64 and 0.50090 for p in (64, 1000] (there (1-c)^p is ten
- * squarings, and the bound is 0.5 plus the power's asserted relative error
- * 2^-21 times 2^15: 0.516), internal 0.50007, F0 0.49992, F0 in medium 0.50004,
- * LSK 0.50002, LSK compensated 0.50004, F82 0.50074 (F0/F82 grid),
- * Gulbrandsen 0.50002, approximate conductor 0.50002, Cook-Torrance 0.50002,
- * conductor 0.50002, dielectric 0.50002, LUT 0.98526 (nodes uniform in
- * sqrt(c); a two-node water table) and 0.50004 (uniform in c). */
+/* Error bounds, LSB of Q15 (see ERROR BOUNDS). */
 #define FRESNEL_Q15_BOUND_SCHLICK 0.501
-#define FRESNEL_Q15_BOUND_SCHLICK_GEN 0.516 /* 0.501 for p <= 64; see below */
+#define FRESNEL_Q15_BOUND_SCHLICK_GEN 0.516 /* 0.501 for p <= 64 */
 #define FRESNEL_Q15_BOUND_SCHLICK_INTERNAL 0.501
 #define FRESNEL_Q15_BOUND_F0 0.501
 #define FRESNEL_Q15_BOUND_F0_IN_MEDIUM 0.501
@@ -146,49 +114,15 @@ typedef struct fresnel_q15_rgb {
 #define FRESNEL_Q15_BOUND_COOK_TORRANCE 0.501
 #define FRESNEL_Q15_BOUND_CONDUCTOR 0.501
 #define FRESNEL_Q15_BOUND_DIELECTRIC 0.501
-#define FRESNEL_Q15_BOUND_LUT 1.01
-#define FRESNEL_Q15_BOUND_LUT_CUBIC 2.2 /* [2.1917 on any table: weights rounded to Q15; tests/test_lut_cubic] */
+#define FRESNEL_Q15_BOUND_LUT 1.01 /* nodes uniform in sqrt(c); 0.501 uniform in c */
+#define FRESNEL_Q15_BOUND_LUT_CUBIC 2.2 /* on any table */
 
 #if FRESNEL_HAS_FIXED
 
 /* ------------------------------------------------------------ prepared constants
  *
- * LAYOUT (what `fresnel gen` must emit; gen/3_encode/fixed_params.c is the reference
- * implementation in double). For a double x > 0, its fresnel_qf is
- *     frexp(x, &k) -> f in [0.5, 1);  m = round(f * 2^31);  e = k - 31;
- *     if m == 2^31 then { m = 2^30; e += 1; }       and x = 0 is {0, 0}.
- *
- * fresnel_q15_ior -- one complex index eta + i kappa relative to the incident
- * medium, for the exact models, Cook-Torrance and Schlick internal. With
- * D = eta^2 - kappa^2 - 1 (formed without cancellation on the host:
- * (eta-1)(eta+1) - kappa^2, the squares exact):
- *   shift   the smallest s in [0, 30] with round(|D| 2^(30-s)) + 2^(30-s) <= 2^31 - 1
- *           (a0 + c^2 must fit int32; choose s on the ROUNDED value)
- *   a0      round(D 2^(30 - s))
- *   a0_lo   round((D 2^(30 - s) - a0) 2^30), |a0_lo| <= 2^29: D's next 30
- *           bits, which the exact models add to c^2 so that eta^2 - sin^2
- *           keeps its digits at a critical angle (the slope of the reflectance
- *           is unbounded there; one word of D showed as 3 LSB for eta 0.0156
- *           + 2.2e-5 i)
- *   b       qf of 2 eta kappa                       (0 for a dielectric)
- *   n4      qf of (eta^2 + kappa^2)^2
- *   t1_inv  qf of ((eta+1)^2 + kappa^2) / (4 eta)   (Cook-Torrance: 1 / (1 - F(1)))
- *   inv_eta2 qf of 1 / eta^2                        (Schlick internal)
- *
- * fresnel_q15_nk -- n, k for the approximate conductor form (and Gulbrandsen):
- *   n    qf of n;   nk2  qf of n^2 + k^2
- *
- * fresnel_q15_lsk -- LSK rescaled / compensated:
- *   f0     F0 = ((n-1)^2 + k^2) / ((n+1)^2 + k^2) in Q30, round(F0 * 2^30)
- *          (0 .. 2^30; LSK rescaled is exactly Schlick with this F0, kept to
- *          30 bits so that it adds no rounding of its own)
- *   a      qf of the compensation weight a (0: no compensation)
- *   alpha  Q16.16 of the exponent alpha, round(alpha * 65536), [0, 1000 * 65536]
- *
- * LUT tables (node positions in the LUT section): uint16_t round(F * 32768); uint8_t
- * round(F * 255); residual int16_t / int8_t round((GT - Schlick(F0)) * 2^frac)
- * with frac chosen by the generator (the table's largest |value| must fit the
- * type); RGB tables are n red, n green, then n blue entries.
+ * LAYOUT: the value of every field below, as `fresnel gen` emits it, is
+ * specified in gen/4_emit/README.md.
  */
 typedef struct fresnel_q15_ior {
     int32_t a0, a0_lo;
@@ -206,15 +140,14 @@ typedef struct fresnel_q15_lsk {
     fresnel_q16 alpha;
 } fresnel_q15_lsk;
 
-/* Run-time preparation from Q16.16 eta and kappa (clamped to
- * [FRESNEL_Q16_ETA_MIN, 2^31 - 1] and [0, 2^31 - 1]). The constants are
- * computed from the Q16.16 codes with 31-bit mantissas, so they are as good
- * as the inputs; Q16.16 itself resolves eta to 1.5e-5, which for silver
- * (eta 0.05) is a 3e-4 relative change: prepare on the host from double
- * where that matters. Cost: ~10 qf ops, 2 qf div (ior). */
+/* Run-time preparation of the constants above from Q16.16 eta and kappa
+ * (clamped to [FRESNEL_Q16_ETA_MIN, 2^31 - 1] and [0, 2^31 - 1]), with
+ * 31-bit mantissas: exact to the inputs, whose Q16.16 step is 1.5e-5 (a
+ * 3e-4 relative change of silver's eta 0.05: prepare on the host from double
+ * where that matters). Cost: ~10 qf ops, 2 qf div (ior). */
 void fresnel_q15_ior_prepare(fresnel_q16 eta, fresnel_q16 kappa, fresnel_q15_ior *out);
 void fresnel_q15_nk_prepare(fresnel_q16 n, fresnel_q16 k, fresnel_q15_nk *out);
-/* a and alpha are LSK's compensation constants (ref_lsk_fit on the host);
+/* a and alpha are LSK's compensation constants (`fresnel params`);
  * a = 0 gives the rescaled model. */
 void fresnel_q15_lsk_prepare(fresnel_q16 n, fresnel_q16 k, fresnel_q16 a, fresnel_q16 alpha,
                              fresnel_q15_lsk *out);
@@ -222,32 +155,22 @@ void fresnel_q15_lsk_prepare(fresnel_q16 n, fresnel_q16 k, fresnel_q16 a, fresne
 /* ---------------------------------------------------------------- schlick_q15.c */
 
 /* Schlick:  F = F0 + (1 - F0)(1 - c)^5.
- * x = 1 - c exact in Q15; x^2 exact in Q30; x^4 and x^5 in Q30 through
- * 15-bit halves (no int64), so the only rounding that shows is the final one.
  * Error <= FRESNEL_Q15_BOUND_SCHLICK LSB. Cost: 8 mul. */
 fresnel_q15 fresnel_schlick_q15(int32_t f0, int32_t c);
 fresnel_q15_rgb fresnel_schlick_q15_rgb(fresnel_q15_rgb f0, int32_t c);
 
 /* Generalized Schlick:  F = F0 + (F90 - F0)(1 - c)^p,  p Q16.16 in
- * [FRESNEL_Q16_P_MIN, FRESNEL_Q16_P_MAX] (clamped). p = 5 takes Schlick's
- * path. Other p: (1-c)^p = (1-c)^floor(p) by repeated squaring in qf, times
- * 2^(-frac(p) L), L = -log2(1-c): log2 from a 64-entry reciprocal table and
- * the series of log(1 + d), |d| < 2^-7, to the cubic term; 2^-y from a
- * 64-entry table and the series of exp to the cubic term. Relative error
- * < 2^-24 for p <= 64, < 2^-21 up to p = 1000 (the squarings of x^1000;
- * measured 2^-22.4) (tests/test_fixed_math.c). Error <=
- * FRESNEL_Q15_BOUND_SCHLICK_GEN LSB (0.501 for p <= 64), measured for p in
- * {0.001, 0.25, 0.5, 1, 2, 3.7, 5, 8, 40, 1000} and 500 p in (64, 1000], F90
- * in {0, 0.5, 1}. Cost: p = 5: 9 mul; else ~2 log2(p) qf mul + ~25 mul. */
+ * [FRESNEL_Q16_P_MIN, FRESNEL_Q16_P_MAX] (clamped).
+ * Error <= FRESNEL_Q15_BOUND_SCHLICK_GEN LSB (0.501 for p <= 64).
+ * Cost: p = 5: 9 mul; else ~2 log2(p) qf mul + ~25 mul. */
 fresnel_q15 fresnel_schlick_gen_q15(int32_t f0, int32_t f90, fresnel_q16 p, int32_t c);
 fresnel_q15_rgb fresnel_schlick_gen_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f90, fresnel_q16 p,
                                             int32_t c);
 
-/* Schlick for internal reflection: m prepared from eta (kappa 0) relative
- * to the incident side, as fresnel_schlick_internal. eta >= 1 (a0 >= 0):
- * Schlick at c. eta < 1: ct^2 = (a0 + c^2) / eta^2; past the critical angle
- * (ct^2 <= 0) the result is one; otherwise Schlick at ct, evaluated from ct
- * in qf (not rounded to a Q15 cosine first).
+/* Schlick for internal reflection (fresnel_schlick_internal), m prepared
+ * from eta (kappa 0) relative to the incident side: eta >= 1, Schlick at c;
+ * eta < 1, Schlick at ct, ct^2 = (eta^2 - 1 + c^2) / eta^2, and one where
+ * ct^2 <= 0 (past the critical angle).
  * Error <= FRESNEL_Q15_BOUND_SCHLICK_INTERNAL LSB. Cost: ~8 qf ops, 1 qf sqrt. */
 fresnel_q15 fresnel_schlick_internal_q15(int32_t f0, const fresnel_q15_ior *m, int32_t c);
 fresnel_q15_rgb fresnel_schlick_internal_q15_rgb(fresnel_q15_rgb f0, const fresnel_q15_ior *m,
@@ -255,12 +178,11 @@ fresnel_q15_rgb fresnel_schlick_internal_q15_rgb(fresnel_q15_rgb f0, const fresn
 
 /* F0 = ((eta-1)^2 + kappa^2) / ((eta+1)^2 + kappa^2) from Q16.16 eta, kappa
  * (eta clamped to [FRESNEL_Q16_ETA_MIN, 2^31-1], kappa to [0, 2^31-1]).
- * Error <= FRESNEL_Q15_BOUND_F0 LSB against the double formula at the same
- * Q16.16 codes. Cost: 4 qf ops, 1 qf div. */
+ * Error <= FRESNEL_Q15_BOUND_F0 LSB. Cost: 4 qf ops, 1 qf div. */
 fresnel_q15 fresnel_f0_from_ior_q15(fresnel_q16 eta, fresnel_q16 kappa);
 
 /* Hoffman's external-medium adjustment of F0 (fresnel_f0_in_medium), etaE
- * Q16.16 clamped like eta, F0 Q15. Same cancellation-free rearrangement.
+ * Q16.16 clamped like eta, F0 Q15.
  * Error <= FRESNEL_Q15_BOUND_F0_IN_MEDIUM LSB. Cost: ~8 qf ops, 2 qf div, 1 qf sqrt. */
 fresnel_q15 fresnel_f0_in_medium_q15(int32_t f0, fresnel_q16 eta_e);
 
@@ -271,8 +193,7 @@ fresnel_q15 fresnel_lsk_q15(const fresnel_q15_lsk *m, int32_t c);
 fresnel_q15_rgb fresnel_lsk_q15_rgb(const fresnel_q15_lsk m[3], int32_t c);
 
 /* LSK compensated:  F = LSK - a c (1 - c)^alpha, clamped to [0, 1].
- * (1-c)^alpha as in fresnel_schlick_gen_q15. Error <= FRESNEL_Q15_BOUND_LSK_COMP
- * LSB. Cost: LSK + pow (~2 log2(alpha) qf mul + ~20 mul) + 2 qf mul. */
+ * Error <= FRESNEL_Q15_BOUND_LSK_COMP LSB. Cost: LSK + pow (~2 log2(alpha) qf mul + ~20 mul) + 2 qf mul. */
 fresnel_q15 fresnel_lsk_comp_q15(const fresnel_q15_lsk *m, int32_t c);
 fresnel_q15_rgb fresnel_lsk_comp_q15_rgb(const fresnel_q15_lsk m[3], int32_t c);
 
@@ -280,9 +201,6 @@ fresnel_q15_rgb fresnel_lsk_comp_q15_rgb(const fresnel_q15_lsk m[3], int32_t c);
 
 /* Hoffman's F82 model:  F = F0 + (1-F0)(1-c)^5 - a c (1-c)^6,
  * a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0), clamped to [0, 1] like fresnel_f82.
- * Written as a c (1-c)^6 = g(c) [(F0 - F82) + (7/6)^-6 ... ] with
- * g(c) = (7^7/6^6) c (1-c)^6 in [0, 1] (its maximum is 1, at c = 1/7), so
- * every product stays inside int32 with 30 fractional bits.
  * Error <= FRESNEL_Q15_BOUND_F82 LSB. Cost: ~16 mul. */
 fresnel_q15 fresnel_f82_q15(int32_t f0, int32_t f82, int32_t c);
 fresnel_q15_rgb fresnel_f82_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f82, int32_t c);
@@ -290,27 +208,21 @@ fresnel_q15_rgb fresnel_f82_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f82, int
 /* -------------------------------------------------------- gulbrandsen_q15.c */
 
 /* Gulbrandsen's r, g -> n, k (fresnel_gulbrandsen_nk), r clamped to
- * [0, FRESNEL_Q15_GULBRANDSEN_R_MAX], in qf; the result is prepared for
- * fresnel_approx_conductor_q15, with n clamped below at fresnel.h's
- * FRESNEL_ETA_MIN as fresnel_gulbrandsen does (r -> 1, g = 1 gives n -> 0). k^2 = q (q + 4 (1-g) sqrt(r) nmax / (1-r)),
- * q = 2 g sqrt(r) / (1+r): fresnel.h's factored k^2 with its last difference
- * (sqrt r (n+1) + n - 1, which cancels as r -> 1, g -> 1) expanded into
- * positive terms. Cost: ~14 qf ops, 4 qf div, 1 qf sqrt. */
+ * [0, FRESNEL_Q15_GULBRANDSEN_R_MAX], n clamped below at FRESNEL_ETA_MIN
+ * (r -> 1, g = 1 gives n -> 0); the result is prepared for
+ * fresnel_approx_conductor_q15. Cost: ~14 qf ops, 4 qf div, 1 qf sqrt. */
 void fresnel_gulbrandsen_nk_q15(int32_t r, int32_t g, fresnel_q15_nk *out);
 /* The inverse n, k (Q16.16) -> r, g (Q15), as fresnel_gulbrandsen_rg. */
 void fresnel_gulbrandsen_rg_q15(fresnel_q16 n, fresnel_q16 k, fresnel_q15 *r, fresnel_q15 *g);
-/* fresnel_approx_conductor_q15 at the n, k of r, g (mapping each call;
- * prepare once with fresnel_gulbrandsen_nk_q15 when r, g are constant).
- * Error <= FRESNEL_Q15_BOUND_GULBRANDSEN LSB. */
+/* fresnel_approx_conductor_q15 at the n, k of fresnel_gulbrandsen_nk_q15(r, g).
+ * Error <= FRESNEL_Q15_BOUND_GULBRANDSEN LSB.
+ * Cost: fresnel_gulbrandsen_nk_q15 + fresnel_approx_conductor_q15. */
 fresnel_q15 fresnel_gulbrandsen_q15(int32_t r, int32_t g, int32_t c);
 fresnel_q15_rgb fresnel_gulbrandsen_q15_rgb(fresnel_q15_rgb r, fresnel_q15_rgb g, int32_t c);
 
 /* --------------------------------------------------- approx_conductor_q15.c */
 
-/* Approximate conductor form, as fresnel_approx_conductor, in its
- * transmittance form: 1 - rs = 4nc / (N + 2nc + c^2) and
- * 1 - rp = 4nc / (N c^2 + 2nc + 1), N = n^2 + k^2: sums of positive terms
- * only, so qf keeps ~30 bits and only the final rounding shows.
+/* The approximate conductor form of fresnel_approx_conductor.
  * Error <= FRESNEL_Q15_BOUND_APPROX_CONDUCTOR LSB. Cost: ~10 qf ops, 2 qf div. */
 fresnel_q15 fresnel_approx_conductor_q15(const fresnel_q15_nk *m, int32_t c);
 fresnel_q15_rgb fresnel_approx_conductor_q15_rgb(const fresnel_q15_nk m[3], int32_t c);
@@ -318,66 +230,49 @@ fresnel_q15_rgb fresnel_approx_conductor_q15_rgb(const fresnel_q15_nk m[3], int3
 /* ------------------------------------------------------- cook_torrance_q15.c */
 
 /* Cook-Torrance colour interpolation (fresnel_cook_torrance):
- *   F = F0 + (1 - F0) max(0, 1 - T(c) / T(1)),  T = 1 - exact Fresnel of m,
- * T(c) from the conductor's transmittance form, 1/T(1) = m->t1_inv.
+ *   F = F0 + (1 - F0) max(0, 1 - T(c) / T(1)),  T = 1 - fresnel_conductor_q15(m, .).
  * Error <= FRESNEL_Q15_BOUND_COOK_TORRANCE LSB. Cost: conductor + 1 qf mul. */
 fresnel_q15 fresnel_cook_torrance_q15(int32_t f0, const fresnel_q15_ior *m, int32_t c);
 fresnel_q15_rgb fresnel_cook_torrance_q15_rgb(fresnel_q15_rgb f0, const fresnel_q15_ior *m, int32_t c);
 
 /* --------------------------------------------------------------- exact_q15.c */
 
-/* Exact unpolarised Fresnel of eta + i kappa (fresnel_conductor), in the
- * transmittance form, every term a sum of positive quantities:
- *   A = a0 + c^2 (= eta^2 - kappa^2 - sin^2, exact c^2 in Q30),
- *   w = u + iv = sqrt(A + i b), m = |w|^2 = sqrt(A^2 + b^2) (u or v from
- *   (m + |A|)/2, the other from u v = b/2),
- *   Ts = 4cu / (c^2 + 2cu + m),
- *   Tp = 4cu (m + s^2) / (|z|^4 c^2 + 2cu (m + s^2) + m),  s^2 = 1 - c^2,
- *   F = 1 - (Ts + Tp)/2.
- * (The p-numerator identity Re(z^2 conj w) = u (m + s^2) is what removes the
- * differences of the textbook form.) kappa = 0 with eta < 1 gives total
- * internal reflection (u = 0, F = one) past the critical angle; a0 = b = 0
- * (matched index) gives 0 for every c.
- * Error <= FRESNEL_Q15_BOUND_CONDUCTOR LSB. Cost: ~14 qf ops, 3 qf div, 2 qf sqrt. */
+/* Exact unpolarised Fresnel of eta + i kappa (the formula of
+ * fresnel_conductor), m prepared. kappa = 0 with eta < 1 gives one past the
+ * critical angle; the matched index (a0 = b = 0) gives 0 for every c.
+ * Error <= FRESNEL_Q15_BOUND_CONDUCTOR LSB, also at critical angles.
+ * Cost: ~14 qf ops, 3 qf div, 2 qf sqrt. */
 fresnel_q15 fresnel_conductor_q15(const fresnel_q15_ior *m, int32_t c);
 fresnel_q15_rgb fresnel_conductor_q15_rgb(const fresnel_q15_ior m[3], int32_t c);
 
-/* Exact dielectric (b = 0 in m): w = sqrt(A) or TIR; the same formulas with
- * v = 0, one square root fewer. Error <= FRESNEL_Q15_BOUND_DIELECTRIC LSB.
+/* Exact dielectric (fresnel_dielectric), m prepared with kappa = 0.
+ * Error <= FRESNEL_Q15_BOUND_DIELECTRIC LSB.
  * Cost: ~10 qf ops, 2 qf div, 1 qf sqrt. */
 fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c);
 
 /* ----------------------------------------------------------------- lut_q15.c */
 
 /* Lookup tables (fresnel_lut and friends) in integers. table[i], i = 0..n-1,
- * 2 <= n <= 32768, is the reflectance at node i; the result interpolates
- * linearly between the two nodes around c. Node spacing, as fresnel.h's
- * (the tables of `fresnel gen` are read at the positions they were made for):
- *   fresnel_lut_*        uniform in sqrt(c) (node i at c = (i/(n-1))^2): the
- *                        position is sqrt(c) (n-1), sqrt(c) the exact floor
- *                        in Q30 (fresnel_isqrt_u32 on c 2^15, then 15 more
- *                        digits), rounded to a 15-bit fraction of a segment
- *   fresnel_lut_linear_* uniform in c (node i at c = i/(n-1)), exact
+ * is the reflectance at node i; the result interpolates linearly between
+ * the two nodes around c, clamped to [0, one]. Nodes as fresnel.h's:
+ *   fresnel_lut_*        uniform in sqrt(c), node i at c = (i/(n-1))^2
+ *   fresnel_lut_linear_* uniform in c, node i at c = i/(n-1)
  * Encodings:
  *   _u16  uint16_t, F = v / 32768 (v <= 32768)
- *   _u8   uint8_t,  F = v / 255   (each node decoded to Q15 first, +-0.5 LSB)
+ *   _u8   uint8_t,  F = v / 255
  *   residual (F = Schlick(F0, c) + interpolated residual):
  *   _s16  int16_t, residual = v / 2^frac, frac in [14, 30]
  *   _s8   int8_t,  residual = v / 2^frac, frac in [6, 22]
- *         (frac 14 / 6 hold a residual of 1: the generator's residual nodes
- *         are in [-1, 1])
- * n outside [2, 32768] (any int): n <= 0 reads no entry and gives 0 (the
- * _residual forms: Schlick alone), n = 1 is the constant table[0], n above
- * 32768 is read as 32768 nodes (the _rgb forms: 3 x 32768 entries, the
- * channels at 0, 32768, 65536), so no entry past the table is read.
- * Results are clamped to [0, one]. Error <= FRESNEL_Q15_BOUND_LUT LSB against
- * the same interpolation in double (the table's own error is the
- * generator's business); between two nodes that differ by s > 1 (a
- * residual table's nodes may span [-1, 1]) the position's part grows with
- * the step: <= 0.51 + 0.5 s LSB (tests/test_lut_residual_range.c). Cost: uniform in c, 3 mul, no division (~100
- * instructions on Cortex-M0); uniform in sqrt(c), the square root's 31
- * digit steps and 1 mul more (~400; ports/README.md). The _residual forms
- * add Schlick's 8 mul. */
+ * n: 2 <= n <= 32768. n <= 0 reads no entry and gives 0 (the _residual
+ * forms: Schlick alone), n = 1 is the constant table[0], n above 32768 is
+ * read as 32768 nodes (the _rgb forms: 3 x 32768 entries, the channels at
+ * 0, 32768, 65536); no entry past the table is read.
+ * Error <= FRESNEL_Q15_BOUND_LUT LSB against the same interpolation in
+ * double; between two nodes that differ by s > 1 (a residual table's nodes
+ * may span [-1, 1]) <= 0.51 + 0.5 s LSB.
+ * Cost: uniform in c, 3 mul, no division; uniform in sqrt(c), an integer
+ * square root (31 digit steps) and 1 mul more; the _residual forms add
+ * Schlick's 8 mul. */
 fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c);
 fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c);
 fresnel_q15 fresnel_lut_q15_u8(const uint8_t *table, int n, int32_t c);
@@ -401,31 +296,26 @@ fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t
 fresnel_q15_rgb fresnel_lut_linear_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table,
                                                        int n, int frac, int32_t c);
 
-/* fresnel_lut_cubic (fresnel.h) on uint16_t nodes: the position as
- * fresnel_lut_q15_u16, Catmull-Rom weights in Q15 (shared by the three
- * channels of the _rgb form), a 4-term sum in Q30, rounded and clamped.
- * Tables must be fitted for the cubic (lutN-cubic). Error <=
- * FRESNEL_Q15_BOUND_LUT_CUBIC LSB against the same cubic in double at the
- * table's values. Cost: the position of fresnel_lut_q15_u16, 7 mul for the
- * weights, 4 per channel. */
+/* fresnel_lut_cubic (fresnel.h) on uint16_t nodes, n as fresnel_lut_q15_u16,
+ * clamped to [0, one]; tables fitted for the cubic (lutN-cubic).
+ * Error <= FRESNEL_Q15_BOUND_LUT_CUBIC LSB against the same cubic in double
+ * at the table's values. Cost: the position of fresnel_lut_q15_u16, 7 mul
+ * for the weights, 4 per channel. */
 fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n, int32_t c);
 fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n, int32_t c);
 
-/* ------------------------------------------------------------- fixed_math.c */
+/* ------------------------------------------------------------- math_q15.c */
 
-/* floor(sqrt(x)) for every uint32_t x, digit by digit (16 steps, no
- * multiply, no division). Tested on every x < 2^24 and at k^2 - 1, k^2 for
- * every k < 2^16 (tests/test_fixed_math.c). */
+/* floor(sqrt(x)) for every uint32_t x. Exact.
+ * Cost: 16 digit steps, no multiply, no division. */
 uint32_t fresnel_isqrt_u32(uint32_t x);
 
-/* floor(n * 2^k / d), bit by bit (k + 1 steps, no division instruction), for
- * 1 <= d < 2^31, n < 2d, 0 <= k <= 31: a quotient of k + 1 bits. Tested on
- * every (n, d) with d < 2^12 for k = 0, 15, 31, and on 10^7 random ones. */
+/* floor(n * 2^k / d) for 1 <= d < 2^31, n < 2d, 0 <= k <= 31: a quotient of
+ * k + 1 bits. Exact. Cost: k + 1 steps, no division instruction. */
 uint32_t fresnel_udiv_frac_u32(uint32_t n, uint32_t d, int k);
 
-/* Reciprocal in Q16.16: round(2^32 / x) for x in [2, 2^31) (x = 1 and
- * below saturate to 2^31 - 1). Tested on every x < 2^24 and 10^7 random
- * ones. Cost: 32 steps. */
+/* Reciprocal in Q16.16: round(2^32 / x) for x in [2, 2^31); x = 1 and
+ * below saturate to 2^31 - 1. Exact. Cost: 32 steps. */
 fresnel_q16 fresnel_recip_q16(fresnel_q16 x);
 
 #endif /* FRESNEL_HAS_FIXED */
@@ -433,257 +323,4 @@ fresnel_q16 fresnel_recip_q16(fresnel_q16 x);
 #ifdef __cplusplus
 }
 #endif
-/* ================================================================ fast paths
- *
- * Inline fixed-point evaluations for a Cortex-M0-class core, traded against
- * the functions above: fewer instructions (ports/README.md, `make
- * cross-count`), a larger but measured error, and preconditions instead of
- * clamps. Integer only like the rest of this header (int32/uint32, no int64,
- * no division, no float); C99 static inline, so a firmware that uses one of
- * them links no library code for it.
- *
- * PRECONDITIONS (outside them the behaviour is undefined):
- *   f0 in [0, FRESNEL_Q15_ONE]; LUT entries in [0, FRESNEL_Q15_ONE];
- *   Schlick and F82: c <= FRESNEL_Q15_FAST_C_MAX (one + 2435; any c < 0 is
- *   read as 0, c in [one, one + 2435] gives F0, the value at one), F82's
- *   a_q12 in [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX];
- *   LUTs: any c (c <= 0 reads as 0, c > one as one) and any n (n <= 0 gives
- *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
- *   as that many nodes; with n a compile-time constant these tests fold
- *   away). The table must hold min(n, that maximum) entries.
- * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them
- * (tests/test_fixed_edges.c: each precondition at its edge and one past).
- * ERROR BOUNDS (LSB of Q15, FRESNEL_Q15_BOUND_*_FAST) are the largest
- * |result/32768 - reference| measured by tests/test_fixed_fast.c, against
- * the same double references as tests/test_fixed_bounds.c, over every cos
- * code 0..32768 (see each function for the parameter sets).
- *
- * Where the error comes from: x^5 = (1 - c)^5 is three Q15 products with a
- * single rounding constant (on a Cortex-M0 each costs instructions), about
- * 2.8 LSB;
- * fresnel_schlick_q15 keeps 30 bits with split products for 0.5 LSB at
- * 3.5x the instructions. Both are far inside Schlick's own model error.
- */
-#if FRESNEL_HAS_FIXED
-
-/* Forced inline under GCC and Clang: at -Os they would otherwise keep a
- * helper used twice (fresnel_i_fast_pow5) out of line, a call per use. */
-#if defined(__GNUC__)
-#define FRESNEL_FAST_INLINE static inline __attribute__((always_inline))
-#else
-#define FRESNEL_FAST_INLINE static inline
-#endif
-
-#define FRESNEL_Q15_BOUND_SCHLICK_FAST 2.9     /* measured 2.87615 (every 16th F0) */
-#define FRESNEL_Q15_BOUND_F82_FAST 5.8         /* measured 5.72677 (1/32 grid), 5.58885 (materials) */
-#define FRESNEL_Q15_BOUND_LUT_FAST 1.0         /* 2 <= n <= 64; measured 0.98962 */
-#define FRESNEL_Q15_BOUND_LUT_FAST_1024 2.8    /* n <= 1024; measured 2.76231 (1024-node TIR table) */
-#define FRESNEL_Q15_BOUND_LUT_PL_FAST 3.4      /* n <= 64; measured 3.35845 */
-#define FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge; measured 15.16331 */
-
-/* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
- * truncated, so that the errors straddle zero with one constant (every
- * product <= 2^30; x = one gives one exactly). */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
-{
-    uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15;
-    return (x4 * x) >> 15;
-}
-
-/* c for the Schlick and F82 fast paths: c below 0 is 0, as c & ~(c >> 31)
- * where >> is arithmetic on negative values (GCC, Clang and the other
- * embedded compilers; two instructions on Cortex-M0, where the conditional
- * takes three), else by the conditional. c in (one, FRESNEL_Q15_FAST_C_MAX] needs
- * nothing: 1 - c wraps to 2^32 - k, whose square is k^2 mod 2^32, so x^2 is
- * ceil(k^2 / 2^15) < 182, x^4 = 0 and x^5 = x^6 = 0: the result is F0, the
- * value at c = one (tests/test_fixed_edges.c, every such c and F0). */
-#define FRESNEL_Q15_FAST_C_MAX (32768 + 2435)
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_c(int32_t c)
-{
-    return (-1 >> 1) == -1 ? (uint32_t)c & ~(uint32_t)(c >> 31) : (uint32_t)(c < 0 ? 0 : c);
-}
-
-/* F0 + (1 - F0) x5 for f0, x5 in [0, one], truncated. */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_blend(uint32_t f0, uint32_t x5)
-{
-    return f0 + (((32768u - f0) * x5) >> 15);
-}
-
-/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 in [0, one] and c as
- * PRECONDITIONS says: x^5 as fresnel_i_fast_pow5 and a truncated blend. Error <=
- * FRESNEL_Q15_BOUND_SCHLICK_FAST LSB (every 16th F0 code, every c code;
- * every F0 code with FRESNEL_TEST_EXHAUSTIVE=1). c = 0 gives exactly one,
- * c = one exactly F0. Cost: 4 mul. */
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
-{
-    return (fresnel_q15)fresnel_i_fast_blend((uint32_t)f0, fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c)));
-}
-
-/* The same for three channels: x^5 once, three blends; each channel equals
- * fresnel_schlick_q15_fast's. Cost: 6 mul. */
-FRESNEL_FAST_INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
-{
-    uint32_t x5 = fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c));
-    fresnel_q15_rgb r;
-    r.r = (fresnel_q15)fresnel_i_fast_blend(f0.r, x5);
-    r.g = (fresnel_q15)fresnel_i_fast_blend(f0.g, x5);
-    r.b = (fresnel_q15)fresnel_i_fast_blend(f0.b, x5);
-    return r;
-}
-
-/* Hoffman's F82 model, F = F0 + (1 - F0) x^5 - a c x^6, with the
- * per-material a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) prepared on the host
- * as a_q12 = round(4096 a) (`fresnel gen` emits it for scenes with f82 and
- * q15; any F0, F82 in [0, 1] give a in [-9.4847, 17.6514], a_q12 in
- * [-38849, 72300]). The arithmetic is exact for a_q12 in
- * [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX]: c x^6 in Q18
- * is at most 14852 (c = 4654), so F0 = one with a_q12 below -72296 would
- * overflow int32 (tests/test_fixed_edges.c computes both ends).
- * Schlick as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
- * error matters: a c multiplies it), c x^6 in Q18 (<= 14870), the sum in
- * units of 2^-30 (|a_q12 c x^6| < 2^30.1, Schlick 2^30), clamped to [0, one]
- * as fresnel_f82 clamps. a multiplies the error of x^6, so the bound is
- * reached only at unphysical corners (F0 = 1, F82 = 0: a = 17.7). Error <= FRESNEL_Q15_BOUND_F82_FAST LSB (F0 and F82 on a 1/32 grid
- * and the test materials, every c code, against ref_f82 at the unrounded
- * a). Cost: 7 mul. */
-#define FRESNEL_Q15_F82_FAST_A_MIN (-72296)
-#define FRESNEL_Q15_F82_FAST_A_MAX 144592
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
-{
-    uint32_t cu = fresnel_i_fast_c(c), x = 32768u - cu;
-    uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
-    uint32_t cx6 = (cu * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
-    int32_t v = (int32_t)(fresnel_i_fast_blend((uint32_t)f0, x5) << 15) - a_q12 * (int32_t)cx6;
-    uint32_t r = (uint32_t)v >> 15;
-    if (v <= 0)
-        return 0;
-    return (fresnel_q15)(r > 32768u ? 32768u : r);
-}
-
-/* sqrt(j/128) in Q22 for j = 32..129, and 2^16 / (r_j + r_(j+1)) for
- * j = 32..128 (the chord slope of each segment): 586 bytes of flash in the
- * translation unit that uses fresnel_lut_q15_u16_fast. */
-static const uint32_t fresnel_i_fast_sqrt_r[98] = {
-    2097152u, 2129668u, 2161695u, 2193254u, 2224366u, 2255048u, 2285318u, 2315193u,
-    2344687u, 2373815u, 2402589u, 2431023u, 2459129u, 2486916u, 2514397u, 2541580u,
-    2568476u, 2595093u, 2621440u, 2647525u, 2673355u, 2698938u, 2724280u, 2749389u,
-    2774271u, 2798932u, 2823377u, 2847613u, 2871644u, 2895475u, 2919112u, 2942559u,
-    2965821u, 2988901u, 3011805u, 3034536u, 3057098u, 3079495u, 3101730u, 3123806u,
-    3145728u, 3167498u, 3189119u, 3210595u, 3231928u, 3253121u, 3274178u, 3295099u,
-    3315888u, 3336548u, 3357081u, 3377489u, 3397775u, 3417940u, 3437986u, 3457917u,
-    3477733u, 3497437u, 3517031u, 3536516u, 3555894u, 3575168u, 3594337u, 3613406u,
-    3632374u, 3651243u, 3670016u, 3688693u, 3707276u, 3725766u, 3744165u, 3762474u,
-    3780695u, 3798827u, 3816874u, 3834836u, 3852714u, 3870510u, 3888224u, 3905858u,
-    3923412u, 3940888u, 3958288u, 3975611u, 3992858u, 4010032u, 4027133u, 4044161u,
-    4061117u, 4078004u, 4094820u, 4111568u, 4128248u, 4144861u, 4161407u, 4177888u,
-    4194304u, 4210656u
-};
-static const uint16_t fresnel_i_fast_sqrt_k[97] = {
-    65032u, 64054u, 63119u, 62223u, 61365u, 60541u, 59749u, 58988u, 58255u, 57549u, 56868u, 56211u,
-    55575u, 54961u, 54367u, 53792u, 53234u, 52694u, 52169u, 51660u, 51166u, 50685u, 50218u, 49764u,
-    49321u, 48891u, 48471u, 48062u, 47663u, 47274u, 46894u, 46523u, 46161u, 45808u, 45462u, 45124u,
-    44793u, 44470u, 44153u, 43843u, 43540u, 43243u, 42952u, 42666u, 42386u, 42112u, 41843u, 41579u,
-    41320u, 41066u, 40816u, 40571u, 40330u, 40093u, 39861u, 39633u, 39408u, 39187u, 38970u, 38757u,
-    38547u, 38340u, 38136u, 37936u, 37739u, 37545u, 37354u, 37166u, 36981u, 36798u, 36618u, 36441u,
-    36266u, 36094u, 35924u, 35756u, 35591u, 35428u, 35268u, 35109u, 34953u, 34798u, 34646u, 34496u,
-    34347u, 34201u, 34056u, 33913u, 33772u, 33633u, 33496u, 33360u, 33225u, 33093u, 32962u, 32832u,
-    32704u
-};
-
-/* sqrt(c / 2^15) in Q22 for c in [1, 32768]. c is scaled by 4^m into
- * [2^13, 2^15] (m = 0 for c >= 2^13, up to 7 for c = 1). On segment
- * j = c >> 8, with d = c & 255 and delta = sqrt(c) - r_j, which solves
- * delta = (d + delta (dh - delta)) k  (dh = r_(j+1) - r_j, k the chord slope):
- * delta1 = d k (the chord), delta2 = (d + delta1 (dh - delta1)) k (one
- * fixed-point step, contraction dh/(r_j + r_(j+1)) <= 2^-7). Every term is
- * non-negative (delta1 <= dh). Measured |error| <= 2^-20.7 (test_fixed_fast). */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
-{
-    uint32_t m = 0, j, d, k, r0, dh, d1;
-    while (c < 8192u) {
-        c <<= 2;
-        m++;
-    }
-    j = (c >> 8) - 32u;
-    d = c & 255u;
-    k = fresnel_i_fast_sqrt_k[j];
-    r0 = fresnel_i_fast_sqrt_r[j];
-    dh = fresnel_i_fast_sqrt_r[j + 1] - r0;
-    d1 = (d * k) >> 9;
-    return (r0 + ((((d << 7) + ((d1 * (dh - d1)) >> 22)) * k) >> 16)) >> m;
-}
-
-/* fresnel_lut_q15_u16 (nodes uniform in sqrt(c), node i at c = (i/(n-1))^2)
- * with the position from fresnel_i_fast_sqrt_q22 instead of the exact root:
- * pos = round(sqrt(c) (n-1) 2^15), segment i = (pos - 1) >> 15 (so c = one
- * reads nodes n-2 and n-1 with weight one), linear interpolation rounded.
- * n and c outside [2, 1024] and [0, one]: as PRECONDITIONS says. Error
- * against the double interpolation at the exact sqrt(c) (tables of 2 to
- * 1024 nodes as in test_fixed_bounds.c) <= FRESNEL_Q15_BOUND_LUT_FAST LSB for
- * n <= 64 and FRESNEL_Q15_BOUND_LUT_FAST_1024 up to 1024 nodes: the
- * position's own error is below 2^-20.7 (n - 1) of a segment, which shows
- * times the steepest node-to-node step (a 1024-node table across a critical
- * angle). Cost: 5 mul
- * (plus 2 shifts per halving of c below 1/4). */
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, int n, int32_t c)
-{
-    uint32_t pos, i, t;
-    int32_t v0, v1;
-    if (n < 2)
-        return n < 1 ? 0 : table[0];
-    if (n > 1024)
-        n = 1024;
-    if (((uint32_t)c - 1u) >> 15) /* c <= 0, or c > one */
-        return c <= 0 ? table[0] : table[n - 1];
-    pos = (fresnel_i_fast_sqrt_q22((uint32_t)c) * (uint32_t)(n - 1) + 64u) >> 7;
-    i = (pos - 1u) >> 15;
-    t = pos - (i << 15);
-    v0 = table[i];
-    v1 = table[i + 1];
-    return (fresnel_q15)((v0 * 32768 + (v1 - v0) * (int32_t)t + 16384) >> 15);
-}
-
-/* Tables whose nodes are uniform in P(c), a 64-piece linear stand-in for
- * sqrt(c) (lut_spacing = grazing-pl in a scene; `fresnel gen` fits the node
- * values through exactly this position): P is the linear interpolation of
- * fresnel_i_fast_sqrt_pl[k] = round(32768 sqrt(k/64)) between c = k/64 and
- * (k+1)/64, so it needs no root, and still crowds the nodes toward grazing
- * incidence (the first piece is 1/8 of the range, 1/64 of c).
- *   p = S[j] + ((S[j+1] - S[j]) (c mod 512)) >> 9, j = c >> 9  (c = one read
- *       as one - 2^-15, so that p < one and the last segment is n-2)
- *   pos = p (n-1), node i = pos >> 15, linear interpolation, truncated.
- * The bound needs 2 <= n <= 64 (P has 15 bits: its truncation moves the
- * position by up to (n-1) 2^-15 of a segment); n and c outside: as
- * PRECONDITIONS says. Error <= FRESNEL_Q15_BOUND_LUT_PL_FAST LSB against the same
- * interpolation in double at the same P, FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR
- * across a total-reflection edge (a step of up to one between two nodes)
- * (tests/test_fixed_fast.c). Cost: 3 mul, 4 loads. */
-static const uint16_t fresnel_i_fast_sqrt_pl[65] = {
-    0u,     4096u,  5793u,  7094u,  8192u,  9159u,  10033u, 10837u, 11585u, 12288u, 12953u, 13585u, 14189u,
-    14768u, 15326u, 15864u, 16384u, 16888u, 17378u, 17854u, 18318u, 18770u, 19212u, 19644u, 20066u, 20480u,
-    20886u, 21283u, 21674u, 22058u, 22435u, 22806u, 23170u, 23530u, 23884u, 24232u, 24576u, 24915u, 25249u,
-    25580u, 25905u, 26227u, 26545u, 26859u, 27170u, 27477u, 27780u, 28081u, 28378u, 28672u, 28963u, 29251u,
-    29537u, 29819u, 30099u, 30377u, 30652u, 30924u, 31194u, 31462u, 31727u, 31991u, 32252u, 32511u, 32768u};
-
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *table, int n, int32_t c)
-{
-    uint32_t x, p, pos, t;
-    const uint16_t *s, *v;
-    if (n < 2)
-        return n < 1 ? 0 : table[0];
-    if (n > 32768)
-        n = 32768;
-    x = (uint32_t)c;
-    if (x >> 15) /* c < 0, or c >= one: one is read as one - 2^-15 */
-        x = c < 0 ? 0u : 32767u;
-    s = fresnel_i_fast_sqrt_pl + (x >> 9);
-    p = s[0] + (((uint32_t)(s[1] - s[0]) * (x & 511u)) >> 9);
-    pos = p * (uint32_t)(n - 1);
-    t = pos & 32767u;
-    v = table + (pos >> 15);
-    return (fresnel_q15)((v[0] * 32768 + (v[1] - v[0]) * (int32_t)t) >> 15);
-}
-
-#endif /* FRESNEL_HAS_FIXED: fast paths */
-
 #endif /* FRESNEL_FIXED_H */

@@ -20,11 +20,11 @@ HOSTCC=${HOSTCC:-cc}
 W="-std=c99 -Wall -Wextra -Wpedantic -Werror"
 # The fixed-point-only builds take all of src/ and let the configuration
 # leave the binary32 and binary16 files empty (fresnel_config.h), as a
-# firmware project that vendors src/ would.
-ALL_SRC=$(ls src/*.c)
-FIXED_SRC="src/fixed_math.c $(ls src/*_q15.c)"
-F16_SRC=$(ls src/*_f16.c)
-F32_SRC=$(ls src/*.c | grep -v -e '_q15\.c$' -e '_f16\.c$' -e 'fixed_math\.c$')
+# firmware project that vendors all of src/ would.
+ALL_SRC=$(ls src/*/*.c)
+FIXED_SRC=$(ls src/q15/*.c)
+F16_SRC=$(ls src/f16/*.c)
+F32_SRC=$(ls src/f32/*.c)
 FIXED_ONLY="-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16"
 PORT_COMMON="ports/common/port_print.c ports/common/mem.c"
 INC="-Iinclude -Iports/common -Itests/cross"
@@ -150,7 +150,7 @@ cmd_nm() {
     esac
     # Global symbols of the library in the firmware: Schlick's entry point
     # only. Local ones are the static helpers of schlick_q15.c that -Os chose
-    # not to inline (fixed_internal.h), part of Schlick's own code.
+    # not to inline (src/q15/math_q15.h), part of Schlick's own code.
     lib=$($NMT "$d/schlick_only.elf" | awk '$2 ~ /^[A-Z]$/ && $NF ~ /^fresnel_/ { print $NF }' | sort -u | tr '\n' ' ')
     helpers=$($NMT "$d/schlick_only.elf" | awk '$2 ~ /^[a-z]$/ && $NF ~ /^fresnel_i_/ { print $NF }' | sort -u | tr '\n' ' ')
     if [ "$lib" = "fresnel_schlick_q15 " ]; then
@@ -246,7 +246,7 @@ cmd_size() {
             echo "$row"
         done
     done
-    # The inline fast paths of fresnel_fixed.h ("fast paths"), fixed point only.
+    # The inline fast paths of fresnel_fixed_fast.h, fixed point only.
     for mj in schlick-fast:16 f82-fast:17 lut-u16-fast:18 lut-u16-pl-fast:21; do
         m=${mj%:*} j=${mj#*:}
         row="| $m | fixed |"
@@ -281,7 +281,7 @@ cmd_size() {
     set -- $(probe_size m0 PROBE 20 fixed -DSCENE_N=4)
     echo "schlick-only fixed scene, RGB (fresnel_schlick_q15_rgb_fast, PROBE=20): .text $s1t B, .rodata $s1r B (one material); per further material: .text $((($1 - s2t) / 2)) B, .rodata $((($2 - s2r) / 2)) B"
     wt=$($SZ -t "$OUT/m0/size_fixed.a" | awk '$NF ~ /TOTALS/ { print $1 }')
-    echo "whole fixed runtime (libfresnel fixed objects): .text $wt B (Cortex-M0 -Os, src/fixed_math.c and src/*_q15.c, before --gc-sections)"
+    echo "whole fixed runtime (libfresnel fixed objects): .text $wt B (Cortex-M0 -Os, src/q15/*.c, before --gc-sections)"
     d=$OUT/m0/fixed-only
     [ -f "$d/schlick_only.elf" ] || cmd_nm >/dev/null
     echo

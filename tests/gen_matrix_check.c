@@ -28,6 +28,7 @@
 
 #include "fresnel.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "header_check.h"
 
 static hc_header hh;
@@ -58,8 +59,8 @@ static char *read_all(const char *path)
 static double pl_ref(const uint16_t *t, int n, int32_t c)
 {
     uint32_t x = (uint32_t)c - ((uint32_t)c >> 15), j = x >> 9;
-    uint32_t p = fresnel_i_fast_sqrt_pl[j] +
-                 (((uint32_t)(fresnel_i_fast_sqrt_pl[j + 1] - fresnel_i_fast_sqrt_pl[j]) * (x & 511u)) >> 9);
+    uint32_t p = fresnel_lut_pl_knots_q15[j] +
+                 (((uint32_t)(fresnel_lut_pl_knots_q15[j + 1] - fresnel_lut_pl_knots_q15[j]) * (x & 511u)) >> 9);
     double pos = p / 32768.0 * (n - 1), w;
     int i = (int)pos;
     if (i > n - 2)

@@ -26,20 +26,20 @@ for cc in gcc clang; do
     }
     # binary16 follows the compiler: FRESNEL_HAS_F16 is 1 exactly where it
     # accepts _Float16 (gcc on x86-64), 0 where not (clang 14 on x86-64),
-    # and then fresnel_f16.h and src/*_f16.c still build, to nothing
+    # and then fresnel_f16.h and src/f16/*.c still build, to nothing
     printf '__extension__ typedef _Float16 h;\nh half(h x) { return x; }\n' >"$t/probe.c"
     has=0
     $cc $W -c "$t/probe.c" -o "$t/o.o" 2>/dev/null && has=1
     printf '#include "fresnel_f16.h"\ntypedef char ok[FRESNEL_HAS_F16 == %d ? 1 : -1];\nint unused;\n' $has >"$t/has.c"
     syms=""
-    for f in src/*_f16.c; do
+    for f in src/f16/*.c; do
         $cc $W -c "$f" -o "$t/s.o" 2>>"$t/err16" || syms="$syms $f:error"
         [ $has -eq 1 ] || syms="$syms$(nm --defined-only "$t/s.o" 2>/dev/null | awk '$2 ~ /[TtDdRrBb]/ {printf " %s", $3}')"
     done
     if $cc $W -c "$t/has.c" -o "$t/o.o" 2>"$t/err" && [ -z "$syms" ]; then
-        echo "PASS $cc: FRESNEL_HAS_F16 = $has, as the compiler's _Float16; src/*_f16.c build warning-free$([ $has -eq 1 ] || echo ', to empty objects')"
+        echo "PASS $cc: FRESNEL_HAS_F16 = $has, as the compiler's _Float16; src/f16/*.c build warning-free$([ $has -eq 1 ] || echo ', to empty objects')"
     else
-        echo "FAIL $cc: FRESNEL_HAS_F16 is not $has (the compiler's _Float16) or src/*_f16.c:$syms $(head -3 "$t/err" "$t/err16")"
+        echo "FAIL $cc: FRESNEL_HAS_F16 is not $has (the compiler's _Float16) or src/f16/*.c:$syms $(head -3 "$t/err" "$t/err16")"
     fi
     must_fail "misspelled flag FRESNEL_CFG_NO_FLOT" 'FRESNEL_CFG_NO_FLOT' "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOT"
     must_fail "unknown flag bit 0x100" 'fresnel_config_has_unknown_flags_' "-DFRESNEL_CONFIG=0x100"
@@ -53,12 +53,12 @@ for cc in gcc clang; do
     # FRESNEL_CFG_NO_FIXED strips the fixed-point API and code
     must_fail "FRESNEL_CFG_NO_FIXED hides fresnel_schlick_q15" 'fresnel_schlick_q15' "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FIXED"
     syms=""
-    for f in src/*_q15.c src/fixed_math.c src/*_f16.c; do
+    for f in src/q15/*.c src/f16/*.c; do
         $cc $W "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FIXED|FRESNEL_CFG_NO_F16" -c "$f" -o "$t/s.o" 2>>"$t/err2" || syms="$syms $f:error"
         syms="$syms$(nm --defined-only "$t/s.o" 2>/dev/null | awk '$2 ~ /[TtDdRrBb]/ {printf " %s", $3}')"
     done
     if [ -z "$syms" ]; then
-        echo "PASS $cc: FRESNEL_CFG_NO_FIXED|FRESNEL_CFG_NO_F16 leave src/*_q15.c, fixed_math.c, *_f16.c empty"
+        echo "PASS $cc: FRESNEL_CFG_NO_FIXED|FRESNEL_CFG_NO_F16 leave src/q15/*.c and src/f16/*.c empty"
     else
         echo "FAIL $cc: stripped files still define:$syms $(head -3 "$t/err2" 2>/dev/null)"
     fi
@@ -78,7 +78,7 @@ C
     fi
     defs="" errs=""
     : >"$t/err3"
-    for f in src/*.c; do
+    for f in src/*/*.c; do
         if $cc $W -DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT -c "$f" -o "$t/s.o" 2>>"$t/err3"; then
             defs="$defs $(nm --defined-only "$t/s.o" | awk '$2 ~ /^[TDRB]$/ { print $3 }' | tr '\n' ' ')"
         else

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Consumers, one per route a user takes: `make install` + pkg-config, + CMake
 # find_package, the source tree through CMake add_subdirectory and
-# FetchContent (ports/cmake), vendored include/ + src/ compiled with plain cc,
+# FetchContent (ports/cmake), vendored include/ + src/f32/ compiled with plain cc,
 # and C++17 (g++ and clang++) against the installed libfresnel.a. Every build
 # is warning-free with -Werror and prints the same numbers. Then the installed
 # tool finds its data pack, and `make uninstall` leaves nothing behind.
@@ -16,7 +16,7 @@ version=$(sed -n 's/^#define FRESNEL_VERSION "\(.*\)"/\1/p' include/fresnel.h)
 # ---- install ----
 missing=""
 if make --no-print-directory -s install PREFIX=$P DESTDIR="$t/root" >"$t/log" 2>&1; then
-    for f in include/fresnel.h include/fresnel_fixed.h include/fresnel_f16.h include/fresnel_config.h \
+    for f in include/fresnel.h include/fresnel_fixed.h include/fresnel_fixed_fast.h include/fresnel_f16.h include/fresnel_config.h \
         lib/libfresnel.a lib/pkgconfig/fresnel.pc lib/cmake/fresnel/fresnelConfig.cmake \
         lib/cmake/fresnel/fresnelConfigVersion.cmake bin/fresnel share/fresnel/data/materials.csv \
         share/fresnel/data/SOURCES.md share/fresnel/glsl/fresnel.glsl share/fresnel/LICENSE \
@@ -86,16 +86,33 @@ else
 fi
 
 # ---- vendored sources, plain cc ----
-mkdir -p "$t/vendor/fresnel"
-cp include/*.h src/*.c src/*.h "$t/vendor/fresnel/"
-if cc $W -I"$t/vendor/fresnel" tests/consumer/consumer.c "$t"/vendor/fresnel/*.c -lm -o "$t/vendored" 2>"$t/cc2" &&
+# A binary32-only consumer copies the headers and the one folder of its type.
+mkdir -p "$t/vendor/fresnel/include"
+cp include/*.h "$t/vendor/fresnel/include/"
+cp -R src/f32 "$t/vendor/fresnel/"
+if cc $W -I"$t/vendor/fresnel/include" tests/consumer/consumer.c "$t"/vendor/fresnel/f32/*.c -lm -o "$t/vendored" 2>"$t/cc2" &&
     [ ! -s "$t/cc2" ]; then
-    echo "PASS consumer builds warning-free from vendored include/ and src/ files"
+    echo "PASS consumer builds warning-free from vendored include/ and src/f32/ alone"
 else
     echo "FAIL vendored build: $(head -5 "$t/cc2")"
 fi
+# Every type's folder builds from a copy of itself and include/ only.
+for type in f32 q15 f16; do
+    mkdir -p "$t/alone/$type/include" "$t/alone/$type/obj"
+    cp include/*.h "$t/alone/$type/include/"
+    cp -R "src/$type" "$t/alone/$type/"
+    ok=1
+    for f in "$t/alone/$type/$type"/*.c; do
+        cc $W -O2 -I"$t/alone/$type/include" -c "$f" -o "$t/alone/$type/obj/$(basename "$f" .c).o" 2>>"$t/cc4" || ok=0
+    done
+    if [ $ok -eq 1 ] && [ ! -s "$t/cc4" ]; then
+        echo "PASS src/$type/ compiles warning-free vendored alone (with include/)"
+    else
+        echo "FAIL src/$type/ vendored alone: $(head -5 "$t/cc4")"
+    fi
+done
 for compiler in gcc clang; do
-    if $compiler $W -O2 -I"$t/vendor/fresnel" -c "$t"/vendor/fresnel/exact.c -o "$t/x.o" 2>"$t/cc3" && [ ! -s "$t/cc3" ]; then
+    if $compiler $W -O2 -I"$t/vendor/fresnel/include" -c "$t"/vendor/fresnel/f32/exact.c -o "$t/x.o" 2>"$t/cc3" && [ ! -s "$t/cc3" ]; then
         echo "PASS runtime compiles warning-free with $compiler"
     else
         echo "FAIL runtime with $compiler: $(head -5 "$t/cc3")"

@@ -14,7 +14,7 @@
 
 #if FRESNEL_HAS_F16
 #include "worst.h"
-#include "f16_internal.h"
+#include "f16/internal.h"
 #include "fixed_materials.h"
 #include "model/models.h"
 #include "model/reference.h"

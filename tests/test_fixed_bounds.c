@@ -16,7 +16,7 @@
 #include "fresnel.h"
 #include "fresnel_fixed.h"
 #define FRESNEL_RANGE_CHECK /* the inline helpers in this file check too */
-#include "fixed_internal.h"
+#include "q15/internal.h"
 #include "harness.h"
 #include "worst.h"
 #include "model/models.h"

@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "harness.h"
 
 #define ONE 32768

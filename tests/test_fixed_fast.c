@@ -16,6 +16,7 @@
 #include "3_encode/fixed_params.h"
 #include "3_encode/encode.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "harness.h"
 #include "worst.h"
 #include "model/models.h"
@@ -165,7 +166,7 @@ static void check_lut(const test_material *mat, int nmat)
 static double pl_position(int32_t c)
 {
     int32_t x = c - (c >> 15), j = x >> 9;
-    double s0 = fresnel_i_fast_sqrt_pl[j], s1 = fresnel_i_fast_sqrt_pl[j + 1];
+    double s0 = fresnel_lut_pl_knots_q15[j], s1 = fresnel_lut_pl_knots_q15[j + 1];
     return (s0 + (s1 - s0) * (x & 511) / 512.0) / 32768.0;
 }
 
@@ -180,7 +181,7 @@ static void check_lut_pl(const test_material *mat, int nmat)
     memset(&w, 0, sizeof w);
     memset(&tir, 0, sizeof tir);
     for (k = 0; k <= 64; k++)
-        knots_ok &= fresnel_i_fast_sqrt_pl[k] == (uint16_t)floor(32768.0 * sqrt(k / 64.0) + 0.5);
+        knots_ok &= fresnel_lut_pl_knots_q15[k] == (uint16_t)floor(32768.0 * sqrt(k / 64.0) + 0.5);
     CHECK("fixed fast LUT pl: knots are round(32768 sqrt(k/64))", knots_ok, "a knot differs");
     for (k = 0; k < nmat; k += 4)
         for (is = 0; is < (int)(sizeof sizes / sizeof sizes[0]); is++) {

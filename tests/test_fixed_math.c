@@ -6,7 +6,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "fixed_internal.h"
+#include "q15/internal.h"
 #include "harness.h"
 
 /* A small deterministic generator, so that failures reproduce. */

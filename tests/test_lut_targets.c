@@ -9,6 +9,7 @@
 
 #include "3_encode/fixed_params.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "harness.h"
 #include "report/report.h"
 #include "scene/scene_eval.h"

@@ -24,8 +24,8 @@ if [ -z "$writable" ]; then
 else
     echo "FAIL runtime has writable data: $writable"
 fi
-if grep -nE '#include <(stdio|stdlib|errno|string)\.h>' src/*.c src/*.h include/fresnel.h >/dev/null; then
-    echo "FAIL runtime includes a hosted header: $(grep -nE '#include <(stdio|stdlib|errno|string)\.h>' src/*.c src/*.h include/fresnel.h)"
+if grep -nE '#include <(stdio|stdlib|errno|string)\.h>' src/*/*.c src/*/*.h include/fresnel.h >/dev/null; then
+    echo "FAIL runtime includes a hosted header: $(grep -nE '#include <(stdio|stdlib|errno|string)\.h>' src/*/*.c src/*/*.h include/fresnel.h)"
 else
     echo "PASS runtime includes no stdio, stdlib, errno or string headers"
 fi
@@ -39,7 +39,7 @@ else
     echo "FAIL global symbols outside the fresnel_ prefix: $foreign"
 fi
 so=$(mktemp -d)
-if ${CC:-cc} -std=c99 -O1 -fPIC -shared -Iinclude -fno-math-errno src/*.c -o "$so/libfresnel.so" -lm 2>"$so/err"; then
+if ${CC:-cc} -std=c99 -O1 -fPIC -shared -Iinclude -fno-math-errno src/*/*.c -o "$so/libfresnel.so" -lm 2>"$so/err"; then
     exported=$(nm -D --defined-only "$so/libfresnel.so" | awk 'NF==3 {print $3}')
     internal=$(printf '%s\n' "$exported" | grep '^fresnel_i_' | tr '\n' ' ')
     if [ -z "$internal" ] && printf '%s\n' "$exported" | grep -q '^fresnel_schlick$'; then

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "3_encode/encode.h"
 #include "model/reference.h"
 
@@ -19,14 +19,14 @@
 static const double half_pi = 1.57079632679489661923;
 
 /* The runtime's position P(c) for LUT_GRAZING_PL in double: the knots of
- * fresnel_i_fast_sqrt_pl, linear between them. */
+ * fresnel_lut_pl_knots_q15 (fresnel_fixed_fast.h), linear between them. */
 static double pl_position(double c)
 {
     double u = c * 64.0;
     int k = (int)u;
     if (k > 63)
         k = 63;
-    return (fresnel_i_fast_sqrt_pl[k] + (fresnel_i_fast_sqrt_pl[k + 1] - fresnel_i_fast_sqrt_pl[k]) * (u - k)) / 32768.0;
+    return (fresnel_lut_pl_knots_q15[k] + (fresnel_lut_pl_knots_q15[k + 1] - fresnel_lut_pl_knots_q15[k]) * (u - k)) / 32768.0;
 }
 
 static double lut_position(lut_spacing spacing, double c)
@@ -42,9 +42,9 @@ double lut_node_cos(lut_spacing spacing, int i, int n)
         return spacing == LUT_UNIFORM ? w : w * w; /* grazing: uniform in sqrt(c) */
     if (i == n - 1)
         return 1.0;
-    while (k < 63 && fresnel_i_fast_sqrt_pl[k + 1] <= y)
+    while (k < 63 && fresnel_lut_pl_knots_q15[k + 1] <= y)
         k++;
-    return (k + (y - fresnel_i_fast_sqrt_pl[k]) / (fresnel_i_fast_sqrt_pl[k + 1] - fresnel_i_fast_sqrt_pl[k])) / 64.0;
+    return (k + (y - fresnel_lut_pl_knots_q15[k]) / (fresnel_lut_pl_knots_q15[k + 1] - fresnel_lut_pl_knots_q15[k])) / 64.0;
 }
 
 /* The runtime's interpolation as weights on (at most) four nodes: idx[k]

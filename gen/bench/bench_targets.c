@@ -10,6 +10,7 @@
 #include "bench/bench_compare.h"
 #include "fresnel.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "model/reference.h"
 
 /* The timed material, one channel: copper at 650 nm (README's example). */

@@ -12,6 +12,7 @@
 #include "bench/bench_targets.h"
 #include "3_encode/fixed_params.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "report/report.h"
 
 enum { MISS, PASS, UNMEASURED };

@@ -1,5 +1,5 @@
 /* A small program as a firmware or game would write it: compiled against the
- * installed library (pkg-config) and against vendored include/ + src/. */
+ * installed library (pkg-config) and against vendored include/ + src/f32/. */
 #include <stdio.h>
 
 #include "fresnel.h"

@@ -1,5 +1,6 @@
 // A C++17 program using every public header and one function of each number
-// type: binary32 (fresnel.h), Q1.15 fixed point (fresnel_fixed.h) and, where
+// type: binary32 (fresnel.h), Q1.15 fixed point (fresnel_fixed.h, and the
+// inline fresnel_fixed_fast.h) and, where
 // the compiler has _Float16, binary16 (fresnel_f16.h). tests/test_consumers.sh
 // builds it with g++ and clang++ (-Wall -Wextra -Wpedantic -Werror) against
 // libfresnel.a and compares its output with consumer.c's numbers.
@@ -9,6 +10,7 @@
 #include "fresnel_config.h"
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 
 int main()
 {
@@ -22,6 +24,7 @@ int main()
     }
     // Schlick at F0 = 0.04 (1311/32768), cos 0.5, in each type
     std::printf("q15 %d\n", static_cast<int>(fresnel_schlick_q15(1311, 16384)));
+    std::printf("q15-fast %d\n", static_cast<int>(fresnel_schlick_q15_fast(1311, 16384)));
 #if FRESNEL_HAS_F16
     const fresnel_f16 h = fresnel_schlick_f16(static_cast<fresnel_f16>(0.04f), static_cast<fresnel_f16>(0.5f));
     std::printf("f16 %.4f\n", static_cast<double>(h));

@@ -7,6 +7,7 @@
 
 #include "fresnel.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "scene_fx.h"
 
 static int failures;

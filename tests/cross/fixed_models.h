@@ -5,6 +5,7 @@
 
 #include "conform.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 
 typedef fresnel_q15 (*fixed_eval)(const conform_material *m, int32_t c);
 

@@ -13,6 +13,7 @@ void probe(void);
 
 #if defined(PROBE)
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #ifndef SCENE_N
 #define SCENE_N 1
 #endif

@@ -2,7 +2,7 @@
  * double reference (gen/model/reference.c).
  *
  * Needs _Float16, which clang 14 on x86-64 lacks: `make fuzz` compiles this
- * file and src/\*_f16.c with gcc (ASan, UBSan and gcc's comparison tracing,
+ * file and src/f16/\*.c with gcc (ASan, UBSan and gcc's comparison tracing,
  * -fsanitize-coverage=trace-cmp, which libFuzzer's value profile reads) and
  * links them into the clang-built libFuzzer binary (see the Makefile's
  * fuzzing section and gcc_cov_stubs.c). Without _Float16 the target is empty.

@@ -21,6 +21,7 @@
 #include "3_encode/fixed_params.h"
 #include "fresnel.h"
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 #include "model/models.h"
 #include "model/reference.h"
 

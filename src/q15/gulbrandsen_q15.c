@@ -1,6 +1,10 @@
 /* Gulbrandsen's edge tint in fixed point (fresnel_fixed.h), in fresnel_qf,
- * with nmax in gulbrandsen.c's form and k^2 as a sum of positive terms. */
-#include "fixed_internal.h"
+ * with nmax in gulbrandsen.c's form and k^2 as a sum of positive terms:
+ *   k^2 = q (q + 4 (1-g) sqrt(r) nmax / (1-r)),  q = 2 g sqrt(r) / (1+r),
+ * gulbrandsen.c's factored k^2 with its last difference (sqrt r (n+1) + n - 1,
+ * which cancels as r -> 1, g -> 1) expanded into positive terms. n is
+ * clamped below at FRESNEL_ETA_MIN, as fresnel_gulbrandsen does. */
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

@@ -1,4 +1,7 @@
-/* Helpers shared by the fixed-point model files (src/\*_q15.c); not public.
+/* The fixed-point arithmetic of src/q15/ (defined in math_q15.c and inline
+ * below); not public. Nothing here calls into the model files, and nothing
+ * inline here calls math_q15.c: math_q15.c needs only this header, the
+ * model files reach it through internal.h.
  *
  * Two kinds of arithmetic, both in 32-bit integers only:
  *
@@ -11,7 +14,7 @@
  *    intermediates span many octaves (exact, approximate conductor,
  *    Gulbrandsen, LSK's powers, F0 helpers). Operations truncate to 31 bits,
  *    a relative error below 2^-29 per operation; they are defined in
- *    fixed_math.c and work on non-negative values only: every formula that
+ *    math_q15.c and work on non-negative values only: every formula that
  *    uses them is arranged so that signs are handled outside (see exact_q15.c).
  *
  * Range analysis convention: the comment "R:" after a statement states the
@@ -19,8 +22,8 @@
  * interesting ones through FRESNEL_I_RANGE (active only when the test build
  * defines FRESNEL_RANGE_CHECK).
  */
-#ifndef FRESNEL_FIXED_INTERNAL_H
-#define FRESNEL_FIXED_INTERNAL_H
+#ifndef FRESNEL_Q15_MATH_H
+#define FRESNEL_Q15_MATH_H
 
 #include <stdint.h>
 
@@ -45,12 +48,6 @@ FRESNEL_I_HIDDEN void fresnel_i_range_fail(const char *what, long long value);
 #else
 #define FRESNEL_I_RANGE(what, x, lo, hi) ((void)0)
 #endif
-
-/* A Q15 argument as the API promises: any int32, clamped to [0, one]. */
-static inline uint32_t fresnel_i_q15_arg(int32_t x)
-{
-    return x <= 0 ? 0u : (x >= 32768 ? FRESNEL_I_ONE_Q15 : (uint32_t)x);
-}
 
 /* floor(a b / 2^15) for a < 2^31, b <= 2^15.
  * R: a>>15 < 2^16 and b <= 2^15 give (a>>15) b < 2^31; (a & 0x7fff) b < 2^30;
@@ -101,16 +98,7 @@ static inline fresnel_q15 fresnel_i_q30s_to_q15(int32_t v)
     return v <= 0 ? (fresnel_q15)0 : (v >= (int32_t)FRESNEL_I_ONE_Q30 ? (fresnel_q15)FRESNEL_I_ONE_Q15 : fresnel_i_q30_to_q15((uint32_t)v));
 }
 
-/* Schlick's F0 + (1 - F0) x5 in Q30 from F0 in Q15 and x5 in Q30.
- * R: f0 2^15 <= 2^30 - (1 - f0) 2^15 ... the sum is <= f0 2^15 + (2^15 - f0) 2^15 = 2^30. */
-static inline uint32_t fresnel_i_schlick_q30(uint32_t f0, uint32_t x5)
-{
-    FRESNEL_I_RANGE("schlick f0", f0, 0, 1u << 15);
-    FRESNEL_I_RANGE("schlick weight", x5, 0, 1u << 30);
-    return (f0 << 15) + fresnel_i_mul_q30_q15(x5, FRESNEL_I_ONE_Q15 - f0);
-}
-
-/* ---- fresnel_qf (fixed_math.c). Non-negative values; zero is m == 0. */
+/* ---- fresnel_qf (math_q15.c). Non-negative values; zero is m == 0. */
 FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf(uint32_t x, int32_t e); /* x 2^e, normalised (x any uint32) */
 FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf_mul(fresnel_qf a, fresnel_qf b);
 FRESNEL_I_HIDDEN fresnel_qf fresnel_i_qf_add(fresnel_qf a, fresnel_qf b);
@@ -128,31 +116,15 @@ static inline fresnel_qf fresnel_i_qf_scale(fresnel_qf a, int32_t k)
     a.e += k;
     return a;
 }
-static inline fresnel_qf fresnel_i_qf_one(void) { return fresnel_i_qf(1u, 0); }
-/* a value clamped to [0, 1] as Q30 */
-static inline uint32_t fresnel_i_qf_to_q30_unit(fresnel_qf a)
-{
-    uint32_t v = fresnel_i_qf_to_fix(a, 30);
-    return v > FRESNEL_I_ONE_Q30 ? FRESNEL_I_ONE_Q30 : v;
-}
 
-/* The power function's tables (fixed_math.c), exposed for their test. */
+/* The power function's tables (math_q15.c), exposed for their test. */
 FRESNEL_I_HIDDEN extern const uint16_t fresnel_i_log2_r[64];
 FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_log2_t[64];
 FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_exp2_t[64];
 
 /* x^p for x in Q15 ([0, 2^15]) and p in Q16.16 (p > 0): relative error
- * below 2^-24 for p <= 64, 2^-21 for p <= 1000 (fixed_math.c). */
+ * below 2^-24 for p <= 64, 2^-21 for p <= 1000 (math_q15.c). */
 FRESNEL_I_HIDDEN fresnel_qf fresnel_i_pow_q15(uint32_t x, uint32_t p);
-
-/* |eta^2 - kappa^2 - sin^2| of m at c with ~60 bits, and its sign (exact_q15.c). */
-FRESNEL_I_HIDDEN fresnel_qf fresnel_i_a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative);
-
-/* 1 - exact Fresnel of m at c (exact_q15.c), in qf: Cook-Torrance's T(c). */
-FRESNEL_I_HIDDEN fresnel_qf fresnel_i_conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c);
-
-#define FRESNEL_I_RGB_Q15(expr_r, expr_g, expr_b) \
-    do { fresnel_q15_rgb out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
 
 #endif /* FRESNEL_HAS_FIXED */
 #endif

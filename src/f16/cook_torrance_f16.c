@@ -1,6 +1,6 @@
 /* Cook-Torrance colour interpolation in binary16 (fresnel_f16.h); the
  * transmittance quotient of cook_torrance.c. */
-#include "f16_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_F16
 

@@ -1,8 +1,10 @@
 /* The approximate conductor form in fixed point (fresnel_fixed.h), in its
  * transmittance form: 1 - rs = 4nc / (N + 2nc + c^2), 1 - rp = 4nc / (N c^2 +
  * 2nc + 1), N = n^2 + k^2 (expand the numerators and denominators of
- * fresnel_approx_conductor: they differ only in the sign of 2nc). */
-#include "fixed_internal.h"
+ * fresnel_approx_conductor: they differ only in the sign of 2nc). Sums of
+ * positive terms only, so qf keeps ~30 bits and only the final rounding
+ * shows. */
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

@@ -1,4 +1,6 @@
-/* Gulbrandsen's reflectivity/edge-tint parameterisation [Gul14]. */
+/* Gulbrandsen's reflectivity/edge-tint parameterisation [Gul14]. Hoffman
+ * [Hof20] explains why it is unsound for colour; it is here because
+ * production renderers use it. */
 #include "internal.h"
 
 #if FRESNEL_HAS_FLOAT

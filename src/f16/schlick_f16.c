@@ -1,6 +1,6 @@
 /* Schlick, generalized Schlick, Schlick internal and the F0 helpers in
  * binary16 (fresnel_f16.h); the algorithms of schlick.c. */
-#include "f16_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_F16
 

@@ -1,10 +1,21 @@
-/* Helpers shared by the binary16 model files (src/\*_f16.c); not public.
+/* Helpers shared by the binary16 model files (src/f16/\*.c); not public.
  *
  * Every arithmetic operation goes through one of the fresnel_i_h* helpers, whose
  * return converts to _Float16: in C99 that conversion (like an assignment
  * or a cast) discards any excess precision, so each operation is one
  * rounding to binary16 even where the compiler evaluates _Float16
- * expressions in float (FLT_EVAL_METHOD 32). See fresnel_f16.h. */
+ * expressions in float (FLT_EVAL_METHOD 32). See fresnel_f16.h.
+ *
+ * Where the error bounds of fresnel_f16.h come from: most models lose 2-8
+ * half-ulps, the rounding of 1 - c (ulp 2^-11 near 1) multiplied by the
+ * slope of (1-c)^5. Near a dielectric's critical angle the reflectance's
+ * slope is infinite and binary16's rounding of (eta-1)(eta+1) + c^2 decides
+ * total reflection: where the critical angle lies within a binary16 step of
+ * a cosine the result can be 1 for 0.5 (eta 0.0703 at c = 1 - 2^-11: 0.485
+ * off). binary32 needs exact squares there, and the GLSL port evaluates
+ * those models in highp for this reason. The LUT bound is the position's
+ * rounding times the steepest table step: sqrt(c) (n-1), the root and the
+ * product each rounded to half (ulp 1/8 for positions in [128, 256)). */
 #ifndef FRESNEL_F16_INTERNAL_H
 #define FRESNEL_F16_INTERNAL_H
 

@@ -3,7 +3,7 @@
  * squares of differences), with hypot scaled and the p-polarised ratio
  * divided through by max(1, eta^2 + kappa^2) so that nothing exceeds 65504
  * for eta, kappa <= 16. */
-#include "f16_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_F16
 

@@ -1,6 +1,23 @@
 /* Schlick, generalized Schlick, Schlick internal and the F0 helpers in
- * fixed point (fresnel_fixed.h). */
-#include "fixed_internal.h"
+ * fixed point (fresnel_fixed.h).
+ *
+ * Schlick: x = 1 - c exact in Q15, x^2 exact in Q30, x^4 and x^5 in Q30
+ * through 15-bit halves (no int64), so the only rounding that shows is the
+ * final one: the bound is 0.5 LSB plus what shows of the 30-bit
+ * intermediates (under 0.001 LSB).
+ *
+ * Generalized Schlick, p != 5: (1-c)^p = (1-c)^floor(p) by repeated squaring
+ * in qf, times 2^(-frac(p) L), L = -log2(1-c): log2 from a 64-entry
+ * reciprocal table and the series of log(1 + d), |d| < 2^-7, to the cubic
+ * term; 2^-y from a 64-entry table and the series of exp to the cubic term
+ * (math_q15.c). The power's relative error is below 2^-24 for p <= 64 and
+ * 2^-21 up to p = 1000 (the squarings of x^1000), so the bound is 0.501 for
+ * p <= 64 and 0.5 + 2^-21 2^15 = 0.516 above.
+ *
+ * Schlick internal evaluates Schlick from ct in qf, not from ct rounded to a
+ * Q15 cosine first. F0 in a medium uses the cancellation-free rearrangement
+ * of fresnel_f0_in_medium (schlick.c). */
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

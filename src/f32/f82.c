@@ -1,5 +1,7 @@
 /* Hoffman's F82 model: Lazanyi's compensation term reparameterised by the
- * reflectance at c = 1/7 [Hof20]. */
+ * reflectance at c = 1/7 [Hof20]. Extreme F0/F82 pairs (F82 well above or
+ * below F0) push the curve outside [0, 1]: the clamp leaves a C1 kink there,
+ * as Hoffman notes. */
 #include "internal.h"
 
 #if FRESNEL_HAS_FLOAT

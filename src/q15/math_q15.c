@@ -1,8 +1,8 @@
 /* Integer square root, bit-by-bit division and reciprocal (public), and the
  * mantissa-exponent arithmetic and power function the fixed-point models
- * share (fixed_internal.h). 32-bit integers only: no int64, no division
+ * share (math_q15.h). 32-bit integers only: no int64, no division
  * instruction, no count-leading-zeros instruction (Cortex-M0 has none). */
-#include "fixed_internal.h"
+#include "math_q15.h"
 
 #if FRESNEL_HAS_FIXED
 
@@ -355,9 +355,9 @@ fresnel_qf fresnel_i_pow_q15(uint32_t x, uint32_t p)
     if (x == 0)
         return fresnel_i_qf(0, 0);
     if (x >= FRESNEL_I_ONE_Q15)
-        return fresnel_i_qf_one();
+        return fresnel_i_qf(1u, 0);
     base = fresnel_i_qf(x, -15);
-    result = fresnel_i_qf_one();
+    result = fresnel_i_qf(1u, 0);
     /* integer part by repeated squaring: relative error < 2^-29 per product,
      * about 2 log2(k) of them */
     while (k) {
@@ -378,5 +378,5 @@ fresnel_qf fresnel_i_pow_q15(uint32_t x, uint32_t p)
 }
 
 #else
-typedef int fresnel_i_fixed_math_disabled; /* ISO C wants a declaration in every file */
+typedef int fresnel_i_math_q15_disabled; /* ISO C wants a declaration in every file */
 #endif

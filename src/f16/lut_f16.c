@@ -4,7 +4,7 @@
  * fresnel_lut_*: nodes uniform in sqrt(c) as in lut.c and the GLSL port's
  * fresnel_lut_pos, the root of the half cosine rounded to half, as a
  * shader's sqrt. */
-#include "f16_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_F16
 

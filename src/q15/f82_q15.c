@@ -7,7 +7,7 @@
  * so that both factors are Q30 numbers of known range and their product
  * needs no int64. (h >= F0 - 1 + 0.4627 (1 - F0) = -0.5373 (1 - F0);
  * h <= 1 + 0.4627.) */
-#include "fixed_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

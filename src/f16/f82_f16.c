@@ -1,5 +1,5 @@
 /* Hoffman's F82 model in binary16 (fresnel_f16.h); f82.c's algorithm. */
-#include "f16_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_F16
 

@@ -1,6 +1,6 @@
 /* The approximate conductor form in binary16 (fresnel_f16.h), with the
  * cancellation-free numerators of approx_conductor.c. */
-#include "f16_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_F16
 

@@ -1,4 +1,7 @@
-/* Lookup tables of reflectance curves, interpolated linearly (see fresnel.h). */
+/* Lookup tables of reflectance curves, interpolated linearly (see fresnel.h).
+ * Nodes uniform in sqrt(c) crowd toward grazing incidence, where Fresnel
+ * curves bend (the first interval is 1/(n-1)^2 wide), and still cover
+ * normal incidence. */
 #include "internal.h"
 
 #if FRESNEL_HAS_FLOAT

@@ -1,6 +1,22 @@
 /* Lookup tables of reflectance curves in fixed point (fresnel_fixed.h):
- * linear interpolation at a position in Q15 node units, no division. */
-#include "fixed_internal.h"
+ * linear interpolation at a position in Q15 node units, no division.
+ *
+ * The position: uniform in c, exact; uniform in sqrt(c), sqrt(c) (n-1) with
+ * sqrt(c) the exact floor in Q30 (fresnel_isqrt_u32 on c 2^15, then 15 more
+ * digits), rounded to a 15-bit fraction of a segment. _u8 nodes are decoded
+ * to Q15 first (+-0.5 LSB); residual frac 14 (s16) and 6 (s8) hold a
+ * residual of 1, the largest the generator's residual nodes reach.
+ *
+ * The bound: the final rounding, 0.5 LSB, plus the position's error times
+ * the table's steepest node-to-node change: half a position step, 2^-16 of
+ * a segment (0.5 LSB for a two-node table spanning [0, 1]), and for nodes
+ * uniform in sqrt(c) the floor of sqrt(c) in Q30, (n-1) 2^-30 of a segment.
+ *
+ * The cubic: the position of fresnel_lut_q15_u16, Catmull-Rom weights in Q15
+ * (shared by the three channels of the _rgb form), a 4-term sum in Q30,
+ * rounded and clamped; the weights' rounding to Q15 is what its bound
+ * allows for on any table. */
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

@@ -1,5 +1,5 @@
 /* LSK rescaled and compensated in binary16 (fresnel_f16.h); lsk.c's algorithm. */
-#include "f16_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_F16
 

@@ -1,5 +1,17 @@
 /* Lazanyi and Szirmay-Kalos: Schlick rescaled for kappa, and its error
- * compensation -a c (1-c)^alpha [LS05]. */
+ * compensation -a c (1-c)^alpha [LS05].
+ *
+ * For one index the rescaling is exactly "Schlick with the exact F0". The
+ * host fits the compensation (ref_lsk_fit, `fresnel params`): a = 2n, the
+ * slope of exact Fresnel at c = 0 for large k, and alpha such that the term
+ * equals exact - rescaled at c = 0.15; where exact - rescaled >= 0 there, or
+ * the fit would need alpha <= 0, a = 0.
+ *
+ * The compensated result is the difference of the LSK value and a term of
+ * about the same size when a = 200 and n is small, and keeps the roundings
+ * of both (log1pf, expf and two products on the term); alpha ln(1-c) is
+ * formed exactly (two floats). For larger a the binary32 rounding of that
+ * exponent is multiplied by the term's size. */
 #include "internal.h"
 
 #if FRESNEL_HAS_FLOAT

@@ -15,6 +15,9 @@ fresnel_rgb fresnel_schlick_rgb(fresnel_rgb f0, float c)
     FRESNEL_I_RGB(fresnel_schlick(f0.r, c), fresnel_schlick(f0.g, c), fresnel_schlick(f0.b, c));
 }
 
+/* p == 5 takes the multiplications of fresnel_schlick; other p evaluate
+ * (1-c)^p as expf(p log1pf(-c)) (fresnel_i_pow_one_minus), so that the
+ * rounding of 1 - c is not multiplied by p. */
 float fresnel_schlick_gen(float f0, float f90, float p, float c)
 {
     float x = 1.0f - fresnel_i_unit(c);
@@ -32,6 +35,11 @@ fresnel_rgb fresnel_schlick_gen_rgb(fresnel_rgb f0, fresnel_rgb f90, float p, fl
             fresnel_schlick_gen(f0.b, f90.b, p, c));
 }
 
+/* The Fresnel curve is the same function of the angle on either side, so
+ * Schlick is evaluated with the cosine in the less dense medium: ct, from
+ * eta^2 ct^2 = eta^2 - sin^2 formed without cancellation
+ * (fresnel_i_eta2_minus_sin2), so that it keeps its digits up to the
+ * critical angle. */
 float fresnel_schlick_internal(float f0, float eta, float c)
 {
     float ct2;

@@ -1,7 +1,7 @@
 /* Cook-Torrance colour interpolation in fixed point (fresnel_fixed.h):
  * (F'(c) - F'(1)) / (1 - F'(1)) = 1 - T(c) / T(1), T = 1 - F', as in
  * cook_torrance.c, with T(c) from the exact model's transmittance form. */
-#include "fixed_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

@@ -1,4 +1,4 @@
-/* Helpers shared by the runtime's model files; not part of the public API. */
+/* Helpers shared by the binary32 model files (src/f32/\*.c); not public. */
 #ifndef FRESNEL_INTERNAL_H
 #define FRESNEL_INTERNAL_H
 

@@ -2,7 +2,7 @@
  * model is Schlick with F0 = F0(n, k) exactly (fresnel.h), so it is
  * evaluated as Schlick with a 30-bit F0; the compensation term
  * a c (1-c)^alpha is formed in fresnel_qf. */
-#include "fixed_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

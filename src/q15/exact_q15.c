@@ -16,7 +16,7 @@
  * sin^2 near a critical angle (a dielectric, or a conductor with kappa << 1):
  * there the reflectance's slope is unbounded, so A is carried in two words,
  * a0 + c^2 exact to 2^-60 of its scale (fresnel_i_a_qf). */
-#include "fixed_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 

@@ -8,7 +8,7 @@
  * nmax - nmin = 2s(1+s) / ((1-s)(1+r)) the whole of k^2 becomes
  *   k^2 = q (q + 4 (1-g) s nmax / (1-r)),  q = 2 g s / (1+r),
  * sums and products of positive terms only. */
-#include "f16_internal.h"
+#include "internal.h"
 
 #if FRESNEL_HAS_F16
 

@@ -1,0 +1,257 @@
+/* fresnel_fixed_fast.h -- inline fixed-point fast paths: fewer instructions,
+ * a larger bound, preconditions instead of clamps. Types, formats and the
+ * clamping functions are those of fresnel_fixed.h, which this header
+ * includes. Nothing to link: every function here is static inline.
+ */
+#ifndef FRESNEL_FIXED_FAST_H
+#define FRESNEL_FIXED_FAST_H
+
+#include "fresnel_fixed.h"
+
+/* ================================================================ fast paths
+ *
+ * Inline fixed-point evaluations for a Cortex-M0-class core, traded against
+ * the functions of fresnel_fixed.h: fewer instructions (ports/README.md,
+ * `make cross-count`), a larger error, and preconditions instead of clamps.
+ * Integer only (int32/uint32, no int64, no division, no float); C99 static
+ * inline, so a firmware that uses one of them links no library code for it.
+ *
+ * PRECONDITIONS (outside them the behaviour is undefined):
+ *   f0 in [0, FRESNEL_Q15_ONE]; LUT entries in [0, FRESNEL_Q15_ONE];
+ *   Schlick and F82: c <= FRESNEL_Q15_FAST_C_MAX (one + 2435; any c < 0 is
+ *   read as 0, c in [one, one + 2435] gives F0, the value at one), F82's
+ *   a_q12 in [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX];
+ *   LUTs: any c (c <= 0 reads as 0, c > one as one) and any n (n <= 0 gives
+ *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
+ *   as that many nodes; with n a compile-time constant these tests fold
+ *   away). The table must hold min(n, that maximum) entries.
+ * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them.
+ * ERROR BOUNDS (LSB of Q15, FRESNEL_Q15_BOUND_*_FAST) bound
+ * |result/32768 - reference| over every cos code 0..32768, against the
+ * references of fresnel_fixed.h's ERROR BOUNDS; tests/README.md names the
+ * tests and parameter sets.
+ */
+#if FRESNEL_HAS_FIXED
+
+/* Forced inline under GCC and Clang: at -Os they would otherwise keep a
+ * helper used twice (fresnel_i_fast_pow5) out of line, a call per use. */
+#if defined(__GNUC__)
+#define FRESNEL_FAST_INLINE static inline __attribute__((always_inline))
+#else
+#define FRESNEL_FAST_INLINE static inline
+#endif
+
+#define FRESNEL_Q15_BOUND_SCHLICK_FAST 2.9
+#define FRESNEL_Q15_BOUND_F82_FAST 5.8
+#define FRESNEL_Q15_BOUND_LUT_FAST 1.0         /* 2 <= n <= 64 */
+#define FRESNEL_Q15_BOUND_LUT_FAST_1024 2.8    /* n <= 1024 */
+#define FRESNEL_Q15_BOUND_LUT_PL_FAST 3.4      /* n <= 64 */
+#define FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge */
+
+/* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
+ * truncated, so that the errors straddle zero with one constant (every
+ * product <= 2^30; x = one gives one exactly). Three Q15 products with a
+ * single rounding constant are about 2.8 LSB, where fresnel_schlick_q15's
+ * split products keep 30 bits for 0.5 LSB at 3.5x the instructions; both
+ * are far inside Schlick's own model error. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
+{
+    uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15;
+    return (x4 * x) >> 15;
+}
+
+/* c for the Schlick and F82 fast paths: c below 0 is 0, as c & ~(c >> 31)
+ * where >> is arithmetic on negative values (GCC, Clang and the other
+ * embedded compilers; two instructions on Cortex-M0, where the conditional
+ * takes three), else by the conditional. c in (one, FRESNEL_Q15_FAST_C_MAX] needs
+ * nothing: 1 - c wraps to 2^32 - k, whose square is k^2 mod 2^32, so x^2 is
+ * ceil(k^2 / 2^15) < 182, x^4 = 0 and x^5 = x^6 = 0: the result is F0, the
+ * value at c = one. */
+#define FRESNEL_Q15_FAST_C_MAX (32768 + 2435)
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_c(int32_t c)
+{
+    return (-1 >> 1) == -1 ? (uint32_t)c & ~(uint32_t)(c >> 31) : (uint32_t)(c < 0 ? 0 : c);
+}
+
+/* F0 + (1 - F0) x5 for f0, x5 in [0, one], truncated. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_blend(uint32_t f0, uint32_t x5)
+{
+    return f0 + (((32768u - f0) * x5) >> 15);
+}
+
+/* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 in [0, one] and c as
+ * PRECONDITIONS says; c = 0 gives exactly one, c = one exactly F0.
+ * Error <= FRESNEL_Q15_BOUND_SCHLICK_FAST LSB. Cost: 4 mul. */
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
+{
+    return (fresnel_q15)fresnel_i_fast_blend((uint32_t)f0, fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c)));
+}
+
+/* The same for three channels; each channel equals fresnel_schlick_q15_fast's.
+ * Cost: 6 mul (x^5 once, three blends). */
+FRESNEL_FAST_INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
+{
+    uint32_t x5 = fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c));
+    fresnel_q15_rgb r;
+    r.r = (fresnel_q15)fresnel_i_fast_blend(f0.r, x5);
+    r.g = (fresnel_q15)fresnel_i_fast_blend(f0.g, x5);
+    r.b = (fresnel_q15)fresnel_i_fast_blend(f0.b, x5);
+    return r;
+}
+
+/* Hoffman's F82 model (fresnel_f82), F = F0 + (1 - F0) x^5 - a c x^6,
+ * x = 1 - c, clamped to [0, one], with the per-material
+ * a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) prepared on the host as
+ * a_q12 = round(4096 a) (`fresnel gen` emits it for scenes with f82 and q15;
+ * any F0, F82 in [0, 1] give a in [-9.4847, 17.6514], a_q12 in
+ * [-38849, 72300]). Domain: f0 and c as PRECONDITIONS says, a_q12 in
+ * [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX].
+ * Error <= FRESNEL_Q15_BOUND_F82_FAST LSB against fresnel_f82 at the
+ * unrounded a, reached only at unphysical corners (F0 = 1, F82 = 0:
+ * a = 17.7). Cost: 7 mul. */
+#define FRESNEL_Q15_F82_FAST_A_MIN (-72296)
+#define FRESNEL_Q15_F82_FAST_A_MAX 144592
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
+{
+    /* Schlick as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
+     * error matters: a c multiplies it), c x^6 in Q18 (at most 14852, at
+     * c = 4654, so F0 = one with a_q12 below -72296 would overflow int32),
+     * the sum in units of 2^-30 (|a_q12 c x^6| < 2^30.1, Schlick 2^30). */
+    uint32_t cu = fresnel_i_fast_c(c), x = 32768u - cu;
+    uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
+    uint32_t cx6 = (cu * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
+    int32_t v = (int32_t)(fresnel_i_fast_blend((uint32_t)f0, x5) << 15) - a_q12 * (int32_t)cx6;
+    uint32_t r = (uint32_t)v >> 15;
+    if (v <= 0)
+        return 0;
+    return (fresnel_q15)(r > 32768u ? 32768u : r);
+}
+
+/* sqrt(j/128) in Q22 for j = 32..129, and 2^16 / (r_j + r_(j+1)) for
+ * j = 32..128 (the chord slope of each segment): 586 bytes of flash in the
+ * translation unit that uses fresnel_lut_q15_u16_fast. */
+static const uint32_t fresnel_i_fast_sqrt_r[98] = {
+    2097152u, 2129668u, 2161695u, 2193254u, 2224366u, 2255048u, 2285318u, 2315193u,
+    2344687u, 2373815u, 2402589u, 2431023u, 2459129u, 2486916u, 2514397u, 2541580u,
+    2568476u, 2595093u, 2621440u, 2647525u, 2673355u, 2698938u, 2724280u, 2749389u,
+    2774271u, 2798932u, 2823377u, 2847613u, 2871644u, 2895475u, 2919112u, 2942559u,
+    2965821u, 2988901u, 3011805u, 3034536u, 3057098u, 3079495u, 3101730u, 3123806u,
+    3145728u, 3167498u, 3189119u, 3210595u, 3231928u, 3253121u, 3274178u, 3295099u,
+    3315888u, 3336548u, 3357081u, 3377489u, 3397775u, 3417940u, 3437986u, 3457917u,
+    3477733u, 3497437u, 3517031u, 3536516u, 3555894u, 3575168u, 3594337u, 3613406u,
+    3632374u, 3651243u, 3670016u, 3688693u, 3707276u, 3725766u, 3744165u, 3762474u,
+    3780695u, 3798827u, 3816874u, 3834836u, 3852714u, 3870510u, 3888224u, 3905858u,
+    3923412u, 3940888u, 3958288u, 3975611u, 3992858u, 4010032u, 4027133u, 4044161u,
+    4061117u, 4078004u, 4094820u, 4111568u, 4128248u, 4144861u, 4161407u, 4177888u,
+    4194304u, 4210656u
+};
+static const uint16_t fresnel_i_fast_sqrt_k[97] = {
+    65032u, 64054u, 63119u, 62223u, 61365u, 60541u, 59749u, 58988u, 58255u, 57549u, 56868u, 56211u,
+    55575u, 54961u, 54367u, 53792u, 53234u, 52694u, 52169u, 51660u, 51166u, 50685u, 50218u, 49764u,
+    49321u, 48891u, 48471u, 48062u, 47663u, 47274u, 46894u, 46523u, 46161u, 45808u, 45462u, 45124u,
+    44793u, 44470u, 44153u, 43843u, 43540u, 43243u, 42952u, 42666u, 42386u, 42112u, 41843u, 41579u,
+    41320u, 41066u, 40816u, 40571u, 40330u, 40093u, 39861u, 39633u, 39408u, 39187u, 38970u, 38757u,
+    38547u, 38340u, 38136u, 37936u, 37739u, 37545u, 37354u, 37166u, 36981u, 36798u, 36618u, 36441u,
+    36266u, 36094u, 35924u, 35756u, 35591u, 35428u, 35268u, 35109u, 34953u, 34798u, 34646u, 34496u,
+    34347u, 34201u, 34056u, 33913u, 33772u, 33633u, 33496u, 33360u, 33225u, 33093u, 32962u, 32832u,
+    32704u
+};
+
+/* sqrt(c / 2^15) in Q22 for c in [1, 32768]. c is scaled by 4^m into
+ * [2^13, 2^15] (m = 0 for c >= 2^13, up to 7 for c = 1). On segment
+ * j = c >> 8, with d = c & 255 and delta = sqrt(c) - r_j, which solves
+ * delta = (d + delta (dh - delta)) k  (dh = r_(j+1) - r_j, k the chord slope):
+ * delta1 = d k (the chord), delta2 = (d + delta1 (dh - delta1)) k (one
+ * fixed-point step, contraction dh/(r_j + r_(j+1)) <= 2^-7). Every term is
+ * non-negative (delta1 <= dh). |error| <= 2^-20.7. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
+{
+    uint32_t m = 0, j, d, k, r0, dh, d1;
+    while (c < 8192u) {
+        c <<= 2;
+        m++;
+    }
+    j = (c >> 8) - 32u;
+    d = c & 255u;
+    k = fresnel_i_fast_sqrt_k[j];
+    r0 = fresnel_i_fast_sqrt_r[j];
+    dh = fresnel_i_fast_sqrt_r[j + 1] - r0;
+    d1 = (d * k) >> 9;
+    return (r0 + ((((d << 7) + ((d1 * (dh - d1)) >> 22)) * k) >> 16)) >> m;
+}
+
+/* fresnel_lut_q15_u16 (nodes uniform in sqrt(c), node i at c = (i/(n-1))^2)
+ * with an approximate square root; n and c as PRECONDITIONS says.
+ * Error against the double interpolation at the exact sqrt(c)
+ * <= FRESNEL_Q15_BOUND_LUT_FAST LSB for n <= 64 and
+ * FRESNEL_Q15_BOUND_LUT_FAST_1024 LSB for n <= 1024.
+ * Cost: 5 mul (plus 2 shifts per halving of c below 1/4). */
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, int n, int32_t c)
+{
+    uint32_t pos, i, t;
+    int32_t v0, v1;
+    if (n < 2)
+        return n < 1 ? 0 : table[0];
+    if (n > 1024)
+        n = 1024;
+    if (((uint32_t)c - 1u) >> 15) /* c <= 0, or c > one */
+        return c <= 0 ? table[0] : table[n - 1];
+    /* pos = round(sqrt(c) (n-1) 2^15), segment i = (pos - 1) >> 15, so that
+     * c = one reads nodes n-2 and n-1 with weight one. The root's error,
+     * below 2^-20.7 (n - 1) of a segment, shows times the steepest
+     * node-to-node step (a 1024-node table across a critical angle). */
+    pos = (fresnel_i_fast_sqrt_q22((uint32_t)c) * (uint32_t)(n - 1) + 64u) >> 7;
+    i = (pos - 1u) >> 15;
+    t = pos - (i << 15);
+    v0 = table[i];
+    v1 = table[i + 1];
+    return (fresnel_q15)((v0 * 32768 + (v1 - v0) * (int32_t)t + 16384) >> 15);
+}
+
+/* The grazing-pl node position (lut_spacing = grazing-pl in a scene):
+ * P(c), a 64-piece linear stand-in for sqrt(c), is the linear interpolation
+ * of the knots fresnel_lut_pl_knots_q15[k] = round(32768 sqrt(k/64)) between
+ * c = k/64 and (k+1)/64. A grazing-pl table's node i sits where
+ * P(c) = i/(n-1); `fresnel gen` places its nodes through this table, and
+ * fresnel_lut_q15_u16_pl_fast reads them through it. It needs no root and
+ * still crowds the nodes toward grazing incidence (the first piece is 1/8
+ * of the range, 1/64 of c). */
+static const uint16_t fresnel_lut_pl_knots_q15[65] = {
+    0u,     4096u,  5793u,  7094u,  8192u,  9159u,  10033u, 10837u, 11585u, 12288u, 12953u, 13585u, 14189u,
+    14768u, 15326u, 15864u, 16384u, 16888u, 17378u, 17854u, 18318u, 18770u, 19212u, 19644u, 20066u, 20480u,
+    20886u, 21283u, 21674u, 22058u, 22435u, 22806u, 23170u, 23530u, 23884u, 24232u, 24576u, 24915u, 25249u,
+    25580u, 25905u, 26227u, 26545u, 26859u, 27170u, 27477u, 27780u, 28081u, 28378u, 28672u, 28963u, 29251u,
+    29537u, 29819u, 30099u, 30377u, 30652u, 30924u, 31194u, 31462u, 31727u, 31991u, 32252u, 32511u, 32768u};
+
+/* fresnel_lut_q15_u16 on nodes uniform in P(c) (S = fresnel_lut_pl_knots_q15):
+ *   p = S[j] + ((S[j+1] - S[j]) (c mod 512)) >> 9, j = c >> 9  (c = one read
+ *       as one - 2^-15, so that p < one and the last segment is n-2)
+ *   pos = p (n-1), node i = pos >> 15, linear interpolation, truncated.
+ * n and c as PRECONDITIONS says. Error against the same interpolation in
+ * double at the same P <= FRESNEL_Q15_BOUND_LUT_PL_FAST LSB for
+ * 2 <= n <= 64 (P has 15 bits: its truncation moves the position by up to
+ * (n-1) 2^-15 of a segment), FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR across a
+ * total-reflection edge (a step of up to one between two nodes).
+ * Cost: 3 mul, 4 loads. */
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *table, int n, int32_t c)
+{
+    uint32_t x, p, pos, t;
+    const uint16_t *s, *v;
+    if (n < 2)
+        return n < 1 ? 0 : table[0];
+    if (n > 32768)
+        n = 32768;
+    x = (uint32_t)c;
+    if (x >> 15) /* c < 0, or c >= one: one is read as one - 2^-15 */
+        x = c < 0 ? 0u : 32767u;
+    s = fresnel_lut_pl_knots_q15 + (x >> 9);
+    p = s[0] + (((uint32_t)(s[1] - s[0]) * (x & 511u)) >> 9);
+    pos = p * (uint32_t)(n - 1);
+    t = pos & 32767u;
+    v = table + (pos >> 15);
+    return (fresnel_q15)((v[0] * 32768 + (v[1] - v[0]) * (int32_t)t) >> 15);
+}
+
+#endif /* FRESNEL_HAS_FIXED: fast paths */
+
+#endif /* FRESNEL_FIXED_FAST_H */
