@@ -133,7 +133,7 @@ extern "C" {
 #define FRESNEL_BOUND_SCHLICK          3e-7f
 #define FRESNEL_BOUND_SCHLICK_GEN      3e-7f
 #define FRESNEL_BOUND_SCHLICK_INTERNAL 3e-7f
-#define FRESNEL_BOUND_F0               3e-7f /* fresnel_f0_from_ior */
+#define FRESNEL_BOUND_F0_FROM_IOR               3e-7f /* fresnel_f0_from_ior */
 #define FRESNEL_BOUND_F0_IN_MEDIUM     5e-7f
 #define FRESNEL_BOUND_LSK              5e-7f
 #define FRESNEL_BOUND_LSK_COMP         6e-7f
@@ -190,7 +190,7 @@ float fresnel_f0_in_medium(float f0, float eta_e);
 
 /* Normal-incidence reflectance of a complex index:
  *   F0 = ((eta-1)^2 + kappa^2) / ((eta+1)^2 + kappa^2).
- * Error <= FRESNEL_BOUND_F0. Cost: 7 flops, div. */
+ * Error <= FRESNEL_BOUND_F0_FROM_IOR. Cost: 7 flops, div. */
 float fresnel_f0_from_ior(float eta, float kappa);
 
 /* -------------------------------------------------------------------- lsk.c */

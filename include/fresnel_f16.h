@@ -36,8 +36,8 @@
  * CONVENTIONS
  *   As fresnel.h (relative eta, kappa; c clamped to [0, 1], NaN -> 0;
  *   results in [0, 1]); the domain is narrower so that no intermediate
- *   overflows 65504: eta in [FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX],
- *   kappa in [0, FRESNEL_F16_KAPPA_MAX], p and alpha in [1/1024, 64], LSK a in
+ *   overflows 65504: eta in [FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16],
+ *   kappa in [0, FRESNEL_KAPPA_MAX_F16], p and alpha in [1/1024, 64], LSK a in
  *   [0, 64]. The algorithms are those of the binary32 code, with its
  *   cancellation-free forms except the exact squares (no Dekker splitting:
  *   a shader would not do it, so near a dielectric's critical angle
@@ -46,11 +46,11 @@
  *   ratio of the conductor divided through by |z|^2.
  *
  * ERROR BOUNDS
- *   FRESNEL_F16_BOUND_*: absolute, against the double reference of the same
+ *   FRESNEL_BOUND_*_F16: absolute, against the double reference of the same
  *   model at the same binary16 inputs, on every binary16 cosine in [0, 1]
  *   and the materials of tests/fixed_materials.h (ten metals at 450, 550 and
  *   650 nm in air and under water, BK7 and water from both sides, corners of
- *   the domain); FRESNEL_F16_DOMAIN_*: the same over the whole domain of
+ *   the domain); FRESNEL_DOMAIN_*_F16: the same over the whole domain of
  *   CONVENTIONS. binary16 ulp(1) = 9.8e-4, ulp(0.5) = 4.9e-4. tests/README.md
  *   names the test behind each figure.
  */
@@ -59,35 +59,35 @@
 
 #include "fresnel_config.h"
 
-#define FRESNEL_F16_ETA_MIN 0.0009765625f /* 2^-10, as fresnel.h */
-#define FRESNEL_F16_ETA_MAX 16.0f
-#define FRESNEL_F16_KAPPA_MAX 16.0f
-#define FRESNEL_F16_P_MIN 0.0009765625f
-#define FRESNEL_F16_P_MAX 64.0f
+#define FRESNEL_ETA_MIN_F16 0.0009765625f /* 2^-10, as fresnel.h */
+#define FRESNEL_ETA_MAX_F16 16.0f
+#define FRESNEL_KAPPA_MAX_F16 16.0f
+#define FRESNEL_P_MIN_F16 0.0009765625f
+#define FRESNEL_P_MAX_F16 64.0f
 /* Most nodes a binary16 LUT uses: n - 1 <= 2048 is an exact half. */
-#define FRESNEL_F16_LUT_N_MAX 2049
+#define FRESNEL_LUT_N_MAX_F16 2049
 
 /* Error bounds on the material set (see ERROR BOUNDS). The exact models,
  * Cook-Torrance and Schlick internal have no bound near a dielectric's
  * critical angle (eta < 1, kappa 0): there the bound is 1, and
- * FRESNEL_F16_BOUND_NONCRITICAL holds for every model at least 1/64 in c
+ * FRESNEL_BOUND_NONCRITICAL_F16 holds for every model at least 1/64 in c
  * away from a critical angle. */
-#define FRESNEL_F16_BOUND_SCHLICK 2.6e-3 /* also every binary16 F0 */
-#define FRESNEL_F16_BOUND_SCHLICK_GEN 2.6e-3
-#define FRESNEL_F16_BOUND_SCHLICK_INTERNAL 1.0 /* critical angle */
-#define FRESNEL_F16_BOUND_F0 1.8e-3
-#define FRESNEL_F16_BOUND_F0_IN_MEDIUM 2.5e-3
-#define FRESNEL_F16_BOUND_LSK 2.8e-3
-#define FRESNEL_F16_BOUND_LSK_COMP 2.9e-3
-#define FRESNEL_F16_BOUND_F82 4.0e-3 /* also a 1/64 grid of F0, F82 pairs */
-#define FRESNEL_F16_BOUND_GULBRANDSEN 1.8e-3
-#define FRESNEL_F16_BOUND_APPROX_CONDUCTOR 1.6e-3
-#define FRESNEL_F16_BOUND_COOK_TORRANCE 1.0 /* critical angle */
-#define FRESNEL_F16_BOUND_CONDUCTOR 1.0 /* critical angle */
-#define FRESNEL_F16_BOUND_DIELECTRIC 1.0 /* critical angle */
-#define FRESNEL_F16_BOUND_LUT_CUBIC 9.0e-4 /* reflectance curves, n <= 256 */
-#define FRESNEL_F16_BOUND_LUT 1.7e-2 /* tables with a total-reflection edge included */
-#define FRESNEL_F16_BOUND_NONCRITICAL 4.5e-3
+#define FRESNEL_BOUND_SCHLICK_F16 2.6e-3 /* also every binary16 F0 */
+#define FRESNEL_BOUND_SCHLICK_GEN_F16 2.6e-3
+#define FRESNEL_BOUND_SCHLICK_INTERNAL_F16 1.0 /* critical angle */
+#define FRESNEL_BOUND_F0_FROM_IOR_F16 1.8e-3
+#define FRESNEL_BOUND_F0_IN_MEDIUM_F16 2.5e-3
+#define FRESNEL_BOUND_LSK_F16 2.8e-3
+#define FRESNEL_BOUND_LSK_COMP_F16 2.9e-3
+#define FRESNEL_BOUND_F82_F16 4.0e-3 /* also a 1/64 grid of F0, F82 pairs */
+#define FRESNEL_BOUND_GULBRANDSEN_F16 1.8e-3
+#define FRESNEL_BOUND_APPROX_CONDUCTOR_F16 1.6e-3
+#define FRESNEL_BOUND_COOK_TORRANCE_F16 1.0 /* critical angle */
+#define FRESNEL_BOUND_CONDUCTOR_F16 1.0 /* critical angle */
+#define FRESNEL_BOUND_DIELECTRIC_F16 1.0 /* critical angle */
+#define FRESNEL_BOUND_LUT_CUBIC_F16 9.0e-4 /* reflectance curves, n <= 256 */
+#define FRESNEL_BOUND_LUT_F16 1.7e-2 /* tables with a total-reflection edge included */
+#define FRESNEL_BOUND_NONCRITICAL_F16 4.5e-3
 /* Error bounds over the whole domain of CONVENTIONS (eta in [2^-10, 16],
  * kappa 0 or in [1e-3, 16], F0, r, g in [0, 1], a and alpha in
  * [2^-10, 64]), larger than the above for tiny eta with tiny c
@@ -95,15 +95,15 @@
  * Gulbrandsen with g near 0 and r near 1 (k clamped to 16), and
  * near-dielectric conductors (kappa 1e-3) at their critical angle. They are
  * measured maxima rounded up, not proven. */
-#define FRESNEL_F16_DOMAIN_SCHLICK 2.6e-3
-#define FRESNEL_F16_DOMAIN_F0 2.1e-3
-#define FRESNEL_F16_DOMAIN_F0_IN_MEDIUM 5.2e-3
-#define FRESNEL_F16_DOMAIN_LSK 3.5e-3
-#define FRESNEL_F16_DOMAIN_LSK_COMP 3.7e-3
-#define FRESNEL_F16_DOMAIN_GULBRANDSEN 0.15
-#define FRESNEL_F16_DOMAIN_APPROX_CONDUCTOR 1.9e-2
-#define FRESNEL_F16_DOMAIN_COOK_TORRANCE 1.0
-#define FRESNEL_F16_DOMAIN_CONDUCTOR 1.0
+#define FRESNEL_DOMAIN_SCHLICK_F16 2.6e-3
+#define FRESNEL_DOMAIN_F0_FROM_IOR_F16 2.1e-3
+#define FRESNEL_DOMAIN_F0_IN_MEDIUM_F16 5.2e-3
+#define FRESNEL_DOMAIN_LSK_F16 3.5e-3
+#define FRESNEL_DOMAIN_LSK_COMP_F16 3.7e-3
+#define FRESNEL_DOMAIN_GULBRANDSEN_F16 0.15
+#define FRESNEL_DOMAIN_APPROX_CONDUCTOR_F16 1.9e-2
+#define FRESNEL_DOMAIN_COOK_TORRANCE_F16 1.0
+#define FRESNEL_DOMAIN_CONDUCTOR_F16 1.0
 
 #if FRESNEL_HAS_F16
 
@@ -117,8 +117,8 @@ __extension__ typedef _Float16 fresnel_f16;
 
 /* Every function is the fresnel.h function of the same name without _f16:
  * the same formula, clamps and NaN policy, on the domain of CONVENTIONS.
- * Error <= FRESNEL_F16_BOUND_<MODEL> on the material set and
- * FRESNEL_F16_DOMAIN_<MODEL> (where defined) over the domain.
+ * Error <= FRESNEL_BOUND_<MODEL>_F16 on the material set and
+ * FRESNEL_DOMAIN_<MODEL>_F16 (where defined) over the domain.
  * Cost: the binary32 function's operation counts, in binary16 operations;
  * expf, log1pf and sqrtf on the half value, rounded to half. */
 fresnel_f16 fresnel_schlick_f16(fresnel_f16 f0, fresnel_f16 c);
@@ -138,7 +138,7 @@ fresnel_f16 fresnel_cook_torrance_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f
 fresnel_f16 fresnel_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);
 /* Lookup tables with binary16 nodes; n as fresnel.h's LUTs with
- * FRESNEL_F16_LUT_N_MAX for FRESNEL_LUT_N_MAX. Nodes uniform in sqrt(c): the
+ * FRESNEL_LUT_N_MAX_F16 for FRESNEL_LUT_N_MAX. Nodes uniform in sqrt(c): the
  * position sqrt(c) (n-1), root and product each rounded to half (as the GLSL
  * port's fresnel_lut_pos), so above 257 nodes it keeps fewer than 3
  * fraction bits. */

@@ -15,12 +15,12 @@
  *     #include "fresnel_fixed.h"
  *     int32_t c = dot_q15(n, v);                         // any int32; clamped to [0, one]
  *     fresnel_q15 r = fresnel_schlick_q15(1311, c);      // F0 = 0.04: 1311/32768
- *     static const fresnel_q15_ior gold_r = {...};       // made on the host (LAYOUT)
+ *     static const fresnel_ior_prep_q15 gold_r = {...};       // made on the host (LAYOUT)
  *     fresnel_q15 au = fresnel_conductor_q15(&gold_r, c);
  *
  * NUMBER FORMATS
  *   fresnel_q15  unsigned Q1.15 in uint16_t: value = code / 32768.
- *                FRESNEL_Q15_ONE = 32768 = 0x8000 is 1.0; codes 32769..65535
+ *                FRESNEL_ONE_Q15 = 32768 = 0x8000 is 1.0; codes 32769..65535
  *                (up to 2 - 2^-15) are headroom that no result uses.
  *                Used for cos(theta), F0, F82, F90, Gulbrandsen r and g,
  *                and every result. Arguments are taken as int32_t so that a
@@ -47,7 +47,7 @@
  *   the *_prepare functions below fill it at run time from Q16.16 inputs.
  *
  * ERROR BOUNDS
- *   FRESNEL_Q15_BOUND_* are in LSB of Q15 (1 LSB = 2^-15 = 3.05e-5): bounds
+ *   FRESNEL_BOUND_*_Q15 are in LSB of Q15 (1 LSB = 2^-15 = 3.05e-5): bounds
  *   on |result/32768 - reference| for every cos code 0..32768 over the whole
  *   domain eta in [2^-10, 32767], kappa in [0, 32767], where "reference" is
  *   the double model (gen/model/reference.c) at the same parameters: the Q15 inputs
@@ -86,36 +86,36 @@ typedef struct fresnel_qf {
     uint32_t m; /* [2^30, 2^31), or 0 */
     int32_t e;
 } fresnel_qf;
-typedef struct fresnel_q15_rgb {
+typedef struct fresnel_rgb_q15 {
     fresnel_q15 r, g, b;
-} fresnel_q15_rgb;
+} fresnel_rgb_q15;
 
-#define FRESNEL_Q15_ONE 32768
-#define FRESNEL_Q16_ONE 65536
+#define FRESNEL_ONE_Q15 32768
+#define FRESNEL_ONE_Q16 65536
 
 /* Domains in fixed point (values outside are clamped, as in fresnel.h). */
-#define FRESNEL_Q16_ETA_MIN 64                 /* eta of *_prepare: [1/1024, 32767]; kappa [0, 32767] */
-#define FRESNEL_Q16_P_MIN 66                   /* generalized Schlick p: [0.001, 1000] as in fresnel.h */
-#define FRESNEL_Q16_P_MAX (1000 * 65536)
-#define FRESNEL_Q16_ALPHA_MAX (1000 * 65536)   /* LSK alpha: [0, 1000] */
-#define FRESNEL_Q15_GULBRANDSEN_R_MAX 32764    /* largest code below 0.9999 */
+#define FRESNEL_ETA_MIN_Q16 64                 /* eta of *_prepare: [1/1024, 32767]; kappa [0, 32767] */
+#define FRESNEL_P_MIN_Q16 66                   /* generalized Schlick p: [0.001, 1000] as in fresnel.h */
+#define FRESNEL_P_MAX_Q16 (1000 * 65536)
+#define FRESNEL_ALPHA_MAX_Q16 (1000 * 65536)   /* LSK alpha: [0, 1000] */
+#define FRESNEL_GULBRANDSEN_R_MAX_Q15 32764    /* largest code below 0.9999 */
 
 /* Error bounds, LSB of Q15 (see ERROR BOUNDS). */
-#define FRESNEL_Q15_BOUND_SCHLICK 0.501
-#define FRESNEL_Q15_BOUND_SCHLICK_GEN 0.516 /* 0.501 for p <= 64 */
-#define FRESNEL_Q15_BOUND_SCHLICK_INTERNAL 0.501
-#define FRESNEL_Q15_BOUND_F0 0.501
-#define FRESNEL_Q15_BOUND_F0_IN_MEDIUM 0.501
-#define FRESNEL_Q15_BOUND_LSK 0.501
-#define FRESNEL_Q15_BOUND_LSK_COMP 0.501
-#define FRESNEL_Q15_BOUND_F82 0.501
-#define FRESNEL_Q15_BOUND_GULBRANDSEN 0.501
-#define FRESNEL_Q15_BOUND_APPROX_CONDUCTOR 0.501
-#define FRESNEL_Q15_BOUND_COOK_TORRANCE 0.501
-#define FRESNEL_Q15_BOUND_CONDUCTOR 0.501
-#define FRESNEL_Q15_BOUND_DIELECTRIC 0.501
-#define FRESNEL_Q15_BOUND_LUT 1.01 /* nodes uniform in sqrt(c); 0.501 uniform in c */
-#define FRESNEL_Q15_BOUND_LUT_CUBIC 2.2 /* on any table */
+#define FRESNEL_BOUND_SCHLICK_Q15 0.501
+#define FRESNEL_BOUND_SCHLICK_GEN_Q15 0.516 /* 0.501 for p <= 64 */
+#define FRESNEL_BOUND_SCHLICK_INTERNAL_Q15 0.501
+#define FRESNEL_BOUND_F0_FROM_IOR_Q15 0.501
+#define FRESNEL_BOUND_F0_IN_MEDIUM_Q15 0.501
+#define FRESNEL_BOUND_LSK_Q15 0.501
+#define FRESNEL_BOUND_LSK_COMP_Q15 0.501
+#define FRESNEL_BOUND_F82_Q15 0.501
+#define FRESNEL_BOUND_GULBRANDSEN_Q15 0.501
+#define FRESNEL_BOUND_APPROX_CONDUCTOR_Q15 0.501
+#define FRESNEL_BOUND_COOK_TORRANCE_Q15 0.501
+#define FRESNEL_BOUND_CONDUCTOR_Q15 0.501
+#define FRESNEL_BOUND_DIELECTRIC_Q15 0.501
+#define FRESNEL_BOUND_LUT_Q15 1.01 /* nodes uniform in sqrt(c); 0.501 uniform in c */
+#define FRESNEL_BOUND_LUT_CUBIC_Q15 2.2 /* on any table */
 
 #if FRESNEL_HAS_FIXED
 
@@ -124,131 +124,131 @@ typedef struct fresnel_q15_rgb {
  * LAYOUT: the value of every field below, as `fresnel gen` emits it, is
  * specified in gen/4_emit/README.md.
  */
-typedef struct fresnel_q15_ior {
+typedef struct fresnel_ior_prep_q15 {
     int32_t a0, a0_lo;
     int32_t shift;
     fresnel_qf b, n4, t1_inv, inv_eta2;
-} fresnel_q15_ior;
+} fresnel_ior_prep_q15;
 
-typedef struct fresnel_q15_nk {
+typedef struct fresnel_nk_prep_q15 {
     fresnel_qf n, nk2;
-} fresnel_q15_nk;
+} fresnel_nk_prep_q15;
 
-typedef struct fresnel_q15_lsk {
+typedef struct fresnel_lsk_prep_q15 {
     uint32_t f0;
     fresnel_qf a;
     fresnel_q16 alpha;
-} fresnel_q15_lsk;
+} fresnel_lsk_prep_q15;
 
 /* Run-time preparation of the constants above from Q16.16 eta and kappa
- * (clamped to [FRESNEL_Q16_ETA_MIN, 2^31 - 1] and [0, 2^31 - 1]), with
+ * (clamped to [FRESNEL_ETA_MIN_Q16, 2^31 - 1] and [0, 2^31 - 1]), with
  * 31-bit mantissas: exact to the inputs, whose Q16.16 step is 1.5e-5 (a
  * 3e-4 relative change of silver's eta 0.05: prepare on the host from double
  * where that matters). Cost: ~10 qf ops, 2 qf div (ior). */
-void fresnel_q15_ior_prepare(fresnel_q16 eta, fresnel_q16 kappa, fresnel_q15_ior *out);
-void fresnel_q15_nk_prepare(fresnel_q16 n, fresnel_q16 k, fresnel_q15_nk *out);
+void fresnel_ior_prepare_q15(fresnel_q16 eta, fresnel_q16 kappa, fresnel_ior_prep_q15 *out);
+void fresnel_nk_prepare_q15(fresnel_q16 n, fresnel_q16 k, fresnel_nk_prep_q15 *out);
 /* a and alpha are LSK's compensation constants (`fresnel params`);
  * a = 0 gives the rescaled model. */
-void fresnel_q15_lsk_prepare(fresnel_q16 n, fresnel_q16 k, fresnel_q16 a, fresnel_q16 alpha,
-                             fresnel_q15_lsk *out);
+void fresnel_lsk_prepare_q15(fresnel_q16 n, fresnel_q16 k, fresnel_q16 a, fresnel_q16 alpha,
+                             fresnel_lsk_prep_q15 *out);
 
 /* ---------------------------------------------------------------- schlick_q15.c */
 
 /* Schlick:  F = F0 + (1 - F0)(1 - c)^5.
- * Error <= FRESNEL_Q15_BOUND_SCHLICK LSB. Cost: 8 mul. */
+ * Error <= FRESNEL_BOUND_SCHLICK_Q15 LSB. Cost: 8 mul. */
 fresnel_q15 fresnel_schlick_q15(int32_t f0, int32_t c);
-fresnel_q15_rgb fresnel_schlick_q15_rgb(fresnel_q15_rgb f0, int32_t c);
+fresnel_rgb_q15 fresnel_schlick_q15_rgb(fresnel_rgb_q15 f0, int32_t c);
 
 /* Generalized Schlick:  F = F0 + (F90 - F0)(1 - c)^p,  p Q16.16 in
- * [FRESNEL_Q16_P_MIN, FRESNEL_Q16_P_MAX] (clamped).
- * Error <= FRESNEL_Q15_BOUND_SCHLICK_GEN LSB (0.501 for p <= 64).
+ * [FRESNEL_P_MIN_Q16, FRESNEL_P_MAX_Q16] (clamped).
+ * Error <= FRESNEL_BOUND_SCHLICK_GEN_Q15 LSB (0.501 for p <= 64).
  * Cost: p = 5: 9 mul; else ~2 log2(p) qf mul + ~25 mul. */
 fresnel_q15 fresnel_schlick_gen_q15(int32_t f0, int32_t f90, fresnel_q16 p, int32_t c);
-fresnel_q15_rgb fresnel_schlick_gen_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f90, fresnel_q16 p,
+fresnel_rgb_q15 fresnel_schlick_gen_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f90, fresnel_q16 p,
                                             int32_t c);
 
 /* Schlick for internal reflection (fresnel_schlick_internal), m prepared
  * from eta (kappa 0) relative to the incident side: eta >= 1, Schlick at c;
  * eta < 1, Schlick at ct, ct^2 = (eta^2 - 1 + c^2) / eta^2, and one where
  * ct^2 <= 0 (past the critical angle).
- * Error <= FRESNEL_Q15_BOUND_SCHLICK_INTERNAL LSB. Cost: ~8 qf ops, 1 qf sqrt. */
-fresnel_q15 fresnel_schlick_internal_q15(int32_t f0, const fresnel_q15_ior *m, int32_t c);
-fresnel_q15_rgb fresnel_schlick_internal_q15_rgb(fresnel_q15_rgb f0, const fresnel_q15_ior *m,
+ * Error <= FRESNEL_BOUND_SCHLICK_INTERNAL_Q15 LSB. Cost: ~8 qf ops, 1 qf sqrt. */
+fresnel_q15 fresnel_schlick_internal_q15(int32_t f0, const fresnel_ior_prep_q15 *m, int32_t c);
+fresnel_rgb_q15 fresnel_schlick_internal_q15_rgb(fresnel_rgb_q15 f0, const fresnel_ior_prep_q15 *m,
                                                  int32_t c);
 
 /* F0 = ((eta-1)^2 + kappa^2) / ((eta+1)^2 + kappa^2) from Q16.16 eta, kappa
- * (eta clamped to [FRESNEL_Q16_ETA_MIN, 2^31-1], kappa to [0, 2^31-1]).
- * Error <= FRESNEL_Q15_BOUND_F0 LSB. Cost: 4 qf ops, 1 qf div. */
+ * (eta clamped to [FRESNEL_ETA_MIN_Q16, 2^31-1], kappa to [0, 2^31-1]).
+ * Error <= FRESNEL_BOUND_F0_FROM_IOR_Q15 LSB. Cost: 4 qf ops, 1 qf div. */
 fresnel_q15 fresnel_f0_from_ior_q15(fresnel_q16 eta, fresnel_q16 kappa);
 
 /* Hoffman's external-medium adjustment of F0 (fresnel_f0_in_medium), etaE
  * Q16.16 clamped like eta, F0 Q15.
- * Error <= FRESNEL_Q15_BOUND_F0_IN_MEDIUM LSB. Cost: ~8 qf ops, 2 qf div, 1 qf sqrt. */
+ * Error <= FRESNEL_BOUND_F0_IN_MEDIUM_Q15 LSB. Cost: ~8 qf ops, 2 qf div, 1 qf sqrt. */
 fresnel_q15 fresnel_f0_in_medium_q15(int32_t f0, fresnel_q16 eta_e);
 
 /* -------------------------------------------------------------------- lsk_q15.c */
 
-/* LSK rescaled: Schlick with m->f0 (Q30). Error <= FRESNEL_Q15_BOUND_LSK LSB. Cost: 10 mul. */
-fresnel_q15 fresnel_lsk_q15(const fresnel_q15_lsk *m, int32_t c);
-fresnel_q15_rgb fresnel_lsk_q15_rgb(const fresnel_q15_lsk m[3], int32_t c);
+/* LSK rescaled: Schlick with m->f0 (Q30). Error <= FRESNEL_BOUND_LSK_Q15 LSB. Cost: 10 mul. */
+fresnel_q15 fresnel_lsk_q15(const fresnel_lsk_prep_q15 *m, int32_t c);
+fresnel_rgb_q15 fresnel_lsk_q15_rgb(const fresnel_lsk_prep_q15 m[3], int32_t c);
 
 /* LSK compensated:  F = LSK - a c (1 - c)^alpha, clamped to [0, 1].
- * Error <= FRESNEL_Q15_BOUND_LSK_COMP LSB. Cost: LSK + pow (~2 log2(alpha) qf mul + ~20 mul) + 2 qf mul. */
-fresnel_q15 fresnel_lsk_comp_q15(const fresnel_q15_lsk *m, int32_t c);
-fresnel_q15_rgb fresnel_lsk_comp_q15_rgb(const fresnel_q15_lsk m[3], int32_t c);
+ * Error <= FRESNEL_BOUND_LSK_COMP_Q15 LSB. Cost: LSK + pow (~2 log2(alpha) qf mul + ~20 mul) + 2 qf mul. */
+fresnel_q15 fresnel_lsk_comp_q15(const fresnel_lsk_prep_q15 *m, int32_t c);
+fresnel_rgb_q15 fresnel_lsk_comp_q15_rgb(const fresnel_lsk_prep_q15 m[3], int32_t c);
 
 /* -------------------------------------------------------------------- f82_q15.c */
 
 /* Hoffman's F82 model:  F = F0 + (1-F0)(1-c)^5 - a c (1-c)^6,
  * a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0), clamped to [0, 1] like fresnel_f82.
- * Error <= FRESNEL_Q15_BOUND_F82 LSB. Cost: ~16 mul. */
+ * Error <= FRESNEL_BOUND_F82_Q15 LSB. Cost: ~16 mul. */
 fresnel_q15 fresnel_f82_q15(int32_t f0, int32_t f82, int32_t c);
-fresnel_q15_rgb fresnel_f82_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f82, int32_t c);
+fresnel_rgb_q15 fresnel_f82_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82, int32_t c);
 
 /* -------------------------------------------------------- gulbrandsen_q15.c */
 
 /* Gulbrandsen's r, g -> n, k (fresnel_gulbrandsen_nk), r clamped to
- * [0, FRESNEL_Q15_GULBRANDSEN_R_MAX], n clamped below at FRESNEL_ETA_MIN
+ * [0, FRESNEL_GULBRANDSEN_R_MAX_Q15], n clamped below at FRESNEL_ETA_MIN
  * (r -> 1, g = 1 gives n -> 0); the result is prepared for
  * fresnel_approx_conductor_q15. Cost: ~14 qf ops, 4 qf div, 1 qf sqrt. */
-void fresnel_gulbrandsen_nk_q15(int32_t r, int32_t g, fresnel_q15_nk *out);
+void fresnel_gulbrandsen_nk_q15(int32_t r, int32_t g, fresnel_nk_prep_q15 *out);
 /* The inverse n, k (Q16.16) -> r, g (Q15), as fresnel_gulbrandsen_rg. */
 void fresnel_gulbrandsen_rg_q15(fresnel_q16 n, fresnel_q16 k, fresnel_q15 *r, fresnel_q15 *g);
 /* fresnel_approx_conductor_q15 at the n, k of fresnel_gulbrandsen_nk_q15(r, g).
- * Error <= FRESNEL_Q15_BOUND_GULBRANDSEN LSB.
+ * Error <= FRESNEL_BOUND_GULBRANDSEN_Q15 LSB.
  * Cost: fresnel_gulbrandsen_nk_q15 + fresnel_approx_conductor_q15. */
 fresnel_q15 fresnel_gulbrandsen_q15(int32_t r, int32_t g, int32_t c);
-fresnel_q15_rgb fresnel_gulbrandsen_q15_rgb(fresnel_q15_rgb r, fresnel_q15_rgb g, int32_t c);
+fresnel_rgb_q15 fresnel_gulbrandsen_q15_rgb(fresnel_rgb_q15 r, fresnel_rgb_q15 g, int32_t c);
 
 /* --------------------------------------------------- approx_conductor_q15.c */
 
 /* The approximate conductor form of fresnel_approx_conductor.
- * Error <= FRESNEL_Q15_BOUND_APPROX_CONDUCTOR LSB. Cost: ~10 qf ops, 2 qf div. */
-fresnel_q15 fresnel_approx_conductor_q15(const fresnel_q15_nk *m, int32_t c);
-fresnel_q15_rgb fresnel_approx_conductor_q15_rgb(const fresnel_q15_nk m[3], int32_t c);
+ * Error <= FRESNEL_BOUND_APPROX_CONDUCTOR_Q15 LSB. Cost: ~10 qf ops, 2 qf div. */
+fresnel_q15 fresnel_approx_conductor_q15(const fresnel_nk_prep_q15 *m, int32_t c);
+fresnel_rgb_q15 fresnel_approx_conductor_q15_rgb(const fresnel_nk_prep_q15 m[3], int32_t c);
 
 /* ------------------------------------------------------- cook_torrance_q15.c */
 
 /* Cook-Torrance colour interpolation (fresnel_cook_torrance):
  *   F = F0 + (1 - F0) max(0, 1 - T(c) / T(1)),  T = 1 - fresnel_conductor_q15(m, .).
- * Error <= FRESNEL_Q15_BOUND_COOK_TORRANCE LSB. Cost: conductor + 1 qf mul. */
-fresnel_q15 fresnel_cook_torrance_q15(int32_t f0, const fresnel_q15_ior *m, int32_t c);
-fresnel_q15_rgb fresnel_cook_torrance_q15_rgb(fresnel_q15_rgb f0, const fresnel_q15_ior *m, int32_t c);
+ * Error <= FRESNEL_BOUND_COOK_TORRANCE_Q15 LSB. Cost: conductor + 1 qf mul. */
+fresnel_q15 fresnel_cook_torrance_q15(int32_t f0, const fresnel_ior_prep_q15 *m, int32_t c);
+fresnel_rgb_q15 fresnel_cook_torrance_q15_rgb(fresnel_rgb_q15 f0, const fresnel_ior_prep_q15 *m, int32_t c);
 
 /* --------------------------------------------------------------- exact_q15.c */
 
 /* Exact unpolarised Fresnel of eta + i kappa (the formula of
  * fresnel_conductor), m prepared. kappa = 0 with eta < 1 gives one past the
  * critical angle; the matched index (a0 = b = 0) gives 0 for every c.
- * Error <= FRESNEL_Q15_BOUND_CONDUCTOR LSB, also at critical angles.
+ * Error <= FRESNEL_BOUND_CONDUCTOR_Q15 LSB, also at critical angles.
  * Cost: ~14 qf ops, 3 qf div, 2 qf sqrt. */
-fresnel_q15 fresnel_conductor_q15(const fresnel_q15_ior *m, int32_t c);
-fresnel_q15_rgb fresnel_conductor_q15_rgb(const fresnel_q15_ior m[3], int32_t c);
+fresnel_q15 fresnel_conductor_q15(const fresnel_ior_prep_q15 *m, int32_t c);
+fresnel_rgb_q15 fresnel_conductor_q15_rgb(const fresnel_ior_prep_q15 m[3], int32_t c);
 
 /* Exact dielectric (fresnel_dielectric), m prepared with kappa = 0.
- * Error <= FRESNEL_Q15_BOUND_DIELECTRIC LSB.
+ * Error <= FRESNEL_BOUND_DIELECTRIC_Q15 LSB.
  * Cost: ~10 qf ops, 2 qf div, 1 qf sqrt. */
-fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c);
+fresnel_q15 fresnel_dielectric_q15(const fresnel_ior_prep_q15 *m, int32_t c);
 
 /* ----------------------------------------------------------------- lut_q15.c */
 
@@ -267,42 +267,42 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c);
  * forms: Schlick alone), n = 1 is the constant table[0], n above 32768 is
  * read as 32768 nodes (the _rgb forms: 3 x 32768 entries, the channels at
  * 0, 32768, 65536); no entry past the table is read.
- * Error <= FRESNEL_Q15_BOUND_LUT LSB against the same interpolation in
+ * Error <= FRESNEL_BOUND_LUT_Q15 LSB against the same interpolation in
  * double; between two nodes that differ by s > 1 (a residual table's nodes
  * may span [-1, 1]) <= 0.51 + 0.5 s LSB.
  * Cost: uniform in c, 3 mul, no division; uniform in sqrt(c), an integer
  * square root (31 digit steps) and 1 mul more; the _residual forms add
  * Schlick's 8 mul. */
-fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c);
-fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c);
-fresnel_q15 fresnel_lut_q15_u8(const uint8_t *table, int n, int32_t c);
-fresnel_q15 fresnel_lut_linear_q15_u8(const uint8_t *table, int n, int32_t c);
-fresnel_q15 fresnel_lut_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c);
-fresnel_q15 fresnel_lut_linear_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac,
+fresnel_q15 fresnel_lut_u16_q15(const uint16_t *table, int n, int32_t c);
+fresnel_q15 fresnel_lut_linear_u16_q15(const uint16_t *table, int n, int32_t c);
+fresnel_q15 fresnel_lut_u8_q15(const uint8_t *table, int n, int32_t c);
+fresnel_q15 fresnel_lut_linear_u8_q15(const uint8_t *table, int n, int32_t c);
+fresnel_q15 fresnel_lut_residual_s16_q15(int32_t f0, const int16_t *table, int n, int frac, int32_t c);
+fresnel_q15 fresnel_lut_linear_residual_s16_q15(int32_t f0, const int16_t *table, int n, int frac,
                                                 int32_t c);
-fresnel_q15 fresnel_lut_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c);
-fresnel_q15 fresnel_lut_linear_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac,
+fresnel_q15 fresnel_lut_residual_s8_q15(int32_t f0, const int8_t *table, int n, int frac, int32_t c);
+fresnel_q15 fresnel_lut_linear_residual_s8_q15(int32_t f0, const int8_t *table, int n, int frac,
                                                int32_t c);
-fresnel_q15_rgb fresnel_lut_q15_u16_rgb(const uint16_t *table, int n, int32_t c);
-fresnel_q15_rgb fresnel_lut_linear_q15_u16_rgb(const uint16_t *table, int n, int32_t c);
-fresnel_q15_rgb fresnel_lut_q15_u8_rgb(const uint8_t *table, int n, int32_t c);
-fresnel_q15_rgb fresnel_lut_linear_q15_u8_rgb(const uint8_t *table, int n, int32_t c);
-fresnel_q15_rgb fresnel_lut_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n,
+fresnel_rgb_q15 fresnel_lut_u16_q15_rgb(const uint16_t *table, int n, int32_t c);
+fresnel_rgb_q15 fresnel_lut_linear_u16_q15_rgb(const uint16_t *table, int n, int32_t c);
+fresnel_rgb_q15 fresnel_lut_u8_q15_rgb(const uint8_t *table, int n, int32_t c);
+fresnel_rgb_q15 fresnel_lut_linear_u8_q15_rgb(const uint8_t *table, int n, int32_t c);
+fresnel_rgb_q15 fresnel_lut_residual_s16_q15_rgb(fresnel_rgb_q15 f0, const int16_t *table, int n,
                                                  int frac, int32_t c);
-fresnel_q15_rgb fresnel_lut_linear_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table,
+fresnel_rgb_q15 fresnel_lut_linear_residual_s16_q15_rgb(fresnel_rgb_q15 f0, const int16_t *table,
                                                         int n, int frac, int32_t c);
-fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n,
+fresnel_rgb_q15 fresnel_lut_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const int8_t *table, int n,
                                                 int frac, int32_t c);
-fresnel_q15_rgb fresnel_lut_linear_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table,
+fresnel_rgb_q15 fresnel_lut_linear_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const int8_t *table,
                                                        int n, int frac, int32_t c);
 
-/* fresnel_lut_cubic (fresnel.h) on uint16_t nodes, n as fresnel_lut_q15_u16,
+/* fresnel_lut_cubic (fresnel.h) on uint16_t nodes, n as fresnel_lut_u16_q15,
  * clamped to [0, one]; tables fitted for the cubic (lutN-cubic).
- * Error <= FRESNEL_Q15_BOUND_LUT_CUBIC LSB against the same cubic in double
- * at the table's values. Cost: the position of fresnel_lut_q15_u16, 7 mul
+ * Error <= FRESNEL_BOUND_LUT_CUBIC_Q15 LSB against the same cubic in double
+ * at the table's values. Cost: the position of fresnel_lut_u16_q15, 7 mul
  * for the weights, 4 per channel. */
-fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n, int32_t c);
-fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n, int32_t c);
+fresnel_q15 fresnel_lut_cubic_u16_q15(const uint16_t *table, int n, int32_t c);
+fresnel_rgb_q15 fresnel_lut_cubic_u16_q15_rgb(const uint16_t *table, int n, int32_t c);
 
 /* ------------------------------------------------------------- math_q15.c */
 

@@ -17,16 +17,16 @@
  * inline, so a firmware that uses one of them links no library code for it.
  *
  * PRECONDITIONS (outside them the behaviour is undefined):
- *   f0 in [0, FRESNEL_Q15_ONE]; LUT entries in [0, FRESNEL_Q15_ONE];
- *   Schlick and F82: c <= FRESNEL_Q15_FAST_C_MAX (one + 2435; any c < 0 is
+ *   f0 in [0, FRESNEL_ONE_Q15]; LUT entries in [0, FRESNEL_ONE_Q15];
+ *   Schlick and F82: c <= FRESNEL_C_MAX_Q15_FAST (one + 2435; any c < 0 is
  *   read as 0, c in [one, one + 2435] gives F0, the value at one), F82's
- *   a_q12 in [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX];
+ *   a_q12 in [FRESNEL_F82_A_MIN_Q15_FAST, FRESNEL_F82_A_MAX_Q15_FAST];
  *   LUTs: any c (c <= 0 reads as 0, c > one as one) and any n (n <= 0 gives
  *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
  *   as that many nodes; with n a compile-time constant these tests fold
  *   away). The table must hold min(n, that maximum) entries.
- * RESULTS are in [0, FRESNEL_Q15_ONE] for every input that meets them.
- * ERROR BOUNDS (LSB of Q15, FRESNEL_Q15_BOUND_*_FAST) bound
+ * RESULTS are in [0, FRESNEL_ONE_Q15] for every input that meets them.
+ * ERROR BOUNDS (LSB of Q15, FRESNEL_BOUND_*_Q15_FAST) bound
  * |result/32768 - reference| over every cos code 0..32768, against the
  * references of fresnel_fixed.h's ERROR BOUNDS; tests/README.md names the
  * tests and parameter sets.
@@ -41,12 +41,12 @@
 #define FRESNEL_FAST_INLINE static inline
 #endif
 
-#define FRESNEL_Q15_BOUND_SCHLICK_FAST 2.9
-#define FRESNEL_Q15_BOUND_F82_FAST 5.8
-#define FRESNEL_Q15_BOUND_LUT_FAST 1.0         /* 2 <= n <= 64 */
-#define FRESNEL_Q15_BOUND_LUT_FAST_1024 2.8    /* n <= 1024 */
-#define FRESNEL_Q15_BOUND_LUT_PL_FAST 3.4      /* n <= 64 */
-#define FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge */
+#define FRESNEL_BOUND_SCHLICK_Q15_FAST 2.9
+#define FRESNEL_BOUND_F82_Q15_FAST 5.8
+#define FRESNEL_BOUND_LUT_Q15_FAST 1.0         /* 2 <= n <= 64 */
+#define FRESNEL_BOUND_LUT_Q15_FAST_1024 2.8    /* n <= 1024 */
+#define FRESNEL_BOUND_LUT_PL_Q15_FAST 3.4      /* n <= 64 */
+#define FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge */
 
 /* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
  * truncated, so that the errors straddle zero with one constant (every
@@ -63,11 +63,11 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
 /* c for the Schlick and F82 fast paths: c below 0 is 0, as c & ~(c >> 31)
  * where >> is arithmetic on negative values (GCC, Clang and the other
  * embedded compilers; two instructions on Cortex-M0, where the conditional
- * takes three), else by the conditional. c in (one, FRESNEL_Q15_FAST_C_MAX] needs
+ * takes three), else by the conditional. c in (one, FRESNEL_C_MAX_Q15_FAST] needs
  * nothing: 1 - c wraps to 2^32 - k, whose square is k^2 mod 2^32, so x^2 is
  * ceil(k^2 / 2^15) < 182, x^4 = 0 and x^5 = x^6 = 0: the result is F0, the
  * value at c = one. */
-#define FRESNEL_Q15_FAST_C_MAX (32768 + 2435)
+#define FRESNEL_C_MAX_Q15_FAST (32768 + 2435)
 FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_c(int32_t c)
 {
     return (-1 >> 1) == -1 ? (uint32_t)c & ~(uint32_t)(c >> 31) : (uint32_t)(c < 0 ? 0 : c);
@@ -81,7 +81,7 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_blend(uint32_t f0, uint32_t x5)
 
 /* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 in [0, one] and c as
  * PRECONDITIONS says; c = 0 gives exactly one, c = one exactly F0.
- * Error <= FRESNEL_Q15_BOUND_SCHLICK_FAST LSB. Cost: 4 mul. */
+ * Error <= FRESNEL_BOUND_SCHLICK_Q15_FAST LSB. Cost: 4 mul. */
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 {
     return (fresnel_q15)fresnel_i_fast_blend((uint32_t)f0, fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c)));
@@ -89,10 +89,10 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 
 /* The same for three channels; each channel equals fresnel_schlick_q15_fast's.
  * Cost: 6 mul (x^5 once, three blends). */
-FRESNEL_FAST_INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb f0, int32_t c)
+FRESNEL_FAST_INLINE fresnel_rgb_q15 fresnel_schlick_q15_rgb_fast(fresnel_rgb_q15 f0, int32_t c)
 {
     uint32_t x5 = fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c));
-    fresnel_q15_rgb r;
+    fresnel_rgb_q15 r;
     r.r = (fresnel_q15)fresnel_i_fast_blend(f0.r, x5);
     r.g = (fresnel_q15)fresnel_i_fast_blend(f0.g, x5);
     r.b = (fresnel_q15)fresnel_i_fast_blend(f0.b, x5);
@@ -105,12 +105,12 @@ FRESNEL_FAST_INLINE fresnel_q15_rgb fresnel_schlick_q15_rgb_fast(fresnel_q15_rgb
  * a_q12 = round(4096 a) (`fresnel gen` emits it for scenes with f82 and q15;
  * any F0, F82 in [0, 1] give a in [-9.4847, 17.6514], a_q12 in
  * [-38849, 72300]). Domain: f0 and c as PRECONDITIONS says, a_q12 in
- * [FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX].
- * Error <= FRESNEL_Q15_BOUND_F82_FAST LSB against fresnel_f82 at the
+ * [FRESNEL_F82_A_MIN_Q15_FAST, FRESNEL_F82_A_MAX_Q15_FAST].
+ * Error <= FRESNEL_BOUND_F82_Q15_FAST LSB against fresnel_f82 at the
  * unrounded a, reached only at unphysical corners (F0 = 1, F82 = 0:
  * a = 17.7). Cost: 7 mul. */
-#define FRESNEL_Q15_F82_FAST_A_MIN (-72296)
-#define FRESNEL_Q15_F82_FAST_A_MAX 144592
+#define FRESNEL_F82_A_MIN_Q15_FAST (-72296)
+#define FRESNEL_F82_A_MAX_Q15_FAST 144592
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
     /* Schlick as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
@@ -129,7 +129,7 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, 
 
 /* sqrt(j/128) in Q22 for j = 32..129, and 2^16 / (r_j + r_(j+1)) for
  * j = 32..128 (the chord slope of each segment): 586 bytes of flash in the
- * translation unit that uses fresnel_lut_q15_u16_fast. */
+ * translation unit that uses fresnel_lut_u16_q15_fast. */
 static const uint32_t fresnel_i_fast_sqrt_r[98] = {
     2097152u, 2129668u, 2161695u, 2193254u, 2224366u, 2255048u, 2285318u, 2315193u,
     2344687u, 2373815u, 2402589u, 2431023u, 2459129u, 2486916u, 2514397u, 2541580u,
@@ -180,13 +180,13 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
     return (r0 + ((((d << 7) + ((d1 * (dh - d1)) >> 22)) * k) >> 16)) >> m;
 }
 
-/* fresnel_lut_q15_u16 (nodes uniform in sqrt(c), node i at c = (i/(n-1))^2)
+/* fresnel_lut_u16_q15 (nodes uniform in sqrt(c), node i at c = (i/(n-1))^2)
  * with an approximate square root; n and c as PRECONDITIONS says.
  * Error against the double interpolation at the exact sqrt(c)
- * <= FRESNEL_Q15_BOUND_LUT_FAST LSB for n <= 64 and
- * FRESNEL_Q15_BOUND_LUT_FAST_1024 LSB for n <= 1024.
+ * <= FRESNEL_BOUND_LUT_Q15_FAST LSB for n <= 64 and
+ * FRESNEL_BOUND_LUT_Q15_FAST_1024 LSB for n <= 1024.
  * Cost: 5 mul (plus 2 shifts per halving of c below 1/4). */
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, int n, int32_t c)
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_u16_q15_fast(const uint16_t *table, int n, int32_t c)
 {
     uint32_t pos, i, t;
     int32_t v0, v1;
@@ -213,7 +213,7 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_fast(const uint16_t *table, 
  * of the knots fresnel_lut_pl_knots_q15[k] = round(32768 sqrt(k/64)) between
  * c = k/64 and (k+1)/64. A grazing-pl table's node i sits where
  * P(c) = i/(n-1); `fresnel gen` places its nodes through this table, and
- * fresnel_lut_q15_u16_pl_fast reads them through it. It needs no root and
+ * fresnel_lut_pl_u16_q15_fast reads them through it. It needs no root and
  * still crowds the nodes toward grazing incidence (the first piece is 1/8
  * of the range, 1/64 of c). */
 static const uint16_t fresnel_lut_pl_knots_q15[65] = {
@@ -223,17 +223,17 @@ static const uint16_t fresnel_lut_pl_knots_q15[65] = {
     25580u, 25905u, 26227u, 26545u, 26859u, 27170u, 27477u, 27780u, 28081u, 28378u, 28672u, 28963u, 29251u,
     29537u, 29819u, 30099u, 30377u, 30652u, 30924u, 31194u, 31462u, 31727u, 31991u, 32252u, 32511u, 32768u};
 
-/* fresnel_lut_q15_u16 on nodes uniform in P(c) (S = fresnel_lut_pl_knots_q15):
+/* fresnel_lut_u16_q15 on nodes uniform in P(c) (S = fresnel_lut_pl_knots_q15):
  *   p = S[j] + ((S[j+1] - S[j]) (c mod 512)) >> 9, j = c >> 9  (c = one read
  *       as one - 2^-15, so that p < one and the last segment is n-2)
  *   pos = p (n-1), node i = pos >> 15, linear interpolation, truncated.
  * n and c as PRECONDITIONS says. Error against the same interpolation in
- * double at the same P <= FRESNEL_Q15_BOUND_LUT_PL_FAST LSB for
+ * double at the same P <= FRESNEL_BOUND_LUT_PL_Q15_FAST LSB for
  * 2 <= n <= 64 (P has 15 bits: its truncation moves the position by up to
- * (n-1) 2^-15 of a segment), FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR across a
+ * (n-1) 2^-15 of a segment), FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR across a
  * total-reflection edge (a step of up to one between two nodes).
  * Cost: 3 mul, 4 loads. */
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_q15_u16_pl_fast(const uint16_t *table, int n, int32_t c)
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x, p, pos, t;
     const uint16_t *s, *v;

@@ -7,15 +7,15 @@
  *
  * The bound, in LSB of Q15, is what the runtime documents plus what turning
  * the double table into codes adds:
- *   linear     FRESNEL_Q15_BOUND_LUT + 0.5 (nodes rounded to codes)
- *   residual   FRESNEL_Q15_BOUND_LUT + 0.5 (F0 rounded to a code, weighted
+ *   linear     FRESNEL_BOUND_LUT_Q15 + 0.5 (nodes rounded to codes)
+ *   residual   FRESNEL_BOUND_LUT_Q15 + 0.5 (F0 rounded to a code, weighted
  *              by 1 - (1-c)^5 <= 1) + 2^(14 - frac) (nodes rounded to 2^-frac)
- *   cubic      FRESNEL_Q15_BOUND_LUT_CUBIC + 0.625 (rounded nodes times the
+ *   cubic      FRESNEL_BOUND_LUT_CUBIC_Q15 + 0.625 (rounded nodes times the
  *              Catmull-Rom weights' largest absolute sum, 1.25)
  * plus the binary32 runtime's rounding (fresnel.h: 3e-7 linear, 5e-7 cubic,
  * 3e-7 more for the residual's Schlick) times 32768. grazing-pl tables have
  * no binary32 twin (the spacing is Q15-only): they are held to
- * FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR against the same interpolation in double
+ * FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR against the same interpolation in double
  * at the runtime's own position.
  *
  * usage: test_gen_matrix HEADER SPACING LABEL   (SPACING grazing, uniform
@@ -54,7 +54,7 @@ static char *read_all(const char *path)
     return buf;
 }
 
-/* The interpolation fresnel_lut_q15_u16_pl_fast documents its bound
+/* The interpolation fresnel_lut_pl_u16_q15_fast documents its bound
  * against: in double, at the runtime's own 15-bit P. */
 static double pl_ref(const uint16_t *t, int n, int32_t c)
 {
@@ -129,7 +129,7 @@ int main(int argc, char **argv)
         static uint16_t u16[3 * 256];
         static int16_t s16[3 * 256];
         static float f32[3 * 256];
-        fresnel_q15_rgb f0_q15 = {0, 0, 0};
+        fresnel_rgb_q15 f0_q15 = {0, 0, 0};
         fresnel_rgb f0_f32 = {0.0f, 0.0f, 0.0f};
         if ((strcmp(q->type, "uint16_t") && strcmp(q->type, "int16_t")) || len < 5 ||
             strcmp(q->name + len - 4, "_q15"))
@@ -176,31 +176,31 @@ int main(int argc, char **argv)
         w[form].tables++;
         for (c = 0; c <= 32768; c += c < 2048 ? 1 : 4) {
             float cf = (float)c / 32768.0f;
-            fresnel_q15_rgb o;
+            fresnel_rgb_q15 o;
             fresnel_rgb r;
             double bound, got[3], ref[3];
             if (form == 3) {
                 for (ch = 0; ch < 3; ch++) {
-                    got[ch] = fresnel_lut_q15_u16_pl_fast(u16 + ch * n, n, c);
+                    got[ch] = fresnel_lut_pl_u16_q15_fast(u16 + ch * n, n, c);
                     ref[ch] = pl_ref(u16 + ch * n, n, c);
                 }
-                bound = FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR;
+                bound = FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR;
             } else {
                 if (form == 0) {
-                    o = uniform ? fresnel_lut_linear_q15_u16_rgb(u16, n, c) : fresnel_lut_q15_u16_rgb(u16, n, c);
+                    o = uniform ? fresnel_lut_linear_u16_q15_rgb(u16, n, c) : fresnel_lut_u16_q15_rgb(u16, n, c);
                     r = uniform ? fresnel_lut_linear_rgb(f32, n, cf) : fresnel_lut_rgb(f32, n, cf);
-                    bound = FRESNEL_Q15_BOUND_LUT + 0.5 + 32768.0 * 3e-7;
+                    bound = FRESNEL_BOUND_LUT_Q15 + 0.5 + 32768.0 * 3e-7;
                 } else if (form == 1) {
                     int fr = (int)frac->v[0];
-                    o = uniform ? fresnel_lut_linear_residual_q15_s16_rgb(f0_q15, s16, n, fr, c)
-                                : fresnel_lut_residual_q15_s16_rgb(f0_q15, s16, n, fr, c);
+                    o = uniform ? fresnel_lut_linear_residual_s16_q15_rgb(f0_q15, s16, n, fr, c)
+                                : fresnel_lut_residual_s16_q15_rgb(f0_q15, s16, n, fr, c);
                     r = uniform ? fresnel_lut_linear_residual_rgb(f0_f32, f32, n, cf)
                                 : fresnel_lut_residual_rgb(f0_f32, f32, n, cf);
-                    bound = FRESNEL_Q15_BOUND_LUT + 0.5 + ldexp(1.0, 14 - fr) + 32768.0 * 6e-7;
+                    bound = FRESNEL_BOUND_LUT_Q15 + 0.5 + ldexp(1.0, 14 - fr) + 32768.0 * 6e-7;
                 } else {
-                    o = fresnel_lut_cubic_q15_u16_rgb(u16, n, c);
+                    o = fresnel_lut_cubic_u16_q15_rgb(u16, n, c);
                     r = fresnel_lut_cubic_rgb(f32, n, cf);
-                    bound = FRESNEL_Q15_BOUND_LUT_CUBIC + 0.625 + 32768.0 * 5e-7;
+                    bound = FRESNEL_BOUND_LUT_CUBIC_Q15 + 0.625 + 32768.0 * 5e-7;
                 }
                 got[0] = o.r, got[1] = o.g, got[2] = o.b;
                 ref[0] = r.r, ref[1] = r.g, ref[2] = r.b;

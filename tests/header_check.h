@@ -3,15 +3,15 @@
  * is read back, and each value is checked against its C type and the range
  * include/fresnel_fixed.h and fresnel.h document for it:
  *   float, fresnel_rgb    binary32 literals with an 'f' suffix, finite
- *   fresnel_q15_rgb       3 codes in [0, FRESNEL_Q15_ONE]
- *   uint16_t              LUT codes in [0, FRESNEL_Q15_ONE]
+ *   fresnel_rgb_q15       3 codes in [0, FRESNEL_ONE_Q15]
+ *   uint16_t              LUT codes in [0, FRESNEL_ONE_Q15]
  *   int16_t               residual LUT nodes in [-32768, 32767]
  *   int32_t               F82's a_q12, |a| <= 73000 (fresnel_f82_q15_fast)
- *   fresnel_q15_ior       a0, a0_lo, shift, then qf b, n4, t1_inv, inv_eta2:
+ *   fresnel_ior_prep_q15       a0, a0_lo, shift, then qf b, n4, t1_inv, inv_eta2:
  *                         shift in [0, 30], a0 + 2^(30 - shift) in int32,
  *                         |a0_lo| <= 2^29, each qf {0, 0} or m in [2^30, 2^31)
- *   fresnel_q15_nk        qf n, nk2
- *   fresnel_q15_lsk       f0 in [0, 2^30], qf a, alpha in [0, FRESNEL_Q16_ALPHA_MAX]
+ *   fresnel_nk_prep_q15        qf n, nk2
+ *   fresnel_lsk_prep_q15       f0 in [0, 2^30], qf a, alpha in [0, FRESNEL_ALPHA_MAX_Q16]
  *   enum NAME_frac        a residual table's fraction bits, [14, 30]
  * and each initialiser has exactly as many values as its type and length
  * need. Any other declared type is an error, so a new emitted type must be
@@ -62,9 +62,9 @@ static inline int hc_fields(const char *type, int *is_float)
     static const struct {
         const char *type;
         int fields, is_float;
-    } t[] = {{"float", 1, 1},   {"fresnel_rgb", 3, 1},      {"fresnel_q15_rgb", 3, 0},
+    } t[] = {{"float", 1, 1},   {"fresnel_rgb", 3, 1},      {"fresnel_rgb_q15", 3, 0},
              {"uint16_t", 1, 0}, {"int16_t", 1, 0},          {"int32_t", 1, 0},
-             {"fresnel_q15_ior", 11, 0}, {"fresnel_q15_nk", 4, 0}, {"fresnel_q15_lsk", 4, 0}};
+             {"fresnel_ior_prep_q15", 11, 0}, {"fresnel_nk_prep_q15", 4, 0}, {"fresnel_lsk_prep_q15", 4, 0}};
     size_t i;
     for (i = 0; i < sizeof t / sizeof t[0]; i++)
         if (!strcmp(t[i].type, type)) {
@@ -89,7 +89,7 @@ static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
 {
     const char *t = d->type;
     int i;
-    if (!strcmp(t, "fresnel_q15_rgb")) {
+    if (!strcmp(t, "fresnel_rgb_q15")) {
         for (i = 0; i < 3; i++)
             if (!hc_in(v[i], 0.0, 32768.0))
                 hc_fail(h, "%s %s: code %.17g not in [0, 32768]", t, d->name, v[i]);
@@ -102,7 +102,7 @@ static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
     } else if (!strcmp(t, "int32_t")) {
         if (!hc_in(v[0], -73000.0, 73000.0))
             hc_fail(h, "%s %s: a_q12 %.17g not in [-73000, 73000]", t, d->name, v[0]);
-    } else if (!strcmp(t, "fresnel_q15_ior")) {
+    } else if (!strcmp(t, "fresnel_ior_prep_q15")) {
         if (!hc_in(v[2], 0.0, 30.0))
             hc_fail(h, "%s %s: shift %.17g not in [0, 30]", t, d->name, v[2]);
         else if (!hc_in(v[0] + ldexp(1.0, 30 - (int)v[2]), -2147483648.0, 2147483647.0) ||
@@ -112,10 +112,10 @@ static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
             hc_fail(h, "%s %s: a0_lo %.17g not in [-2^29, 2^29]", t, d->name, v[1]);
         for (i = 3; i < 11; i += 2)
             hc_qf(h, d, v + i);
-    } else if (!strcmp(t, "fresnel_q15_nk")) {
+    } else if (!strcmp(t, "fresnel_nk_prep_q15")) {
         hc_qf(h, d, v);
         hc_qf(h, d, v + 2);
-    } else if (!strcmp(t, "fresnel_q15_lsk")) {
+    } else if (!strcmp(t, "fresnel_lsk_prep_q15")) {
         if (!hc_in(v[0], 0.0, 1073741824.0))
             hc_fail(h, "%s %s: f0 %.17g not in [0, 2^30]", t, d->name, v[0]);
         hc_qf(h, d, v + 1);

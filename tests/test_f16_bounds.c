@@ -38,7 +38,7 @@ static void check_bound(const char *name, const worst *w, double bound, long bad
 
 static int in_f16_domain(const test_material *t)
 {
-    return t->eta >= FRESNEL_F16_ETA_MIN && t->eta <= FRESNEL_F16_ETA_MAX && t->kappa <= FRESNEL_F16_KAPPA_MAX;
+    return t->eta >= FRESNEL_ETA_MIN_F16 && t->eta <= FRESNEL_ETA_MAX_F16 && t->kappa <= FRESNEL_KAPPA_MAX_F16;
 }
 
 static void check_arithmetic(void)
@@ -96,8 +96,8 @@ static void check_models(const test_material *mat, int nmat)
         if (away.err > away_all.err)
             away_all = away;
     }
-    CHECK("f16 every model at least 1/64 away from a critical angle", away_all.err <= FRESNEL_F16_BOUND_NONCRITICAL,
-          "max|err| %.3e exceeds %.3e at %s", away_all.err, FRESNEL_F16_BOUND_NONCRITICAL, away_all.where);
+    CHECK("f16 every model at least 1/64 away from a critical angle", away_all.err <= FRESNEL_BOUND_NONCRITICAL_F16,
+          "max|err| %.3e exceeds %.3e at %s", away_all.err, FRESNEL_BOUND_NONCRITICAL_F16, away_all.where);
 }
 
 static void check_schlick_gen(void)
@@ -124,7 +124,7 @@ static void check_schlick_gen(void)
                     note_worst(&w, fabs(got - ref), what, (double)c);
                 }
             }
-    check_bound("schlick-gen, every p", &w, FRESNEL_F16_BOUND_SCHLICK_GEN, bad);
+    check_bound("schlick-gen, every p", &w, FRESNEL_BOUND_SCHLICK_GEN_F16, bad);
 }
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -156,7 +156,7 @@ static void check_schlick_f0(void)
             note_worst(&w, fabs(got - ref_schlick((double)f0, (double)c)), what, (double)c);
         }
     }
-    check_bound("schlick, every F0", &w, FRESNEL_F16_BOUND_SCHLICK, bad);
+    check_bound("schlick, every F0", &w, FRESNEL_BOUND_SCHLICK_F16, bad);
 }
 
 /* F82 on a 1/64 grid of (F0, F82) pairs, far apart ones included (the
@@ -181,7 +181,7 @@ static void check_f82_pairs(void)
                 note_worst(&w, fabs(got - ref), what, (double)c);
             }
         }
-    check_bound("f82, every F0/F82 pair", &w, FRESNEL_F16_BOUND_F82, bad);
+    check_bound("f82, every F0/F82 pair", &w, FRESNEL_BOUND_F82_F16, bad);
 }
 
 static void check_f0_helpers(void)
@@ -193,13 +193,13 @@ static void check_f0_helpers(void)
     memset(&wm, 0, sizeof wm);
     for (ie = 0; ie < 41; ie++)
         for (ik = 0; ik < 41; ik++) {
-            fresnel_f16 e = (fresnel_f16)(FRESNEL_F16_ETA_MIN * pow(1024.0, ie / 40.0));
+            fresnel_f16 e = (fresnel_f16)(FRESNEL_ETA_MIN_F16 * pow(1024.0, ie / 40.0));
             fresnel_f16 k = (fresnel_f16)(ik == 0 ? 0.0 : 1e-3 * pow(16000.0, (ik - 1) / 39.0));
             double got = (double)fresnel_f0_from_ior_f16(e, k);
             bad += !(got >= 0.0 && got <= 1.0);
             note_worst(&wi, fabs(got - ref_f0_from_ior((double)e, (double)k)), "grid", 1.0);
         }
-    check_bound("f0_from_ior", &wi, FRESNEL_F16_BOUND_F0, bad);
+    check_bound("f0_from_ior", &wi, FRESNEL_BOUND_F0_FROM_IOR_F16, bad);
     bad = 0;
     for (ie = 0; ie < 7; ie++) {
         static const float media[] = {0.5f, 1.0f, 1.2f, 1.33f, 1.5f, 2.42f, 10.0f};
@@ -211,7 +211,7 @@ static void check_f0_helpers(void)
             note_worst(&wm, fabs(got - ref_f0_in_medium((double)f0, (double)e)), "etaE", (double)f0);
         }
     }
-    check_bound("f0_in_medium", &wm, FRESNEL_F16_BOUND_F0_IN_MEDIUM, bad);
+    check_bound("f0_in_medium", &wm, FRESNEL_BOUND_F0_IN_MEDIUM_F16, bad);
 }
 
 static void check_luts(const test_material *mat, int nmat)
@@ -253,8 +253,8 @@ static void check_luts(const test_material *mat, int nmat)
                     note_worst(&w[sp], fabs(g2 - r2), what, cd);
                 }
             }
-    check_bound("LUT, sqrt(c) nodes", &w[0], FRESNEL_F16_BOUND_LUT, bad[0]);
-    check_bound("LUT, linear nodes", &w[1], FRESNEL_F16_BOUND_LUT, bad[1]);
+    check_bound("LUT, sqrt(c) nodes", &w[0], FRESNEL_BOUND_LUT_F16, bad[0]);
+    check_bound("LUT, linear nodes", &w[1], FRESNEL_BOUND_LUT_F16, bad[1]);
 }
 
 
@@ -277,10 +277,10 @@ static fresnel_f16 rnd_half(unsigned long long *st, double lo, double hi, long i
 }
 
 /* Every bound over the documented binary16 domain, not the material set:
- * eta in [FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX], kappa 0 or in
- * [1e-3, FRESNEL_F16_KAPPA_MAX], F0, r, g in [0, 1], LSK a in [0, 64],
+ * eta in [FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16], kappa 0 or in
+ * [1e-3, FRESNEL_KAPPA_MAX_F16], F0, r, g in [0, 1], LSK a in [0, 64],
  * alpha in [1/1024, 64], c a random half in [0, 1] or an end; 1e6
- * deterministic points per function, and the worst point fuzzing found. The maxima are FRESNEL_F16_DOMAIN_*;
+ * deterministic points per function, and the worst point fuzzing found. The maxima are FRESNEL_DOMAIN_*_F16;
  * the exact forms and Cook-Torrance are measured for conductors
  * (kappa >= 1e-3), away from any critical angle. */
 static void check_domain(void)
@@ -290,18 +290,18 @@ static void check_domain(void)
                                      "domain lsk", "domain lsk_comp", "domain gulbrandsen",
                                      "domain approx_conductor", "domain cook_torrance (kappa>=1e-3)",
                                      "domain conductor (kappa>=1e-3)"};
-    static const double bounds[D_N] = {FRESNEL_F16_DOMAIN_SCHLICK, FRESNEL_F16_DOMAIN_F0,
-                                       FRESNEL_F16_DOMAIN_F0_IN_MEDIUM, FRESNEL_F16_DOMAIN_LSK,
-                                       FRESNEL_F16_DOMAIN_LSK_COMP, FRESNEL_F16_DOMAIN_GULBRANDSEN,
-                                       FRESNEL_F16_DOMAIN_APPROX_CONDUCTOR, FRESNEL_F16_DOMAIN_COOK_TORRANCE,
-                                       FRESNEL_F16_DOMAIN_CONDUCTOR};
+    static const double bounds[D_N] = {FRESNEL_DOMAIN_SCHLICK_F16, FRESNEL_DOMAIN_F0_FROM_IOR_F16,
+                                       FRESNEL_DOMAIN_F0_IN_MEDIUM_F16, FRESNEL_DOMAIN_LSK_F16,
+                                       FRESNEL_DOMAIN_LSK_COMP_F16, FRESNEL_DOMAIN_GULBRANDSEN_F16,
+                                       FRESNEL_DOMAIN_APPROX_CONDUCTOR_F16, FRESNEL_DOMAIN_COOK_TORRANCE_F16,
+                                       FRESNEL_DOMAIN_CONDUCTOR_F16};
     worst w[D_N];
     long bad[D_N] = {0}, i;
     unsigned long long st = 4242;
     int f;
     memset(w, 0, sizeof w);
     for (i = 0; i < 1000000; i++) {
-        fresnel_f16 c = rnd_half(&st, 1.0 / 16384.0, 1.0, i + 1), e = rnd_half(&st, FRESNEL_F16_ETA_MIN, 16.0, i + 2);
+        fresnel_f16 c = rnd_half(&st, 1.0 / 16384.0, 1.0, i + 1), e = rnd_half(&st, FRESNEL_ETA_MIN_F16, 16.0, i + 2);
         fresnel_f16 k = i % 7 == 0 ? (fresnel_f16)0.0f : rnd_half(&st, 1e-3, 16.0, i + 3);
         fresnel_f16 kc = k > (fresnel_f16)0.0f ? k : (fresnel_f16)1e-3f;
         fresnel_f16 f0 = rnd_half(&st, 1.0 / 16384.0, 1.0, i + 4), a = rnd_half(&st, 1.0 / 1024.0, 64.0, i);
@@ -329,7 +329,7 @@ static void check_domain(void)
         {
             double r = (double)f0 < 1.0 - 1.0 / 2048.0 ? (double)f0 : 1.0 - 1.0 / 2048.0;
             ref_gulbrandsen_nk(r, (double)g, &rn, &rk);
-            ref[D_GULB] = ref_approx_conductor(rn < FRESNEL_F16_ETA_MIN ? FRESNEL_F16_ETA_MIN : rn > 16.0 ? 16.0 : rn,
+            ref[D_GULB] = ref_approx_conductor(rn < FRESNEL_ETA_MIN_F16 ? FRESNEL_ETA_MIN_F16 : rn > 16.0 ? 16.0 : rn,
                                                rk > 16.0 ? 16.0 : rk, cd);
         }
         got[D_APPROX] = (double)fresnel_approx_conductor_f16(e, k, c);

@@ -96,7 +96,7 @@ static void check_schlick_gen(void)
                         worst64 = err;
                 }
             }
-    check_bound("schlick-gen, every p", &w, FRESNEL_Q15_BOUND_SCHLICK_GEN, bad);
+    check_bound("schlick-gen, every p", &w, FRESNEL_BOUND_SCHLICK_GEN_Q15, bad);
     CHECK("fixed schlick-gen within 0.501 LSB for p <= 64", worst64 <= 0.501, "max|err| %.5f LSB", worst64);
     /* large exponents, where (1-c)^p is ten squarings: 500 p in (64, 1000],
      * the cosines where (1-c)^p is not negligible (c < 1/4) */
@@ -114,7 +114,7 @@ static void check_schlick_gen(void)
                 note_worst(&w, fabs(got / 32768.0 - ref) * 32768.0, what, c / 32768.0);
             }
     }
-    check_bound("schlick-gen, p in (64, 1000]", &w, FRESNEL_Q15_BOUND_SCHLICK_GEN, bad);
+    check_bound("schlick-gen, p in (64, 1000]", &w, FRESNEL_BOUND_SCHLICK_GEN_Q15, bad);
 }
 
 /* Schlick for F0 on a 1/256 grid, every cos code. */
@@ -131,7 +131,7 @@ static void check_schlick_f0(void)
             bad += got < 0 || got > ONE;
             note_worst(&w, fabs(got / 32768.0 - ref_schlick(a / 256.0, c / 32768.0)) * 32768.0, "F0 grid", c / 32768.0);
         }
-    check_bound("schlick, every F0", &w, FRESNEL_Q15_BOUND_SCHLICK, bad);
+    check_bound("schlick, every F0", &w, FRESNEL_BOUND_SCHLICK_Q15, bad);
 }
 
 /* F82 on a 1/16 grid of (F0, F82) pairs, far apart ones included (the
@@ -155,7 +155,7 @@ static void check_f82_pairs(void)
                            c / 32768.0);
             }
         }
-    check_bound("f82, every F0/F82 pair", &w, FRESNEL_Q15_BOUND_F82, bad);
+    check_bound("f82, every F0/F82 pair", &w, FRESNEL_BOUND_F82_Q15, bad);
 }
 
 /* The F0 helpers: from Q16.16 eta, kappa on the float test grid, and the
@@ -178,7 +178,7 @@ static void check_f0_helpers(void)
             bad += got < 0 || got > ONE;
             note_worst(&w_ior, fabs(got / 32768.0 - ref_f0_from_ior(e / 65536.0, k / 65536.0)) * 32768.0, "grid", 1.0);
         }
-    check_bound("f0_from_ior", &w_ior, FRESNEL_Q15_BOUND_F0, bad);
+    check_bound("f0_from_ior", &w_ior, FRESNEL_BOUND_F0_FROM_IOR_Q15, bad);
     bad = 0;
     for (im = 0; im < sizeof media / sizeof media[0]; im++) {
         fresnel_q16 e = fixed_q16(media[im]);
@@ -191,12 +191,12 @@ static void check_f0_helpers(void)
                        f0 / 32768.0);
         }
     }
-    check_bound("f0_in_medium", &w_med, FRESNEL_Q15_BOUND_F0_IN_MEDIUM, bad);
+    check_bound("f0_in_medium", &w_med, FRESNEL_BOUND_F0_IN_MEDIUM_Q15, bad);
 }
 
 /* The layout of fresnel_fixed.h: shift in [0, 30], |a0| + 2^(30-shift) <=
  * 2^31 - 1 (a0 + c^2 fits int32), |a0_lo| <= 2^29. */
-static int ior_layout_ok(const fresnel_q15_ior *m)
+static int ior_layout_ok(const fresnel_ior_prep_q15 *m)
 {
     return m->shift >= 0 && m->shift <= 30 &&
            fabs((double)m->a0) + ldexp(1.0, 30 - m->shift) <= 2147483647.0 && abs(m->a0_lo) <= (1 << 29);
@@ -211,25 +211,25 @@ static void check_prepare(const test_material *mat, int nmat)
     for (k = 0; k < nmat; k++) {
         fresnel_q16 e = fixed_q16(mat[k].eta), kk = fixed_q16(mat[k].kappa);
         double ed = e / 65536.0, kd = kk / 65536.0, a, alpha, r, g;
-        fresnel_q15_ior ri, hi;
-        fresnel_q15_nk rn, hn;
-        fresnel_q15_lsk rl, hl;
+        fresnel_ior_prep_q15 ri, hi;
+        fresnel_nk_prep_q15 rn, hn;
+        fresnel_lsk_prep_q15 rl, hl;
         fresnel_q15 gr, gg;
         int32_t c;
-        if (e < FRESNEL_Q16_ETA_MIN)
+        if (e < FRESNEL_ETA_MIN_Q16)
             continue;
         ref_lsk_fit(ed, kd, &a, &alpha);
-        fresnel_q15_ior_prepare(e, kk, &ri);
+        fresnel_ior_prepare_q15(e, kk, &ri);
         fixed_ior(ed, kd, &hi);
         layout_bad += !ior_layout_ok(&ri) + !ior_layout_ok(&hi);
         {
-            fresnel_q15_ior dm;
+            fresnel_ior_prep_q15 dm;
             fixed_ior(mat[k].eta, mat[k].kappa, &dm);
             layout_bad += !ior_layout_ok(&dm);
         }
-        fresnel_q15_nk_prepare(e, kk, &rn);
+        fresnel_nk_prepare_q15(e, kk, &rn);
         fixed_nk(ed, kd, &hn);
-        fresnel_q15_lsk_prepare(e, kk, fixed_q16(a), fixed_q16(alpha), &rl);
+        fresnel_lsk_prepare_q15(e, kk, fixed_q16(a), fixed_q16(alpha), &rl);
         fixed_lsk(ed, kd, fixed_q16(a) / 65536.0, fixed_q16(alpha) / 65536.0, &hl);
         for (c = 0; c <= ONE; c += 7) {
             int d1 = abs(fresnel_conductor_q15(&ri, c) - fresnel_conductor_q15(&hi, c));
@@ -251,11 +251,11 @@ static void check_prepare(const test_material *mat, int nmat)
     }
     NOTE("prepare from Q16.16 vs host: ior %d, nk %d, lsk %d codes; gulbrandsen_rg r %d g %d codes",
          worst_ior, worst_nk, worst_lsk, worst_r, worst_g);
-    CHECK("fresnel_q15_ior_prepare matches the host preparation", worst_ior <= 1, "%d codes", worst_ior);
+    CHECK("fresnel_ior_prepare_q15 matches the host preparation", worst_ior <= 1, "%d codes", worst_ior);
     CHECK("prepared a0, a0_lo, shift keep the layout (a0 + c^2 fits int32), host and run time", layout_bad == 0,
           "%d structs break it", layout_bad);
-    CHECK("fresnel_q15_nk_prepare matches the host preparation", worst_nk <= 1, "%d codes", worst_nk);
-    CHECK("fresnel_q15_lsk_prepare matches the host preparation", worst_lsk <= 1, "%d codes", worst_lsk);
+    CHECK("fresnel_nk_prepare_q15 matches the host preparation", worst_nk <= 1, "%d codes", worst_nk);
+    CHECK("fresnel_lsk_prepare_q15 matches the host preparation", worst_lsk <= 1, "%d codes", worst_lsk);
     CHECK("fresnel_gulbrandsen_rg_q15 within one code of the reference", worst_r <= 1 && worst_g <= 1,
           "r %d g %d codes", worst_r, worst_g);
 }
@@ -268,10 +268,10 @@ static void check_variants(const test_material *mat, int nmat)
     int k;
     static const int32_t odd_c[] = {INT32_MIN, -1, ONE + 1, 65535, INT32_MAX};
     for (k = 0; k + 2 < nmat; k += 3) {
-        fresnel_q15_ior ior[3];
-        fresnel_q15_nk nk[3];
-        fresnel_q15_lsk lsk[3];
-        fresnel_q15_rgb f0, f82, r, g, o;
+        fresnel_ior_prep_q15 ior[3];
+        fresnel_nk_prep_q15 nk[3];
+        fresnel_lsk_prep_q15 lsk[3];
+        fresnel_rgb_q15 f0, f82, r, g, o;
         int32_t c;
         int j;
         model_params mp[3];
@@ -286,7 +286,7 @@ static void check_variants(const test_material *mat, int nmat)
         r.r = (fresnel_q15)fixed_q15(mp[0].r), r.g = (fresnel_q15)fixed_q15(mp[1].r), r.b = (fresnel_q15)fixed_q15(mp[2].r);
         g.r = (fresnel_q15)fixed_q15(mp[0].g), g.g = (fresnel_q15)fixed_q15(mp[1].g), g.b = (fresnel_q15)fixed_q15(mp[2].g);
         for (c = 0; c <= ONE; c += 97) {
-            fresnel_q15_nk gnk;
+            fresnel_nk_prep_q15 gnk;
 #define SAME3(rgb, fr, fg, fb) mismatch += (rgb).r != (fr) || (rgb).g != (fg) || (rgb).b != (fb)
             o = fresnel_schlick_q15_rgb(f0, c);
             SAME3(o, fresnel_schlick_q15(f0.r, c), fresnel_schlick_q15(f0.g, c), fresnel_schlick_q15(f0.b, c));
@@ -392,15 +392,15 @@ static void check_luts(const test_material *mat, int nmat)
                     int32_t got[4];
                     int e;
                     if (sp == 0) {
-                        got[0] = fresnel_lut_q15_u16(u16, n, c);
-                        got[1] = fresnel_lut_q15_u8(u8, n, c);
-                        got[2] = fresnel_lut_residual_q15_s16(f0, s16, n, f16b, c);
-                        got[3] = fresnel_lut_residual_q15_s8(f0, s8, n, f8b, c);
+                        got[0] = fresnel_lut_u16_q15(u16, n, c);
+                        got[1] = fresnel_lut_u8_q15(u8, n, c);
+                        got[2] = fresnel_lut_residual_s16_q15(f0, s16, n, f16b, c);
+                        got[3] = fresnel_lut_residual_s8_q15(f0, s8, n, f8b, c);
                     } else {
-                        got[0] = fresnel_lut_linear_q15_u16(u16, n, c);
-                        got[1] = fresnel_lut_linear_q15_u8(u8, n, c);
-                        got[2] = fresnel_lut_linear_residual_q15_s16(f0, s16, n, f16b, c);
-                        got[3] = fresnel_lut_linear_residual_q15_s8(f0, s8, n, f8b, c);
+                        got[0] = fresnel_lut_linear_u16_q15(u16, n, c);
+                        got[1] = fresnel_lut_linear_u8_q15(u8, n, c);
+                        got[2] = fresnel_lut_linear_residual_s16_q15(f0, s16, n, f16b, c);
+                        got[3] = fresnel_lut_linear_residual_s8_q15(f0, s8, n, f8b, c);
                     }
                     for (e = 0; e < 4; e++) {
                         ref = sat_unit(ref_lut(dv[e], n, 0, x) + (e >= 2 ? sch : 0.0));
@@ -413,17 +413,17 @@ static void check_luts(const test_material *mat, int nmat)
                         }
                     }
                     if ((c & 255) == 0) {
-                        fresnel_q15_rgb f0rgb, o;
+                        fresnel_rgb_q15 f0rgb, o;
                         f0rgb.r = f0rgb.g = f0rgb.b = (fresnel_q15)f0;
-                        o = sp == 0 ? fresnel_lut_q15_u16_rgb(u16, n, c) : fresnel_lut_linear_q15_u16_rgb(u16, n, c);
+                        o = sp == 0 ? fresnel_lut_u16_q15_rgb(u16, n, c) : fresnel_lut_linear_u16_q15_rgb(u16, n, c);
                         rgb_mismatch += o.r != got[0] || o.g != got[0] || o.b != got[0];
-                        o = sp == 0 ? fresnel_lut_q15_u8_rgb(u8, n, c) : fresnel_lut_linear_q15_u8_rgb(u8, n, c);
+                        o = sp == 0 ? fresnel_lut_u8_q15_rgb(u8, n, c) : fresnel_lut_linear_u8_q15_rgb(u8, n, c);
                         rgb_mismatch += o.r != got[1] || o.g != got[1] || o.b != got[1];
-                        o = sp == 0 ? fresnel_lut_residual_q15_s16_rgb(f0rgb, s16, n, f16b, c)
-                                    : fresnel_lut_linear_residual_q15_s16_rgb(f0rgb, s16, n, f16b, c);
+                        o = sp == 0 ? fresnel_lut_residual_s16_q15_rgb(f0rgb, s16, n, f16b, c)
+                                    : fresnel_lut_linear_residual_s16_q15_rgb(f0rgb, s16, n, f16b, c);
                         rgb_mismatch += o.r != got[2] || o.g != got[2] || o.b != got[2];
-                        o = sp == 0 ? fresnel_lut_residual_q15_s8_rgb(f0rgb, s8, n, f8b, c)
-                                    : fresnel_lut_linear_residual_q15_s8_rgb(f0rgb, s8, n, f8b, c);
+                        o = sp == 0 ? fresnel_lut_residual_s8_q15_rgb(f0rgb, s8, n, f8b, c)
+                                    : fresnel_lut_linear_residual_s8_q15_rgb(f0rgb, s8, n, f8b, c);
                         rgb_mismatch += o.r != got[3] || o.g != got[3] || o.b != got[3];
                     }
                 }
@@ -435,16 +435,16 @@ static void check_luts(const test_material *mat, int nmat)
         long off = 0;
         int32_t c;
         for (c = 0; c <= ONE; c++)
-            off += fresnel_lut_q15_u16(ramp, 2, c) != (int32_t)floor(sqrt(c / 32768.0) * 32768.0 + 0.5);
+            off += fresnel_lut_u16_q15(ramp, 2, c) != (int32_t)floor(sqrt(c / 32768.0) * 32768.0 + 0.5);
         CHECK("fixed LUT on {0, one} is round(sqrt(c) 2^15) for every code", off == 0, "%ld codes differ", off);
     }
-    check_bound("LUT (u16 u8 s16 s8), nodes uniform in sqrt(c)", &w[0], FRESNEL_Q15_BOUND_LUT, bad[0]);
-    check_bound("LUT (u16 u8 s16 s8), nodes uniform in c", &w[1], FRESNEL_Q15_BOUND_LUT, bad[1]);
+    check_bound("LUT (u16 u8 s16 s8), nodes uniform in sqrt(c)", &w[0], FRESNEL_BOUND_LUT_Q15, bad[0]);
+    check_bound("LUT (u16 u8 s16 s8), nodes uniform in c", &w[1], FRESNEL_BOUND_LUT_Q15, bad[1]);
     CHECK("fixed LUT RGB forms equal the scalar forms", rgb_mismatch == 0, "%ld mismatches", rgb_mismatch);
 }
 
 /* The bottom of the eta domain is the same number in the Q16.16 API
- * (FRESNEL_Q16_ETA_MIN codes) and in the double reference (FRESNEL_ETA_MIN):
+ * (FRESNEL_ETA_MIN_Q16 codes) and in the double reference (FRESNEL_ETA_MIN):
  * eta codes from below the domain (clamped by both) through 1e-3 and a
  * little beyond, prepared at run time, against the reference at the same
  * eta, every 3rd cos code and the last 64. */
@@ -457,19 +457,19 @@ static void check_eta_min(void)
     memset(&w, 0, sizeof w);
     memset(&wd, 0, sizeof wd);
     memset(&wf, 0, sizeof wf);
-    CHECK("FRESNEL_Q16_ETA_MIN is FRESNEL_ETA_MIN in Q16.16", FRESNEL_Q16_ETA_MIN / 65536.0 == (double)FRESNEL_ETA_MIN,
-          "%.9g vs %.9g", FRESNEL_Q16_ETA_MIN / 65536.0, (double)FRESNEL_ETA_MIN);
+    CHECK("FRESNEL_ETA_MIN_Q16 is FRESNEL_ETA_MIN in Q16.16", FRESNEL_ETA_MIN_Q16 / 65536.0 == (double)FRESNEL_ETA_MIN,
+          "%.9g vs %.9g", FRESNEL_ETA_MIN_Q16 / 65536.0, (double)FRESNEL_ETA_MIN);
     for (i = 0; i < sizeof codes / sizeof codes[0]; i++) {
         static const double kappas[] = {0.0, 1e-3, 0.5};
         double eta = codes[i] / 65536.0;
         char what[48];
         int ik;
         for (ik = 0; ik < 3; ik++) {
-            fresnel_q15_ior m;
+            fresnel_ior_prep_q15 m;
             fresnel_q16 kq = fixed_q16(kappas[ik]);
             int32_t c, f0 = fresnel_f0_from_ior_q15(codes[i], kq);
             snprintf(what, sizeof what, "eta code %ld kappa %g", (long)codes[i], kappas[ik]);
-            fresnel_q15_ior_prepare(codes[i], kq, &m);
+            fresnel_ior_prepare_q15(codes[i], kq, &m);
             bad += f0 < 0 || f0 > ONE;
             note_worst(&wf, fabs(f0 / 32768.0 - ref_f0_from_ior(eta, kq / 65536.0)) * 32768.0, what, 1.0);
             for (c = 0; c <= ONE; c += (c >= ONE - 64) ? 1 : 3) {
@@ -486,13 +486,13 @@ static void check_eta_min(void)
             }
         }
     }
-    check_bound("conductor, eta at and below the domain's bottom (Q16.16 prepare)", &w, FRESNEL_Q15_BOUND_CONDUCTOR, bad);
-    check_bound("dielectric, eta at and below the domain's bottom (Q16.16 prepare)", &wd, FRESNEL_Q15_BOUND_DIELECTRIC,
+    check_bound("conductor, eta at and below the domain's bottom (Q16.16 prepare)", &w, FRESNEL_BOUND_CONDUCTOR_Q15, bad);
+    check_bound("dielectric, eta at and below the domain's bottom (Q16.16 prepare)", &wd, FRESNEL_BOUND_DIELECTRIC_Q15,
                 0);
-    check_bound("f0_from_ior, eta at and below the domain's bottom", &wf, FRESNEL_Q15_BOUND_F0, 0);
+    check_bound("f0_from_ior, eta at and below the domain's bottom", &wf, FRESNEL_BOUND_F0_FROM_IOR_Q15, 0);
 }
 
-/* fresnel_q15_ior_prepare where eta^2 - kappa^2 - 1 crosses a power of
+/* fresnel_ior_prepare_q15 where eta^2 - kappa^2 - 1 crosses a power of
  * two (the shift's choice, and a quotient that rounds up past 32 bits):
  * eta and kappa codes 2^j + d, d in [-3, 3], j up to 30, each with kappa (or
  * eta) 0, 2^-10, 1 and 2, against the reference at the same Q16.16 values,
@@ -512,13 +512,13 @@ static void check_prepare_powers(void)
                     int64_t v = ((int64_t)1 << j) + d;
                     int32_t code = v > INT32_MAX ? INT32_MAX : (int32_t)v;
                     int32_t e = which ? others[io] : code, k = which ? code : others[io], c;
-                    fresnel_q15_ior m;
+                    fresnel_ior_prep_q15 m;
                     char what[48];
-                    double ed = (e < FRESNEL_Q16_ETA_MIN ? FRESNEL_Q16_ETA_MIN : e) / 65536.0, kd = k / 65536.0;
+                    double ed = (e < FRESNEL_ETA_MIN_Q16 ? FRESNEL_ETA_MIN_Q16 : e) / 65536.0, kd = k / 65536.0;
                     if (ed > 32767.0 || kd > 32767.0)
                         continue;
                     snprintf(what, sizeof what, "eta code %ld kappa code %ld", (long)e, (long)k);
-                    fresnel_q15_ior_prepare(e, k, &m);
+                    fresnel_ior_prepare_q15(e, k, &m);
                     layout_bad += !ior_layout_ok(&m);
                     for (c = 0; c <= ONE; c += (c < 1 || c >= ONE - 16) ? 1 : 97) {
                         int32_t got = fresnel_conductor_q15(&m, c);
@@ -527,8 +527,8 @@ static void check_prepare_powers(void)
                                    c / 32768.0);
                     }
                 }
-    check_bound("conductor, Q16.16 prepare at powers of two of eta, kappa", &w, FRESNEL_Q15_BOUND_CONDUCTOR, bad);
-    CHECK("fresnel_q15_ior_prepare keeps the layout at powers of two", layout_bad == 0, "%ld break it", layout_bad);
+    check_bound("conductor, Q16.16 prepare at powers of two of eta, kappa", &w, FRESNEL_BOUND_CONDUCTOR_Q15, bad);
+    CHECK("fresnel_ior_prepare_q15 keeps the layout at powers of two", layout_bad == 0, "%ld break it", layout_bad);
 }
 
 /* eta -> 0 near normal incidence, where eta^2 at the prepared scale is a

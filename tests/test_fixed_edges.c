@@ -70,29 +70,29 @@ static void check_lut_n(void)
         for (ic = 0; ic < NCS; ic++) {
             int32_t c = cs[ic], f0 = 1311;
             int32_t r[13], want[13];
-            fresnel_q15_rgb f03, rgb[10];
+            fresnel_rgb_q15 f03, rgb[10];
             int j;
             f03.r = f03.g = f03.b = (fresnel_q15)f0;
-            r[0] = fresnel_lut_q15_u16(u16, n, c);
-            r[1] = fresnel_lut_linear_q15_u16(u16, n, c);
-            r[2] = fresnel_lut_q15_u8(u8, n, c);
-            r[3] = fresnel_lut_linear_q15_u8(u8, n, c);
-            r[4] = fresnel_lut_residual_q15_s16(f0, s16, n, 20, c);
-            r[5] = fresnel_lut_linear_residual_q15_s16(f0, s16, n, 20, c);
-            r[6] = fresnel_lut_residual_q15_s8(f0, s8, n, 12, c);
-            r[7] = fresnel_lut_linear_residual_q15_s8(f0, s8, n, 12, c);
-            r[8] = fresnel_lut_cubic_q15_u16(u16, n, c);
-            r[9] = fresnel_lut_q15_u16_fast(u16, n, c);
-            r[10] = fresnel_lut_q15_u16_pl_fast(u16, n, c);
-            rgb[0] = fresnel_lut_q15_u16_rgb(u16, n, c);
-            rgb[1] = fresnel_lut_linear_q15_u16_rgb(u16, n, c);
-            rgb[2] = fresnel_lut_q15_u8_rgb(u8, n, c);
-            rgb[3] = fresnel_lut_linear_q15_u8_rgb(u8, n, c);
-            rgb[4] = fresnel_lut_residual_q15_s16_rgb(f03, s16, n, 20, c);
-            rgb[5] = fresnel_lut_linear_residual_q15_s16_rgb(f03, s16, n, 20, c);
-            rgb[6] = fresnel_lut_residual_q15_s8_rgb(f03, s8, n, 12, c);
-            rgb[7] = fresnel_lut_linear_residual_q15_s8_rgb(f03, s8, n, 12, c);
-            rgb[8] = fresnel_lut_cubic_q15_u16_rgb(u16, n, c);
+            r[0] = fresnel_lut_u16_q15(u16, n, c);
+            r[1] = fresnel_lut_linear_u16_q15(u16, n, c);
+            r[2] = fresnel_lut_u8_q15(u8, n, c);
+            r[3] = fresnel_lut_linear_u8_q15(u8, n, c);
+            r[4] = fresnel_lut_residual_s16_q15(f0, s16, n, 20, c);
+            r[5] = fresnel_lut_linear_residual_s16_q15(f0, s16, n, 20, c);
+            r[6] = fresnel_lut_residual_s8_q15(f0, s8, n, 12, c);
+            r[7] = fresnel_lut_linear_residual_s8_q15(f0, s8, n, 12, c);
+            r[8] = fresnel_lut_cubic_u16_q15(u16, n, c);
+            r[9] = fresnel_lut_u16_q15_fast(u16, n, c);
+            r[10] = fresnel_lut_pl_u16_q15_fast(u16, n, c);
+            rgb[0] = fresnel_lut_u16_q15_rgb(u16, n, c);
+            rgb[1] = fresnel_lut_linear_u16_q15_rgb(u16, n, c);
+            rgb[2] = fresnel_lut_u8_q15_rgb(u8, n, c);
+            rgb[3] = fresnel_lut_linear_u8_q15_rgb(u8, n, c);
+            rgb[4] = fresnel_lut_residual_s16_q15_rgb(f03, s16, n, 20, c);
+            rgb[5] = fresnel_lut_linear_residual_s16_q15_rgb(f03, s16, n, 20, c);
+            rgb[6] = fresnel_lut_residual_s8_q15_rgb(f03, s8, n, 12, c);
+            rgb[7] = fresnel_lut_linear_residual_s8_q15_rgb(f03, s8, n, 12, c);
+            rgb[8] = fresnel_lut_cubic_u16_q15_rgb(u16, n, c);
             for (j = 0; j < 11; j++)
                 bad_range += !in_range(r[j]);
             for (j = 0; j < 9; j++)
@@ -114,29 +114,29 @@ static void check_lut_n(void)
                 want[0] = want[1] = want[8] = want[9] = want[10] = v16;
                 want[2] = want[3] = v8;
                 /* a one-node residual is the two-node table of that value */
-                want[4] = fresnel_lut_residual_q15_s16(f0, t16, 2, 20, c);
-                want[5] = fresnel_lut_linear_residual_q15_s16(f0, t16, 2, 20, c);
-                want[6] = fresnel_lut_residual_q15_s8(f0, t8, 2, 12, c);
-                want[7] = fresnel_lut_linear_residual_q15_s8(f0, t8, 2, 12, c);
+                want[4] = fresnel_lut_residual_s16_q15(f0, t16, 2, 20, c);
+                want[5] = fresnel_lut_linear_residual_s16_q15(f0, t16, 2, 20, c);
+                want[6] = fresnel_lut_residual_s8_q15(f0, t8, 2, 12, c);
+                want[7] = fresnel_lut_linear_residual_s8_q15(f0, t8, 2, 12, c);
             } else {
                 int nf = n > 1024 ? 1024 : n;
-                want[0] = fresnel_lut_q15_u16(u16, nref, c);
-                want[1] = fresnel_lut_linear_q15_u16(u16, nref, c);
-                want[2] = fresnel_lut_q15_u8(u8, nref, c);
-                want[3] = fresnel_lut_linear_q15_u8(u8, nref, c);
-                want[4] = fresnel_lut_residual_q15_s16(f0, s16, nref, 20, c);
-                want[5] = fresnel_lut_linear_residual_q15_s16(f0, s16, nref, 20, c);
-                want[6] = fresnel_lut_residual_q15_s8(f0, s8, nref, 12, c);
-                want[7] = fresnel_lut_linear_residual_q15_s8(f0, s8, nref, 12, c);
-                want[8] = fresnel_lut_cubic_q15_u16(u16, nref, c);
-                want[9] = fresnel_lut_q15_u16_fast(u16, nf, c);
-                want[10] = fresnel_lut_q15_u16_pl_fast(u16, nref, c);
+                want[0] = fresnel_lut_u16_q15(u16, nref, c);
+                want[1] = fresnel_lut_linear_u16_q15(u16, nref, c);
+                want[2] = fresnel_lut_u8_q15(u8, nref, c);
+                want[3] = fresnel_lut_linear_u8_q15(u8, nref, c);
+                want[4] = fresnel_lut_residual_s16_q15(f0, s16, nref, 20, c);
+                want[5] = fresnel_lut_linear_residual_s16_q15(f0, s16, nref, 20, c);
+                want[6] = fresnel_lut_residual_s8_q15(f0, s8, nref, 12, c);
+                want[7] = fresnel_lut_linear_residual_s8_q15(f0, s8, nref, 12, c);
+                want[8] = fresnel_lut_cubic_u16_q15(u16, nref, c);
+                want[9] = fresnel_lut_u16_q15_fast(u16, nf, c);
+                want[10] = fresnel_lut_pl_u16_q15_fast(u16, nref, c);
                 /* c past [0, one] is c clamped */
                 if (c < 0 || c > ONE) {
                     int32_t cc = c < 0 ? 0 : ONE;
-                    want[0] = fresnel_lut_q15_u16(u16, nref, cc);
-                    want[9] = fresnel_lut_q15_u16_fast(u16, nf, cc);
-                    want[10] = fresnel_lut_q15_u16_pl_fast(u16, nref, cc);
+                    want[0] = fresnel_lut_u16_q15(u16, nref, cc);
+                    want[9] = fresnel_lut_u16_q15_fast(u16, nf, cc);
+                    want[10] = fresnel_lut_pl_u16_q15_fast(u16, nref, cc);
                 }
             }
             for (j = 0; j < 11; j++)
@@ -159,7 +159,7 @@ static void check_lut_n(void)
           bad_rgb);
 }
 
-/* Schlick and F82 fast: every c from -64 through FRESNEL_Q15_FAST_C_MAX
+/* Schlick and F82 fast: every c from -64 through FRESNEL_C_MAX_Q15_FAST
  * and every 7th F0 code. c < 0 gives the value at 0, c in (one, C_MAX] the
  * value at one; C_MAX + 1 is where x^4 stops being 0 (its square is 2436^2
  * mod 2^32, 182 after the shift). */
@@ -171,7 +171,7 @@ static void check_fast_c(void)
         int32_t at0 = fresnel_schlick_q15_fast(f0, 0), at1 = fresnel_schlick_q15_fast(f0, ONE);
         int32_t a = (int32_t)((ONE - f0) * 2);
         int32_t g0 = fresnel_f82_q15_fast(f0, a, 0), g1 = fresnel_f82_q15_fast(f0, a, ONE);
-        for (c = -64; c <= FRESNEL_Q15_FAST_C_MAX; c++) {
+        for (c = -64; c <= FRESNEL_C_MAX_Q15_FAST; c++) {
             int32_t want = c <= 0 ? at0 : at1, s;
             if (c > 0 && c < ONE)
                 continue;
@@ -182,7 +182,7 @@ static void check_fast_c(void)
         for (c = INT32_MIN; c < 0; c /= 2)
             bad += fresnel_schlick_q15_fast(f0, c) != at0 || fresnel_f82_q15_fast(f0, a, c) != g0;
         {
-            fresnel_q15_rgb x3, rgb;
+            fresnel_rgb_q15 x3, rgb;
             x3.r = x3.g = x3.b = (fresnel_q15)f0;
             rgb = fresnel_schlick_q15_rgb_fast(x3, -1);
             bad_rgb += rgb.r != at0;
@@ -190,14 +190,14 @@ static void check_fast_c(void)
             bad_rgb += rgb.g != at1;
         }
     }
-    CHECK("fixed fast schlick, f82: c < 0 is c = 0, c in (one, FRESNEL_Q15_FAST_C_MAX] is c = one", bad == 0,
+    CHECK("fixed fast schlick, f82: c < 0 is c = 0, c in (one, FRESNEL_C_MAX_Q15_FAST] is c = one", bad == 0,
           "%ld differ", bad);
     CHECK("fixed fast schlick_rgb: the same at c = -1 and one + 1", bad_rgb == 0, "%ld differ", bad_rgb);
     {
         /* the exact edge: 1 - c = 2^32 - 2436 has x^4 = 1 */
         uint32_t x = 0u - 2436u, x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15;
         uint32_t y = 0u - 2435u, y2 = (y * y + 32767u) >> 15, y4 = (y2 * y2) >> 15;
-        CHECK("FRESNEL_Q15_FAST_C_MAX is the last c with (1 - c)^4 = 0", y4 == 0 && x4 != 0, "x4 %u at C_MAX, %u past",
+        CHECK("FRESNEL_C_MAX_Q15_FAST is the last c with (1 - c)^4 = 0", y4 == 0 && x4 != 0, "x4 %u at C_MAX, %u past",
               (unsigned)y4, (unsigned)x4);
     }
 }
@@ -211,7 +211,7 @@ static void check_f82_a(void)
     long long mx = 0, lo, hi;
     int32_t c, f0;
     long bad = 0;
-    for (c = 0; c <= FRESNEL_Q15_FAST_C_MAX; c++) {
+    for (c = 0; c <= FRESNEL_C_MAX_Q15_FAST; c++) {
         uint32_t x = 32768u - (uint32_t)c, x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15;
         long long cx6 = (long long)(((uint32_t)c * ((x2 * x4) >> 12)) >> 15);
         if (cx6 > mx)
@@ -220,17 +220,17 @@ static void check_f82_a(void)
     lo = -((2147483647LL - (1LL << 30)) / mx);
     hi = 2147483647LL / mx;
     NOTE("fixed fast f82: max c x^6 %lld (Q18); a_q12 in [%lld, %lld]", mx, lo, hi);
-    CHECK("FRESNEL_Q15_F82_FAST_A_MIN/MAX are the exact ends of the int32-safe a_q12",
-          lo == FRESNEL_Q15_F82_FAST_A_MIN && hi == FRESNEL_Q15_F82_FAST_A_MAX &&
+    CHECK("FRESNEL_F82_A_MIN_Q15_FAST/MAX are the exact ends of the int32-safe a_q12",
+          lo == FRESNEL_F82_A_MIN_Q15_FAST && hi == FRESNEL_F82_A_MAX_Q15_FAST &&
               (1LL << 30) - (lo - 1) * mx > 2147483647LL && (hi + 1) * mx > 2147483647LL,
           "computed [%lld, %lld]", lo, hi);
     CHECK("the physical a of any F0, F82 in [0, 1] (a_q12 -38849 .. 72300) is inside",
-          FRESNEL_Q15_F82_FAST_A_MIN <= -38849 && FRESNEL_Q15_F82_FAST_A_MAX >= 72300, "[%d, %d]",
-          FRESNEL_Q15_F82_FAST_A_MIN, FRESNEL_Q15_F82_FAST_A_MAX);
+          FRESNEL_F82_A_MIN_Q15_FAST <= -38849 && FRESNEL_F82_A_MAX_Q15_FAST >= 72300, "[%d, %d]",
+          FRESNEL_F82_A_MIN_Q15_FAST, FRESNEL_F82_A_MAX_Q15_FAST);
     for (f0 = 0; f0 <= ONE; f0 += ONE)
-        for (c = -2; c <= FRESNEL_Q15_FAST_C_MAX; c++) {
-            bad += !in_range(fresnel_f82_q15_fast(f0, FRESNEL_Q15_F82_FAST_A_MIN, c));
-            bad += !in_range(fresnel_f82_q15_fast(f0, FRESNEL_Q15_F82_FAST_A_MAX, c));
+        for (c = -2; c <= FRESNEL_C_MAX_Q15_FAST; c++) {
+            bad += !in_range(fresnel_f82_q15_fast(f0, FRESNEL_F82_A_MIN_Q15_FAST, c));
+            bad += !in_range(fresnel_f82_q15_fast(f0, FRESNEL_F82_A_MAX_Q15_FAST, c));
         }
     CHECK("fixed fast f82 in [0, one] at both a_q12 ends, every c", bad == 0, "%ld out of range", bad);
 }
@@ -238,21 +238,21 @@ static void check_f82_a(void)
 /* Every other public function at the c and parameter edges: in [0, one]. */
 static void check_others(void)
 {
-    static const int32_t q16s[] = {INT32_MIN, -1, 0, 1, 63, FRESNEL_Q16_ETA_MIN, 65, 65535, 65536, 65537,
+    static const int32_t q16s[] = {INT32_MIN, -1, 0, 1, 63, FRESNEL_ETA_MIN_Q16, 65, 65535, 65536, 65537,
                                    (int32_t)32767 * 65536, INT32_MAX};
     long bad = 0;
     size_t ie, ik;
     int ic, j;
     for (ie = 0; ie < sizeof q16s / sizeof q16s[0]; ie++)
         for (ik = 0; ik < sizeof q16s / sizeof q16s[0]; ik++) {
-            fresnel_q15_ior ior;
-            fresnel_q15_nk nk;
-            fresnel_q15_lsk lsk;
+            fresnel_ior_prep_q15 ior;
+            fresnel_nk_prep_q15 nk;
+            fresnel_lsk_prep_q15 lsk;
             fresnel_q15 gr, gg;
             fresnel_q16 e = q16s[ie], k = q16s[ik];
-            fresnel_q15_ior_prepare(e, k, &ior);
-            fresnel_q15_nk_prepare(e, k, &nk);
-            fresnel_q15_lsk_prepare(e, k, q16s[(ie + ik) % 12], q16s[(ie * 5 + ik) % 12], &lsk);
+            fresnel_ior_prepare_q15(e, k, &ior);
+            fresnel_nk_prepare_q15(e, k, &nk);
+            fresnel_lsk_prepare_q15(e, k, q16s[(ie + ik) % 12], q16s[(ie * 5 + ik) % 12], &lsk);
             fresnel_gulbrandsen_rg_q15(e, k, &gr, &gg);
             bad += !in_range(gr) + !in_range(gg);
             bad += !in_range(fresnel_f0_from_ior_q15(e, k));

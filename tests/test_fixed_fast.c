@@ -1,6 +1,6 @@
 /* The fast paths of fresnel_fixed.h (its "fast paths" section) against the
  * double reference, on every cos code 0..32768: results in [0, one] and
- * within the FRESNEL_Q15_BOUND_*_FAST each documents. Parameter sets:
+ * within the FRESNEL_BOUND_*_Q15_FAST each documents. Parameter sets:
  * Schlick, every 16th F0 code (every F0 code with FRESNEL_TEST_EXHAUSTIVE=1);
  * F82, F0 and F82 on a 1/32 grid and the (F0, F82) of every test material;
  * the LUT, the tables of test_fixed_bounds.c (exact conductor curves of
@@ -47,7 +47,7 @@ static void check_schlick(void)
         }
         ends += fresnel_schlick_q15_fast(f0, 0) != ONE || fresnel_schlick_q15_fast(f0, ONE) != f0;
     }
-    check_bound(step == 1 ? "schlick, every F0" : "schlick, every 16th F0", &w, FRESNEL_Q15_BOUND_SCHLICK_FAST,
+    check_bound(step == 1 ? "schlick, every F0" : "schlick, every 16th F0", &w, FRESNEL_BOUND_SCHLICK_Q15_FAST,
                 bad);
     CHECK("fixed fast schlick: c = 0 gives one, c = one gives F0", ends == 0, "%ld F0 codes differ", ends);
 }
@@ -71,7 +71,7 @@ static void check_f82(const test_material *mat, int nmat)
                            what, c);
             }
         }
-    check_bound("f82, F0/F82 on a 1/32 grid", &w, FRESNEL_Q15_BOUND_F82_FAST, bad);
+    check_bound("f82, F0/F82 on a 1/32 grid", &w, FRESNEL_BOUND_F82_Q15_FAST, bad);
     memset(&w, 0, sizeof w);
     bad = 0;
     for (k = 0; k < nmat; k++) {
@@ -87,7 +87,7 @@ static void check_f82(const test_material *mat, int nmat)
                        mat[k].name, c);
         }
     }
-    check_bound("f82, test materials", &w, FRESNEL_Q15_BOUND_F82_FAST, bad);
+    check_bound("f82, test materials", &w, FRESNEL_BOUND_F82_Q15_FAST, bad);
 }
 
 /* The position's root on every code: |S 2^-22 - sqrt(c 2^-15)|. */
@@ -135,10 +135,10 @@ static void check_lut(const test_material *mat, int nmat)
             conductor_table(&mat[k], n, u16, dv);
             snprintf(what, sizeof what, "%.31s n %d", mat[k].name, n);
             for (c = 0; c <= ONE; c++) {
-                int32_t got = fresnel_lut_q15_u16_fast(u16, n, c);
+                int32_t got = fresnel_lut_u16_q15_fast(u16, n, c);
                 double err = fabs(got / 32768.0 - ref_lut(dv, n, 0, sqrt(c / 32768.0))) * 32768.0;
                 bad += got < 0 || got > ONE;
-                differ += got != fresnel_lut_q15_u16(u16, n, c);
+                differ += got != fresnel_lut_u16_q15(u16, n, c);
                 evals++;
                 note_worst(&w, err, what, c);
                 if (n <= 64)
@@ -149,19 +149,19 @@ static void check_lut(const test_material *mat, int nmat)
         static const uint16_t ramp[2] = {0, ONE};
         int32_t c;
         for (c = 0; c <= ONE; c++) {
-            int32_t got = fresnel_lut_q15_u16_fast(ramp, 2, c);
+            int32_t got = fresnel_lut_u16_q15_fast(ramp, 2, c);
             bad += got < 0 || got > ONE;
             double err = fabs(got / 32768.0 - sqrt(c / 32768.0)) * 32768.0;
             note_worst(&w, err, "ramp {0, one}", c);
             note_worst(&w64, err, "ramp {0, one}", c);
         }
     }
-    printf("NOTE fast LUT differs from fresnel_lut_q15_u16 in %ld of %ld results\n", differ, evals);
-    check_bound("LUT u16, sqrt(c) nodes, n <= 64", &w64, FRESNEL_Q15_BOUND_LUT_FAST, bad);
-    check_bound("LUT u16, sqrt(c) nodes, n <= 1024", &w, FRESNEL_Q15_BOUND_LUT_FAST_1024, bad);
+    printf("NOTE fast LUT differs from fresnel_lut_u16_q15 in %ld of %ld results\n", differ, evals);
+    check_bound("LUT u16, sqrt(c) nodes, n <= 64", &w64, FRESNEL_BOUND_LUT_Q15_FAST, bad);
+    check_bound("LUT u16, sqrt(c) nodes, n <= 1024", &w, FRESNEL_BOUND_LUT_Q15_FAST_1024, bad);
 }
 
-/* P(c) of fresnel_lut_q15_u16_pl_fast in double: the same knots and clamp,
+/* P(c) of fresnel_lut_pl_u16_q15_fast in double: the same knots and clamp,
  * no truncation. */
 static double pl_position(int32_t c)
 {
@@ -191,7 +191,7 @@ static void check_lut_pl(const test_material *mat, int nmat)
             conductor_table(&mat[k], n, u16, dv); /* any table will do for the P position */
             snprintf(what, sizeof what, "%.31s n %d", mat[k].name, n);
             for (c = 0; c <= ONE; c++) {
-                int32_t got = fresnel_lut_q15_u16_pl_fast(u16, n, c);
+                int32_t got = fresnel_lut_pl_u16_q15_fast(u16, n, c);
                 double err = fabs(got / 32768.0 - ref_lut(dv, n, 0, pl_position(c))) * 32768.0;
                 bad += got < 0 || got > ONE;
                 /* a total-reflection edge: a step of up to one between two nodes */
@@ -205,15 +205,15 @@ static void check_lut_pl(const test_material *mat, int nmat)
         for (k = 0; k < 32; k++)
             ramp[k] = (uint16_t)(k * 1024);
         for (k = 0; k < 32; k++) {
-            double at = fresnel_lut_q15_u16_pl_fast(ramp, 32, fixed_q15(lut_node_cos(LUT_GRAZING_PL, k, 32))) / 1024.0;
+            double at = fresnel_lut_pl_u16_q15_fast(ramp, 32, fixed_q15(lut_node_cos(LUT_GRAZING_PL, k, 32))) / 1024.0;
             if (fabs(at - k) > far)
                 far = fabs(at - k);
         }
         CHECK("fixed fast LUT pl: generator node cosines land on the runtime's nodes (within 0.02 node)", far <= 0.02,
               "%.4f node", far);
     }
-    check_bound("LUT u16, grazing-pl nodes, n <= 64", &w, FRESNEL_Q15_BOUND_LUT_PL_FAST, bad);
-    check_bound("LUT u16, grazing-pl nodes, n <= 64, a total-reflection edge", &tir, FRESNEL_Q15_BOUND_LUT_PL_FAST_TIR,
+    check_bound("LUT u16, grazing-pl nodes, n <= 64", &w, FRESNEL_BOUND_LUT_PL_Q15_FAST, bad);
+    check_bound("LUT u16, grazing-pl nodes, n <= 64, a total-reflection edge", &tir, FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR,
                 bad);
 }
 
@@ -221,8 +221,8 @@ static void check_schlick_rgb(void)
 {
     int32_t c, ok = 1;
     for (c = 0; c <= 32768; c++) {
-        fresnel_q15_rgb f0 = {(fresnel_q15)(c % 32769), (fresnel_q15)(32768 - c), (fresnel_q15)((c * 7) % 32769)};
-        fresnel_q15_rgb r = fresnel_schlick_q15_rgb_fast(f0, c);
+        fresnel_rgb_q15 f0 = {(fresnel_q15)(c % 32769), (fresnel_q15)(32768 - c), (fresnel_q15)((c * 7) % 32769)};
+        fresnel_rgb_q15 r = fresnel_schlick_q15_rgb_fast(f0, c);
         ok &= r.r == fresnel_schlick_q15_fast(f0.r, c) && r.g == fresnel_schlick_q15_fast(f0.g, c) &&
               r.b == fresnel_schlick_q15_fast(f0.b, c);
     }

@@ -80,7 +80,7 @@ static void check_f0_helpers(void)
         NOTE("gulbrandsen for r in [0.99, 0.9999], every g: max|err| %.3g", w_g);
         CHECK("gulbrandsen bound near r = 1", w_g <= FRESNEL_BOUND_GULBRANDSEN, "max %.3g", w_g);
     }
-    CHECK("f0_from_ior bound", w_ior <= FRESNEL_BOUND_F0, "max %.3g", w_ior);
+    CHECK("f0_from_ior bound", w_ior <= FRESNEL_BOUND_F0_FROM_IOR, "max %.3g", w_ior);
     CHECK("f0_in_medium bound", w_med <= FRESNEL_BOUND_F0_IN_MEDIUM, "max %.3g", w_med);
 }
 

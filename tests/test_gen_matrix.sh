@@ -71,8 +71,8 @@ done
 # (no C++17), a Q15 code above one.
 printf '/* x */\nenum { fresnel_b_w_lut8_residual_frac = 15 };\nstatic const int16_t fresnel_b_w_lut8_residual_q15[3] FRESNEL_GEN_UNUSED = {\n    -385, 34867, 304\n};\n' >"$t/bad1.h"
 printf '/* x */\nstatic const float fresnel_b_w_ct_eta FRESNEL_GEN_UNUSED = inf.0f;\n' >"$t/bad2.h"
-printf '/* x */\nstatic const fresnel_q15_nk fresnel_b_w_nk_q15[1] FRESNEL_GEN_UNUSED = {\n    {.n = {1073741824, -30}, .nk2 = {1073741824, -29}}\n};\n' >"$t/bad3.h"
-printf '/* x */\nstatic const fresnel_q15_rgb fresnel_b_w_f0_q15 FRESNEL_GEN_UNUSED = {32769, 0, 0};\n' >"$t/bad4.h"
+printf '/* x */\nstatic const fresnel_nk_prep_q15 fresnel_b_w_nk_q15[1] FRESNEL_GEN_UNUSED = {\n    {.n = {1073741824, -30}, .nk2 = {1073741824, -29}}\n};\n' >"$t/bad3.h"
+printf '/* x */\nstatic const fresnel_rgb_q15 fresnel_b_w_f0_q15 FRESNEL_GEN_UNUSED = {32769, 0, 0};\n' >"$t/bad4.h"
 for b in 1 2 3 4; do
     if "$t/check" "$t/bad$b.h" grazing "bad$b" | grep -q '^FAIL gen matrix bad'"$b"': header values'; then
         echo "PASS gen matrix: the checker rejects wrong header $b ($(head -3 "$t/bad$b.h" | tail -1 | cut -c1-50))"

@@ -73,7 +73,7 @@ int main(void)
             for (i = 0; i < n; i++)
                 t[i] = tf[i]; /* the reference reads the float table */
             for (code = 0; code <= 32768; code++) {
-                fresnel_q15 r = fresnel_lut_cubic_q15_u16(q, n, code);
+                fresnel_q15 r = fresnel_lut_cubic_u16_q15(q, n, code);
                 double e = fabs(r - 32768.0 * cubic_ref(tq, n, code / 32768.0));
                 in_range &= r <= 32768;
                 if (e > worst_q15)
@@ -106,10 +106,10 @@ int main(void)
          worst_f32, worst_f16, any_f32, any_f16, worst_q15);
     CHECK("lut cubic binary32 within 5e-7 of double on reflectance curves (fresnel.h)", worst_f32 <= 5e-7, "%.3g",
           worst_f32);
-    CHECK("lut cubic Q1.15 within FRESNEL_Q15_BOUND_LUT_CUBIC LSB", worst_q15 <= FRESNEL_Q15_BOUND_LUT_CUBIC, "%.4f",
+    CHECK("lut cubic Q1.15 within FRESNEL_BOUND_LUT_CUBIC_Q15 LSB", worst_q15 <= FRESNEL_BOUND_LUT_CUBIC_Q15, "%.4f",
           worst_q15);
 #if FRESNEL_HAS_F16
-    CHECK("lut cubic binary16 within FRESNEL_F16_BOUND_LUT_CUBIC on reflectance curves", worst_f16 <= FRESNEL_F16_BOUND_LUT_CUBIC, "%.3g",
+    CHECK("lut cubic binary16 within FRESNEL_BOUND_LUT_CUBIC_F16 on reflectance curves", worst_f16 <= FRESNEL_BOUND_LUT_CUBIC_F16, "%.3g",
           worst_f16);
 #endif
     CHECK("lut cubic results in [0, 1] in every type", in_range, "out of range");
@@ -125,10 +125,10 @@ int main(void)
             q[k] = (uint16_t)lround(tf[k] * 32768.0);
         }
         for (code = 0; code <= 32768; code += 7) {
-            fresnel_q15_rgb r = fresnel_lut_cubic_q15_u16_rgb(q, 16, code);
+            fresnel_rgb_q15 r = fresnel_lut_cubic_u16_q15_rgb(q, 16, code);
             fresnel_rgb f = fresnel_lut_cubic_rgb(tf, 16, code / 32768.0f);
-            ok &= r.r == fresnel_lut_cubic_q15_u16(q, 16, code) && r.g == fresnel_lut_cubic_q15_u16(q + 16, 16, code) &&
-                  r.b == fresnel_lut_cubic_q15_u16(q + 32, 16, code);
+            ok &= r.r == fresnel_lut_cubic_u16_q15(q, 16, code) && r.g == fresnel_lut_cubic_u16_q15(q + 16, 16, code) &&
+                  r.b == fresnel_lut_cubic_u16_q15(q + 32, 16, code);
             ok &= f.r == fresnel_lut_cubic(tf, 16, code / 32768.0f) &&
                   f.g == fresnel_lut_cubic(tf + 16, 16, code / 32768.0f) &&
                   f.b == fresnel_lut_cubic(tf + 32, 16, code / 32768.0f);

@@ -156,13 +156,13 @@ static fresnel_f16 res_lut(fresnel_f16 f0, const fresnel_f16 *t, int n, fresnel_
 static void check_f16(void)
 {
     static const float cs[] = {-1.0f, 0.0f, 0.5f, 1.0f, 1.0f + 1.0f / 1024.0f, 65504.0f, INFINITY, -INFINITY, NAN};
-    static const int hn[] = {INT_MIN, -1, 0, 1, 2, 3, 4, 255, FRESNEL_F16_LUT_N_MAX - 1, FRESNEL_F16_LUT_N_MAX,
-                             FRESNEL_F16_LUT_N_MAX + 1, 65521, 1 << 24, INT_MAX};
+    static const int hn[] = {INT_MIN, -1, 0, 1, 2, 3, 4, 255, FRESNEL_LUT_N_MAX_F16 - 1, FRESNEL_LUT_N_MAX_F16,
+                             FRESNEL_LUT_N_MAX_F16 + 1, 65521, 1 << 24, INT_MAX};
     static const plain_h plain[] = {fresnel_lut_f16, fresnel_lut_linear_f16, fresnel_lut_cubic_f16};
     static const char *plain_name[] = {"fresnel_lut_f16", "fresnel_lut_linear_f16", "fresnel_lut_cubic_f16"};
     static const resid_h resid[] = {res_lut, fresnel_lut_linear_residual_f16};
     static const char *resid_name[] = {"fresnel_lut_residual_f16", "fresnel_lut_linear_residual_f16"};
-    int nmax = FRESNEL_F16_LUT_N_MAX, len = nmax, i, k, f, ic;
+    int nmax = FRESNEL_LUT_N_MAX_F16, len = nmax, i, k, f, ic;
     fresnel_f16 *tab = malloc((size_t)len * sizeof *tab);
     char name[160];
     if (!tab) {

@@ -3,7 +3,7 @@
  * total-reflection edge) and int8_t nodes with frac 6, every node pair from
  * the types' extremes (-2 .. 2), against the same interpolation in double
  * plus Schlick, clamped, with F0 from zero to one. The bound is
- * FRESNEL_Q15_BOUND_LUT's parts for a step of s between the two nodes: 0.5
+ * FRESNEL_BOUND_LUT_Q15's parts for a step of s between the two nodes: 0.5
  * for the rounding plus the position's half step (2^-16 of a segment) times
  * s 2^15, 0.5 s LSB; the documented 1.01 is that for s <= 1. In range:
  * Schlick 1 plus a residual of 1 must give one (the sum reaches 2^31). */
@@ -42,8 +42,8 @@ int main(void)
                     t[0] = (int16_t)s16v[a], t[1] = (int16_t)s16v[b];
                     v[0] = ldexp(t[0], -14), v[1] = ldexp(t[1], -14);
                     for (c = 0; c <= 32768; c += 7) {
-                        int32_t got = lin ? fresnel_lut_linear_residual_q15_s16(f0s[fi], t, 2, 14, c)
-                                          : fresnel_lut_residual_q15_s16(f0s[fi], t, 2, 14, c);
+                        int32_t got = lin ? fresnel_lut_linear_residual_s16_q15(f0s[fi], t, 2, 14, c)
+                                          : fresnel_lut_residual_s16_q15(f0s[fi], t, 2, 14, c);
                         double e = fabs(got - 32768.0 * ref(f0s[fi] / 32768.0, v, 2, lin, c / 32768.0)) -
                                    0.5 * fabs(v[1] - v[0]);
                         out += got < 0 || got > 32768;
@@ -58,8 +58,8 @@ int main(void)
                     t[0] = (int8_t)s8v[a], t[1] = (int8_t)s8v[b];
                     v[0] = ldexp(t[0], -6), v[1] = ldexp(t[1], -6);
                     for (c = 0; c <= 32768; c += 7) {
-                        int32_t got = lin ? fresnel_lut_linear_residual_q15_s8(f0s[fi], t, 2, 6, c)
-                                          : fresnel_lut_residual_q15_s8(f0s[fi], t, 2, 6, c);
+                        int32_t got = lin ? fresnel_lut_linear_residual_s8_q15(f0s[fi], t, 2, 6, c)
+                                          : fresnel_lut_residual_s8_q15(f0s[fi], t, 2, 6, c);
                         double e = fabs(got - 32768.0 * ref(f0s[fi] / 32768.0, v, 2, lin, c / 32768.0)) -
                                    0.5 * fabs(v[1] - v[0]);
                         out += got < 0 || got > 32768;

@@ -25,7 +25,7 @@ static const struct {
 } targets[] = {{"lut16-cubic", 16, 1, LUT_GRAZING, 0.01, 0.05},
                {"lut32", 32, 0, LUT_GRAZING, 0.005, 0.03},
                {"lut32-cubic", 32, 1, LUT_GRAZING, 0.005, 0.03},
-               {"lut32", 32, 0, LUT_GRAZING_PL, 0.005, 0.03}}; /* through fresnel_lut_q15_u16_pl_fast */
+               {"lut32", 32, 0, LUT_GRAZING_PL, 0.005, 0.03}}; /* through fresnel_lut_pl_u16_q15_fast */
 
 int main(void)
 {
@@ -57,14 +57,14 @@ int main(void)
             scene_model_free(&m);
             for (a = 0; a < REPORT_ANGLES; a++) {
                 int32_t c = fixed_q15(report_cos(a));
-                fresnel_q15_rgb r;
+                fresnel_rgb_q15 r;
                 if (targets[t].spacing == LUT_GRAZING_PL) {
-                    r.r = fresnel_lut_q15_u16_pl_fast(q, targets[t].n, c);
-                    r.g = fresnel_lut_q15_u16_pl_fast(q + targets[t].n, targets[t].n, c);
-                    r.b = fresnel_lut_q15_u16_pl_fast(q + 2 * targets[t].n, targets[t].n, c);
+                    r.r = fresnel_lut_pl_u16_q15_fast(q, targets[t].n, c);
+                    r.g = fresnel_lut_pl_u16_q15_fast(q + targets[t].n, targets[t].n, c);
+                    r.b = fresnel_lut_pl_u16_q15_fast(q + 2 * targets[t].n, targets[t].n, c);
                 } else
-                    r = targets[t].cubic ? fresnel_lut_cubic_q15_u16_rgb(q, targets[t].n, c)
-                                         : fresnel_lut_q15_u16_rgb(q, targets[t].n, c);
+                    r = targets[t].cubic ? fresnel_lut_cubic_u16_q15_rgb(q, targets[t].n, c)
+                                         : fresnel_lut_u16_q15_rgb(q, targets[t].n, c);
                 ground_truth_clamped(s, g, 1.0, report_cos(a), gt[a]);
                 v[a][0] = r.r / 32768.0;
                 v[a][1] = r.g / 32768.0;

@@ -230,11 +230,11 @@ static void fixed_cases(void)
             wr = er > wr ? er : wr;
         }
     printf("NOTE %-44s textbook %9.3f LSB (c code %d)  runtime %.3f LSB  bound %.3f LSB\n",
-           "Q15 Schlick, (1-c)^5 by truncating shifts", wt, wc, wr, FRESNEL_Q15_BOUND_SCHLICK);
-    CHECK("precision: Q15 Schlick: runtime within FRESNEL_Q15_BOUND_SCHLICK", wr <= FRESNEL_Q15_BOUND_SCHLICK,
+           "Q15 Schlick, (1-c)^5 by truncating shifts", wt, wc, wr, FRESNEL_BOUND_SCHLICK_Q15);
+    CHECK("precision: Q15 Schlick: runtime within FRESNEL_BOUND_SCHLICK_Q15", wr <= FRESNEL_BOUND_SCHLICK_Q15,
           "%.3f LSB", wr);
     CHECK("precision: Q15 Schlick: truncating (1-c)^5 is outside it (each shift drops up to 1 LSB)",
-          wt > FRESNEL_Q15_BOUND_SCHLICK, "%.3f LSB", wt);
+          wt > FRESNEL_BOUND_SCHLICK_Q15, "%.3f LSB", wt);
 }
 
 #if FRESNEL_HAS_F16
@@ -307,14 +307,14 @@ static void f16_cases(void)
                  ref_schlick((double)f0, (double)c), (float)c);
         }
     printf("NOTE %-44s textbook %9.2e          runtime %9.2e  bound %.1e\n", "f16 Schlick, (1-c)^5 by GPU pow", m.textbook,
-           m.runtime, FRESNEL_F16_BOUND_SCHLICK);
-    CHECK("precision: f16 Schlick: runtime within FRESNEL_F16_BOUND_SCHLICK", m.runtime <= FRESNEL_F16_BOUND_SCHLICK,
+           m.runtime, FRESNEL_BOUND_SCHLICK_F16);
+    CHECK("precision: f16 Schlick: runtime within FRESNEL_BOUND_SCHLICK_F16", m.runtime <= FRESNEL_BOUND_SCHLICK_F16,
           "%.3g", m.runtime);
     /* Measured, not a loss: near c = 1, (1-c)^5 underflows binary16 in both
      * forms, harmlessly in absolute terms, and mid-range the pow's rounded
      * product costs no more than the multiplications' roundings. */
     CHECK("precision: f16 Schlick: the GPU pow form is within the bound too (no loss to show in fp16)",
-          m.textbook <= FRESNEL_F16_BOUND_SCHLICK, "%.3g", m.textbook);
+          m.textbook <= FRESNEL_BOUND_SCHLICK_F16, "%.3g", m.textbook);
     for (i = 0; i < 2; i++) {
         const float eta = i ? 0.05f : 0.17f, kappa = i ? 16.0f : 3.5f;
         char where[96];
@@ -326,7 +326,7 @@ static void f16_cases(void)
         }
         /* A conductor has no critical angle: the binary16 bound away from one applies. */
         snprintf(where, sizeof where, "f16 conductor %g+%gi, every half c", (double)eta, (double)kappa);
-        report(where, &m, FRESNEL_F16_BOUND_NONCRITICAL, "FRESNEL_F16_BOUND_NONCRITICAL");
+        report(where, &m, FRESNEL_BOUND_NONCRITICAL_F16, "FRESNEL_BOUND_NONCRITICAL_F16");
     }
     for (i = 0; i < 3; i++) {
         const float eta = i == 0 ? 0.2f : i == 1 ? 0.05f : 0.01f, kappa = 16.0f;
@@ -341,13 +341,13 @@ static void f16_cases(void)
             }
         snprintf(where, sizeof where, "f16 Cook-Torrance 1 - F'(1) -> 0: %g+%gi", (double)eta, (double)kappa);
         if (i == 0) {
-            report(where, &m, FRESNEL_F16_BOUND_NONCRITICAL, "FRESNEL_F16_BOUND_NONCRITICAL");
+            report(where, &m, FRESNEL_BOUND_NONCRITICAL_F16, "FRESNEL_BOUND_NONCRITICAL_F16");
             continue;
         }
         /* Known finding F17 (reported): the runtime itself exceeds the
          * non-critical bound for eta <= 0.05 at kappa 16; measured here. */
         printf("NOTE %-44s textbook %9.2e  runtime %9.2e  (KNOWN FINDING F17: runtime above %.2g)\n", where,
-               m.textbook, m.runtime, FRESNEL_F16_BOUND_NONCRITICAL);
+               m.textbook, m.runtime, FRESNEL_BOUND_NONCRITICAL_F16);
         CHECK("precision: f16 Cook-Torrance, eta <= 0.05: the textbook form fails outright (error ~1)",
               m.textbook > 0.5, "%.3g", m.textbook);
     }

@@ -44,7 +44,7 @@ static double kappa_dom(double x)
     return x >= FRESNEL_KAPPA_TINY ? (x < FRESNEL_KAPPA_MAX ? x : FRESNEL_KAPPA_MAX) : 0.0;
 }
 
-void fixed_ior(double eta, double kappa, fresnel_q15_ior *out)
+void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out)
 {
     double eh, el, d, x, hi;
     int s;
@@ -76,7 +76,7 @@ void fixed_ior(double eta, double kappa, fresnel_q15_ior *out)
     out->inv_eta2 = fixed_qf(1.0 / (eta * eta));
 }
 
-void fixed_nk(double n, double k, fresnel_q15_nk *out)
+void fixed_nk(double n, double k, fresnel_nk_prep_q15 *out)
 {
     n = eta_dom(n);
     k = kappa_dom(k);
@@ -84,7 +84,7 @@ void fixed_nk(double n, double k, fresnel_q15_nk *out)
     out->nk2 = fixed_qf(n * n + k * k);
 }
 
-void fixed_lsk(double n, double k, double a, double alpha, fresnel_q15_lsk *out)
+void fixed_lsk(double n, double k, double a, double alpha, fresnel_lsk_prep_q15 *out)
 {
     out->f0 = (uint32_t)floor(ref_f0_from_ior(n, k) * 1073741824.0 + 0.5);
     out->a = fixed_qf(ref_clamp(a, 0.0, FRESNEL_A_MAX));

@@ -11,9 +11,9 @@ fresnel_qf fixed_qf(double x);          /* x >= 0; 0 for x <= 0 or NaN */
 int32_t fixed_q15(double x);            /* round(x 32768), x clamped to [0, 1] */
 fresnel_q16 fixed_q16(double x);        /* round(x 65536), clamped to int32 */
 /* eta, kappa relative to the incident medium, clamped like fresnel.h. */
-void fixed_ior(double eta, double kappa, fresnel_q15_ior *out);
-void fixed_nk(double n, double k, fresnel_q15_nk *out);
-void fixed_lsk(double n, double k, double a, double alpha, fresnel_q15_lsk *out);
+void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out);
+void fixed_nk(double n, double k, fresnel_nk_prep_q15 *out);
+void fixed_lsk(double n, double k, double a, double alpha, fresnel_lsk_prep_q15 *out);
 double fixed_qf_value(fresnel_qf x);    /* m 2^e */
 /* fresnel_f82_q15_fast's a_q12 for the Q15 codes f0, f82 (clamped to [0, one]):
  * round(4096 ((7^7/6^6)(F0 - F82) + (49/6)(1 - F0))). */

@@ -75,7 +75,7 @@ static void emit_q15_rgb(fx_out *o, const char *prefix, const char *name, const 
     snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
     for (ch = 0; ch < 3; ch++)
         q[ch] = q15_code(o, v[ch], hi, why, id);
-    fprintf(o->f, "/* %s, Q1.15 (r, g, b) */\nstatic const fresnel_q15_rgb %s FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
+    fprintf(o->f, "/* %s, Q1.15 (r, g, b) */\nstatic const fresnel_rgb_q15 %s FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
             why, id, q[0], q[1], q[2]);
 }
 
@@ -83,7 +83,7 @@ static void emit_q15_rgb(fx_out *o, const char *prefix, const char *name, const 
  * runtime clamps them. */
 static void put_ior(fx_out *o, double eta, double kappa, const char *id)
 {
-    fresnel_q15_ior q;
+    fresnel_ior_prep_q15 q;
     fx_finite(o, eta, "eta", id);
     fx_finite(o, kappa, "kappa", id);
     fixed_ior(eta, kappa, &q);
@@ -111,7 +111,7 @@ static void emit_ior3(fx_out *o, const char *prefix, const char *name, const dou
     int ch;
     snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
     fprintf(o->f, "/* %s: prepared complex index per channel (fresnel_conductor_q15_rgb);\n * " IOR_FIELDS " */\n"
-                  "static const fresnel_q15_ior %s[3] FRESNEL_GEN_UNUSED = {\n",
+                  "static const fresnel_ior_prep_q15 %s[3] FRESNEL_GEN_UNUSED = {\n",
             why, id);
     for (ch = 0; ch < 3; ch++) {
         fputs("    ", o->f);
@@ -127,10 +127,10 @@ static void emit_nk3(fx_out *o, const char *prefix, const material_params *p)
     snprintf(id, sizeof id, "%s_nk_q15", prefix);
     fprintf(o->f, "/* approximate conductor on the fitted eta, kappa (fresnel_approx_conductor_q15_rgb);\n"
                   " * fields n, nk2 */\n"
-                  "static const fresnel_q15_nk %s[3] FRESNEL_GEN_UNUSED = {\n",
+                  "static const fresnel_nk_prep_q15 %s[3] FRESNEL_GEN_UNUSED = {\n",
             id);
     for (ch = 0; ch < 3; ch++) {
-        fresnel_q15_nk q;
+        fresnel_nk_prep_q15 q;
         fx_finite(o, p->eta_fit[ch], "eta", id);
         fx_finite(o, p->kappa_fit[ch], "kappa", id);
         fixed_nk(p->eta_fit[ch], p->kappa_fit[ch], &q);
@@ -148,10 +148,10 @@ static void emit_lsk3(fx_out *o, const char *prefix, const char *name, const mat
     int ch;
     snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
     fprintf(o->f, "/* LSK%s on the fitted eta, kappa (fresnel_lsk%s_q15_rgb); fields f0, a, alpha */\n"
-                  "static const fresnel_q15_lsk %s[3] FRESNEL_GEN_UNUSED = {\n",
+                  "static const fresnel_lsk_prep_q15 %s[3] FRESNEL_GEN_UNUSED = {\n",
             comp ? " with compensation" : " rescaled", comp ? "_comp" : "", id);
     for (ch = 0; ch < 3; ch++) {
-        fresnel_q15_lsk q;
+        fresnel_lsk_prep_q15 q;
         double f0;
         fx_finite(o, p->eta_fit[ch], "eta", id);
         fx_finite(o, p->kappa_fit[ch], "kappa", id);
@@ -162,7 +162,7 @@ static void emit_lsk3(fx_out *o, const char *prefix, const char *name, const mat
         fixed_lsk(p->eta_fit[ch], p->kappa_fit[ch], comp ? p->lsk_a[ch] : 0.0, comp ? p->lsk_alpha[ch] : 0.0, &q);
         f0 = floor(ref_f0_from_ior(p->eta_fit[ch], p->kappa_fit[ch]) * 1073741824.0 + 0.5);
         fx_check(o, f0 == f0 ? f0 : -1.0, 0.0, 1073741824.0, "Q30 F0 [0, 2^30]", "LSK f0", id);
-        fx_check(o, q.alpha, 0.0, FRESNEL_Q16_ALPHA_MAX, "Q16.16 alpha [0, 1000]", "LSK alpha", id);
+        fx_check(o, q.alpha, 0.0, FRESNEL_ALPHA_MAX_Q16, "Q16.16 alpha [0, 1000]", "LSK alpha", id);
         fprintf(o->f, "    {%lu, ", (unsigned long)q.f0);
         put_qf(o, q.a, "LSK a", id);
         fprintf(o->f, ", %ld%s", (long)q.alpha, ch < 2 ? "},\n" : "}\n};\n");
@@ -203,7 +203,7 @@ static int emit_lut_q15(fx_out *o, const char *prefix, const char *model, const 
         if (spacing == LUT_GRAZING_PL)
             fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_fixed.h's\n"
                        " * piecewise-linear sqrt(c). Evaluate per channel with\n"
-                       " * fresnel_lut_q15_u16_pl_fast(table + ch * %d, %d, c). */\n"
+                       " * fresnel_lut_pl_u16_q15_fast(table + ch * %d, %d, c). */\n"
                        "static const uint16_t %s[%d] FRESNEL_GEN_UNUSED = {",
                     model, n, n, id, 3 * n);
         else
@@ -282,7 +282,7 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
         char id[160];
         snprintf(id, sizeof id, "%s_ct_ior_q15", prefix);
         fprintf(f, "/* Cook-Torrance's representative IOR (fresnel_cook_torrance_q15_rgb);\n * " IOR_FIELDS " */\n"
-                   "static const fresnel_q15_ior %s FRESNEL_GEN_UNUSED = ",
+                   "static const fresnel_ior_prep_q15 %s FRESNEL_GEN_UNUSED = ",
                 id);
         put_ior(&o, p->ct_eta, p->ct_kappa, id);
         fputs(";\n", f);

@@ -63,7 +63,7 @@ int emit_glsl_check(const scene *sc, const char *manifest, const char *name)
         snprintf(where, sizeof where, "%s:%d", manifest, sc->lut_spacing_line ? sc->lut_spacing_line : 1);
         return cli_error(where,
                          "expected lut_spacing grazing or uniform with --glsl: grazing-pl tables are read by "
-                         "fresnel_lut_q15_u16_pl_fast, which ports/glsl/fresnel.glsl does not have");
+                         "fresnel_lut_pl_u16_q15_fast, which ports/glsl/fresnel.glsl does not have");
     }
     if (!glsl_part_ok(name))
         return cli_error(manifest,

@@ -83,12 +83,12 @@ SCALAR_BATCH(batch_lut16_linear, fresnel_lut_linear(t->lin16, 16, c[i]))
             sum += call;                                                                           \
         return sum;                                                                                \
     }
-Q15_BATCH(batch_lut16_q15, fresnel_lut_q15_u16(t->q16, 16, cq[i]))
-Q15_BATCH(batch_lut32_q15, fresnel_lut_q15_u16(t->q32, 32, cq[i]))
-Q15_BATCH(batch_lut16_linear_q15, fresnel_lut_linear_q15_u16(t->qlin16, 16, cq[i]))
+Q15_BATCH(batch_lut16_q15, fresnel_lut_u16_q15(t->q16, 16, cq[i]))
+Q15_BATCH(batch_lut32_q15, fresnel_lut_u16_q15(t->q32, 32, cq[i]))
+Q15_BATCH(batch_lut16_linear_q15, fresnel_lut_linear_u16_q15(t->qlin16, 16, cq[i]))
 SCALAR_BATCH(batch_lut16_cubic, fresnel_lut_cubic(t->lut16, 16, c[i]))
-Q15_BATCH(batch_lut16_cubic_q15, fresnel_lut_cubic_q15_u16(t->q16, 16, cq[i]))
-Q15_BATCH(batch_lut32_q15_fast, fresnel_lut_q15_u16_fast(t->q32, 32, cq[i]))
+Q15_BATCH(batch_lut16_cubic_q15, fresnel_lut_cubic_u16_q15(t->q16, 16, cq[i]))
+Q15_BATCH(batch_lut32_q15_fast, fresnel_lut_u16_q15_fast(t->q32, 32, cq[i]))
 
 /* The batch API in chunks, each chunk's results summed: per cosine this
  * charges the batch one store and one load more than the scalar rows. */
@@ -250,12 +250,12 @@ static void measure_errors(double *err)
                 worse(&err[R_LUT16], fresnel_lut(t.lut16, 16, c[i]), ref[i]);
                 worse(&err[R_LUT32], fresnel_lut(t.lut32, 32, c[i]), ref[i]);
                 worse(&err[R_LUT16_LIN], fresnel_lut_linear(t.lin16, 16, c[i]), ref[i]);
-                worse(&err[R_LUT16_Q15], fresnel_lut_q15_u16(t.q16, 16, cq) / 32768.0, ref_q);
-                worse(&err[R_LUT32_Q15], fresnel_lut_q15_u16(t.q32, 32, cq) / 32768.0, ref_q);
-                worse(&err[R_LUT16_LIN_Q15], fresnel_lut_linear_q15_u16(t.qlin16, 16, cq) / 32768.0, ref_q);
+                worse(&err[R_LUT16_Q15], fresnel_lut_u16_q15(t.q16, 16, cq) / 32768.0, ref_q);
+                worse(&err[R_LUT32_Q15], fresnel_lut_u16_q15(t.q32, 32, cq) / 32768.0, ref_q);
+                worse(&err[R_LUT16_LIN_Q15], fresnel_lut_linear_u16_q15(t.qlin16, 16, cq) / 32768.0, ref_q);
                 worse(&err[R_LUT16_CUBIC], fresnel_lut_cubic(t.lut16, 16, c[i]), ref[i]);
-                worse(&err[R_LUT16_CUBIC_Q15], fresnel_lut_cubic_q15_u16(t.q16, 16, cq) / 32768.0, ref_q);
-                worse(&err[R_LUT32_Q15_FAST], fresnel_lut_q15_u16_fast(t.q32, 32, cq) / 32768.0, ref_q);
+                worse(&err[R_LUT16_CUBIC_Q15], fresnel_lut_cubic_u16_q15(t.q16, 16, cq) / 32768.0, ref_q);
+                worse(&err[R_LUT32_Q15_FAST], fresnel_lut_u16_q15_fast(t.q32, 32, cq) / 32768.0, ref_q);
             }
         }
 }

@@ -110,7 +110,7 @@ int cmd_bench(int argc, char **argv)
         return status;
     if (scene_lut_spacing(&sc) == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `fresnel bench --targets` and "
-                                     "`make cross-count` time fresnel_lut_q15_u16_pl_fast");
+                                     "`make cross-count` time fresnel_lut_pl_u16_q15_fast");
     if (only_model && !scene_has_model(&sc, only_model)) {
         const char *names[SCENE_MAX_MODELS + 1];
         for (m = 0; m < sc.model_count; m++)

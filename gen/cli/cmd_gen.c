@@ -41,7 +41,7 @@ static void gen_usage(FILE *out)
             SCENE_LUT_MIN, SCENE_LUT_MAX);
     for (i = 0; scene_type_names[i]; i++)
         fprintf(out, " %s", scene_type_names[i]);
-    fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_q15_u16_pl_fast)\n");
+    fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_pl_u16_q15_fast)\n");
 }
 
 int cmd_gen(int argc, char **argv)

@@ -166,31 +166,31 @@ static double h_internal(const model_params *m, double c)
 
 const model model_table[] = {
     {"schlick", "F0", d_schlick, s_schlick, FRESNEL_BOUND_SCHLICK,
-     q_schlick, FRESNEL_Q15_BOUND_SCHLICK, F16(h_schlick), FRESNEL_F16_BOUND_SCHLICK},
+     q_schlick, FRESNEL_BOUND_SCHLICK_Q15, F16(h_schlick), FRESNEL_BOUND_SCHLICK_F16},
     {"schlick-gen", "F0, --f90, --p", d_schlick_gen, s_schlick_gen, FRESNEL_BOUND_SCHLICK_GEN,
-     q_schlick_gen, FRESNEL_Q15_BOUND_SCHLICK_GEN, F16(h_schlick_gen), FRESNEL_F16_BOUND_SCHLICK_GEN},
+     q_schlick_gen, FRESNEL_BOUND_SCHLICK_GEN_Q15, F16(h_schlick_gen), FRESNEL_BOUND_SCHLICK_GEN_F16},
     {"lsk", "eta, kappa", d_lsk, s_lsk, FRESNEL_BOUND_LSK,
-     q_lsk, FRESNEL_Q15_BOUND_LSK, F16(h_lsk), FRESNEL_F16_BOUND_LSK},
+     q_lsk, FRESNEL_BOUND_LSK_Q15, F16(h_lsk), FRESNEL_BOUND_LSK_F16},
     {"lsk-comp", "eta, kappa, LSK a and alpha", d_lsk_comp, s_lsk_comp, FRESNEL_BOUND_LSK_COMP,
-     q_lsk_comp, FRESNEL_Q15_BOUND_LSK_COMP, F16(h_lsk_comp), FRESNEL_F16_BOUND_LSK_COMP},
+     q_lsk_comp, FRESNEL_BOUND_LSK_COMP_Q15, F16(h_lsk_comp), FRESNEL_BOUND_LSK_COMP_F16},
     {"f82", "F0, F82", d_f82, s_f82, FRESNEL_BOUND_F82,
-     q_f82, FRESNEL_Q15_BOUND_F82, F16(h_f82), FRESNEL_F16_BOUND_F82},
+     q_f82, FRESNEL_BOUND_F82_Q15, F16(h_f82), FRESNEL_BOUND_F82_F16},
     {"gulbrandsen", "r = F0, edge tint g", d_gulbrandsen, s_gulbrandsen, FRESNEL_BOUND_GULBRANDSEN,
-     q_gulbrandsen, FRESNEL_Q15_BOUND_GULBRANDSEN, F16(h_gulbrandsen), FRESNEL_F16_BOUND_GULBRANDSEN},
+     q_gulbrandsen, FRESNEL_BOUND_GULBRANDSEN_Q15, F16(h_gulbrandsen), FRESNEL_BOUND_GULBRANDSEN_F16},
     {"cook-torrance", "F0 and the same eta, kappa as representative IOR", d_cook_torrance,
      s_cook_torrance, FRESNEL_BOUND_COOK_TORRANCE,
-     q_cook_torrance, FRESNEL_Q15_BOUND_COOK_TORRANCE, F16(h_cook_torrance), FRESNEL_F16_BOUND_COOK_TORRANCE},
+     q_cook_torrance, FRESNEL_BOUND_COOK_TORRANCE_Q15, F16(h_cook_torrance), FRESNEL_BOUND_COOK_TORRANCE_F16},
     {"exact", "eta, kappa (dielectric form when kappa = 0)", d_exact, s_exact, FRESNEL_BOUND_CONDUCTOR,
-     q_exact, FRESNEL_Q15_BOUND_CONDUCTOR, F16(h_exact), FRESNEL_F16_BOUND_CONDUCTOR},
+     q_exact, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_exact), FRESNEL_BOUND_CONDUCTOR_F16},
     {"exact-conductor", "eta, kappa (conductor form always)", d_conductor, s_conductor, FRESNEL_BOUND_CONDUCTOR,
-     q_conductor, FRESNEL_Q15_BOUND_CONDUCTOR, F16(h_conductor), FRESNEL_F16_BOUND_CONDUCTOR},
+     q_conductor, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_conductor), FRESNEL_BOUND_CONDUCTOR_F16},
     {"exact-dielectric", "eta (kappa ignored)", d_dielectric, s_dielectric, FRESNEL_BOUND_DIELECTRIC,
-     q_dielectric, FRESNEL_Q15_BOUND_DIELECTRIC, F16(h_dielectric), FRESNEL_F16_BOUND_DIELECTRIC},
+     q_dielectric, FRESNEL_BOUND_DIELECTRIC_Q15, F16(h_dielectric), FRESNEL_BOUND_DIELECTRIC_F16},
     {"approx-conductor", "eta, kappa", d_approx, s_approx, FRESNEL_BOUND_APPROX_CONDUCTOR,
-     q_approx, FRESNEL_Q15_BOUND_APPROX_CONDUCTOR, F16(h_approx), FRESNEL_F16_BOUND_APPROX_CONDUCTOR},
+     q_approx, FRESNEL_BOUND_APPROX_CONDUCTOR_Q15, F16(h_approx), FRESNEL_BOUND_APPROX_CONDUCTOR_F16},
     {"schlick-internal", "F0, eta (eta < 1: from inside the denser medium)", d_internal,
      s_internal, FRESNEL_BOUND_SCHLICK_INTERNAL,
-     q_internal, FRESNEL_Q15_BOUND_SCHLICK_INTERNAL, F16(h_internal), FRESNEL_F16_BOUND_SCHLICK_INTERNAL},
+     q_internal, FRESNEL_BOUND_SCHLICK_INTERNAL_Q15, F16(h_internal), FRESNEL_BOUND_SCHLICK_INTERNAL_F16},
 };
 const int model_count = (int)(sizeof model_table / sizeof model_table[0]);
 
@@ -233,7 +233,7 @@ void model_params_round_fixed(model_params *m)
     m->f90 = fixed_q15(m->f90) / 32768.0;
     /* r at its code, and at the fixed-point clamp (32764, the largest code
      * below fresnel.h's 0.9999) where the code is above it */
-    m->r = (fixed_q15(m->r) < FRESNEL_Q15_GULBRANDSEN_R_MAX ? fixed_q15(m->r) : FRESNEL_Q15_GULBRANDSEN_R_MAX) / 32768.0;
+    m->r = (fixed_q15(m->r) < FRESNEL_GULBRANDSEN_R_MAX_Q15 ? fixed_q15(m->r) : FRESNEL_GULBRANDSEN_R_MAX_Q15) / 32768.0;
     m->g = fixed_q15(m->g) / 32768.0;
     m->p = fixed_q16(m->p) / 65536.0;
     m->alpha = fixed_q16(ref_clamp(m->alpha, 0.0, FRESNEL_ALPHA_MAX)) / 65536.0;

@@ -21,11 +21,11 @@ typedef struct model_params {
 typedef struct model_fixed {
     int32_t f0, f82, f90, r, g; /* Q15 codes */
     fresnel_q16 p;
-    fresnel_q15_ior ior; /* eta, kappa for the exact models and Cook-Torrance */
-    fresnel_q15_ior dior; /* eta, kappa 0 for exact-dielectric */
-    fresnel_q15_nk nk;   /* eta, kappa for the approximate conductor */
-    fresnel_q15_nk gnk;  /* Gulbrandsen's n, k from r, g (fresnel_gulbrandsen_nk_q15) */
-    fresnel_q15_lsk lsk;
+    fresnel_ior_prep_q15 ior; /* eta, kappa for the exact models and Cook-Torrance */
+    fresnel_ior_prep_q15 dior; /* eta, kappa 0 for exact-dielectric */
+    fresnel_nk_prep_q15 nk;   /* eta, kappa for the approximate conductor */
+    fresnel_nk_prep_q15 gnk;  /* Gulbrandsen's n, k from r, g (fresnel_gulbrandsen_nk_q15) */
+    fresnel_lsk_prep_q15 lsk;
 } model_fixed;
 
 typedef struct model {
@@ -35,11 +35,11 @@ typedef struct model {
     float (*f32)(const model_params *m, float c);
     float bound; /* documented binary32 error bound, FRESNEL_BOUND_* */
     /* Q15 runtime: the result code at cos code c (0..32768), and its
-     * documented bound in LSB, FRESNEL_Q15_BOUND_* */
+     * documented bound in LSB, FRESNEL_BOUND_*_Q15 */
     int32_t (*q15)(const model_fixed *m, int32_t c);
     double q15_bound;
     /* binary16 runtime with every parameter and c rounded to binary16 (NULL
-     * where the compiler has no _Float16), and FRESNEL_F16_BOUND_* */
+     * where the compiler has no _Float16), and FRESNEL_BOUND_*_F16 */
     double (*f16)(const model_params *m, double c);
     double f16_bound;
 } model;
@@ -58,7 +58,7 @@ void model_derive(double eta, double kappa, double n1, double f90, double p, mod
 void model_params_round_f32(model_params *m);
 
 /* The same for the fixed-point runtime: F0, F82, F90, r, g to Q15 codes (r
- * at most FRESNEL_Q15_GULBRANDSEN_R_MAX, the runtime's clamp), p and alpha to
+ * at most FRESNEL_GULBRANDSEN_R_MAX_Q15, the runtime's clamp), p and alpha to
  * Q16.16, a to its 31-bit mantissa. eta and kappa are kept: the prepared
  * constants carry 31-bit mantissas, and eta^2 - kappa^2 - 1 two words, so
  * their rounding is part of the error the tests measure. */

@@ -140,7 +140,7 @@ static void q15_prepare(const extreme_case *e, extreme_typed *t)
     t->in_domain = extreme_in_measured_domain(&t->p);
     /* Gulbrandsen's r is clamped to the largest code below 0.9999, not to
      * 0.9999 itself: the reference gets the same r. */
-    t->p.r = ref_clamp(t->p.r, 0.0, FRESNEL_Q15_GULBRANDSEN_R_MAX / 32768.0);
+    t->p.r = ref_clamp(t->p.r, 0.0, FRESNEL_GULBRANDSEN_R_MAX_Q15 / 32768.0);
 }
 int32_t extreme_q15_code(double x)
 {
@@ -173,16 +173,16 @@ static void f16_prepare(const extreme_case *e, extreme_typed *t)
     memset(t, 0, sizeof *t);
     model_derive(e->eta, e->kappa, e->n1, 1.0, 5.0, &t->p);
     model_params_round_f16(&t->p);
-    eta = ref_clamp(t->p.eta, FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX);
-    kappa = ref_clamp(t->p.kappa, 0.0, FRESNEL_F16_KAPPA_MAX);
+    eta = ref_clamp(t->p.eta, FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16);
+    kappa = ref_clamp(t->p.kappa, 0.0, FRESNEL_KAPPA_MAX_F16);
     t->in_domain = eta == t->p.eta && kappa == t->p.kappa && extreme_in_measured_domain(&t->p);
     t->p.eta = eta;
     t->p.kappa = kappa;
     /* as fresnel_gulbrandsen_f16 and fresnel_f16.h's domains of p, alpha, a */
     t->p.r = ref_clamp(t->p.r, 0.0, F16_GULBRANDSEN_R_MAX);
-    t->p.p = ref_clamp(t->p.p, FRESNEL_F16_P_MIN, FRESNEL_F16_P_MAX);
+    t->p.p = ref_clamp(t->p.p, FRESNEL_P_MIN_F16, FRESNEL_P_MAX_F16);
     t->p.a = ref_clamp(t->p.a, 0.0, 64.0);
-    t->p.alpha = ref_clamp(t->p.alpha, 0.0, FRESNEL_F16_P_MAX);
+    t->p.alpha = ref_clamp(t->p.alpha, 0.0, FRESNEL_P_MAX_F16);
 }
 static int f16_eval(const model *m, const extreme_typed *t, double x, double *got, double *ref_c)
 {
@@ -296,7 +296,7 @@ static void table_cases(void)
            "also inside the binary16 domain eta <= %g, kappa <= %g). \xe2\x80\xa0: outside that range,\n"
            "not asserted (f16: compared at the clamped eta, kappa the runtime evaluates).\n\n"
            "| case | eta | kappa | n1 | type |",
-           n, (double)FRESNEL_F16_ETA_MAX, (double)FRESNEL_F16_KAPPA_MAX);
+           n, (double)FRESNEL_ETA_MAX_F16, (double)FRESNEL_KAPPA_MAX_F16);
     for (mi = 0; mi < model_count; mi++)
         printf(" %s |", model_table[mi].name);
     printf("\n|---|---:|---:|---:|---|");
@@ -388,7 +388,7 @@ static void direct_inputs(int kind, int ti, float *a, float *b, float *c)
     const char *name = extreme_types[ti].name;
     if (!strcmp(name, "q15")) {
         /* Gulbrandsen (kind 1): r clamped as the Q15 runtime clamps it. */
-        *a = (float)(ref_clamp(extreme_q15_code(*a), 0.0, kind ? FRESNEL_Q15_GULBRANDSEN_R_MAX : 32768.0) / 32768.0);
+        *a = (float)(ref_clamp(extreme_q15_code(*a), 0.0, kind ? FRESNEL_GULBRANDSEN_R_MAX_Q15 : 32768.0) / 32768.0);
         *b = (float)(ref_clamp(extreme_q15_code(*b), 0.0, 32768.0) / 32768.0);
         *c = (float)(extreme_q15_code(*c) / 32768.0);
     }
@@ -422,8 +422,8 @@ double extreme_direct_max_err(int kind, int ti, float a0, float b0, int *bad, in
             /* fresnel_gulbrandsen_f16 clamps n and k to the binary16 domain. */
             double n, kk;
             ref_gulbrandsen_nk(a, b, &n, &kk);
-            ref = ref_approx_conductor(ref_clamp(n, FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX),
-                                       ref_clamp(kk, 0.0, FRESNEL_F16_KAPPA_MAX), c);
+            ref = ref_approx_conductor(ref_clamp(n, FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16),
+                                       ref_clamp(kk, 0.0, FRESNEL_KAPPA_MAX_F16), c);
         }
         err = fabs(got - ref);
         *bad |= !(got >= 0.0 && got <= 1.0);
@@ -510,7 +510,7 @@ static void table_gulbrandsen(void)
            "results are f32; the errors are\n"
            "max |result - reference| over 4097 cosines in each type.\n\n"
            "| r, g | n | k | c = 0 | c = 0.5 | c = 0.9 | c = 1 |",
-           (double)FRESNEL_GULBRANDSEN_R_MAX, FRESNEL_Q15_GULBRANDSEN_R_MAX);
+           (double)FRESNEL_GULBRANDSEN_R_MAX, FRESNEL_GULBRANDSEN_R_MAX_Q15);
     for (ti = 0; ti < extreme_type_count; ti++)
         printf(" err %s |", extreme_types[ti].name);
     printf("\n|---|---:|---:|---:|---:|---:|---:|");

@@ -80,15 +80,15 @@ static int lut_metal(report_run *r, const report_material *rm, const lut_variant
         q[i] = (uint16_t)fixed_q15(table[i]);
     for (a = 0; a < REPORT_ANGLES; a++) {
         int32_t c = fixed_q15(report_cos(a));
-        fresnel_q15_rgb o;
+        fresnel_rgb_q15 o;
         if (v->spacing == LUT_GRAZING_PL) { /* the Cortex-M0 fast path, channel by channel */
-            o.r = fresnel_lut_q15_u16_pl_fast(q, v->n, c);
-            o.g = fresnel_lut_q15_u16_pl_fast(q + v->n, v->n, c);
-            o.b = fresnel_lut_q15_u16_pl_fast(q + 2 * v->n, v->n, c);
+            o.r = fresnel_lut_pl_u16_q15_fast(q, v->n, c);
+            o.g = fresnel_lut_pl_u16_q15_fast(q + v->n, v->n, c);
+            o.b = fresnel_lut_pl_u16_q15_fast(q + 2 * v->n, v->n, c);
         } else
-            o = v->cubic ? fresnel_lut_cubic_q15_u16_rgb(q, v->n, c)
-                         : (v->spacing == LUT_UNIFORM ? fresnel_lut_linear_q15_u16_rgb(q, v->n, c)
-                                                      : fresnel_lut_q15_u16_rgb(q, v->n, c));
+            o = v->cubic ? fresnel_lut_cubic_u16_q15_rgb(q, v->n, c)
+                         : (v->spacing == LUT_UNIFORM ? fresnel_lut_linear_u16_q15_rgb(q, v->n, c)
+                                                      : fresnel_lut_u16_q15_rgb(q, v->n, c));
         rgb[a][0] = o.r / 32768.0;
         rgb[a][1] = o.g / 32768.0;
         rgb[a][2] = o.b / 32768.0;

@@ -25,10 +25,10 @@ struct report_prepared {
     float ct_eta, ct_kappa;
     const float *table;
     /* Q1.15 */
-    fresnel_q15_rgb q_f0, q_f82, q_r, q_g;
-    fresnel_q15_ior q_ior[3], q_ct;
-    fresnel_q15_nk q_nk[3];
-    fresnel_q15_lsk q_lsk[3];
+    fresnel_rgb_q15 q_f0, q_f82, q_r, q_g;
+    fresnel_ior_prep_q15 q_ior[3], q_ct;
+    fresnel_nk_prep_q15 q_nk[3];
+    fresnel_lsk_prep_q15 q_lsk[3];
     uint16_t *q_table;
     int16_t *q_res;
     int q_frac;
@@ -47,9 +47,9 @@ static fresnel_rgb rgb3(const double v[3])
     return o;
 }
 
-static fresnel_q15_rgb q15_3(const double v[3])
+static fresnel_rgb_q15 q15_3(const double v[3])
 {
-    fresnel_q15_rgb o;
+    fresnel_rgb_q15 o;
     o.r = (fresnel_q15)fixed_q15(v[0]);
     o.g = (fresnel_q15)fixed_q15(v[1]);
     o.b = (fresnel_q15)fixed_q15(v[2]);
@@ -192,9 +192,9 @@ static fresnel_rgb eval_f32_rgb(const report_prepared *q, float c)
 }
 
 /* ---- Q1.15 */
-static fresnel_q15_rgb eval_q15_rgb(const report_prepared *q, int32_t c)
+static fresnel_rgb_q15 eval_q15_rgb(const report_prepared *q, int32_t c)
 {
-    fresnel_q15_rgb o;
+    fresnel_rgb_q15 o;
     switch (q->kind) {
     case K_SCHLICK: return fresnel_schlick_q15_rgb(q->q_f0, c);
     case K_LSK:
@@ -204,11 +204,11 @@ static fresnel_q15_rgb eval_q15_rgb(const report_prepared *q, int32_t c)
     case K_CT: return fresnel_cook_torrance_q15_rgb(q->q_f0, &q->q_ct, c);
     case K_EXACT: return fresnel_conductor_q15_rgb(q->q_ior, c);
     case K_APPROX: return fresnel_approx_conductor_q15_rgb(q->q_nk, c);
-    case K_LUT: return fresnel_lut_q15_u16_rgb(q->q_table, q->n, c);
-    case K_LUT_LIN: return fresnel_lut_linear_q15_u16_rgb(q->q_table, q->n, c);
-    case K_LUT_RES: return fresnel_lut_residual_q15_s16_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
-    case K_LUT_CUBIC: return fresnel_lut_cubic_q15_u16_rgb(q->q_table, q->n, c);
-    default: return fresnel_lut_linear_residual_q15_s16_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
+    case K_LUT: return fresnel_lut_u16_q15_rgb(q->q_table, q->n, c);
+    case K_LUT_LIN: return fresnel_lut_linear_u16_q15_rgb(q->q_table, q->n, c);
+    case K_LUT_RES: return fresnel_lut_residual_s16_q15_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
+    case K_LUT_CUBIC: return fresnel_lut_cubic_u16_q15_rgb(q->q_table, q->n, c);
+    default: return fresnel_lut_linear_residual_s16_q15_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
     }
     return o;
 }
@@ -245,7 +245,7 @@ static void eval_f32(const report_prepared *q, double c, double rgb[3])
 
 static void eval_q15(const report_prepared *q, double c, double rgb[3])
 {
-    fresnel_q15_rgb v = eval_q15_rgb(q, (int32_t)lround(c * 32768.0));
+    fresnel_rgb_q15 v = eval_q15_rgb(q, (int32_t)lround(c * 32768.0));
     rgb[0] = v.r / 32768.0;
     rgb[1] = v.g / 32768.0;
     rgb[2] = v.b / 32768.0;
@@ -285,7 +285,7 @@ static void eval_f16(const report_prepared *q, double c, double rgb[3])
         (void)c;                                                                                   \
         q.kind = K;                                                                                \
         for (i = 0; i < n; i++) {                                                                  \
-            fresnel_q15_rgb v = eval_q15_rgb(&q, cq[i]);                                           \
+            fresnel_rgb_q15 v = eval_q15_rgb(&q, cq[i]);                                           \
             sum += (uint32_t)v.r + v.g + v.b;                                                      \
         }                                                                                          \
         return sum;                                                                                \

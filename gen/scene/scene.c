@@ -451,7 +451,7 @@ int scene_load(const char *path, scene *out)
         if (out->type_count != 1 || strcmp(out->types[0], "q15") != 0)
             return report(path, out->lut_spacing_line ? out->lut_spacing_line : 1,
                           "expected types = q15 with lut_spacing grazing-pl (its tables are for "
-                          "fresnel_lut_q15_u16_pl_fast only)");
+                          "fresnel_lut_pl_u16_q15_fast only)");
         for (m = 0; m < out->model_count; m++)
             if ((n = scene_model_lut_size(out->models[m], &form)) && (form != LUT_PLAIN || n > 64))
                 return report(path, out->models_line,

@@ -34,7 +34,7 @@
  *                uniform (LUT nodes uniform in cos theta), grazing (nodes
  *                uniform in sqrt(cos theta), denser towards cos theta = 0) or
  *                grazing-pl (uniform in a 64-piece linear stand-in for
- *                sqrt(cos theta), read by fresnel_lut_q15_u16_pl_fast
+ *                sqrt(cos theta), read by fresnel_lut_pl_u16_q15_fast
  *                without a square root: types = q15 only, lutN with N <= 64).
  *   name         optional; the scene's part of every C identifier in the
  *                header (fresnel_<name>_<material>_<constant>, include guard

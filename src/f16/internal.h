@@ -63,8 +63,8 @@ static inline int fresnel_i_heq(fresnel_i_h a, fresnel_i_h b)
 /* Clamp into [lo, hi]; NaN (which fails both comparisons) lands on lo. */
 static inline fresnel_i_h fresnel_i_hclamp(fresnel_i_h x, fresnel_i_h lo, fresnel_i_h hi) { return x > lo ? (x < hi ? x : hi) : lo; }
 static inline fresnel_i_h fresnel_i_hunit(fresnel_i_h x) { return fresnel_i_hclamp(x, fresnel_i_hc(0.0f), fresnel_i_hc(1.0f)); }
-static inline fresnel_i_h fresnel_i_heta(fresnel_i_h x) { return fresnel_i_hclamp(x, fresnel_i_hc(FRESNEL_F16_ETA_MIN), fresnel_i_hc(FRESNEL_F16_ETA_MAX)); }
-static inline fresnel_i_h fresnel_i_hkappa(fresnel_i_h x) { return fresnel_i_hclamp(x, fresnel_i_hc(0.0f), fresnel_i_hc(FRESNEL_F16_KAPPA_MAX)); }
+static inline fresnel_i_h fresnel_i_heta(fresnel_i_h x) { return fresnel_i_hclamp(x, fresnel_i_hc(FRESNEL_ETA_MIN_F16), fresnel_i_hc(FRESNEL_ETA_MAX_F16)); }
+static inline fresnel_i_h fresnel_i_hkappa(fresnel_i_h x) { return fresnel_i_hclamp(x, fresnel_i_hc(0.0f), fresnel_i_hc(FRESNEL_KAPPA_MAX_F16)); }
 
 static inline fresnel_i_h fresnel_i_hpow5(fresnel_i_h x)
 {

@@ -22,7 +22,7 @@ fresnel_f16 fresnel_lsk_comp_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 a, fr
     fresnel_i_h comp;
     c = fresnel_i_hunit(c);
     a = fresnel_i_hclamp(a, fresnel_i_hc(0.0f), fresnel_i_hc(64.0f));
-    alpha = fresnel_i_hclamp(alpha, fresnel_i_hc(0.0f), fresnel_i_hc(FRESNEL_F16_P_MAX));
+    alpha = fresnel_i_hclamp(alpha, fresnel_i_hc(0.0f), fresnel_i_hc(FRESNEL_P_MAX_F16));
     comp = fresnel_i_hmul(a, c);
     if (alpha > fresnel_i_hc(0.0f))
         comp = fresnel_i_hmul(comp, fresnel_i_hpow_one_minus(c, alpha));

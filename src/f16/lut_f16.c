@@ -9,11 +9,11 @@
 #if FRESNEL_HAS_F16
 
 /* The number of nodes used of an n-node table (fresnel_f16.h): none for
- * n < 1, at most FRESNEL_F16_LUT_N_MAX, so that n - 1 is an exact half, the
+ * n < 1, at most FRESNEL_LUT_N_MAX_F16, so that n - 1 is an exact half, the
  * position at most n - 1 and the index inside the table. */
 static int fresnel_i_lut_n_h(int n)
 {
-    return n < 1 ? 0 : (n < FRESNEL_F16_LUT_N_MAX ? n : FRESNEL_F16_LUT_N_MAX);
+    return n < 1 ? 0 : (n < FRESNEL_LUT_N_MAX_F16 ? n : FRESNEL_LUT_N_MAX_F16);
 }
 
 static fresnel_i_h fresnel_i_interp_h(const fresnel_i_h *table, int n, fresnel_i_h x)

@@ -19,7 +19,7 @@ fresnel_f16 fresnel_schlick_gen_f16(fresnel_f16 f0, fresnel_f16 f90, fresnel_f16
     c = fresnel_i_hunit(c);
     f0 = fresnel_i_hunit(f0);
     f90 = fresnel_i_hunit(f90);
-    p = fresnel_i_hclamp(p, fresnel_i_hc(FRESNEL_F16_P_MIN), fresnel_i_hc(FRESNEL_F16_P_MAX));
+    p = fresnel_i_hclamp(p, fresnel_i_hc(FRESNEL_P_MIN_F16), fresnel_i_hc(FRESNEL_P_MAX_F16));
     t = fresnel_i_heq(p, fresnel_i_hc(5.0f)) ? fresnel_i_hpow5(fresnel_i_hsub(fresnel_i_hc(1.0f), c)) : fresnel_i_hpow_one_minus(c, p);
     return fresnel_i_hunit(fresnel_i_hadd(f0, fresnel_i_hmul(fresnel_i_hsub(f90, f0), t)));
 }

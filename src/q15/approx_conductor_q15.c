@@ -8,7 +8,7 @@
 
 #if FRESNEL_HAS_FIXED
 
-fresnel_q15 fresnel_approx_conductor_q15(const fresnel_q15_nk *m, int32_t c_in)
+fresnel_q15 fresnel_approx_conductor_q15(const fresnel_nk_prep_q15 *m, int32_t c_in)
 {
     uint32_t c = fresnel_i_q15_arg(c_in);
     fresnel_qf one = fresnel_i_qf_one(), cq, c2q, nc2, ts, tp;
@@ -23,15 +23,15 @@ fresnel_q15 fresnel_approx_conductor_q15(const fresnel_q15_nk *m, int32_t c_in)
     return fresnel_i_q30_to_q15(FRESNEL_I_ONE_Q30 - fresnel_i_qf_to_q30_unit(fresnel_i_qf_scale(fresnel_i_qf_add(ts, tp), -1)));
 }
 
-fresnel_q15_rgb fresnel_approx_conductor_q15_rgb(const fresnel_q15_nk m[3], int32_t c)
+fresnel_rgb_q15 fresnel_approx_conductor_q15_rgb(const fresnel_nk_prep_q15 m[3], int32_t c)
 {
     FRESNEL_I_RGB_Q15(fresnel_approx_conductor_q15(&m[0], c), fresnel_approx_conductor_q15(&m[1], c),
                 fresnel_approx_conductor_q15(&m[2], c));
 }
 
-void fresnel_q15_nk_prepare(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15_nk *out)
+void fresnel_nk_prepare_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_nk_prep_q15 *out)
 {
-    fresnel_qf n = fresnel_i_qf(n_in <= FRESNEL_Q16_ETA_MIN ? (uint32_t)FRESNEL_Q16_ETA_MIN : (uint32_t)n_in, -16);
+    fresnel_qf n = fresnel_i_qf(n_in <= FRESNEL_ETA_MIN_Q16 ? (uint32_t)FRESNEL_ETA_MIN_Q16 : (uint32_t)n_in, -16);
     fresnel_qf k = fresnel_i_qf(k_in <= 0 ? 0u : (uint32_t)k_in, -16);
     out->n = n;
     out->nk2 = fresnel_i_qf_add(fresnel_i_qf_mul(n, n), fresnel_i_qf_mul(k, k));

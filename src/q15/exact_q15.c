@@ -22,7 +22,7 @@
 
 /* The prepared shift, held to the layout's [0, 30] so that a corrupt
  * constant cannot make a shift count undefined. */
-static uint32_t fresnel_i_shift(const fresnel_q15_ior *m)
+static uint32_t fresnel_i_shift(const fresnel_ior_prep_q15 *m)
 {
     FRESNEL_I_RANGE("ior shift", m->shift, 0, 30);
     return m->shift <= 0 ? 0u : (m->shift >= 30 ? 30u : (uint32_t)m->shift);
@@ -38,7 +38,7 @@ static uint32_t fresnel_i_mag(int32_t x) { return x < 0 ? 0u - (uint32_t)x : (ui
  * high word's unit (R: |a0_lo| <= 2^29, (c^2 mod 2^s) 2^(30-s) < 2^30). Both
  * sums are formed in uint32, so a constant outside the layout wraps rather
  * than overflowing a signed int. */
-fresnel_qf fresnel_i_a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative)
+fresnel_qf fresnel_i_a_qf(const fresnel_ior_prep_q15 *m, uint32_t c, int *negative)
 {
     uint32_t s = fresnel_i_shift(m), c2 = c * c; /* R: c^2 <= 2^30, exact */
     int32_t hi = (int32_t)((uint32_t)m->a0 + (c2 >> s));
@@ -58,7 +58,7 @@ fresnel_qf fresnel_i_a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative)
 }
 
 /* Ts + Tp (= 2 T) as qf, and 0 under total internal reflection (u = 0). */
-static fresnel_qf fresnel_i_two_t(const fresnel_q15_ior *m, uint32_t c)
+static fresnel_qf fresnel_i_two_t(const fresnel_ior_prep_q15 *m, uint32_t c)
 {
     int a_negative;
     fresnel_qf aq = fresnel_i_a_qf(m, c, &a_negative);
@@ -96,16 +96,16 @@ static fresnel_q15 fresnel_i_reflectance(fresnel_qf two_t)
     return fresnel_i_q30_to_q15(FRESNEL_I_ONE_Q30 - fresnel_i_qf_to_q30_unit(fresnel_i_qf_scale(two_t, -1)));
 }
 
-static int fresnel_i_matched(const fresnel_q15_ior *m) { return m->a0 == 0 && m->a0_lo == 0 && m->b.m == 0; }
+static int fresnel_i_matched(const fresnel_ior_prep_q15 *m) { return m->a0 == 0 && m->a0_lo == 0 && m->b.m == 0; }
 
-fresnel_q15 fresnel_conductor_q15(const fresnel_q15_ior *m, int32_t c)
+fresnel_q15 fresnel_conductor_q15(const fresnel_ior_prep_q15 *m, int32_t c)
 {
     if (fresnel_i_matched(m))
         return 0; /* no interface: nothing reflected at any c, as fresnel_conductor */
     return fresnel_i_reflectance(fresnel_i_two_t(m, fresnel_i_q15_arg(c)));
 }
 
-fresnel_q15_rgb fresnel_conductor_q15_rgb(const fresnel_q15_ior m[3], int32_t c)
+fresnel_rgb_q15 fresnel_conductor_q15_rgb(const fresnel_ior_prep_q15 m[3], int32_t c)
 {
     FRESNEL_I_RGB_Q15(fresnel_conductor_q15(&m[0], c), fresnel_conductor_q15(&m[1], c),
                 fresnel_conductor_q15(&m[2], c));
@@ -113,7 +113,7 @@ fresnel_q15_rgb fresnel_conductor_q15_rgb(const fresnel_q15_ior m[3], int32_t c)
 
 /* The dielectric special case (b = 0): m = A, w = u = sqrt(A), and with
  * P = eta^2 c the two transmittances reduce to 4cu/(c+u)^2 and 4Pu/(P+u)^2. */
-fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c_in)
+fresnel_q15 fresnel_dielectric_q15(const fresnel_ior_prep_q15 *m, int32_t c_in)
 {
     uint32_t c = fresnel_i_q15_arg(c_in);
     int a_negative, e2_negative;
@@ -138,7 +138,7 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_q15_ior *m, int32_t c_in)
     return fresnel_i_reflectance(fresnel_i_qf_add(ts, tp));
 }
 
-fresnel_qf fresnel_i_conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c)
+fresnel_qf fresnel_i_conductor_transmittance_q15(const fresnel_ior_prep_q15 *m, uint32_t c)
 {
     if (fresnel_i_matched(m))
         return fresnel_i_qf_one();
@@ -160,9 +160,9 @@ static void fresnel_i_mul_wide(uint32_t a, uint32_t b, uint32_t *hi, uint32_t *l
  * exactly, in two words (R: |eta - 1| < 2^31, eta + 1 < 2^32, kappa < 2^31:
  * both products < 2^63, their difference too). Then the layout's a0, a0_lo
  * and shift from V exactly, and the other constants in qf. */
-void fresnel_q15_ior_prepare(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_q15_ior *out)
+void fresnel_ior_prepare_q15(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_ior_prep_q15 *out)
 {
-    uint32_t eta = eta_in <= FRESNEL_Q16_ETA_MIN ? (uint32_t)FRESNEL_Q16_ETA_MIN : (uint32_t)eta_in;
+    uint32_t eta = eta_in <= FRESNEL_ETA_MIN_Q16 ? (uint32_t)FRESNEL_ETA_MIN_Q16 : (uint32_t)eta_in;
     uint32_t kappa = kappa_in <= 0 ? 0u : (uint32_t)kappa_in;
     uint32_t em1 = eta >= 65536u ? eta - 65536u : 65536u - eta;
     uint32_t ph, pl, kh, kl, vh, vl;

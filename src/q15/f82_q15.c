@@ -47,7 +47,7 @@ fresnel_q15 fresnel_f82_q15(int32_t f0, int32_t f82, int32_t c_in)
     return fresnel_i_f82_q15(fresnel_i_q15_arg(f0), fresnel_i_q15_arg(f82), x5, fresnel_i_f82_g_q30(x5, c));
 }
 
-fresnel_q15_rgb fresnel_f82_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f82, int32_t c_in)
+fresnel_rgb_q15 fresnel_f82_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82, int32_t c_in)
 {
     uint32_t c = fresnel_i_q15_arg(c_in), x5 = fresnel_i_pow5_q30(FRESNEL_I_ONE_Q15 - c), g = fresnel_i_f82_g_q30(x5, c);
     FRESNEL_I_RGB_Q15(fresnel_i_f82_q15(fresnel_i_q15_arg(f0.r), fresnel_i_q15_arg(f82.r), x5, g),

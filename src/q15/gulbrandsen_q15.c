@@ -17,7 +17,7 @@ static void fresnel_i_nmin_nmax(fresnel_qf sr, fresnel_qf omr, fresnel_qf opr, f
     *nmax = fresnel_i_qf_div(fresnel_i_qf_mul(ops, ops), omr);
 }
 
-void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_q15_nk *out)
+void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_nk_prep_q15 *out)
 {
     /* k^2 = g (nmax - nmin)(sqrt r (n+1) + n - 1) / (1 + sqrt r) still
      * subtracts 1 from a sum near 1 when r -> 1 and g -> 1 (silver: the
@@ -29,8 +29,8 @@ void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_q15_nk *out)
      * products and sums of positive terms. */
     uint32_t r = fresnel_i_q15_arg(r_in), g = fresnel_i_q15_arg(g_in);
     fresnel_qf s, omr, opr, nmin, nmax, gq, omg, q, k2;
-    if (r > FRESNEL_Q15_GULBRANDSEN_R_MAX)
-        r = FRESNEL_Q15_GULBRANDSEN_R_MAX;
+    if (r > FRESNEL_GULBRANDSEN_R_MAX_Q15)
+        r = FRESNEL_GULBRANDSEN_R_MAX_Q15;
     s = fresnel_i_qf_sqrt(fresnel_i_qf(r, -15));
     /* R: 1 - r >= 4 and 1 + r < 2^16 in Q15, both exact */
     omr = fresnel_i_qf(FRESNEL_I_ONE_Q15 - r, -15);
@@ -41,7 +41,7 @@ void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_q15_nk *out)
     out->n = fresnel_i_qf_add(fresnel_i_qf_mul(gq, nmin), fresnel_i_qf_mul(omg, nmax));
     /* fresnel_gulbrandsen feeds n to fresnel_approx_conductor, which clamps
      * it to fresnel.h's domain; r -> 1 with g = 1 gives n = nmin -> 0, so the
-     * same model needs the same clamp (FRESNEL_ETA_MIN = 2^-10, FRESNEL_Q16_ETA_MIN) */
+     * same model needs the same clamp (FRESNEL_ETA_MIN = 2^-10, FRESNEL_ETA_MIN_Q16) */
     if (fresnel_i_qf_cmp(out->n, fresnel_i_qf(1u << 30, -40)) < 0)
         out->n = fresnel_i_qf(1u << 30, -40);
     q = fresnel_i_qf_div(fresnel_i_qf_scale(fresnel_i_qf_mul(gq, s), 1), opr);
@@ -53,7 +53,7 @@ void fresnel_gulbrandsen_rg_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15 
 {
     /* r = F0 of n + ik; g = (nmax(r) - n) / (nmax(r) - nmin(r)) with r
      * clamped to 0.9999 first, clamped to [0, 1]. */
-    uint32_t nn = n_in <= FRESNEL_Q16_ETA_MIN ? (uint32_t)FRESNEL_Q16_ETA_MIN : (uint32_t)n_in;
+    uint32_t nn = n_in <= FRESNEL_ETA_MIN_Q16 ? (uint32_t)FRESNEL_ETA_MIN_Q16 : (uint32_t)n_in;
     uint32_t kk = k_in <= 0 ? 0u : (uint32_t)k_in;
     uint32_t em1 = nn >= 65536u ? nn - 65536u : 65536u - nn;
     fresnel_qf one = fresnel_i_qf_one(), n = fresnel_i_qf(nn, -16), k = fresnel_i_qf(kk, -16);
@@ -83,12 +83,12 @@ void fresnel_gulbrandsen_rg_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15 
 
 fresnel_q15 fresnel_gulbrandsen_q15(int32_t r, int32_t g, int32_t c)
 {
-    fresnel_q15_nk nk;
+    fresnel_nk_prep_q15 nk;
     fresnel_gulbrandsen_nk_q15(r, g, &nk);
     return fresnel_approx_conductor_q15(&nk, c);
 }
 
-fresnel_q15_rgb fresnel_gulbrandsen_q15_rgb(fresnel_q15_rgb r, fresnel_q15_rgb g, int32_t c)
+fresnel_rgb_q15 fresnel_gulbrandsen_q15_rgb(fresnel_rgb_q15 r, fresnel_rgb_q15 g, int32_t c)
 {
     FRESNEL_I_RGB_Q15(fresnel_gulbrandsen_q15(r.r, g.r, c), fresnel_gulbrandsen_q15(r.g, g.g, c),
                 fresnel_gulbrandsen_q15(r.b, g.b, c));

@@ -32,13 +32,13 @@ static inline uint32_t fresnel_i_qf_to_q30_unit(fresnel_qf a)
 }
 
 /* |eta^2 - kappa^2 - sin^2| of m at c with ~60 bits, and its sign (exact_q15.c). */
-FRESNEL_I_HIDDEN fresnel_qf fresnel_i_a_qf(const fresnel_q15_ior *m, uint32_t c, int *negative);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_a_qf(const fresnel_ior_prep_q15 *m, uint32_t c, int *negative);
 
 /* 1 - exact Fresnel of m at c (exact_q15.c), in qf: Cook-Torrance's T(c). */
-FRESNEL_I_HIDDEN fresnel_qf fresnel_i_conductor_transmittance_q15(const fresnel_q15_ior *m, uint32_t c);
+FRESNEL_I_HIDDEN fresnel_qf fresnel_i_conductor_transmittance_q15(const fresnel_ior_prep_q15 *m, uint32_t c);
 
 #define FRESNEL_I_RGB_Q15(expr_r, expr_g, expr_b) \
-    do { fresnel_q15_rgb out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
+    do { fresnel_rgb_q15 out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
 
 #endif /* FRESNEL_HAS_FIXED */
 #endif

@@ -12,7 +12,7 @@
  * a segment (0.5 LSB for a two-node table spanning [0, 1]), and for nodes
  * uniform in sqrt(c) the floor of sqrt(c) in Q30, (n-1) 2^-30 of a segment.
  *
- * The cubic: the position of fresnel_lut_q15_u16, Catmull-Rom weights in Q15
+ * The cubic: the position of fresnel_lut_u16_q15, Catmull-Rom weights in Q15
  * (shared by the three channels of the _rgb form), a 4-term sum in Q30,
  * rounded and clamped; the weights' rounding to Q15 is what its bound
  * allows for on any table. */
@@ -233,7 +233,7 @@ static fresnel_q15 fresnel_i_cubic_u16(const uint16_t *table, int n, int ch, fre
     return fresnel_i_q30s_to_q15(w.w1 * v1 + w.w2 * v2 - w.w0 * v0 - w.w3 * v3);
 }
 
-fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n_in, int32_t c)
+fresnel_q15 fresnel_lut_cubic_u16_q15(const uint16_t *table, int n_in, int32_t c)
 {
     int n = fresnel_i_lut_n(n_in);
     fresnel_i_pos p;
@@ -243,7 +243,7 @@ fresnel_q15 fresnel_lut_cubic_q15_u16(const uint16_t *table, int n_in, int32_t c
     return fresnel_i_cubic_u16(table, n, 0, p, fresnel_i_cubic_weights(p.t));
 }
 
-fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n_in, int32_t c)
+fresnel_rgb_q15 fresnel_lut_cubic_u16_q15_rgb(const uint16_t *table, int n_in, int32_t c)
 {
     int n = fresnel_i_lut_n(n_in);
     fresnel_i_pos p;
@@ -255,65 +255,65 @@ fresnel_q15_rgb fresnel_lut_cubic_q15_u16_rgb(const uint16_t *table, int n_in, i
     FRESNEL_I_RGB_Q15(fresnel_i_cubic_u16(table, n, 0, p, w), fresnel_i_cubic_u16(table, n, 1, p, w), fresnel_i_cubic_u16(table, n, 2, p, w));
 }
 
-fresnel_q15 fresnel_lut_q15_u16(const uint16_t *table, int n, int32_t c)
+fresnel_q15 fresnel_lut_u16_q15(const uint16_t *table, int n, int32_t c)
 {
     return fresnel_i_lut_u16(table, fresnel_i_lut_n(n), 0, fresnel_i_sqrt_w(c));
 }
-fresnel_q15 fresnel_lut_linear_q15_u16(const uint16_t *table, int n, int32_t c)
+fresnel_q15 fresnel_lut_linear_u16_q15(const uint16_t *table, int n, int32_t c)
 {
     return fresnel_i_lut_u16(table, fresnel_i_lut_n(n), 0, fresnel_i_linear_w(c));
 }
-fresnel_q15 fresnel_lut_q15_u8(const uint8_t *table, int n, int32_t c)
+fresnel_q15 fresnel_lut_u8_q15(const uint8_t *table, int n, int32_t c)
 {
     return fresnel_i_lut_u8(table, fresnel_i_lut_n(n), 0, fresnel_i_sqrt_w(c));
 }
-fresnel_q15 fresnel_lut_linear_q15_u8(const uint8_t *table, int n, int32_t c)
+fresnel_q15 fresnel_lut_linear_u8_q15(const uint8_t *table, int n, int32_t c)
 {
     return fresnel_i_lut_u8(table, fresnel_i_lut_n(n), 0, fresnel_i_linear_w(c));
 }
-fresnel_q15 fresnel_lut_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
+fresnel_q15 fresnel_lut_residual_s16_q15(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
     return fresnel_i_lut_s16(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_sqrt_w(c), c);
 }
-fresnel_q15 fresnel_lut_linear_residual_q15_s16(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
+fresnel_q15 fresnel_lut_linear_residual_s16_q15(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
     return fresnel_i_lut_s16(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_linear_w(c), c);
 }
-fresnel_q15 fresnel_lut_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
+fresnel_q15 fresnel_lut_residual_s8_q15(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
     return fresnel_i_lut_s8(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_sqrt_w(c), c);
 }
-fresnel_q15 fresnel_lut_linear_residual_q15_s8(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
+fresnel_q15 fresnel_lut_linear_residual_s8_q15(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
     return fresnel_i_lut_s8(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_linear_w(c), c);
 }
 
 /* RGB: n red nodes, then n green, then n blue (n as fresnel_i_lut_n gives it). */
-fresnel_q15_rgb fresnel_lut_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
+fresnel_rgb_q15 fresnel_lut_u16_q15_rgb(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x = fresnel_i_sqrt_w(c);
     n = fresnel_i_lut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_u16(table, n, 0, x), fresnel_i_lut_u16(table, n, 1, x), fresnel_i_lut_u16(table, n, 2, x));
 }
-fresnel_q15_rgb fresnel_lut_linear_q15_u16_rgb(const uint16_t *table, int n, int32_t c)
+fresnel_rgb_q15 fresnel_lut_linear_u16_q15_rgb(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x = fresnel_i_linear_w(c);
     n = fresnel_i_lut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_u16(table, n, 0, x), fresnel_i_lut_u16(table, n, 1, x), fresnel_i_lut_u16(table, n, 2, x));
 }
-fresnel_q15_rgb fresnel_lut_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
+fresnel_rgb_q15 fresnel_lut_u8_q15_rgb(const uint8_t *table, int n, int32_t c)
 {
     uint32_t x = fresnel_i_sqrt_w(c);
     n = fresnel_i_lut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_u8(table, n, 0, x), fresnel_i_lut_u8(table, n, 1, x), fresnel_i_lut_u8(table, n, 2, x));
 }
-fresnel_q15_rgb fresnel_lut_linear_q15_u8_rgb(const uint8_t *table, int n, int32_t c)
+fresnel_rgb_q15 fresnel_lut_linear_u8_q15_rgb(const uint8_t *table, int n, int32_t c)
 {
     uint32_t x = fresnel_i_linear_w(c);
     n = fresnel_i_lut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_u8(table, n, 0, x), fresnel_i_lut_u8(table, n, 1, x), fresnel_i_lut_u8(table, n, 2, x));
 }
-fresnel_q15_rgb fresnel_lut_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n, int frac,
+fresnel_rgb_q15 fresnel_lut_residual_s16_q15_rgb(fresnel_rgb_q15 f0, const int16_t *table, int n, int frac,
                                                  int32_t c)
 {
     uint32_t x = fresnel_i_sqrt_w(c);
@@ -321,7 +321,7 @@ fresnel_q15_rgb fresnel_lut_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16
     FRESNEL_I_RGB_Q15(fresnel_i_lut_s16(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s16(f0.g, table, n, 1, frac, x, c),
                 fresnel_i_lut_s16(f0.b, table, n, 2, frac, x, c));
 }
-fresnel_q15_rgb fresnel_lut_linear_residual_q15_s16_rgb(fresnel_q15_rgb f0, const int16_t *table, int n,
+fresnel_rgb_q15 fresnel_lut_linear_residual_s16_q15_rgb(fresnel_rgb_q15 f0, const int16_t *table, int n,
                                                         int frac, int32_t c)
 {
     uint32_t x = fresnel_i_linear_w(c);
@@ -329,7 +329,7 @@ fresnel_q15_rgb fresnel_lut_linear_residual_q15_s16_rgb(fresnel_q15_rgb f0, cons
     FRESNEL_I_RGB_Q15(fresnel_i_lut_s16(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s16(f0.g, table, n, 1, frac, x, c),
                 fresnel_i_lut_s16(f0.b, table, n, 2, frac, x, c));
 }
-fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n, int frac,
+fresnel_rgb_q15 fresnel_lut_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const int8_t *table, int n, int frac,
                                                 int32_t c)
 {
     uint32_t x = fresnel_i_sqrt_w(c);
@@ -337,7 +337,7 @@ fresnel_q15_rgb fresnel_lut_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t
     FRESNEL_I_RGB_Q15(fresnel_i_lut_s8(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s8(f0.g, table, n, 1, frac, x, c),
                 fresnel_i_lut_s8(f0.b, table, n, 2, frac, x, c));
 }
-fresnel_q15_rgb fresnel_lut_linear_residual_q15_s8_rgb(fresnel_q15_rgb f0, const int8_t *table, int n,
+fresnel_rgb_q15 fresnel_lut_linear_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const int8_t *table, int n,
                                                        int frac, int32_t c)
 {
     uint32_t x = fresnel_i_linear_w(c);

@@ -27,7 +27,7 @@ fresnel_q15 fresnel_schlick_q15(int32_t f0, int32_t c)
     return fresnel_i_q30_to_q15(fresnel_i_schlick_q30(fresnel_i_q15_arg(f0), fresnel_i_pow5_q30(x)));
 }
 
-fresnel_q15_rgb fresnel_schlick_q15_rgb(fresnel_q15_rgb f0, int32_t c)
+fresnel_rgb_q15 fresnel_schlick_q15_rgb(fresnel_rgb_q15 f0, int32_t c)
 {
     uint32_t x5 = fresnel_i_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_q15_arg(c));
     FRESNEL_I_RGB_Q15(fresnel_i_q30_to_q15(fresnel_i_schlick_q30(fresnel_i_q15_arg(f0.r), x5)),
@@ -37,8 +37,8 @@ fresnel_q15_rgb fresnel_schlick_q15_rgb(fresnel_q15_rgb f0, int32_t c)
 
 static uint32_t fresnel_i_clamp_p(fresnel_q16 p)
 {
-    return p <= FRESNEL_Q16_P_MIN ? (uint32_t)FRESNEL_Q16_P_MIN
-                                  : (p >= FRESNEL_Q16_P_MAX ? (uint32_t)FRESNEL_Q16_P_MAX : (uint32_t)p);
+    return p <= FRESNEL_P_MIN_Q16 ? (uint32_t)FRESNEL_P_MIN_Q16
+                                  : (p >= FRESNEL_P_MAX_Q16 ? (uint32_t)FRESNEL_P_MAX_Q16 : (uint32_t)p);
 }
 
 /* (1 - c)^p in Q30: Schlick's multiplications for p = 5, the power function otherwise. */
@@ -64,7 +64,7 @@ fresnel_q15 fresnel_schlick_gen_q15(int32_t f0, int32_t f90, fresnel_q16 p, int3
     return fresnel_i_mix_q15(fresnel_i_q15_arg(f0), fresnel_i_q15_arg(f90), fresnel_i_weight_q30(fresnel_i_q15_arg(c), fresnel_i_clamp_p(p)));
 }
 
-fresnel_q15_rgb fresnel_schlick_gen_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb f90, fresnel_q16 p,
+fresnel_rgb_q15 fresnel_schlick_gen_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f90, fresnel_q16 p,
                                             int32_t c)
 {
     uint32_t t = fresnel_i_weight_q30(fresnel_i_q15_arg(c), fresnel_i_clamp_p(p));
@@ -77,7 +77,7 @@ fresnel_q15_rgb fresnel_schlick_gen_q15_rgb(fresnel_q15_rgb f0, fresnel_q15_rgb 
  * reflection. ct^2 = (eta^2 - sin^2) / eta^2, the numerator from the two
  * words of the prepared a0 (exact_q15.c), so that it keeps its digits near
  * the critical angle where it is the small difference of two numbers. */
-static uint32_t fresnel_i_internal_weight_q30(const fresnel_q15_ior *m, uint32_t c)
+static uint32_t fresnel_i_internal_weight_q30(const fresnel_ior_prep_q15 *m, uint32_t c)
 {
     uint32_t ct, x, x2;
     int negative;
@@ -98,12 +98,12 @@ static fresnel_q15 fresnel_i_internal_q15(uint32_t f0, uint32_t w)
     return w > FRESNEL_I_ONE_Q30 ? (fresnel_q15)FRESNEL_I_ONE_Q15 : fresnel_i_q30_to_q15(fresnel_i_schlick_q30(f0, w));
 }
 
-fresnel_q15 fresnel_schlick_internal_q15(int32_t f0, const fresnel_q15_ior *m, int32_t c)
+fresnel_q15 fresnel_schlick_internal_q15(int32_t f0, const fresnel_ior_prep_q15 *m, int32_t c)
 {
     return fresnel_i_internal_q15(fresnel_i_q15_arg(f0), fresnel_i_internal_weight_q30(m, fresnel_i_q15_arg(c)));
 }
 
-fresnel_q15_rgb fresnel_schlick_internal_q15_rgb(fresnel_q15_rgb f0, const fresnel_q15_ior *m, int32_t c)
+fresnel_rgb_q15 fresnel_schlick_internal_q15_rgb(fresnel_rgb_q15 f0, const fresnel_ior_prep_q15 *m, int32_t c)
 {
     uint32_t w = fresnel_i_internal_weight_q30(m, fresnel_i_q15_arg(c));
     FRESNEL_I_RGB_Q15(fresnel_i_internal_q15(fresnel_i_q15_arg(f0.r), w), fresnel_i_internal_q15(fresnel_i_q15_arg(f0.g), w),
@@ -111,7 +111,7 @@ fresnel_q15_rgb fresnel_schlick_internal_q15_rgb(fresnel_q15_rgb f0, const fresn
 }
 
 /* eta and kappa of the Q16.16 API, clamped to the fixed-point domain. */
-static uint32_t fresnel_i_eta_q16(fresnel_q16 x) { return x <= FRESNEL_Q16_ETA_MIN ? (uint32_t)FRESNEL_Q16_ETA_MIN : (uint32_t)x; }
+static uint32_t fresnel_i_eta_q16(fresnel_q16 x) { return x <= FRESNEL_ETA_MIN_Q16 ? (uint32_t)FRESNEL_ETA_MIN_Q16 : (uint32_t)x; }
 static uint32_t fresnel_i_kappa_q16(fresnel_q16 x) { return x <= 0 ? 0u : (uint32_t)x; }
 
 /* ((eta-1)^2 + kappa^2) / ((eta+1)^2 + kappa^2): eta - 1 and eta + 1 are

@@ -12,7 +12,7 @@
 
 static int failures;
 
-static void check(const char *name, fresnel_q15_rgb q, fresnel_rgb f, double tol, double *worst)
+static void check(const char *name, fresnel_rgb_q15 q, fresnel_rgb f, double tol, double *worst)
 {
     double d[3];
     int ch;
@@ -66,22 +66,22 @@ int main(void)
           fresnel_gulbrandsen_rgb(fresnel_fx_al_gulbrandsen_r, fresnel_fx_al_gulbrandsen_g, cf), lsb2);
     MODEL("cu cook-torrance", fresnel_cook_torrance_q15_rgb(fresnel_fx_cu_f0_q15, &fresnel_fx_cu_ct_ior_q15, c),
           fresnel_cook_torrance_rgb(fresnel_fx_cu_f0, fresnel_fx_cu_ct_eta, fresnel_fx_cu_ct_kappa, cf), lsb2);
-    MODEL("cu lut32", fresnel_lut_q15_u16_rgb(fresnel_fx_cu_lut32_q15, 32, c),
+    MODEL("cu lut32", fresnel_lut_u16_q15_rgb(fresnel_fx_cu_lut32_q15, 32, c),
           fresnel_lut_rgb(fresnel_fx_cu_lut32, 32, cf), lsb2);
     MODEL("cu lut16-residual",
-          fresnel_lut_residual_q15_s16_rgb(fresnel_fx_cu_f0_q15, fresnel_fx_cu_lut16_residual_q15, 16,
+          fresnel_lut_residual_s16_q15_rgb(fresnel_fx_cu_f0_q15, fresnel_fx_cu_lut16_residual_q15, 16,
                                            fresnel_fx_cu_lut16_residual_frac, c),
           fresnel_lut_residual_rgb(fresnel_fx_cu_f0, fresnel_fx_cu_lut16_residual, 16, cf), lsb2);
     {
         /* the inline fast path with the emitted a: within its bound plus Q15 rounding of the parameters */
         const double lsb8 = 8.0 / 32768.0;
         MODEL("cu f82 fast",
-              ((fresnel_q15_rgb){fresnel_f82_q15_fast(fresnel_fx_cu_f0_q15.r, fresnel_fx_cu_f82_a_q12[0], c),
+              ((fresnel_rgb_q15){fresnel_f82_q15_fast(fresnel_fx_cu_f0_q15.r, fresnel_fx_cu_f82_a_q12[0], c),
                                  fresnel_f82_q15_fast(fresnel_fx_cu_f0_q15.g, fresnel_fx_cu_f82_a_q12[1], c),
                                  fresnel_f82_q15_fast(fresnel_fx_cu_f0_q15.b, fresnel_fx_cu_f82_a_q12[2], c)}),
               fresnel_f82_rgb(fresnel_fx_cu_f0, fresnel_fx_cu_f82, cf), lsb8);
     }
-    MODEL("au lut16-cubic", fresnel_lut_cubic_q15_u16_rgb(fresnel_fx_au_lut16_cubic_q15, 16, c),
+    MODEL("au lut16-cubic", fresnel_lut_cubic_u16_q15_rgb(fresnel_fx_au_lut16_cubic_q15, 16, c),
           fresnel_lut_cubic_rgb(fresnel_fx_au_lut16_cubic, 16, cf), lsb2);
     return failures ? 1 : 0;
 }

@@ -34,14 +34,14 @@ static void run(const char *name, fixed_eval fn, const conform_material *m)
 /* The run-time preparation, one call per "code" as well. */
 static fresnel_q15 e_ior_prepare(const conform_material *m, int32_t c)
 {
-    fresnel_q15_ior out;
+    fresnel_ior_prep_q15 out;
     (void)c;
-    fresnel_q15_ior_prepare(m->eta, m->kappa, &out);
+    fresnel_ior_prepare_q15(m->eta, m->kappa, &out);
     return (fresnel_q15)out.a0;
 }
 static fresnel_q15 e_gulbrandsen_nk(const conform_material *m, int32_t c)
 {
-    fresnel_q15_nk out;
+    fresnel_nk_prep_q15 out;
     (void)c;
     fresnel_gulbrandsen_nk_q15(m->r, m->g, &out);
     return (fresnel_q15)out.n.m;
@@ -55,7 +55,7 @@ int main(void)
     run("(loop)", e_none, m);
     for (i = 0; i < FIXED_MODEL_COUNT; i++)
         run(fixed_models[i].name, fixed_models[i].fn, m);
-    run("fresnel_q15_ior_prepare", e_ior_prepare, m);
+    run("fresnel_ior_prepare_q15", e_ior_prepare, m);
     run("fresnel_gulbrandsen_nk_q15", e_gulbrandsen_nk, m);
     port_puts("END\n");
     return 0;

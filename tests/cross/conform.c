@@ -51,14 +51,14 @@ int main(void)
     h = 2166136261u;
     for (k = 0; k < conform_material_count; k++) {
         const conform_material *m = &conform_materials[k];
-        fresnel_q15_ior ior;
-        fresnel_q15_nk nk;
-        fresnel_q15_lsk lsk;
+        fresnel_ior_prep_q15 ior;
+        fresnel_nk_prep_q15 nk;
+        fresnel_lsk_prep_q15 lsk;
         fresnel_q15 r, g;
         int32_t c;
-        fresnel_q15_ior_prepare(m->eta, m->kappa, &ior);
-        fresnel_q15_nk_prepare(m->eta, m->kappa, &nk);
-        fresnel_q15_lsk_prepare(m->eta, m->kappa, 65536, 7 << 16, &lsk);
+        fresnel_ior_prepare_q15(m->eta, m->kappa, &ior);
+        fresnel_nk_prepare_q15(m->eta, m->kappa, &nk);
+        fresnel_lsk_prepare_q15(m->eta, m->kappa, 65536, 7 << 16, &lsk);
         fresnel_gulbrandsen_rg_q15(m->eta, m->kappa, &r, &g);
         h = fnv(fnv(fnv(h, (uint32_t)ior.a0), (uint32_t)ior.a0 >> 16), (uint32_t)ior.shift);
         h = fnv(fnv(h, (uint32_t)ior.a0_lo), (uint32_t)ior.a0_lo >> 16);

@@ -12,9 +12,9 @@
 typedef struct conform_material {
     int32_t f0, f82, f90, r, g; /* Q15 codes */
     fresnel_q16 p;
-    fresnel_q15_ior ior, dior;
-    fresnel_q15_nk nk, gnk;
-    fresnel_q15_lsk lsk;
+    fresnel_ior_prep_q15 ior, dior;
+    fresnel_nk_prep_q15 nk, gnk;
+    fresnel_lsk_prep_q15 lsk;
     fresnel_q16 eta, kappa; /* Q16.16, for the run-time *_prepare functions */
     int32_t f82_a;          /* fresnel_f82_q15_fast's a_q12 */
 } conform_material;

@@ -12,7 +12,7 @@
 
 static void qf(const char *name, fresnel_qf v) { printf(" .%s = {%uu, %d},", name, (unsigned)v.m, (int)v.e); }
 
-static void ior(const char *name, const fresnel_q15_ior *m)
+static void ior(const char *name, const fresnel_ior_prep_q15 *m)
 {
     printf(" .%s = {%d, %d, %d,", name, (int)m->a0, (int)m->a0_lo, (int)m->shift);
     printf(" {%uu, %d}, {%uu, %d}, {%uu, %d}, {%uu, %d}},", (unsigned)m->b.m, (int)m->b.e, (unsigned)m->n4.m,

@@ -44,27 +44,27 @@ static fresnel_q15 e_f0_in_medium(const conform_material *m, int32_t c)
 static fresnel_q15 e_lut_u16(const conform_material *m, int32_t c)
 {
     (void)m;
-    return fresnel_lut_q15_u16(conform_lut_u16[0], CONFORM_LUT_N, c);
+    return fresnel_lut_u16_q15(conform_lut_u16[0], CONFORM_LUT_N, c);
 }
 static fresnel_q15 e_lut_linear_u16(const conform_material *m, int32_t c)
 {
     (void)m;
-    return fresnel_lut_linear_q15_u16(conform_lut_u16[1], CONFORM_LUT_N, c);
+    return fresnel_lut_linear_u16_q15(conform_lut_u16[1], CONFORM_LUT_N, c);
 }
 static fresnel_q15 e_lut_u8(const conform_material *m, int32_t c)
 {
     (void)m;
-    return fresnel_lut_q15_u8(conform_lut_u8[0], CONFORM_LUT_N, c);
+    return fresnel_lut_u8_q15(conform_lut_u8[0], CONFORM_LUT_N, c);
 }
 static fresnel_q15 e_lut_residual_s16(const conform_material *m, int32_t c)
 {
     (void)m;
-    return fresnel_lut_residual_q15_s16(conform_lut_f0, conform_lut_s16[0], CONFORM_LUT_N, conform_lut_frac16, c);
+    return fresnel_lut_residual_s16_q15(conform_lut_f0, conform_lut_s16[0], CONFORM_LUT_N, conform_lut_frac16, c);
 }
 static fresnel_q15 e_lut_linear_residual_s8(const conform_material *m, int32_t c)
 {
     (void)m;
-    return fresnel_lut_linear_residual_q15_s8(conform_lut_f0, conform_lut_s8[1], CONFORM_LUT_N, conform_lut_frac8, c);
+    return fresnel_lut_linear_residual_s8_q15(conform_lut_f0, conform_lut_s8[1], CONFORM_LUT_N, conform_lut_frac8, c);
 }
 /* The fast paths (fresnel_fixed.h, "fast paths"): their preconditions hold
  * here (c, F0, F82 in [0, one]; a 64-node table). */
@@ -73,12 +73,12 @@ static fresnel_q15 e_f82_fast(const conform_material *m, int32_t c) { return fre
 static fresnel_q15 e_lut_u16_fast(const conform_material *m, int32_t c)
 {
     (void)m;
-    return fresnel_lut_q15_u16_fast(conform_lut_u16[0], CONFORM_LUT_N, c);
+    return fresnel_lut_u16_q15_fast(conform_lut_u16[0], CONFORM_LUT_N, c);
 }
 static fresnel_q15 e_lut_u16_pl_fast(const conform_material *m, int32_t c)
 {
     (void)m;
-    return fresnel_lut_q15_u16_pl_fast(conform_lut_u16[0], CONFORM_LUT_N, c);
+    return fresnel_lut_pl_u16_q15_fast(conform_lut_u16[0], CONFORM_LUT_N, c);
 }
 typedef struct fixed_model {
     const char *name;

@@ -17,10 +17,10 @@ void probe(void);
 #ifndef SCENE_N
 #define SCENE_N 1
 #endif
-static const fresnel_q15_ior ior = {-1051966000, 12345, 3, {1073741824u, -28}, {1073741824u, -21}, {1073741824u, -29},
+static const fresnel_ior_prep_q15 ior = {-1051966000, 12345, 3, {1073741824u, -28}, {1073741824u, -21}, {1073741824u, -29},
                                     {1073741824u, -33}};
-static const fresnel_q15_nk nk = {{1073741824u, -30}, {1073741824u, -27}};
-static const fresnel_q15_lsk lsk = {700000000u, {1073741824u, -29}, 7 << 16};
+static const fresnel_nk_prep_q15 nk = {{1073741824u, -30}, {1073741824u, -27}};
+static const fresnel_lsk_prep_q15 lsk = {700000000u, {1073741824u, -29}, 7 << 16};
 static const uint16_t t16[8] = {32768, 30000, 28000, 27000, 26500, 26200, 26100, 26000};
 static const int8_t t8[8] = {0, 10, 20, 30, 20, 10, 5, 0};
 void probe(void)
@@ -49,13 +49,13 @@ void probe(void)
 #elif PROBE == 11
     probe_out = fresnel_schlick_internal_q15(f, &ior, c);
 #elif PROBE == 12
-    probe_out = fresnel_lut_q15_u16(t16, 8, c);
+    probe_out = fresnel_lut_u16_q15(t16, 8, c);
 #elif PROBE == 13
-    probe_out = fresnel_lut_residual_q15_s8(f, t8, 8, 12, c);
+    probe_out = fresnel_lut_residual_s8_q15(f, t8, 8, 12, c);
 #elif PROBE == 14
     {
-        fresnel_q15_ior out;
-        fresnel_q15_ior_prepare(f * 4, c * 4, &out);
+        fresnel_ior_prep_q15 out;
+        fresnel_ior_prepare_q15(f * 4, c * 4, &out);
         probe_out = (uint32_t)out.a0;
     }
 #elif PROBE == 16
@@ -63,9 +63,9 @@ void probe(void)
 #elif PROBE == 17
     probe_out = fresnel_f82_q15_fast(f, f + 100, c); /* f + 100 stands for a_q12 */
 #elif PROBE == 18
-    probe_out = fresnel_lut_q15_u16_fast(t16, 8, c);
+    probe_out = fresnel_lut_u16_q15_fast(t16, 8, c);
 #elif PROBE == 21
-    probe_out = fresnel_lut_q15_u16_pl_fast(t16, 8, c);
+    probe_out = fresnel_lut_pl_u16_q15_fast(t16, 8, c);
 #elif PROBE == 19
     {
         /* a Schlick-only fixed scene of SCENE_N materials (F0 per material) */
@@ -75,12 +75,12 @@ void probe(void)
 #elif PROBE == 20
     {
         /* the same scene in RGB: an F0 triple per material, as fresnel gen emits it */
-        static const fresnel_q15_rgb scene_f0[SCENE_N] = {{31784, 25937, 11907}};
-        fresnel_q15_rgb r = fresnel_schlick_q15_rgb_fast(scene_f0[(uint32_t)f % SCENE_N], c);
+        static const fresnel_rgb_q15 scene_f0[SCENE_N] = {{31784, 25937, 11907}};
+        fresnel_rgb_q15 r = fresnel_schlick_q15_rgb_fast(scene_f0[(uint32_t)f % SCENE_N], c);
         probe_out = (fresnel_q15)(r.r ^ r.g ^ r.b);
     }
 #elif PROBE == 15
-    probe_out = fresnel_schlick_q15_rgb((fresnel_q15_rgb){(fresnel_q15)f, (fresnel_q15)(f + 1), (fresnel_q15)(f + 2)}, c).g;
+    probe_out = fresnel_schlick_q15_rgb((fresnel_rgb_q15){(fresnel_q15)f, (fresnel_q15)(f + 1), (fresnel_q15)(f + 2)}, c).g;
 #endif
     (void)c, (void)f, (void)ior, (void)nk, (void)lsk, (void)t16, (void)t8;
 }

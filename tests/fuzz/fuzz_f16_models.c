@@ -15,7 +15,7 @@
  *   - every result is a number in [0, 1], whatever the input;
  *   - where eta and kappa (after the binary16 domain's clamps) lie in the
  *     range the bounds were measured on (eta in [0.01, 16], kappa <= 16),
- *     |result - reference| is measured against FRESNEL_F16_BOUND_* (see
+ *     |result - reference| is measured against FRESNEL_BOUND_*_F16 (see
  *     Findings below for why it is measured, not asserted), the reference evaluated
  *     at the binary16 values with the runtime's documented clamps (eta to
  *     [2^-10, 16], kappa to [0, 16], p to [2^-10, 64], LSK a and alpha to
@@ -152,10 +152,10 @@ static void fuzz_luts(fuzz_bytes *b, fresnel_f16 c)
         }
         check(sp ? "fresnel_lut_linear_f16" : "fresnel_lut_f16",
               sp ? fresnel_lut_linear_f16(tab, n, c) : fresnel_lut_f16(tab, n, c),
-              ref_clamp(ref_interp(dtab, n, x), 0.0, 1.0), FRESNEL_F16_BOUND_LUT, 1, args);
+              ref_clamp(ref_interp(dtab, n, x), 0.0, 1.0), FRESNEL_BOUND_LUT_F16, 1, args);
         check(sp ? "fresnel_lut_linear_residual_f16" : "fresnel_lut_residual_f16",
               sp ? fresnel_lut_linear_residual_f16(f0, res, n, c) : fresnel_lut_residual_f16(f0, res, n, c),
-              ref_clamp(ref_schlick((double)f0, cd) + ref_interp(dres, n, x), 0.0, 1.0), FRESNEL_F16_BOUND_LUT, 1,
+              ref_clamp(ref_schlick((double)f0, cd) + ref_interp(dres, n, x), 0.0, 1.0), FRESNEL_BOUND_LUT_F16, 1,
               args);
     }
 }
@@ -182,45 +182,45 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     g = fuzz_half(&b, 1e-3f, 1.0f);
     /* What the runtime evaluates, by fresnel_f16.h's clamps. */
     cd = (double)c;
-    e = hclamp(eta, FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX);
-    k = hclamp(kappa, 0.0, FRESNEL_F16_KAPPA_MAX);
-    pd = hclamp(p, FRESNEL_F16_P_MIN, FRESNEL_F16_P_MAX);
+    e = hclamp(eta, FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16);
+    k = hclamp(kappa, 0.0, FRESNEL_KAPPA_MAX_F16);
+    pd = hclamp(p, FRESNEL_P_MIN_F16, FRESNEL_P_MAX_F16);
     ad = hclamp(a, 0.0, 64.0);
-    al = hclamp(alpha, 0.0, FRESNEL_F16_P_MAX);
+    al = hclamp(alpha, 0.0, FRESNEL_P_MAX_F16);
     in = e >= 0.01 && e <= 16.0 && k <= 16.0;
     snprintf(args, sizeof args, "c %a eta %a kappa %a f0 %a f82 %a f90 %a p %a a %a alpha %a r %a g %a", cd,
              (double)eta, (double)kappa, (double)f0, (double)f82, (double)f90, (double)p, (double)a, (double)alpha,
              (double)r, (double)g);
 
-    check("fresnel_schlick_f16", fresnel_schlick_f16(f0, c), ref_schlick((double)f0, cd), FRESNEL_F16_BOUND_SCHLICK, 1,
+    check("fresnel_schlick_f16", fresnel_schlick_f16(f0, c), ref_schlick((double)f0, cd), FRESNEL_BOUND_SCHLICK_F16, 1,
           args);
     check("fresnel_schlick_gen_f16", fresnel_schlick_gen_f16(f0, f90, p, c),
-          ref_schlick_gen((double)f0, (double)f90, pd, cd), FRESNEL_F16_BOUND_SCHLICK_GEN, 1, args);
+          ref_schlick_gen((double)f0, (double)f90, pd, cd), FRESNEL_BOUND_SCHLICK_GEN_F16, 1, args);
     check("fresnel_f82_f16", fresnel_f82_f16(f0, f82, c), ref_f82((double)f0, (double)f82, cd),
-          FRESNEL_F16_BOUND_F82, 1, args);
+          FRESNEL_BOUND_F82_F16, 1, args);
     check("fresnel_schlick_internal_f16", fresnel_schlick_internal_f16(f0, eta, c), ref_schlick_internal((double)f0, e, cd),
-          FRESNEL_F16_BOUND_SCHLICK_INTERNAL, in, args);
+          FRESNEL_BOUND_SCHLICK_INTERNAL_F16, in, args);
     check("fresnel_f0_in_medium_f16", fresnel_f0_in_medium_f16(f0, eta), ref_f0_in_medium((double)f0, e),
-          FRESNEL_F16_BOUND_F0_IN_MEDIUM, in, args);
-    check("fresnel_f0_from_ior_f16", fresnel_f0_from_ior_f16(eta, kappa), ref_f0_from_ior(e, k), FRESNEL_F16_BOUND_F0,
+          FRESNEL_BOUND_F0_IN_MEDIUM_F16, in, args);
+    check("fresnel_f0_from_ior_f16", fresnel_f0_from_ior_f16(eta, kappa), ref_f0_from_ior(e, k), FRESNEL_BOUND_F0_FROM_IOR_F16,
           in, args);
-    check("fresnel_lsk_f16", fresnel_lsk_f16(eta, kappa, c), ref_lsk(e, k, cd), FRESNEL_F16_BOUND_LSK, in, args);
+    check("fresnel_lsk_f16", fresnel_lsk_f16(eta, kappa, c), ref_lsk(e, k, cd), FRESNEL_BOUND_LSK_F16, in, args);
     check("fresnel_lsk_comp_f16", fresnel_lsk_comp_f16(eta, kappa, a, alpha, c), ref_lsk_comp(e, k, ad, al, cd),
-          FRESNEL_F16_BOUND_LSK_COMP, in, args);
+          FRESNEL_BOUND_LSK_COMP_F16, in, args);
     check("fresnel_approx_conductor_f16", fresnel_approx_conductor_f16(eta, kappa, c), ref_approx_conductor(e, k, cd),
-          FRESNEL_F16_BOUND_APPROX_CONDUCTOR, in, args);
+          FRESNEL_BOUND_APPROX_CONDUCTOR_F16, in, args);
     check("fresnel_conductor_f16", fresnel_conductor_f16(eta, kappa, c), ref_conductor(e, k, cd),
-          FRESNEL_F16_BOUND_CONDUCTOR, in, args);
+          FRESNEL_BOUND_CONDUCTOR_F16, in, args);
     check("fresnel_dielectric_f16", fresnel_dielectric_f16(eta, c), ref_dielectric(e, cd),
-          FRESNEL_F16_BOUND_DIELECTRIC, in, args);
+          FRESNEL_BOUND_DIELECTRIC_F16, in, args);
     check("fresnel_cook_torrance_f16", fresnel_cook_torrance_f16(f0, eta, kappa, c),
-          ref_cook_torrance((double)f0, e, k, cd), FRESNEL_F16_BOUND_COOK_TORRANCE, in, args);
+          ref_cook_torrance((double)f0, e, k, cd), FRESNEL_BOUND_COOK_TORRANCE_F16, in, args);
     /* Gulbrandsen: r to the largest half below 1, then n, k to the domain. */
     ref_gulbrandsen_nk(hclamp(r, 0.0, 1.0 - 0x1p-11), (double)g, &n, &kk);
     check("fresnel_gulbrandsen_f16", fresnel_gulbrandsen_f16(r, g, c),
-          ref_approx_conductor(ref_clamp(n, FRESNEL_F16_ETA_MIN, FRESNEL_F16_ETA_MAX),
-                               ref_clamp(kk, 0.0, FRESNEL_F16_KAPPA_MAX), cd),
-          FRESNEL_F16_BOUND_GULBRANDSEN, 1, args);
+          ref_approx_conductor(ref_clamp(n, FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16),
+                               ref_clamp(kk, 0.0, FRESNEL_KAPPA_MAX_F16), cd),
+          FRESNEL_BOUND_GULBRANDSEN_F16, 1, args);
     fuzz_luts(&b, c);
     return 0;
 }

@@ -10,7 +10,7 @@
  *   - every result is a code in [0, 32768], whatever the input;
  *   - where the inputs lie in the documented domain (eta in [2^-10, 32767],
  *     kappa <= 32767; codes anything, as they are clamped onto the whole
- *     domain), |result / 32768 - reference| <= FRESNEL_Q15_BOUND_*
+ *     domain), |result / 32768 - reference| <= FRESNEL_BOUND_*_Q15
  *     LSB, the reference evaluated at the values the codes stand for, with
  *     the runtime's documented clamps (eta >= 64/65536, Gulbrandsen r <=
  *     code 32764, generalized Schlick p >= 66/65536) applied to its inputs. */
@@ -36,15 +36,15 @@
 
 /* What the prepared layout of fresnel_fixed.h (shift in [0, 30],
  * |a0| < 2^31 - 2^(30 - shift)) is for: a0 + c^2, c^2 up to 2^(30 - shift),
- * must fit int32. (fresnel_q15_ior_prepare returns a0 = -2^30 with shift 0
+ * must fit int32. (fresnel_ior_prepare_q15 returns a0 = -2^30 with shift 0
  * for eta^2 - kappa^2 = 0, outside the letter of the layout but harmless:
  * only the positive side can overflow, so only it is checked.) */
-static int ior_layout_ok(const fresnel_q15_ior *m)
+static int ior_layout_ok(const fresnel_ior_prep_q15 *m)
 {
     return m->shift >= 0 && m->shift <= 30 && (double)m->a0 + ldexp(1.0, 30 - m->shift) <= 2147483647.0;
 }
 
-static void check_layout(const char *who, const fresnel_q15_ior *m, const char *args)
+static void check_layout(const char *who, const fresnel_ior_prep_q15 *m, const char *args)
 {
     if (!ior_layout_ok(m))
         FUZZ_FAIL("%s: a0 %ld with shift %d breaks |a0| < 2^31 - 2^(30 - shift) (%s)", who, (long)m->a0,
@@ -94,7 +94,7 @@ static void check(const char *fn, int32_t got, double ref, double bound_lsb, int
                   ref * 32768.0, err * 32768.0, bound_lsb);
 }
 
-static int measured_eta(double eta) { return eta >= FRESNEL_Q16_ETA_MIN / 65536.0 && eta <= 32767.0; }
+static int measured_eta(double eta) { return eta >= FRESNEL_ETA_MIN_Q16 / 65536.0 && eta <= 32767.0; }
 static int measured_kappa(double kappa) { return kappa >= 0.0 && kappa <= 32767.0; }
 
 /* The model table's Q15 entries on a material prepared on the host. */
@@ -117,8 +117,8 @@ static void fuzz_prepared(fuzz_bytes *b, int32_t c)
     check_layout("fixed_ior (host)", &mf.ior, args);
     check_layout("fixed_ior (host)", &mf.dior, args);
     /* The runtime's clamps: Gulbrandsen's r to code 32764, p to Q16.16 code 66 at least. */
-    mp.r = ref_clamp(mp.r, 0.0, FRESNEL_Q15_GULBRANDSEN_R_MAX / 32768.0);
-    mp.p = ref_clamp(mp.p, FRESNEL_Q16_P_MIN / 65536.0, FRESNEL_Q16_P_MAX / 65536.0);
+    mp.r = ref_clamp(mp.r, 0.0, FRESNEL_GULBRANDSEN_R_MAX_Q15 / 32768.0);
+    mp.p = ref_clamp(mp.p, FRESNEL_P_MIN_Q16 / 65536.0, FRESNEL_P_MAX_Q16 / 65536.0);
     for (mi = 0; mi < model_count; mi++) {
         const model *m = &model_table[mi];
         double bound = m->q15_bound;
@@ -162,7 +162,7 @@ static void fuzz_luts(fuzz_bytes *b, int32_t f0, int32_t c)
     double cc = ref_clamp(unit_code(c), 0.0, 1.0), w = sqrt(cc), s = ref_schlick(unit_code(f0), cc);
     double bound16, bound8, rbound16, rbound8, step;
     char args[96];
-    fresnel_q15_rgb rgb, f03;
+    fresnel_rgb_q15 rgb, f03;
     for (i = 0; i < 3 * n; i++) {
         uint32_t u = fuzz_u32(b);
         u16[i] = (uint16_t)(u % 32769u);
@@ -187,44 +187,44 @@ static void fuzz_luts(fuzz_bytes *b, int32_t f0, int32_t c)
     rbound16 = 0.51 + step * lut_steepest(r16, n);
     rbound8 = 0.51 + step * lut_steepest(r8, n);
     snprintf(args, sizeof args, "n %d, f0 %d, c %d, frac %d/%d", n, (int)f0, (int)c, frac16, frac8);
-    check("fresnel_lut_q15_u16", fresnel_lut_q15_u16(u16, n, c), ref_interp(v16, n, w), bound16, 1, args);
-    check("fresnel_lut_linear_q15_u16", fresnel_lut_linear_q15_u16(u16, n, c), ref_interp(v16, n, cc), bound16, 1,
+    check("fresnel_lut_u16_q15", fresnel_lut_u16_q15(u16, n, c), ref_interp(v16, n, w), bound16, 1, args);
+    check("fresnel_lut_linear_u16_q15", fresnel_lut_linear_u16_q15(u16, n, c), ref_interp(v16, n, cc), bound16, 1,
           args);
-    check("fresnel_lut_q15_u8", fresnel_lut_q15_u8(u8, n, c), ref_interp(v8, n, w), bound8, 1, args);
-    check("fresnel_lut_linear_q15_u8", fresnel_lut_linear_q15_u8(u8, n, c), ref_interp(v8, n, cc), bound8, 1, args);
-    check("fresnel_lut_residual_q15_s16", fresnel_lut_residual_q15_s16(f0, s16, n, frac16, c),
+    check("fresnel_lut_u8_q15", fresnel_lut_u8_q15(u8, n, c), ref_interp(v8, n, w), bound8, 1, args);
+    check("fresnel_lut_linear_u8_q15", fresnel_lut_linear_u8_q15(u8, n, c), ref_interp(v8, n, cc), bound8, 1, args);
+    check("fresnel_lut_residual_s16_q15", fresnel_lut_residual_s16_q15(f0, s16, n, frac16, c),
           ref_clamp(s + ref_interp(r16, n, w), 0.0, 1.0), rbound16, 1, args);
-    check("fresnel_lut_linear_residual_q15_s16", fresnel_lut_linear_residual_q15_s16(f0, s16, n, frac16, c),
+    check("fresnel_lut_linear_residual_s16_q15", fresnel_lut_linear_residual_s16_q15(f0, s16, n, frac16, c),
           ref_clamp(s + ref_interp(r16, n, cc), 0.0, 1.0), rbound16, 1, args);
-    check("fresnel_lut_residual_q15_s8", fresnel_lut_residual_q15_s8(f0, s8, n, frac8, c),
+    check("fresnel_lut_residual_s8_q15", fresnel_lut_residual_s8_q15(f0, s8, n, frac8, c),
           ref_clamp(s + ref_interp(r8, n, w), 0.0, 1.0), rbound8, 1, args);
-    check("fresnel_lut_linear_residual_q15_s8", fresnel_lut_linear_residual_q15_s8(f0, s8, n, frac8, c),
+    check("fresnel_lut_linear_residual_s8_q15", fresnel_lut_linear_residual_s8_q15(f0, s8, n, frac8, c),
           ref_clamp(s + ref_interp(r8, n, cc), 0.0, 1.0), rbound8, 1, args);
     /* n outside [2, 32768]: n <= 0 reads nothing (a null table) and gives 0,
      * or Schlick alone for a residual table; n = 1 is the constant table[0]. */
     {
         static const int small[] = {INT_MIN, -65536, -1, 0};
         int ns = small[fuzz_u8(b) % 4];
-        if (fresnel_lut_q15_u16(NULL, ns, c) != 0 || fresnel_lut_linear_q15_u8(NULL, ns, c) != 0 ||
-            fresnel_lut_cubic_q15_u16(NULL, ns, c) != 0 || fresnel_lut_q15_u16_fast(NULL, ns, c) != 0 ||
-            fresnel_lut_q15_u16_pl_fast(NULL, ns, c) != 0 ||
-            fresnel_lut_residual_q15_s16(f0, NULL, ns, frac16, c) != fresnel_schlick_q15(f0, c))
+        if (fresnel_lut_u16_q15(NULL, ns, c) != 0 || fresnel_lut_linear_u8_q15(NULL, ns, c) != 0 ||
+            fresnel_lut_cubic_u16_q15(NULL, ns, c) != 0 || fresnel_lut_u16_q15_fast(NULL, ns, c) != 0 ||
+            fresnel_lut_pl_u16_q15_fast(NULL, ns, c) != 0 ||
+            fresnel_lut_residual_s16_q15(f0, NULL, ns, frac16, c) != fresnel_schlick_q15(f0, c))
             FUZZ_FAIL("LUT with n = %d is not 0 / Schlick (%s)", ns, args);
-        if (fresnel_lut_q15_u16(u16, 1, c) != u16[0] || fresnel_lut_linear_q15_u16(u16, 1, c) != u16[0] ||
-            fresnel_lut_cubic_q15_u16(u16, 1, c) != u16[0] || fresnel_lut_q15_u16_fast(u16, 1, c) != u16[0] ||
-            fresnel_lut_q15_u16_pl_fast(u16, 1, c) != u16[0])
+        if (fresnel_lut_u16_q15(u16, 1, c) != u16[0] || fresnel_lut_linear_u16_q15(u16, 1, c) != u16[0] ||
+            fresnel_lut_cubic_u16_q15(u16, 1, c) != u16[0] || fresnel_lut_u16_q15_fast(u16, 1, c) != u16[0] ||
+            fresnel_lut_pl_u16_q15_fast(u16, 1, c) != u16[0])
             FUZZ_FAIL("LUT with n = 1 is not table[0] = %d (%s)", (int)u16[0], args);
     }
     /* RGB forms: channel by channel the scalar ones. */
-    rgb = fresnel_lut_q15_u16_rgb(u16, n, c);
-    if (rgb.r != fresnel_lut_q15_u16(u16, n, c) || rgb.g != fresnel_lut_q15_u16(u16 + n, n, c) ||
-        rgb.b != fresnel_lut_q15_u16(u16 + 2 * n, n, c))
-        FUZZ_FAIL("fresnel_lut_q15_u16_rgb differs from the scalar form (%s)", args);
+    rgb = fresnel_lut_u16_q15_rgb(u16, n, c);
+    if (rgb.r != fresnel_lut_u16_q15(u16, n, c) || rgb.g != fresnel_lut_u16_q15(u16 + n, n, c) ||
+        rgb.b != fresnel_lut_u16_q15(u16 + 2 * n, n, c))
+        FUZZ_FAIL("fresnel_lut_u16_q15_rgb differs from the scalar form (%s)", args);
     f03.r = f03.g = f03.b = (fresnel_q15)(f0 < 0 ? 0 : f0 > 32768 ? 32768 : f0);
-    rgb = fresnel_lut_residual_q15_s8_rgb(f03, s8, n, frac8, c);
-    if (rgb.r != fresnel_lut_residual_q15_s8(f03.r, s8, n, frac8, c) ||
-        rgb.b != fresnel_lut_residual_q15_s8(f03.b, s8 + 2 * n, n, frac8, c))
-        FUZZ_FAIL("fresnel_lut_residual_q15_s8_rgb differs from the scalar form (%s)", args);
+    rgb = fresnel_lut_residual_s8_q15_rgb(f03, s8, n, frac8, c);
+    if (rgb.r != fresnel_lut_residual_s8_q15(f03.r, s8, n, frac8, c) ||
+        rgb.b != fresnel_lut_residual_s8_q15(f03.b, s8 + 2 * n, n, frac8, c))
+        FUZZ_FAIL("fresnel_lut_residual_s8_q15_rgb differs from the scalar form (%s)", args);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -234,10 +234,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fresnel_q16 eta, kappa, p, a, alpha;
     double e, k, pe, si;
     char args[200];
-    fresnel_q15_ior ior, dior;
-    fresnel_q15_nk nk;
-    fresnel_q15_lsk lsk;
-    fresnel_q15_rgb rgb, x3;
+    fresnel_ior_prep_q15 ior, dior;
+    fresnel_nk_prep_q15 nk;
+    fresnel_lsk_prep_q15 lsk;
+    fresnel_rgb_q15 rgb, x3;
     int in;
     b.p = data;
     b.n = size;
@@ -253,35 +253,35 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     a = fuzz_q16(&b, 0.02f, 200.0f);
     alpha = fuzz_q16(&b, 0.1f, 100.0f);
     /* The runtime's clamps of Q16.16 inputs (fresnel_fixed.h). */
-    e = (eta < FRESNEL_Q16_ETA_MIN ? FRESNEL_Q16_ETA_MIN : eta) / 65536.0;
+    e = (eta < FRESNEL_ETA_MIN_Q16 ? FRESNEL_ETA_MIN_Q16 : eta) / 65536.0;
     k = (kappa < 0 ? 0 : kappa) / 65536.0;
-    pe = (p < FRESNEL_Q16_P_MIN ? FRESNEL_Q16_P_MIN : p > FRESNEL_Q16_P_MAX ? FRESNEL_Q16_P_MAX : p) / 65536.0;
+    pe = (p < FRESNEL_P_MIN_Q16 ? FRESNEL_P_MIN_Q16 : p > FRESNEL_P_MAX_Q16 ? FRESNEL_P_MAX_Q16 : p) / 65536.0;
     in = measured_eta(e) && measured_kappa(k);
     snprintf(args, sizeof args, "f0 %d f82 %d f90 %d r %d g %d eta %d kappa %d p %d a %d alpha %d, c %d", (int)f0,
              (int)f82, (int)f90, (int)r, (int)g, (int)eta, (int)kappa, (int)p, (int)a, (int)alpha, (int)c);
 
     check("fresnel_schlick_q15", fresnel_schlick_q15(f0, c), ref_schlick(unit_code(f0), unit_code(c)),
-          FRESNEL_Q15_BOUND_SCHLICK, 1, args);
+          FRESNEL_BOUND_SCHLICK_Q15, 1, args);
     check("fresnel_schlick_gen_q15", fresnel_schlick_gen_q15(f0, f90, p, c),
           ref_schlick_gen(unit_code(f0), unit_code(f90), pe, unit_code(c)),
-          FRESNEL_Q15_BOUND_SCHLICK_GEN, 1, args);
+          FRESNEL_BOUND_SCHLICK_GEN_Q15, 1, args);
     check("fresnel_f82_q15", fresnel_f82_q15(f0, f82, c), ref_f82(unit_code(f0), unit_code(f82), unit_code(c)),
-          FRESNEL_Q15_BOUND_F82, 1, args);
+          FRESNEL_BOUND_F82_Q15, 1, args);
     check("fresnel_gulbrandsen_q15", fresnel_gulbrandsen_q15(r, g, c),
-          ref_gulbrandsen(ref_clamp(unit_code(r), 0.0, FRESNEL_Q15_GULBRANDSEN_R_MAX / 32768.0), unit_code(g),
+          ref_gulbrandsen(ref_clamp(unit_code(r), 0.0, FRESNEL_GULBRANDSEN_R_MAX_Q15 / 32768.0), unit_code(g),
                           unit_code(c)),
-          FRESNEL_Q15_BOUND_GULBRANDSEN, 1, args);
-    check("fresnel_f0_from_ior_q15", fresnel_f0_from_ior_q15(eta, kappa), ref_f0_from_ior(e, k), FRESNEL_Q15_BOUND_F0,
+          FRESNEL_BOUND_GULBRANDSEN_Q15, 1, args);
+    check("fresnel_f0_from_ior_q15", fresnel_f0_from_ior_q15(eta, kappa), ref_f0_from_ior(e, k), FRESNEL_BOUND_F0_FROM_IOR_Q15,
           in, args);
     check("fresnel_f0_in_medium_q15", fresnel_f0_in_medium_q15(f0, eta), ref_f0_in_medium(unit_code(f0), e),
-          FRESNEL_Q15_BOUND_F0_IN_MEDIUM, measured_eta(e), args);
+          FRESNEL_BOUND_F0_IN_MEDIUM_Q15, measured_eta(e), args);
 
-    fresnel_q15_ior_prepare(eta, kappa, &ior);
-    fresnel_q15_ior_prepare(eta, 0, &dior);
-    fresnel_q15_nk_prepare(eta, kappa, &nk);
-    fresnel_q15_lsk_prepare(eta, kappa, a, alpha, &lsk);
-    check_layout("fresnel_q15_ior_prepare", &ior, args);
-    check_layout("fresnel_q15_ior_prepare (kappa 0)", &dior, args);
+    fresnel_ior_prepare_q15(eta, kappa, &ior);
+    fresnel_ior_prepare_q15(eta, 0, &dior);
+    fresnel_nk_prepare_q15(eta, kappa, &nk);
+    fresnel_lsk_prepare_q15(eta, kappa, a, alpha, &lsk);
+    check_layout("fresnel_ior_prepare_q15", &ior, args);
+    check_layout("fresnel_ior_prepare_q15 (kappa 0)", &dior, args);
     /* The two words a0, a0_lo hold eta^2 - kappa^2 - 1 of the Q16.16 codes
      * exactly, so the reference takes eta and kappa as given, also at a
      * critical angle, where the result is as sensitive to eta as the physics
@@ -292,20 +292,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         si = e >= 1.0 ? ref_schlick(unit_code(f0), cc) : A <= 0.0 ? 1.0 : ref_schlick(unit_code(f0), sqrt(A) / e);
     }
     check("fresnel_conductor_q15", fresnel_conductor_q15(&ior, c), ref_conductor(e, k, unit_code(c)),
-          FRESNEL_Q15_BOUND_CONDUCTOR, in, args);
+          FRESNEL_BOUND_CONDUCTOR_Q15, in, args);
     check("fresnel_dielectric_q15", fresnel_dielectric_q15(&dior, c), ref_dielectric(e, unit_code(c)),
-          FRESNEL_Q15_BOUND_DIELECTRIC, in, args);
+          FRESNEL_BOUND_DIELECTRIC_Q15, in, args);
     check("fresnel_cook_torrance_q15", fresnel_cook_torrance_q15(f0, &ior, c),
-          ref_cook_torrance(unit_code(f0), e, k, unit_code(c)), FRESNEL_Q15_BOUND_COOK_TORRANCE, in, args);
-    check("fresnel_schlick_internal_q15", fresnel_schlick_internal_q15(f0, &dior, c), si, FRESNEL_Q15_BOUND_SCHLICK_INTERNAL,
+          ref_cook_torrance(unit_code(f0), e, k, unit_code(c)), FRESNEL_BOUND_COOK_TORRANCE_Q15, in, args);
+    check("fresnel_schlick_internal_q15", fresnel_schlick_internal_q15(f0, &dior, c), si, FRESNEL_BOUND_SCHLICK_INTERNAL_Q15,
           in, args);
     check("fresnel_approx_conductor_q15", fresnel_approx_conductor_q15(&nk, c), ref_approx_conductor(e, k, unit_code(c)),
-          FRESNEL_Q15_BOUND_APPROX_CONDUCTOR, in, args);
-    check("fresnel_lsk_q15", fresnel_lsk_q15(&lsk, c), ref_lsk(e, k, unit_code(c)), FRESNEL_Q15_BOUND_LSK, in, args);
+          FRESNEL_BOUND_APPROX_CONDUCTOR_Q15, in, args);
+    check("fresnel_lsk_q15", fresnel_lsk_q15(&lsk, c), ref_lsk(e, k, unit_code(c)), FRESNEL_BOUND_LSK_Q15, in, args);
     /* a and alpha as the Q16.16 codes say, clamped to [0, 1e6] and [0, 1000] */
     check("fresnel_lsk_comp_q15", fresnel_lsk_comp_q15(&lsk, c),
           ref_lsk_comp(e, k, (a < 0 ? 0 : a) / 65536.0, (alpha < 0 ? 0 : alpha) / 65536.0, unit_code(c)),
-          FRESNEL_Q15_BOUND_LSK_COMP, in && a >= 0 && a <= 200 * 65536, args);
+          FRESNEL_BOUND_LSK_COMP_Q15, in && a >= 0 && a <= 200 * 65536, args);
 
     /* RGB forms equal the scalar ones channel by channel. */
     x3.r = (fresnel_q15)(f0 < 0 ? 0 : f0 > 32768 ? 32768 : f0);

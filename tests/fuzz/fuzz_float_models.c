@@ -213,7 +213,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     in[0] = eta, in[1] = kappa, in[2] = c;
     s0 = fresnel_f0_from_ior(eta, kappa);
     if (eta_ok && kappa_ok)
-        check_bound("fresnel_f0_from_ior", s0, ref_f0_from_ior(eta, kappa), FRESNEL_BOUND_F0, in, 2);
+        check_bound("fresnel_f0_from_ior", s0, ref_f0_from_ior(eta, kappa), FRESNEL_BOUND_F0_FROM_IOR, in, 2);
     else
         check_range("fresnel_f0_from_ior", s0, in, 2);
 
