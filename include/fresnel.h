@@ -196,22 +196,22 @@ float fresnel_f0_from_ior(float eta, float kappa);
 /* -------------------------------------------------------------------- lsk.c */
 
 /* LSK rescaled Schlick [LS05]:
- *   F = ((n-1)^2 + 4n (1-c)^5 + k^2) / ((n+1)^2 + k^2)
- *     = fresnel_schlick(fresnel_f0_from_ior(n, k), c).
+ *   F = ((eta-1)^2 + 4 eta (1-c)^5 + kappa^2) / ((eta+1)^2 + kappa^2)
+ *     = fresnel_schlick(fresnel_f0_from_ior(eta, kappa), c).
  * Error <= FRESNEL_BOUND_LSK. Cost: 12 flops, div. */
-float fresnel_lsk(float n, float k, float c);
-fresnel_rgb fresnel_lsk_rgb(fresnel_rgb n, fresnel_rgb k, float c);
+float fresnel_lsk(float eta, float kappa, float c);
+fresnel_rgb fresnel_lsk_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
 
 /* LSK with error compensation [LS05]:
- *   F = fresnel_lsk(n, k, c) - a c (1 - c)^alpha,   clamped to [0, 1],
+ *   F = fresnel_lsk(eta, kappa, c) - a c (1 - c)^alpha,   clamped to [0, 1],
  * a in [0, FRESNEL_A_MAX], alpha in [0, FRESNEL_ALPHA_MAX] (clamped), made
  * on the host (`fresnel params`); a = 0 is no compensation.
  * Error <= FRESNEL_BOUND_LSK_COMP for a <= 200 (every measured material:
- * a = 2n, n <= 100), over the whole eta, kappa, alpha domain; above,
+ * a = 2 eta, eta <= 100), over the whole eta, kappa, alpha domain; above,
  * about 6e-8 |a c (1-c)^alpha alpha ln(1-c)| more (1.2e-6 at a = 1e6).
  * Cost: 15 flops, div, expf, log1pf. */
-float fresnel_lsk_comp(float n, float k, float a, float alpha, float c);
-fresnel_rgb fresnel_lsk_comp_rgb(fresnel_rgb n, fresnel_rgb k, fresnel_rgb a,
+float fresnel_lsk_comp(float eta, float kappa, float a, float alpha, float c);
+fresnel_rgb fresnel_lsk_comp_rgb(fresnel_rgb eta, fresnel_rgb kappa, fresnel_rgb a,
                                  fresnel_rgb alpha, float c);
 
 /* -------------------------------------------------------------------- f82.c */
@@ -230,8 +230,8 @@ fresnel_rgb fresnel_f82_rgb(fresnel_rgb f0, fresnel_rgb f82, float c);
  *   n = g (1-r)/(1+r) + (1-g) (1+sqrt r)/(1-sqrt r)
  *   k = sqrt((r (n+1)^2 - (n-1)^2) / (1-r)),
  * r clamped to [0, FRESNEL_GULBRANDSEN_R_MAX]; the inverse
- *   r = ((n-1)^2+k^2)/((n+1)^2+k^2),  g = (nmax(r) - n)/(nmax(r) - nmin(r)),
- * g clamped to [0, 1] (n outside [nmin, nmax] has no edge tint).
+ *   r = fresnel_f0_from_ior(eta, kappa),  g = (nmax(r) - eta)/(nmax(r) - nmin(r)),
+ * g clamped to [0, 1] (eta outside [nmin, nmax] has no edge tint).
  * Error of the inverse's g <= FRESNEL_BOUND_GULBRANDSEN_G.
  * Cost: forward 14 flops, 3 div, 2 sqrt; inverse 12 flops, 4 div, sqrt. */
 typedef struct fresnel_nk {
@@ -241,7 +241,7 @@ typedef struct fresnel_rg {
     float r, g;
 } fresnel_rg;
 fresnel_nk fresnel_gulbrandsen_nk(float r, float g);
-fresnel_rg fresnel_gulbrandsen_rg(float n, float k);
+fresnel_rg fresnel_gulbrandsen_rg(float eta, float kappa);
 
 /* Gulbrandsen's Fresnel: fresnel_approx_conductor at the n, k of
  * fresnel_gulbrandsen_nk(r, g). Error <= FRESNEL_BOUND_GULBRANDSEN.
@@ -252,12 +252,13 @@ fresnel_rgb fresnel_gulbrandsen_rgb(fresnel_rgb r, fresnel_rgb g, float c);
 /* ------------------------------------------------------ approx_conductor.c */
 
 /* The approximate conductor form used by Gulbrandsen and Metzgar (Glassner):
- *   rs = (n^2+k^2 - 2nc + c^2) / (n^2+k^2 + 2nc + c^2)
- *   rp = ((n^2+k^2)c^2 - 2nc + 1) / ((n^2+k^2)c^2 + 2nc + 1),  F = (rs+rp)/2;
+ *   N = eta^2 + kappa^2,
+ *   rs = (N - 2 eta c + c^2) / (N + 2 eta c + c^2)
+ *   rp = (N c^2 - 2 eta c + 1) / (N c^2 + 2 eta c + 1),  F = (rs+rp)/2;
  * equal to fresnel_conductor at c = 1 only.
  * Error <= FRESNEL_BOUND_APPROX_CONDUCTOR. Cost: 17 flops, 2 div. */
-float fresnel_approx_conductor(float n, float k, float c);
-fresnel_rgb fresnel_approx_conductor_rgb(fresnel_rgb n, fresnel_rgb k, float c);
+float fresnel_approx_conductor(float eta, float kappa, float c);
+fresnel_rgb fresnel_approx_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
 
 /* -------------------------------------------------------- cook_torrance.c */
 

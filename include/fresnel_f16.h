@@ -127,13 +127,13 @@ fresnel_f16 fresnel_schlick_gen_f16(fresnel_f16 f0, fresnel_f16 f90, fresnel_f16
 fresnel_f16 fresnel_schlick_internal_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f16 c);
 fresnel_f16 fresnel_f0_in_medium_f16(fresnel_f16 f0, fresnel_f16 eta_e);
 fresnel_f16 fresnel_f0_from_ior_f16(fresnel_f16 eta, fresnel_f16 kappa);
-fresnel_f16 fresnel_lsk_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 c);
-fresnel_f16 fresnel_lsk_comp_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 a, fresnel_f16 alpha, fresnel_f16 c);
+fresnel_f16 fresnel_lsk_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
+fresnel_f16 fresnel_lsk_comp_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 a, fresnel_f16 alpha, fresnel_f16 c);
 fresnel_f16 fresnel_f82_f16(fresnel_f16 f0, fresnel_f16 f82, fresnel_f16 c);
 /* r clamped to 1 - 2^-11 = 0.99951 (the largest half below 1); n and k
  * clamped to the binary16 domain. */
 fresnel_f16 fresnel_gulbrandsen_f16(fresnel_f16 r, fresnel_f16 g, fresnel_f16 c);
-fresnel_f16 fresnel_approx_conductor_f16(fresnel_f16 n, fresnel_f16 k, fresnel_f16 c);
+fresnel_f16 fresnel_approx_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_cook_torrance_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);

@@ -145,12 +145,11 @@ typedef struct fresnel_lsk_prep_q15 {
  * 31-bit mantissas: exact to the inputs, whose Q16.16 step is 1.5e-5 (a
  * 3e-4 relative change of silver's eta 0.05: prepare on the host from double
  * where that matters). Cost: ~10 qf ops, 2 qf div (ior). */
-void fresnel_ior_prepare_q15(fresnel_q16 eta, fresnel_q16 kappa, fresnel_ior_prep_q15 *out);
-void fresnel_nk_prepare_q15(fresnel_q16 n, fresnel_q16 k, fresnel_nk_prep_q15 *out);
+fresnel_ior_prep_q15 fresnel_ior_prepare_q15(fresnel_q16 eta, fresnel_q16 kappa);
+fresnel_nk_prep_q15 fresnel_nk_prepare_q15(fresnel_q16 eta, fresnel_q16 kappa);
 /* a and alpha are LSK's compensation constants (`fresnel params`);
  * a = 0 gives the rescaled model. */
-void fresnel_lsk_prepare_q15(fresnel_q16 n, fresnel_q16 k, fresnel_q16 a, fresnel_q16 alpha,
-                             fresnel_lsk_prep_q15 *out);
+fresnel_lsk_prep_q15 fresnel_lsk_prepare_q15(fresnel_q16 eta, fresnel_q16 kappa, fresnel_q16 a, fresnel_q16 alpha);
 
 /* ---------------------------------------------------------------- schlick_q15.c */
 
@@ -211,9 +210,12 @@ fresnel_rgb_q15 fresnel_f82_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82, int
  * [0, FRESNEL_GULBRANDSEN_R_MAX_Q15], n clamped below at FRESNEL_ETA_MIN
  * (r -> 1, g = 1 gives n -> 0); the result is prepared for
  * fresnel_approx_conductor_q15. Cost: ~14 qf ops, 4 qf div, 1 qf sqrt. */
-void fresnel_gulbrandsen_nk_q15(int32_t r, int32_t g, fresnel_nk_prep_q15 *out);
+fresnel_nk_prep_q15 fresnel_gulbrandsen_nk_q15(int32_t r, int32_t g);
 /* The inverse n, k (Q16.16) -> r, g (Q15), as fresnel_gulbrandsen_rg. */
-void fresnel_gulbrandsen_rg_q15(fresnel_q16 n, fresnel_q16 k, fresnel_q15 *r, fresnel_q15 *g);
+typedef struct fresnel_rg_q15 {
+    fresnel_q15 r, g;
+} fresnel_rg_q15;
+fresnel_rg_q15 fresnel_gulbrandsen_rg_q15(fresnel_q16 eta, fresnel_q16 kappa);
 /* fresnel_approx_conductor_q15 at the n, k of fresnel_gulbrandsen_nk_q15(r, g).
  * Error <= FRESNEL_BOUND_GULBRANDSEN_Q15 LSB.
  * Cost: fresnel_gulbrandsen_nk_q15 + fresnel_approx_conductor_q15. */

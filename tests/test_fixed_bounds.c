@@ -219,7 +219,7 @@ static void check_prepare(const test_material *mat, int nmat)
         if (e < FRESNEL_ETA_MIN_Q16)
             continue;
         ref_lsk_fit(ed, kd, &a, &alpha);
-        fresnel_ior_prepare_q15(e, kk, &ri);
+        ri = fresnel_ior_prepare_q15(e, kk);
         fixed_ior(ed, kd, &hi);
         layout_bad += !ior_layout_ok(&ri) + !ior_layout_ok(&hi);
         {
@@ -227,9 +227,9 @@ static void check_prepare(const test_material *mat, int nmat)
             fixed_ior(mat[k].eta, mat[k].kappa, &dm);
             layout_bad += !ior_layout_ok(&dm);
         }
-        fresnel_nk_prepare_q15(e, kk, &rn);
+        rn = fresnel_nk_prepare_q15(e, kk);
         fixed_nk(ed, kd, &hn);
-        fresnel_lsk_prepare_q15(e, kk, fixed_q16(a), fixed_q16(alpha), &rl);
+        rl = fresnel_lsk_prepare_q15(e, kk, fixed_q16(a), fixed_q16(alpha));
         fixed_lsk(ed, kd, fixed_q16(a) / 65536.0, fixed_q16(alpha) / 65536.0, &hl);
         for (c = 0; c <= ONE; c += 7) {
             int d1 = abs(fresnel_conductor_q15(&ri, c) - fresnel_conductor_q15(&hi, c));
@@ -242,7 +242,7 @@ static void check_prepare(const test_material *mat, int nmat)
             if (d3 > worst_lsk)
                 worst_lsk = d3;
         }
-        fresnel_gulbrandsen_rg_q15(e, kk, &gr, &gg);
+        { fresnel_rg_q15 rg_ = fresnel_gulbrandsen_rg_q15(e, kk); gr = rg_.r; gg = rg_.g; }
         ref_gulbrandsen_rg(ed, kd, &r, &g);
         if (abs((int)gr - fixed_q15(r)) > worst_r)
             worst_r = abs((int)gr - fixed_q15(r));
@@ -305,7 +305,7 @@ static void check_variants(const test_material *mat, int nmat)
             o = fresnel_gulbrandsen_q15_rgb(r, g, c);
             SAME3(o, fresnel_gulbrandsen_q15(r.r, g.r, c), fresnel_gulbrandsen_q15(r.g, g.g, c),
                   fresnel_gulbrandsen_q15(r.b, g.b, c));
-            fresnel_gulbrandsen_nk_q15(r.r, g.r, &gnk);
+            gnk = fresnel_gulbrandsen_nk_q15(r.r, g.r);
             mismatch += fresnel_gulbrandsen_q15(r.r, g.r, c) != fresnel_approx_conductor_q15(&gnk, c);
             o = fresnel_approx_conductor_q15_rgb(nk, c);
             SAME3(o, fresnel_approx_conductor_q15(&nk[0], c), fresnel_approx_conductor_q15(&nk[1], c),
@@ -469,7 +469,7 @@ static void check_eta_min(void)
             fresnel_q16 kq = fixed_q16(kappas[ik]);
             int32_t c, f0 = fresnel_f0_from_ior_q15(codes[i], kq);
             snprintf(what, sizeof what, "eta code %ld kappa %g", (long)codes[i], kappas[ik]);
-            fresnel_ior_prepare_q15(codes[i], kq, &m);
+            m = fresnel_ior_prepare_q15(codes[i], kq);
             bad += f0 < 0 || f0 > ONE;
             note_worst(&wf, fabs(f0 / 32768.0 - ref_f0_from_ior(eta, kq / 65536.0)) * 32768.0, what, 1.0);
             for (c = 0; c <= ONE; c += (c >= ONE - 64) ? 1 : 3) {
@@ -518,7 +518,7 @@ static void check_prepare_powers(void)
                     if (ed > 32767.0 || kd > 32767.0)
                         continue;
                     snprintf(what, sizeof what, "eta code %ld kappa code %ld", (long)e, (long)k);
-                    fresnel_ior_prepare_q15(e, k, &m);
+                    m = fresnel_ior_prepare_q15(e, k);
                     layout_bad += !ior_layout_ok(&m);
                     for (c = 0; c <= ONE; c += (c < 1 || c >= ONE - 16) ? 1 : 97) {
                         int32_t got = fresnel_conductor_q15(&m, c);

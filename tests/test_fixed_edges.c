@@ -250,10 +250,10 @@ static void check_others(void)
             fresnel_lsk_prep_q15 lsk;
             fresnel_q15 gr, gg;
             fresnel_q16 e = q16s[ie], k = q16s[ik];
-            fresnel_ior_prepare_q15(e, k, &ior);
-            fresnel_nk_prepare_q15(e, k, &nk);
-            fresnel_lsk_prepare_q15(e, k, q16s[(ie + ik) % 12], q16s[(ie * 5 + ik) % 12], &lsk);
-            fresnel_gulbrandsen_rg_q15(e, k, &gr, &gg);
+            ior = fresnel_ior_prepare_q15(e, k);
+            nk = fresnel_nk_prepare_q15(e, k);
+            lsk = fresnel_lsk_prepare_q15(e, k, q16s[(ie + ik) % 12], q16s[(ie * 5 + ik) % 12]);
+            { fresnel_rg_q15 rg_ = fresnel_gulbrandsen_rg_q15(e, k); gr = rg_.r; gg = rg_.g; }
             bad += !in_range(gr) + !in_range(gg);
             bad += !in_range(fresnel_f0_from_ior_q15(e, k));
             bad += !in_range(fresnel_f0_in_medium_q15(cs[ik % NCS], e));

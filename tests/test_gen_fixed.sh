@@ -19,7 +19,7 @@ fi
 printf 'materials = cu\nmodels = schlick lut16\ntypes = q15\n' >"$t/q.scene"
 "$F" gen "$t/q.scene" -o "$t/q.h" 2>"$t/err"
 if grep -q 'fresnel_q_cu_f0_q15' "$t/q.h" && grep -q 'fresnel_q_cu_lut16_q15' "$t/q.h" &&
-    ! grep -qE 'static const (fresnel_rgb|float)' "$t/q.h"; then
+    ! grep -qE 'static const (fresnel_rgb|float) ' "$t/q.h"; then
     echo "PASS gen q15: a q15-only scene holds only Q1.15 constants (no float)"
 else
     echo "FAIL gen q15: q15-only scene: $(grep 'static const' "$t/q.h" | cut -c1-80)"

@@ -194,7 +194,7 @@ static int emit_lut_q15(fx_out *o, const char *prefix, const char *model, const 
                 break;
         }
         fprintf(f, "/* %s in Q1.15: residual (GT - Schlick(F0)) * 2^%d as int16. Evaluate with\n"
-                   " * fresnel_lut_%sresidual_q15_s16_rgb(f0_q15, table, %d, %s_%s_frac, c). */\n"
+                   " * fresnel_lut_%sresidual_s16_q15_rgb(f0_q15, table, %d, %s_%s_frac, c). */\n"
                    "enum { %s_%s_frac = %d };\n"
                    "static const int16_t %s[%d] FRESNEL_GEN_UNUSED = {",
                 model, frac, spacing == LUT_UNIFORM ? "linear_" : "", n, prefix, name, prefix, name, frac, id,
@@ -208,7 +208,7 @@ static int emit_lut_q15(fx_out *o, const char *prefix, const char *model, const 
                     model, n, n, id, 3 * n);
         else
             fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1). Evaluate with\n"
-                       " * fresnel_lut_%sq15_u16_rgb(table, %d, c). */\n"
+                       " * fresnel_lut_%su16_q15_rgb(table, %d, c). */\n"
                        "static const uint16_t %s[%d] FRESNEL_GEN_UNUSED = {",
                     model, form == LUT_CUBIC ? "cubic_" : (spacing == LUT_UNIFORM ? "linear_" : ""), n, id, 3 * n);
     }

@@ -253,7 +253,7 @@ void model_fixed_from_params(const model_params *m, model_fixed *out)
     fixed_ior(m->eta, m->kappa, &out->ior);
     fixed_ior(m->eta, 0.0, &out->dior);
     fixed_nk(m->eta, m->kappa, &out->nk);
-    fresnel_gulbrandsen_nk_q15(out->r, out->g, &out->gnk);
+    out->gnk = fresnel_gulbrandsen_nk_q15(out->r, out->g);
     fixed_lsk(m->eta, m->kappa, m->a, m->alpha, &out->lsk);
 }
 

@@ -29,12 +29,16 @@ fresnel_rgb_q15 fresnel_approx_conductor_q15_rgb(const fresnel_nk_prep_q15 m[3],
                 fresnel_approx_conductor_q15(&m[2], c));
 }
 
-void fresnel_nk_prepare_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_nk_prep_q15 *out)
+fresnel_nk_prep_q15 fresnel_nk_prepare_q15(fresnel_q16 eta_in, fresnel_q16 kappa_in)
 {
+    fresnel_nk_prep_q15 m;
+    fresnel_nk_prep_q15 *out = &m;
+    fresnel_q16 n_in = eta_in, k_in = kappa_in;
     fresnel_qf n = fresnel_i_qf(n_in <= FRESNEL_ETA_MIN_Q16 ? (uint32_t)FRESNEL_ETA_MIN_Q16 : (uint32_t)n_in, -16);
     fresnel_qf k = fresnel_i_qf(k_in <= 0 ? 0u : (uint32_t)k_in, -16);
     out->n = n;
     out->nk2 = fresnel_i_qf_add(fresnel_i_qf_mul(n, n), fresnel_i_qf_mul(k, k));
+    return m;
 }
 
 #else

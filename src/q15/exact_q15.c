@@ -160,8 +160,10 @@ static void fresnel_i_mul_wide(uint32_t a, uint32_t b, uint32_t *hi, uint32_t *l
  * exactly, in two words (R: |eta - 1| < 2^31, eta + 1 < 2^32, kappa < 2^31:
  * both products < 2^63, their difference too). Then the layout's a0, a0_lo
  * and shift from V exactly, and the other constants in qf. */
-void fresnel_ior_prepare_q15(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_ior_prep_q15 *out)
+fresnel_ior_prep_q15 fresnel_ior_prepare_q15(fresnel_q16 eta_in, fresnel_q16 kappa_in)
 {
+    fresnel_ior_prep_q15 m;
+    fresnel_ior_prep_q15 *out = &m;
     uint32_t eta = eta_in <= FRESNEL_ETA_MIN_Q16 ? (uint32_t)FRESNEL_ETA_MIN_Q16 : (uint32_t)eta_in;
     uint32_t kappa = kappa_in <= 0 ? 0u : (uint32_t)kappa_in;
     uint32_t em1 = eta >= 65536u ? eta - 65536u : 65536u - eta;
@@ -229,6 +231,7 @@ void fresnel_ior_prepare_q15(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_i
     out->n4 = fresnel_i_qf_mul(out->n4, out->n4);
     out->t1_inv = fresnel_i_qf_div(fresnel_i_qf_add(fresnel_i_qf_mul(ep1, ep1), k2), fresnel_i_qf_scale(e, 2));
     out->inv_eta2 = fresnel_i_qf_div(one, e2);
+    return m;
 }
 
 #else

@@ -17,8 +17,10 @@ static void fresnel_i_nmin_nmax(fresnel_qf sr, fresnel_qf omr, fresnel_qf opr, f
     *nmax = fresnel_i_qf_div(fresnel_i_qf_mul(ops, ops), omr);
 }
 
-void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_nk_prep_q15 *out)
+fresnel_nk_prep_q15 fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in)
 {
+    fresnel_nk_prep_q15 m;
+    fresnel_nk_prep_q15 *out = &m;
     /* k^2 = g (nmax - nmin)(sqrt r (n+1) + n - 1) / (1 + sqrt r) still
      * subtracts 1 from a sum near 1 when r -> 1 and g -> 1 (silver: the
      * difference is 6e-5 of its terms at r = 0.99988). The last factor is
@@ -47,10 +49,14 @@ void fresnel_gulbrandsen_nk_q15(int32_t r_in, int32_t g_in, fresnel_nk_prep_q15 
     q = fresnel_i_qf_div(fresnel_i_qf_scale(fresnel_i_qf_mul(gq, s), 1), opr);
     k2 = fresnel_i_qf_mul(q, fresnel_i_qf_add(q, fresnel_i_qf_div(fresnel_i_qf_scale(fresnel_i_qf_mul(fresnel_i_qf_mul(omg, s), nmax), 2), omr)));
     out->nk2 = fresnel_i_qf_add(fresnel_i_qf_mul(out->n, out->n), k2);
+    return m;
 }
 
-void fresnel_gulbrandsen_rg_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15 *r_out, fresnel_q15 *g_out)
+fresnel_rg_q15 fresnel_gulbrandsen_rg_q15(fresnel_q16 eta_in, fresnel_q16 kappa_in)
 {
+    fresnel_rg_q15 rg;
+    fresnel_q15 *r_out = &rg.r, *g_out = &rg.g;
+    fresnel_q16 n_in = eta_in, k_in = kappa_in;
     /* r = F0 of n + ik; g = (nmax(r) - n) / (nmax(r) - nmin(r)) with r
      * clamped to 0.9999 first, clamped to [0, 1]. */
     uint32_t nn = n_in <= FRESNEL_ETA_MIN_Q16 ? (uint32_t)FRESNEL_ETA_MIN_Q16 : (uint32_t)n_in;
@@ -76,15 +82,15 @@ void fresnel_gulbrandsen_rg_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q15 
     above = fresnel_i_qf_sub(nmax, n, &n_above_nmax);
     if (span.m == 0 || n_above_nmax) {
         *g_out = 0; /* r = 0 (n 1, k 0) has no edge tint; n beyond nmax neither */
-        return;
+        return rg;
     }
     *g_out = fresnel_i_q30_to_q15(fresnel_i_qf_to_q30_unit(fresnel_i_qf_div(above, span)));
+    return rg;
 }
 
 fresnel_q15 fresnel_gulbrandsen_q15(int32_t r, int32_t g, int32_t c)
 {
-    fresnel_nk_prep_q15 nk;
-    fresnel_gulbrandsen_nk_q15(r, g, &nk);
+    fresnel_nk_prep_q15 nk = fresnel_gulbrandsen_nk_q15(r, g);
     return fresnel_approx_conductor_q15(&nk, c);
 }
 

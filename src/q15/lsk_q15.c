@@ -46,9 +46,11 @@ fresnel_rgb_q15 fresnel_lsk_comp_q15_rgb(const fresnel_lsk_prep_q15 m[3], int32_
                 fresnel_lsk_comp_q15(&m[2], c));
 }
 
-void fresnel_lsk_prepare_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q16 a, fresnel_q16 alpha,
-                             fresnel_lsk_prep_q15 *out)
+fresnel_lsk_prep_q15 fresnel_lsk_prepare_q15(fresnel_q16 eta_in, fresnel_q16 kappa_in, fresnel_q16 a, fresnel_q16 alpha)
 {
+    fresnel_lsk_prep_q15 m;
+    fresnel_lsk_prep_q15 *out = &m;
+    fresnel_q16 n_in = eta_in, k_in = kappa_in;
     uint32_t n = n_in <= FRESNEL_ETA_MIN_Q16 ? (uint32_t)FRESNEL_ETA_MIN_Q16 : (uint32_t)n_in;
     uint32_t k = k_in <= 0 ? 0u : (uint32_t)k_in;
     uint32_t em1 = n >= 65536u ? n - 65536u : 65536u - n;
@@ -57,6 +59,7 @@ void fresnel_lsk_prepare_q15(fresnel_q16 n_in, fresnel_q16 k_in, fresnel_q16 a, 
     out->f0 = fresnel_i_qf_to_q30_unit(fresnel_i_qf_div(fresnel_i_qf_add(fresnel_i_qf_mul(d, d), k2), fresnel_i_qf_add(fresnel_i_qf_mul(s, s), k2)));
     out->a = fresnel_i_qf(a <= 0 ? 0u : (uint32_t)a, -16);
     out->alpha = alpha <= 0 ? 0 : (alpha >= FRESNEL_ALPHA_MAX_Q16 ? FRESNEL_ALPHA_MAX_Q16 : alpha);
+    return m;
 }
 
 #else

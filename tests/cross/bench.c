@@ -36,14 +36,14 @@ static fresnel_q15 e_ior_prepare(const conform_material *m, int32_t c)
 {
     fresnel_ior_prep_q15 out;
     (void)c;
-    fresnel_ior_prepare_q15(m->eta, m->kappa, &out);
+    out = fresnel_ior_prepare_q15(m->eta, m->kappa);
     return (fresnel_q15)out.a0;
 }
 static fresnel_q15 e_gulbrandsen_nk(const conform_material *m, int32_t c)
 {
     fresnel_nk_prep_q15 out;
     (void)c;
-    fresnel_gulbrandsen_nk_q15(m->r, m->g, &out);
+    out = fresnel_gulbrandsen_nk_q15(m->r, m->g);
     return (fresnel_q15)out.n.m;
 }
 

@@ -56,10 +56,10 @@ int main(void)
         fresnel_lsk_prep_q15 lsk;
         fresnel_q15 r, g;
         int32_t c;
-        fresnel_ior_prepare_q15(m->eta, m->kappa, &ior);
-        fresnel_nk_prepare_q15(m->eta, m->kappa, &nk);
-        fresnel_lsk_prepare_q15(m->eta, m->kappa, 65536, 7 << 16, &lsk);
-        fresnel_gulbrandsen_rg_q15(m->eta, m->kappa, &r, &g);
+        ior = fresnel_ior_prepare_q15(m->eta, m->kappa);
+        nk = fresnel_nk_prepare_q15(m->eta, m->kappa);
+        lsk = fresnel_lsk_prepare_q15(m->eta, m->kappa, 65536, 7 << 16);
+        { fresnel_rg_q15 rg_ = fresnel_gulbrandsen_rg_q15(m->eta, m->kappa); r = rg_.r; g = rg_.g; }
         h = fnv(fnv(fnv(h, (uint32_t)ior.a0), (uint32_t)ior.a0 >> 16), (uint32_t)ior.shift);
         h = fnv(fnv(h, (uint32_t)ior.a0_lo), (uint32_t)ior.a0_lo >> 16);
         h = fnv_qf(fnv_qf(fnv_qf(fnv_qf(h, ior.b), ior.n4), ior.t1_inv), ior.inv_eta2);

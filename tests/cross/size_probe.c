@@ -55,7 +55,7 @@ void probe(void)
 #elif PROBE == 14
     {
         fresnel_ior_prep_q15 out;
-        fresnel_ior_prepare_q15(f * 4, c * 4, &out);
+        out = fresnel_ior_prepare_q15(f * 4, c * 4);
         probe_out = (uint32_t)out.a0;
     }
 #elif PROBE == 16

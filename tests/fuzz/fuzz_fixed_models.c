@@ -276,10 +276,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     check("fresnel_f0_in_medium_q15", fresnel_f0_in_medium_q15(f0, eta), ref_f0_in_medium(unit_code(f0), e),
           FRESNEL_BOUND_F0_IN_MEDIUM_Q15, measured_eta(e), args);
 
-    fresnel_ior_prepare_q15(eta, kappa, &ior);
-    fresnel_ior_prepare_q15(eta, 0, &dior);
-    fresnel_nk_prepare_q15(eta, kappa, &nk);
-    fresnel_lsk_prepare_q15(eta, kappa, a, alpha, &lsk);
+    ior = fresnel_ior_prepare_q15(eta, kappa);
+    dior = fresnel_ior_prepare_q15(eta, 0);
+    nk = fresnel_nk_prepare_q15(eta, kappa);
+    lsk = fresnel_lsk_prepare_q15(eta, kappa, a, alpha);
     check_layout("fresnel_ior_prepare_q15", &ior, args);
     check_layout("fresnel_ior_prepare_q15 (kappa 0)", &dior, args);
     /* The two words a0, a0_lo hold eta^2 - kappa^2 - 1 of the Q16.16 codes
