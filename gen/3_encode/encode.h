@@ -6,7 +6,7 @@
 #include "2_derive/derive.h"
 
 /* LUT_GRAZING: nodes uniform in sqrt(c); LUT_UNIFORM: in c; LUT_GRAZING_PL:
- * uniform in fresnel_fixed.h's 64-piece linear stand-in for sqrt(c), the
+ * uniform in fresnel_fixed_fast.h's 64-piece linear stand-in for sqrt(c), the
  * position of fresnel_lut_pl_u16_q15_fast. */
 typedef enum lut_spacing { LUT_GRAZING, LUT_UNIFORM, LUT_GRAZING_PL } lut_spacing;
 /* cos theta of node i of n. */

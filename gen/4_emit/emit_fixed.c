@@ -201,7 +201,7 @@ static int emit_lut_q15(fx_out *o, const char *prefix, const char *model, const 
                 3 * n);
     } else {
         if (spacing == LUT_GRAZING_PL)
-            fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_fixed.h's\n"
+            fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_fixed_fast.h's\n"
                        " * piecewise-linear sqrt(c). Evaluate per channel with\n"
                        " * fresnel_lut_pl_u16_q15_fast(table + ch * %d, %d, c). */\n"
                        "static const uint16_t %s[%d] FRESNEL_GEN_UNUSED = {",
