@@ -98,13 +98,7 @@ report: $(BUILD)/fresnel
 	@mkdir -p $(BUILD)/report
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) cross-count > $(BUILD)/report/cross-count.txt
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) size > $(BUILD)/report/size.txt
-	cat $(BUILD)/report/cross-count.txt $(BUILD)/report/size.txt > $(BUILD)/report/cross.txt
-	$(BUILD)/fresnel report -o $(BUILD)/report --cross $(BUILD)/report/cross.txt
-	@{ printf '\n## Cortex-M0, Cortex-M4F and RV32IMC: instructions per call\n\n'; \
-	   printf 'From qemu instruction traces (`make cross-count`; ports/README.md explains the method), copper at 550 nm.\n\n```\n'; \
-	   cat $(BUILD)/report/cross-count.txt; \
-	   printf '```\n\n## Code size\n\nBytes one call of a model adds to an otherwise empty program (`make size`).\n\n'; \
-	   cat $(BUILD)/report/size.txt; } >> $(BUILD)/report/report.md
+	$(BUILD)/fresnel report -o $(BUILD)/report --cross $(BUILD)/report/cross-count.txt --size $(BUILD)/report/size.txt
 	@echo "make report: build/report/report.md (targets, accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/"
 
 bench: $(BUILD)/fresnel

@@ -10,22 +10,23 @@
 
 static void report_usage(FILE *out)
 {
-    fprintf(out, "usage: fresnel report [--scene FILE] [-o DIR] [--data DIR] [--cross FILE] [--no-timing]\n"
-                 "                      [--no-instructions]\n\n"
+    fprintf(out, "usage: fresnel report [--scene FILE] [-o DIR] [--data DIR] [--cross FILE] [--size FILE]\n"
+                 "                      [--no-timing] [--no-instructions]\n\n"
                  "Measures every material x model x number type of the scene (default\n"
                  "data/scenes/report.scene) against the spectral ground truth and writes\n"
                  "DIR/report.md, DIR/pareto.svg, DIR/sigma.svg and DIR/curves/<material>.svg\n"
                  "(default DIR build/report). Timing: median of 5 batches of 2^20 evaluations;\n"
                  "instructions: valgrind --tool=callgrind (skipped when valgrind is missing).\n"
-                 "--no-timing and --no-instructions skip those (for tests). --cross FILE: the\n"
-                 "output of `make cross-count` and `make size`, for the targets table's Cortex-M0\n"
-                 "rows (make report passes it).\n");
+                 "--no-timing and --no-instructions skip those (for tests). --cross FILE and\n"
+                 "--size FILE: the output of `make cross-count` and of `make size`, for the\n"
+                 "targets table's Cortex-M0 rows and the report's instruction-count and\n"
+                 "code-size sections (make report passes both).\n");
 }
 
 int cmd_report(int argc, char **argv)
 {
     report_options o;
-    static const char *const options[] = {"--scene", "-o", "--cross", "--data", "--no-timing", "--no-instructions",
+    static const char *const options[] = {"--scene", "-o", "--cross", "--size", "--data", "--no-timing", "--no-instructions",
                                           "--help", NULL};
     int i;
     memset(&o, 0, sizeof o);
@@ -52,6 +53,8 @@ int cmd_report(int argc, char **argv)
                 o.out_dir = v;
             else if (!strcmp(argv[i - 1], "--cross"))
                 o.cross_path = v;
+            else if (!strcmp(argv[i - 1], "--size"))
+                o.size_path = v;
             else
                 o.data_dir = v;
         }

@@ -1,6 +1,7 @@
 /* The report: every material x model x number type of a scene measured
  * against the spectral ground truth, timed, and written as report.md with
  * its plots (report.h). */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -260,6 +261,45 @@ static void write_hoffman(report_run *r, FILE *f)
  * against mean error over the metals, cheapest first, each with what it
  * costs and buys over the previous one. Cost is host instructions
  * (callgrind: deterministic) where measured, else time. */
+/* A file's bytes into the report; 0, or CLI_FAILURE after a message. */
+static int copy_file(FILE *f, const char *path)
+{
+    char buf[4096];
+    size_t n;
+    FILE *in = fopen(path, "rb");
+    if (!in)
+        return cli_error(path, "cannot read: %s", strerror(errno)), CLI_FAILURE;
+    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+        fwrite(buf, 1, n, f);
+    if (ferror(in)) {
+        fclose(in);
+        return cli_error(path, "cannot read"), CLI_FAILURE;
+    }
+    fclose(in);
+    return 0;
+}
+
+/* The cross-target sections, from the outputs of `make cross-count` and
+ * `make size` (--cross, --size) as those commands print them. */
+static int write_cross(const report_run *r, FILE *f)
+{
+    int status;
+    if (r->cross_path) {
+        fputs("\n## Cortex-M0, Cortex-M4F and RV32IMC: instructions per call\n\n"
+              "From qemu instruction traces (`make cross-count`; ports/README.md explains the method), copper at "
+              "550 nm.\n\n```\n", f);
+        if ((status = copy_file(f, r->cross_path)))
+            return status;
+        fputs("```\n", f);
+    }
+    if (r->size_path) {
+        fputs("\n## Code size\n\nBytes one call of a model adds to an otherwise empty program (`make size`).\n\n", f);
+        if ((status = copy_file(f, r->size_path)))
+            return status;
+    }
+    return 0;
+}
+
 static void write_budget(report_run *r, FILE *f)
 {
     int n = r->sc.model_count * report_type_count, k, j, nf = 0, a, b, use_instr = 1;
@@ -340,6 +380,7 @@ int report_write(const report_options *o)
     memset(&r, 0, sizeof r);
     r.out_dir = o->out_dir;
     r.cross_path = o->cross_path;
+    r.size_path = o->size_path;
     if ((status = scene_load(scene_path, &r.sc)))
         return status;
     r.timing = timing;
@@ -427,6 +468,10 @@ int report_write(const report_options *o)
     write_approaches(&r, out.f);
     write_hoffman(&r, out.f);
     write_budget(&r, out.f);
+    if ((status = write_cross(&r, out.f))) {
+        cli_out_abort(&out);
+        goto done;
+    }
     if ((status = commit_out(&out)))
         goto done;
     if ((status = report_plots(&r, (const double(*)[REPORT_SIGMAS])sig_de)))

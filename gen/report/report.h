@@ -63,7 +63,8 @@ typedef struct report_run {
     int timed_material; /* the material timings use */
     double hoffman_rms[REPORT_HOFFMAN][3]; /* ours in ACEScg: Schlick, fitted eta/kappa, point-sampled */
     int hoffman_in_gamut[REPORT_HOFFMAN];  /* F0 inside ACEScg, unclamped */
-    const char *cross_path;                /* make cross-count + make size output, or NULL */
+    const char *cross_path;                /* `make cross-count` output, or NULL */
+    const char *size_path;                 /* `make size` output, or NULL */
     int timing;                            /* 0: --no-timing */
 } report_run;
 
@@ -104,7 +105,8 @@ void report_curve_de(const lab_space *ls, const double (*gt)[3], const double (*
 /* What `fresnel report` was asked for; report_write measures and writes it:
  * 0, or a CLI_* status after a message. */
 typedef struct report_options {
-    const char *scene_path, *out_dir, *cross_path, *data_dir; /* data_dir NULL: the default */
+    const char *scene_path, *out_dir, *data_dir; /* data_dir NULL: the default */
+    const char *cross_path, *size_path;          /* `make cross-count`, `make size` output, or NULL */
     int timing, instructions; /* 0: skip timing / callgrind counts */
 } report_options;
 int report_write(const report_options *o);

@@ -3,7 +3,7 @@
  * Accuracy comes from the run's own materials (the 14 metals of Hoffman's
  * table must be in the scene), host speed from bench_targets.c, Cortex-M0
  * counts and sizes from the output of `make cross-count` and `make size`
- * (--cross FILE; make report passes it). */
+ * (--cross and --size FILE; make report passes them). */
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
@@ -305,7 +305,7 @@ static void m0_targets(const report_run *r, FILE *f)
     long t, ro, mt, mr;
     int k;
     if (!r->cross_path) {
-        target(f, "Cortex-M0 instructions and sizes", "", UNMEASURED, "run through `make report` (--cross)");
+        target(f, "Cortex-M0 instructions and sizes", "", UNMEASURED, "run through `make report` (--cross, --size)");
         return;
     }
     for (k = 0; k < 5; k++) {
@@ -325,15 +325,15 @@ static void m0_targets(const report_run *r, FILE *f)
             target(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (library function %.0f)",
                    fast, lib);
     }
-    size_line(r->cross_path, "schlick-only fixed scene:", &t, &ro, &mt, &mr);
+    size_line(r->size_path, "schlick-only fixed scene:", &t, &ro, &mt, &mr);
     if (t >= 0)
         target(f, "Cortex-M0 -Os, a Schlick-only fixed scene, one channel per material", "<= 64 B .text, <= 8 B .rodata per material",
                t <= 64 && mr <= 8 ? PASS : MISS, ".text %ld B; .rodata %ld B per further material", t, mr);
-    size_line(r->cross_path, "schlick-only fixed scene, RGB", &t, &ro, &mt, &mr);
+    size_line(r->size_path, "schlick-only fixed scene, RGB", &t, &ro, &mt, &mr);
     if (t >= 0)
         target(f, "Cortex-M0 -Os, the same scene in RGB (an F0 triple per material)", "<= 64 B .text, <= 8 B .rodata per material",
                t <= 64 && mr <= 8 ? PASS : MISS, ".text %ld B; .rodata %ld B per further material", t, mr);
-    size_line(r->cross_path, "whole fixed runtime", &t, &ro, &mt, &mr);
+    size_line(r->size_path, "whole fixed runtime", &t, &ro, &mt, &mr);
     if (t >= 0)
         target(f, "Cortex-M0 -Os, the whole fixed-point runtime (every model's Q15 code)", "<= 2048 B .text",
                t <= 2048 ? PASS : MISS, ".text %ld B", t);
