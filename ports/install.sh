@@ -116,8 +116,11 @@ for h in include/*.h; do put 644 include "$h"; done
 put 644 lib "$build/libfresnel.a"
 put 755 bin "$build/fresnel"
 mkdirs lib/pkgconfig
-printf 'prefix=%s\nincludedir=${prefix}/include\nlibdir=${prefix}/lib\n\nName: fresnel\nDescription: Fresnel reflectance for small devices\nVersion: %s\nCflags: -I${includedir}\nLibs: -L${libdir} -lfresnel -lm\n' \
-    "$prefix" "$version" >"$root/lib/pkgconfig/fresnel.pc" || exit 1
+# The prefix may hold any character but a newline: escape what sed's
+# replacement gives a meaning to (\, & and the | delimiter).
+prefix_sed=$(printf '%s' "$prefix" | sed 's/[\\&|]/\\&/g')
+sed -e "s|@PREFIX@|$prefix_sed|" -e "s|@FRESNEL_VERSION@|$version|" ports/fresnel.pc.in \
+    >"$root/lib/pkgconfig/fresnel.pc" || exit 1
 echo "f lib/pkgconfig/fresnel.pc" >>"$list"
 put 644 lib/cmake/fresnel ports/cmake/fresnelConfig.cmake
 sed "s/@FRESNEL_VERSION@/$version/" ports/cmake/fresnelConfigVersion.cmake.in >"$root/lib/cmake/fresnel/fresnelConfigVersion.cmake" || exit 1
