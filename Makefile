@@ -72,7 +72,26 @@ $(BUILD)/tests/%: tests/%.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Isrc -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
-test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example
+# Programs the test scripts run, built here with the flags of this pass (so
+# the sanitizer pass runs them sanitized): the fuzz targets linked with a
+# replay driver (tests/test_fuzz_replay.sh), the OSMesa GLSL test
+# (tests/test_glsl.sh), the generated-header checker (tests/test_gen_matrix.sh).
+FUZZ_REPLAY := $(patsubst tests/fuzz/%.c,$(BUILD)/fuzz-replay/%,$(wildcard tests/fuzz/fuzz_*.c))
+$(BUILD)/fuzz-replay/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay_main.c $(GEN_OBJ) $(BUILD)/libfresnel.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_GEN) -DFUZZ_REPLAY -Isrc -Itests -Itests/fuzz -o $@ $< tests/fuzz/replay_main.c $(GEN_OBJ) \
+	    $(BUILD)/libfresnel.a $(LDLIBS)
+GLSL_TEST_SRC := tests/glsl_test.c ports/glsl/host/glctx.c ports/glsl/host/png.c
+$(BUILD)/glsl/glsl_test: $(GLSL_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_GEN) -Iports/glsl/host -Itests -o $@ $(GLSL_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a \
+	    $$(pkg-config --cflags --libs osmesa) $(LDLIBS)
+$(BUILD)/tests/gen_matrix_check: tests/gen_matrix_check.c $(BUILD)/libfresnel.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(BUILD)/libfresnel.a $(LDLIBS)
+
+test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
+           $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with
 # apt-get when run as root, else the exact apt-get line and a stop.
