@@ -19,6 +19,12 @@ typedef struct emit_input {
 } emit_input;
 
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
+/* `fresnel gen`: load the manifest, derive every material, emit the C header
+ * (glsl 0) or the GLSL source and, if tex_path, its LUT texture, each written
+ * to a temporary beside its target and renamed over it only on success
+ * (dir_option NULL: the default data directory). 0 or a CLI_* status after a
+ * message. */
+int emit_scene(const char *manifest, const char *out_path, const char *tex_path, const char *dir_option, int glsl);
 void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
 /* One material's float parameters for the scene's models, through the back
  * end's syntax for an RGB triple and a scalar. */
