@@ -25,7 +25,7 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
-#include "model/models.h"
+#include "model/registry.h"
 #include "model/reference.h"
 
 #define GRID_MAX 2100

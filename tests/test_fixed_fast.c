@@ -19,7 +19,7 @@
 #include "fresnel_fixed_fast.h"
 #include "harness.h"
 #include "worst.h"
-#include "model/models.h"
+#include "model/registry.h"
 #include "model/reference.h"
 
 #define ONE 32768

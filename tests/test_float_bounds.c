@@ -8,7 +8,7 @@
 #include "fresnel.h"
 #include "grid.h"
 #include "harness.h"
-#include "model/models.h"
+#include "model/registry.h"
 #include "model/reference.h"
 
 struct worst {

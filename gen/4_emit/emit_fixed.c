@@ -232,19 +232,15 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
     const scene *sc = in->sc;
     const material_params *p = &in->params[mi];
     lut_spacing spacing = scene_lut_spacing(sc);
-    int m, residual_lut = 0;
+    unsigned reads = scene_reads(sc, 0), q15_reads = scene_reads(sc, 1);
+    int m;
     fx_out o;
     o.f = f;
     o.in = in;
     o.bad = 0;
-    for (m = 0; m < sc->model_count; m++) {
-        int form = LUT_PLAIN;
-        if (scene_model_lut_size(sc->models[m], &form) && form == LUT_RESIDUAL)
-            residual_lut = 1;
-    }
-    if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") || residual_lut)
+    if (reads & MP_F0)
         emit_q15_rgb(&o, prefix, "f0", p->f0, 32768, "F0");
-    if (scene_has_model(sc, "f82")) {
+    if (reads & MP_F82) {
         int ch;
         char id[160];
         long a[3];
@@ -262,23 +258,23 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
                    "static const int32_t %s[3] FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
                 id, a[0], a[1], a[2]);
     }
-    if (scene_has_model(sc, "gulbrandsen")) {
+    if (reads & MP_GULB) {
         emit_q15_rgb(&o, prefix, "gulbrandsen_r", p->gulb_r, 32768, "Gulbrandsen r");
         emit_q15_rgb(&o, prefix, "gulbrandsen_g", p->gulb_g, 32768, "Gulbrandsen g");
     }
-    if (scene_has_model(sc, "lsk"))
+    if (q15_reads & MQ_LSK)
         emit_lsk3(&o, prefix, "lsk", p, 0);
-    if (scene_has_model(sc, "lsk-comp"))
+    if (q15_reads & MQ_LSK_COMP)
         emit_lsk3(&o, prefix, "lsk_comp", p, 1);
-    if (scene_has_model(sc, "exact"))
+    if (q15_reads & MQ_IOR)
         emit_ior3(&o, prefix, "ior", p->eta_fit, p->kappa_fit, "eta, kappa fitted to the ground truth");
-    if (scene_has_model(sc, "exact-gaussian"))
+    if (q15_reads & MQ_IOR_GAUSS)
         emit_ior3(&o, prefix, "ior_gaussian", p->eta_gauss, p->kappa_gauss, "Metzgar's Gaussian-window eta', kappa'");
-    if (scene_has_model(sc, "exact-point"))
+    if (q15_reads & MQ_IOR_POINT)
         emit_ior3(&o, prefix, "ior_point", p->eta_point, p->kappa_point, "eta, kappa point-sampled");
-    if (scene_has_model(sc, "approx-conductor"))
+    if (q15_reads & MQ_NK)
         emit_nk3(&o, prefix, p);
-    if (scene_has_model(sc, "cook-torrance")) {
+    if (q15_reads & MQ_CT) {
         char id[160];
         snprintf(id, sizeof id, "%s_ct_ior_q15", prefix);
         fprintf(f, "/* Cook-Torrance's representative IOR (fresnel_cook_torrance_q15_rgb);\n * " IOR_FIELDS " */\n"

@@ -227,27 +227,17 @@ static void emit_model_function(FILE *f, const char *scene_prefix, const char *p
                 kind, f0, scene_prefix, prefix, u->name, u->n);
         return;
     }
-    if (!strcmp(model, "schlick"))
-        fprintf(f, "    return fresnel_schlick_rgb(%s_f0, c);\n", prefix);
-    else if (!strcmp(model, "lsk"))
-        fprintf(f, "    return fresnel_lsk_rgb(%s_eta, %s_kappa, c);\n", prefix, prefix);
-    else if (!strcmp(model, "lsk-comp"))
-        fprintf(f, "    return fresnel_lsk_comp_rgb(%s_eta, %s_kappa, %s_lsk_a, %s_lsk_alpha, c);\n", prefix, prefix,
-                prefix, prefix);
-    else if (!strcmp(model, "f82"))
-        fprintf(f, "    return fresnel_f82_rgb(%s_f0, %s_f82, c);\n", prefix, prefix);
-    else if (!strcmp(model, "gulbrandsen"))
-        fprintf(f, "    return fresnel_gulbrandsen_rgb(%s_gulbrandsen_r, %s_gulbrandsen_g, c);\n", prefix, prefix);
-    else if (!strcmp(model, "cook-torrance"))
-        fprintf(f, "    return fresnel_cook_torrance_rgb(%s_f0, %s_ct_eta, %s_ct_kappa, c);\n", prefix, prefix, prefix);
-    else if (!strcmp(model, "exact"))
-        fprintf(f, "    return fresnel_conductor_rgb(%s_eta, %s_kappa, c);\n", prefix, prefix);
-    else if (!strcmp(model, "exact-gaussian"))
-        fprintf(f, "    return fresnel_conductor_rgb(%s_eta_gaussian, %s_kappa_gaussian, c);\n", prefix, prefix);
-    else if (!strcmp(model, "exact-point"))
-        fprintf(f, "    return fresnel_conductor_rgb(%s_eta_point, %s_kappa_point, c);\n", prefix, prefix);
-    else /* approx-conductor: the manifest admits no other name */
-        fprintf(f, "    return fresnel_approx_conductor_rgb(%s_eta, %s_kappa, c);\n", prefix, prefix);
+    {
+        const struct model *row = model_find_offered(model, MODEL_SCENE);
+        const char *t;
+        fputs("    return ", f);
+        for (t = row->glsl; *t; t++)
+            if (*t == '@')
+                fprintf(f, "%s_", prefix);
+            else
+                fputc(*t, f);
+        fputs(";\n", f);
+    }
     fputs("}\n", f);
 }
 

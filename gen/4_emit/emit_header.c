@@ -13,15 +13,6 @@
 #include "4_emit/emit.h"
 #include "scene/scene.h"
 
-static int scene_has_residual_lut(const scene *sc)
-{
-    int i, form;
-    for (i = 0; i < sc->model_count; i++)
-        if (scene_model_lut_size(sc->models[i], &form) && form == LUT_RESIDUAL)
-            return 1;
-    return 0;
-}
-
 /* A binary32 literal that reads back to the same float: 9 significant
  * digits, always with a '.' or an exponent, and the 'f' suffix. (GLSL:
  * emit_glsl.c.) */
@@ -122,33 +113,32 @@ static int params_fit_float(const emit_input *in, const material_params *p)
 void emit_material_params(FILE *f, const scene *sc, const material_params *p, const char *prefix, emit_rgb_fn rgb,
                           emit_float_fn flt)
 {
-    if (scene_has_model(sc, "schlick") || scene_has_model(sc, "f82") || scene_has_model(sc, "cook-torrance") ||
-        scene_has_residual_lut(sc))
+    unsigned reads = scene_reads(sc, 0);
+    if (reads & MP_F0)
         rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");
-    if (scene_has_model(sc, "f82"))
+    if (reads & MP_F82)
         rgb(f, prefix, "f82", p->f82, "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
-    if (scene_has_model(sc, "exact") || scene_has_model(sc, "lsk") || scene_has_model(sc, "lsk-comp") ||
-        scene_has_model(sc, "approx-conductor")) {
+    if (reads & MP_ETA_FIT) {
         rgb(f, prefix, "eta", p->eta_fit, "eta fitted to the ground truth (exact, lsk, approx-conductor)");
         rgb(f, prefix, "kappa", p->kappa_fit, "kappa fitted to the ground truth");
     }
-    if (scene_has_model(sc, "lsk-comp")) {
+    if (reads & MP_LSK) {
         rgb(f, prefix, "lsk_a", p->lsk_a, "LSK compensation weight a (fresnel_lsk_comp_rgb)");
         rgb(f, prefix, "lsk_alpha", p->lsk_alpha, "LSK compensation exponent alpha");
     }
-    if (scene_has_model(sc, "exact-gaussian")) {
+    if (reads & MP_ETA_GAUSS) {
         rgb(f, prefix, "eta_gaussian", p->eta_gauss, "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
         rgb(f, prefix, "kappa_gaussian", p->kappa_gauss, "Metzgar: kappa' in a Gaussian window");
     }
-    if (scene_has_model(sc, "exact-point")) {
+    if (reads & MP_ETA_POINT) {
         rgb(f, prefix, "eta_point", p->eta_point, "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
         rgb(f, prefix, "kappa_point", p->kappa_point, "kappa point-sampled at the dominant wavelengths");
     }
-    if (scene_has_model(sc, "gulbrandsen")) {
+    if (reads & MP_GULB) {
         rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
         rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen edge tint g from F0 and the fitted eta");
     }
-    if (scene_has_model(sc, "cook-torrance")) {
+    if (reads & MP_CT) {
         flt(f, prefix, "ct_eta", p->ct_eta,
             "Cook-Torrance representative IOR at the green wavelength (fresnel_cook_torrance_rgb)");
         flt(f, prefix, "ct_kappa", p->ct_kappa, "Cook-Torrance representative kappa");

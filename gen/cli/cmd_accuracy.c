@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
-#include "model/models.h"
+#include "model/registry.h"
 #include "model/reference.h"
 #include "1_spectral/spectral.h"
 
@@ -23,7 +23,7 @@ static const double default_nm[] = {450.0, 550.0, 650.0};
  * means something inside a dielectric (its own table). */
 static int in_main_table(const model *m)
 {
-    return strncmp(m->name, "exact", 5) && strcmp(m->name, "schlick-internal");
+    return (m->offered & MODEL_EVAL) && !(m->offered & MODEL_EXACT) && m != model_schlick_internal;
 }
 
 /* Schlick with the transmitted angle against the exact dielectric, for light
@@ -31,7 +31,7 @@ static int in_main_table(const model *m)
 static void internal_row(const char *id, double nm, double eta, int steps)
 {
     model_params mp;
-    const model *m = model_find("schlick-internal");
+    const model *m = model_schlick_internal;
     double worst = 0.0;
     int a;
     model_derive(1.0, 0.0, eta, 1.0, 5.0, &mp);

@@ -13,8 +13,6 @@
 #define WHERE "fresnel curve"
 #define MAX_MODELS 32
 
-static const char default_models[] =
-    "schlick lsk lsk-comp f82 gulbrandsen cook-torrance exact exact-gaussian approx-conductor lut16 lut32";
 
 int cmd_curve(int argc, char **argv)
 {
@@ -24,7 +22,7 @@ int cmd_curve(int argc, char **argv)
     material_params p;
     scene_model models[MAX_MODELS];
     char *names = NULL, *tok;
-    const char *model_list = default_models;
+    const char *model_list = model_curve_default;
     static const char *const options[] = {"--material", "--space", "--sigma", "--n1", "--data", "--samples",
                                           "--models", "--lut-spacing", "--help", NULL};
     const char *val;
@@ -41,7 +39,7 @@ int cmd_curve(int argc, char **argv)
                    "prints. N rows (default 91), theta uniform from 0 to 90 degrees.\n"
                    "Default models: %s\n\n%s"
                    "  --samples N     rows, 2..100000\n",
-                   default_models, material_options_help);
+                   model_curve_default, material_options_help);
             return 0;
         }
         if (!cli_in_list(argv[i], options))

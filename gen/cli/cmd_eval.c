@@ -5,7 +5,7 @@
 
 #include "cli/cli.h"
 #include "3_encode/fixed_params.h"
-#include "model/models.h"
+#include "model/registry.h"
 
 #define WHERE "fresnel eval"
 
@@ -36,7 +36,8 @@ static void eval_usage(FILE *out)
             "nothing is written to stdout. A read or write error exits with status 1.\n"
             "\nmodels:\n");
     for (i = 0; i < model_count; i++)
-        fprintf(out, "  %-18s %s\n", model_table[i].name, model_table[i].params);
+        if (model_table[i].offered & MODEL_EVAL)
+            fprintf(out, "  %-18s %s\n", model_table[i].name, model_table[i].params);
 }
 
 /* Split s in place at commas; returns the number of fields (at most max). */
@@ -96,10 +97,7 @@ int cmd_eval(int argc, char **argv)
         if (!strcmp(opt, "--model")) {
             if (!(m = model_find(val))) {
                 const char *names[64];
-                int k;
-                for (k = 0; k < model_count && k < 63; k++)
-                    names[k] = model_table[k].name;
-                names[k] = NULL;
+                model_names(MODEL_EVAL, names, 64);
                 return cli_unknown(WHERE, "model", val, names);
             }
         } else if (!strcmp(opt, "--type")) {

@@ -11,6 +11,7 @@
 
 static void gen_usage(FILE *out)
 {
+    const char *names[SCENE_MAX_MODELS + 1];
     int i;
     fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--glsl [--glsl-texture OUT_TEX.h]] [--data DIR]\n\n"
                  "Reads the scene manifest SCENE and writes a C header with static const\n"
@@ -27,15 +28,16 @@ static void gen_usage(FILE *out)
                  "Manifest format: `key = value` lines, # comments (see gen/scene/scene.h):\n"
                  "  materials = au cu al      required; ids from `fresnel materials`\n"
                  "  models = schlick f82 lut32 required; one or more of:");
-    for (i = 0; scene_model_names[i]; i++)
-        fprintf(out, " %s", scene_model_names[i]);
-    fprintf(out, " lutN lutN-residual lutN-cubic (N = %d..%d)\n"
+    model_names(MODEL_SCENE, names, SCENE_MAX_MODELS + 1);
+    for (i = 0; names[i]; i++)
+        fprintf(out, " %s", names[i]);
+    fprintf(out, " %s (N = %d..%d)\n"
                  "  space = srgb              display-p3 dci-p3 adobe-rgb rec2020 acescg\n"
                  "                            (any case; also rec709 bt709 p3 bt2020)\n"
                  "  sigma = 25                Gaussian window, nm (0 = point sampling)\n"
                  "  n1 = 1                    index of the incident medium\n"
                  "  types = f32               number types:",
-            SCENE_LUT_MIN, SCENE_LUT_MAX);
+            model_lut_patterns, SCENE_LUT_MIN, SCENE_LUT_MAX);
     for (i = 0; scene_type_names[i]; i++)
         fprintf(out, " %s", scene_type_names[i]);
     fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_pl_u16_q15_fast)\n");

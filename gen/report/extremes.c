@@ -11,7 +11,7 @@
 #include "fresnel.h"
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
-#include "model/models.h"
+#include "model/registry.h"
 #include "model/reference.h"
 
 const extreme_case extreme_cases[] = {
@@ -110,7 +110,7 @@ double extreme_f82_unclamped(double f0, double f82, double c)
 
 /* ---- number types: one evaluator each; every table has a row (or column) per type. */
 
-static int f32_has(const model *m) { return m->f32 != NULL; }
+static int f32_has(const model *m) { return (m->offered & MODEL_EVAL) && m->f32 != NULL; }
 static void f32_prepare(const extreme_case *e, extreme_typed *t)
 {
     memset(t, 0, sizeof *t);
@@ -130,7 +130,7 @@ static double f32_bound(const model *m) { return m->bound; }
  * +-Inf the extreme codes; NaN has no code. The parameters are rounded to
  * the fixed-point formats and the reference sees them rounded
  * (model_params_round_fixed), as tests/test_fixed_bounds.c does. */
-static int q15_has(const model *m) { return m->q15 != NULL; }
+static int q15_has(const model *m) { return (m->offered & MODEL_EVAL) && m->q15 != NULL; }
 static void q15_prepare(const extreme_case *e, extreme_typed *t)
 {
     memset(t, 0, sizeof *t);
@@ -166,7 +166,7 @@ static double q15_bound(const model *m) { return m->q15_bound / 32768.0; }
 /* binary16: parameters rounded to half; eta and kappa outside the binary16
  * domain are clamped to it for the reference too (what the runtime
  * evaluates), and the case is marked out of domain. */
-static int f16_has(const model *m) { return m->f16 != NULL; }
+static int f16_has(const model *m) { return (m->offered & MODEL_EVAL) && m->f16 != NULL; }
 static void f16_prepare(const extreme_case *e, extreme_typed *t)
 {
     double eta, kappa;
@@ -298,10 +298,12 @@ static void table_cases(void)
            "| case | eta | kappa | n1 | type |",
            n, (double)FRESNEL_ETA_MAX_F16, (double)FRESNEL_KAPPA_MAX_F16);
     for (mi = 0; mi < model_count; mi++)
-        printf(" %s |", model_table[mi].name);
+        if (model_table[mi].offered & MODEL_EVAL)
+            printf(" %s |", model_table[mi].name);
     printf("\n|---|---:|---:|---:|---|");
     for (mi = 0; mi < model_count; mi++)
-        printf("---:|");
+        if (model_table[mi].offered & MODEL_EVAL)
+            printf("---:|");
     printf("\n");
     for (ei = 0; ei < extreme_case_count; ei++) {
         const extreme_case *e = &extreme_cases[ei];
@@ -314,6 +316,8 @@ static void table_cases(void)
                 const model *m = &model_table[mi];
                 int bad;
                 double worst;
+                if (!(m->offered & MODEL_EVAL))
+                    continue;
                 if (!ty->has(m)) {
                     printf(" |");
                     continue;
@@ -327,7 +331,9 @@ static void table_cases(void)
     for (ti = 0; ti < extreme_type_count; ti++) {
         printf("| bound | | | | %s |", extreme_types[ti].name);
         for (mi = 0; mi < model_count; mi++)
-            printf(" %.1e |", extreme_types[ti].has(&model_table[mi]) ? extreme_types[ti].bound(&model_table[mi]) : 0.0);
+            if (model_table[mi].offered & MODEL_EVAL)
+                printf(" %.1e |",
+                       extreme_types[ti].has(&model_table[mi]) ? extreme_types[ti].bound(&model_table[mi]) : 0.0);
         printf("\n");
     }
 }
@@ -335,7 +341,7 @@ static void table_cases(void)
 static void table_exact(void)
 {
     static const float cs[] = {0.0f, 1e-8f, 0.1f, 0.5f, 1.0f};
-    const model *m = model_find("exact");
+    const model *m = model_exact;
     int ei, ci;
     if (!m)
         return;
@@ -434,7 +440,7 @@ double extreme_direct_max_err(int kind, int ti, float a0, float b0, int *bad, in
 
 double extreme_direct_bound(int kind, int ti)
 {
-    const model *m = model_find(kind ? "gulbrandsen" : "f82");
+    const model *m = kind ? model_gulbrandsen : model_f82;
     return extreme_types[ti].bound(m);
 }
 

@@ -6,7 +6,7 @@
 
 #include <stdint.h>
 
-#include "model/models.h"
+#include "model/registry.h"
 
 /* A material seen from an incident medium: eta + i kappa absolute, n1 real. */
 typedef struct extreme_case {

@@ -12,6 +12,7 @@
 #include "cli/cli.h"
 #include "bench/bench.h"
 #include "model/reference.h"
+#include "model/registry.h"
 #include "report/report.h"
 
 #define WHERE "fresnel report"
@@ -167,9 +168,7 @@ static int model_index(report_run *r, const char *name)
 
 static void write_approaches(report_run *r, FILE *f)
 {
-    static const char *const order[] = {"exact-gaussian", "exact-point", "schlick", "f82", "exact", "gulbrandsen",
-                                        "lsk", "lsk-comp", "cook-torrance", "approx-conductor", "lut8", "lut16",
-                                        "lut32", "lut16-residual", "lut16-cubic", "lut32-cubic", NULL};
+    const char *const *order = model_approaches_order;
     int i, k;
     fprintf(f, "\n## The approaches the papers argue about, side by side\n\n"
                "Mean CIEDE2000 per material (f32): Metzgar's exact Fresnel on Gaussian-window eta', kappa' "

@@ -13,11 +13,6 @@
 #include "3_encode/encode.h"
 #include "1_spectral/spectral.h"
 
-const char *const scene_model_names[] = {"schlick",        "lsk",  "lsk-comp",
-                                         "f82",            "gulbrandsen",
-                                         "cook-torrance",  "exact",
-                                         "exact-gaussian", "exact-point", "approx-conductor",
-                                         NULL};
 /* Number types the generator can emit; a new type is one more entry here. */
 const char *const scene_type_names[] = {"f32", "q15", NULL};
 const char *const scene_lut_spacing_names[] = {"uniform", "grazing", "grazing-pl", NULL};
@@ -145,37 +140,16 @@ static char *next_token(char **cursor)
 
 int scene_model_lut_size(const char *model, int *form)
 {
-    const char *p;
-    int n = 0, digits = 0, f;
-    if (model == NULL || strncmp(model, "lut", 3) != 0)
-        return 0;
-    p = model + 3;
-    if (*p == '0') /* one spelling per size, so duplicates are caught by name */
-        return 0;
-    while (isdigit((unsigned char)*p) && digits < 4) {
-        n = n * 10 + (*p - '0');
-        p++;
-        digits++;
-    }
-    if (digits == 0 || n < SCENE_LUT_MIN || n > SCENE_LUT_MAX)
-        return 0;
-    if (*p == '\0')
-        f = LUT_PLAIN;
-    else if (strcmp(p, "-residual") == 0)
-        f = LUT_RESIDUAL;
-    else if (strcmp(p, "-cubic") == 0)
-        f = LUT_CUBIC;
-    else
-        return 0;
-    if (form)
-        *form = f;
+    lut_form f = LUT_PLAIN;
+    int n = model_lut_size(model, SCENE_LUT_MIN, SCENE_LUT_MAX, &f);
+    if (n && form)
+        *form = (int)f;
     return n;
 }
 
 int scene_model_known(const char *model)
 {
-    return model != NULL &&
-           (table_index(scene_model_names, model) >= 0 || scene_model_lut_size(model, NULL) > 0);
+    return model != NULL && (model_find_offered(model, MODEL_SCENE) || scene_model_lut_size(model, NULL) > 0);
 }
 
 static int material_id_ok(const char *id)
@@ -218,6 +192,8 @@ static int parse_materials(const char *path, int line, char *value, scene *s)
 static int parse_models(const char *path, int line, char *value, scene *s)
 {
     char *cursor = value, *model, names[256];
+    const char *scene_models[SCENE_MAX_MODELS + 1];
+    model_names(MODEL_SCENE, scene_models, SCENE_MAX_MODELS + 1);
     while ((model = next_token(&cursor)) != NULL) {
         if (!scene_model_known(model)) {
             if (strncmp(model, "lut", 3) == 0)
@@ -228,8 +204,8 @@ static int parse_models(const char *path, int line, char *value, scene *s)
             char near[SCENE_NAME_SIZE + 32];
             return report(path, line,
                           "expected a model (one of %s, lutN, lutN-residual, lutN-cubic), got '%s'%s",
-                          table_list(scene_model_names, names, sizeof names), model,
-                          hint(scene_model_names, model, near, sizeof near));
+                          table_list(scene_models, names, sizeof names), model,
+                          hint(scene_models, model, near, sizeof near));
         }
         if (find_in(s->models, s->model_count, model) >= 0)
             return report(path, line, "expected each model once, '%s' is listed twice", model);
@@ -469,6 +445,18 @@ int scene_load(const char *path, scene *out)
                               out->models[m], out->lut_spacing_line);
     }
     return 0;
+}
+
+unsigned scene_reads(const scene *sc, int q15)
+{
+    unsigned reads = 0;
+    int m;
+    for (m = 0; m < sc->model_count; m++) {
+        const model *row = model_scene_row(sc->models[m], scene_lut_spacing(sc));
+        if (row)
+            reads |= q15 ? row->q15_reads : row->reads;
+    }
+    return reads;
 }
 
 int scene_has_model(const scene *sc, const char *model)

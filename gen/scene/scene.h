@@ -13,9 +13,9 @@
  *                [a-z0-9_]+ and at most 31 characters, at most 64 of them,
  *                no duplicates. Whether they exist in the data pack is the
  *                caller's check (report it at scene.materials_line).
- *   models       required. Whitespace-separated, no duplicates, each one of
- *                scene_model_names[] (schlick, lsk, lsk-comp, f82, gulbrandsen,
- *                cook-torrance, exact, exact-gaussian, exact-point, approx-conductor) or a
+ *   models       required. Whitespace-separated, no duplicates, each the
+ *                name of a MODEL_SCENE row of the model registry
+ *                (model/registry.c: `fresnel gen --help` lists them) or a
  *                lookup table `lutN` / `lutN-residual` / `lutN-cubic` with N an
  *                integer in SCENE_LUT_MIN..SCENE_LUT_MAX written without
  *                leading zeros (lut16, lut32-residual, lut16-cubic). At most
@@ -67,6 +67,7 @@
 #define FRESNEL_SCENE_H
 
 #include "3_encode/encode.h"
+#include "model/registry.h"
 
 #define SCENE_MAX_MATERIALS 64
 #define SCENE_ID_SIZE 32 /* material id, NUL included: matches material_info.id */
@@ -74,13 +75,12 @@
 #define SCENE_NAME_SIZE 24 /* model, type, space or spacing name, NUL included */
 #define SCENE_MAX_TYPES 16
 #define SCENE_LUT_MIN 4
-#define SCENE_LUT_MAX 256
+#define SCENE_LUT_MAX MODEL_LUT_NODES_MAX
 #define SCENE_PREFIX_SIZE 41 /* scene name, NUL included */
 
 /* The vocabulary, NULL-terminated, for reuse in --help text (colour spaces:
- * colour_space_ids in spectral.h). The LUT models are a pattern rather than
- * names: see scene_model_lut_size. */
-extern const char *const scene_model_names[];
+ * colour_space_ids in spectral.h; models: the registry's MODEL_SCENE rows,
+ * model_names, and its LUT patterns). */
 extern const char *const scene_type_names[];
 extern const char *const scene_lut_spacing_names[];
 
@@ -122,6 +122,9 @@ int scene_model_known(const char *model);
 
 /* 1 if the loaded scene names this model / number type, else 0. */
 int scene_has_model(const scene *sc, const char *model);
+/* What the scene's models read: the union of their registry rows' MP_* bits
+ * (q15 0) or MQ_* bits (q15 1). */
+unsigned scene_reads(const scene *sc, int q15);
 int scene_has_type(const scene *sc, const char *type);
 /* The loaded scene's LUT spacing. */
 lut_spacing scene_lut_spacing(const scene *sc);

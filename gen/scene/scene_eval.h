@@ -6,10 +6,12 @@
 #define FRESNEL_SCENE_EVAL_H
 
 #include "3_encode/encode.h"
+#include "model/registry.h"
 
 /* A model with its LUT, if it has one (encode_lut, rounded to float). */
 typedef struct scene_model {
     char name[24];
+    const model *def; /* its registry row */
     int lut_n; /* 0 for analytic models */
     lut_form form;
     lut_spacing spacing;

@@ -22,7 +22,7 @@
 #include "fresnel.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
-#include "model/models.h"
+#include "model/registry.h"
 #include "model/reference.h"
 
 #define LSB (1.0 / 32768.0)

@@ -1,0 +1,696 @@
+/* The model registry (registry.h): one row per model. */
+#include "model/registry.h"
+
+#include <ctype.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <math.h>
+
+#include "3_encode/fixed_params.h"
+#include "fresnel.h"
+#include "fresnel_f16.h"
+#include "model/reference.h"
+
+#define F(x) ((float)(x))
+
+static double d_schlick(const model_params *m, double c) { return ref_schlick(m->f0, c); }
+static float s_schlick(const model_params *m, float c) { return fresnel_schlick(F(m->f0), c); }
+
+static double d_schlick_gen(const model_params *m, double c)
+{
+    return ref_schlick_gen(m->f0, m->f90, m->p, c);
+}
+static float s_schlick_gen(const model_params *m, float c)
+{
+    return fresnel_schlick_gen(F(m->f0), F(m->f90), F(m->p), c);
+}
+
+static double d_lsk(const model_params *m, double c) { return ref_lsk(m->eta, m->kappa, c); }
+static float s_lsk(const model_params *m, float c) { return fresnel_lsk(F(m->eta), F(m->kappa), c); }
+
+static double d_lsk_comp(const model_params *m, double c)
+{
+    return ref_lsk_comp(m->eta, m->kappa, m->a, m->alpha, c);
+}
+static float s_lsk_comp(const model_params *m, float c)
+{
+    return fresnel_lsk_comp(F(m->eta), F(m->kappa), F(m->a), F(m->alpha), c);
+}
+
+static double d_f82(const model_params *m, double c) { return ref_f82(m->f0, m->f82, c); }
+static float s_f82(const model_params *m, float c) { return fresnel_f82(F(m->f0), F(m->f82), c); }
+
+static double d_gulbrandsen(const model_params *m, double c) { return ref_gulbrandsen(m->r, m->g, c); }
+static float s_gulbrandsen(const model_params *m, float c)
+{
+    return fresnel_gulbrandsen(F(m->r), F(m->g), c);
+}
+
+static double d_cook_torrance(const model_params *m, double c)
+{
+    return ref_cook_torrance(m->f0, m->eta, m->kappa, c);
+}
+static float s_cook_torrance(const model_params *m, float c)
+{
+    return fresnel_cook_torrance(F(m->f0), F(m->eta), F(m->kappa), c);
+}
+
+/* kappa = 0 takes the dielectric function, as a caller who knows it would. */
+static double d_exact(const model_params *m, double c)
+{
+    return m->kappa > 0.0 ? ref_conductor(m->eta, m->kappa, c) : ref_dielectric(m->eta, c);
+}
+static float s_exact(const model_params *m, float c)
+{
+    return m->kappa > 0.0 ? fresnel_conductor(F(m->eta), F(m->kappa), c)
+                          : fresnel_dielectric(F(m->eta), c);
+}
+
+static double d_conductor(const model_params *m, double c) { return ref_conductor(m->eta, m->kappa, c); }
+static float s_conductor(const model_params *m, float c)
+{
+    return fresnel_conductor(F(m->eta), F(m->kappa), c);
+}
+
+static double d_dielectric(const model_params *m, double c) { return ref_dielectric(m->eta, c); }
+static float s_dielectric(const model_params *m, float c) { return fresnel_dielectric(F(m->eta), c); }
+
+static double d_approx(const model_params *m, double c)
+{
+    return ref_approx_conductor(m->eta, m->kappa, c);
+}
+static float s_approx(const model_params *m, float c)
+{
+    return fresnel_approx_conductor(F(m->eta), F(m->kappa), c);
+}
+
+static double d_internal(const model_params *m, double c)
+{
+    return ref_schlick_internal(m->f0, m->eta, c);
+}
+static float s_internal(const model_params *m, float c)
+{
+    return fresnel_schlick_internal(F(m->f0), F(m->eta), c);
+}
+
+/* ---- fixed point (fresnel_fixed.h); parameters prepared by model_fixed_from_params */
+static int32_t q_schlick(const model_fixed *m, int32_t c) { return fresnel_schlick_q15(m->f0, c); }
+static int32_t q_schlick_gen(const model_fixed *m, int32_t c)
+{
+    return fresnel_schlick_gen_q15(m->f0, m->f90, m->p, c);
+}
+static int32_t q_lsk(const model_fixed *m, int32_t c) { return fresnel_lsk_q15(&m->lsk, c); }
+static int32_t q_lsk_comp(const model_fixed *m, int32_t c) { return fresnel_lsk_comp_q15(&m->lsk, c); }
+static int32_t q_f82(const model_fixed *m, int32_t c) { return fresnel_f82_q15(m->f0, m->f82, c); }
+/* fresnel_gulbrandsen_q15 maps r, g each call; the prepared n, k give the same codes */
+static int32_t q_gulbrandsen(const model_fixed *m, int32_t c) { return fresnel_approx_conductor_q15(&m->gnk, c); }
+static int32_t q_cook_torrance(const model_fixed *m, int32_t c)
+{
+    return fresnel_cook_torrance_q15(m->f0, &m->ior, c);
+}
+static int32_t q_exact(const model_fixed *m, int32_t c)
+{
+    return m->ior.b.m ? fresnel_conductor_q15(&m->ior, c) : fresnel_dielectric_q15(&m->ior, c);
+}
+static int32_t q_conductor(const model_fixed *m, int32_t c) { return fresnel_conductor_q15(&m->ior, c); }
+static int32_t q_dielectric(const model_fixed *m, int32_t c) { return fresnel_dielectric_q15(&m->dior, c); }
+static int32_t q_approx(const model_fixed *m, int32_t c) { return fresnel_approx_conductor_q15(&m->nk, c); }
+static int32_t q_internal(const model_fixed *m, int32_t c)
+{
+    return fresnel_schlick_internal_q15(m->f0, &m->dior, c);
+}
+
+/* ---- binary16 (fresnel_f16.h): parameters and c converted to half here */
+#if FRESNEL_HAS_F16
+#define H(x) ((fresnel_f16)(x))
+static double h_schlick(const model_params *m, double c) { return (double)fresnel_schlick_f16(H(m->f0), H(c)); }
+static double h_schlick_gen(const model_params *m, double c)
+{
+    return (double)fresnel_schlick_gen_f16(H(m->f0), H(m->f90), H(m->p), H(c));
+}
+static double h_lsk(const model_params *m, double c) { return (double)fresnel_lsk_f16(H(m->eta), H(m->kappa), H(c)); }
+static double h_lsk_comp(const model_params *m, double c)
+{
+    return (double)fresnel_lsk_comp_f16(H(m->eta), H(m->kappa), H(m->a), H(m->alpha), H(c));
+}
+static double h_f82(const model_params *m, double c) { return (double)fresnel_f82_f16(H(m->f0), H(m->f82), H(c)); }
+static double h_gulbrandsen(const model_params *m, double c)
+{
+    return (double)fresnel_gulbrandsen_f16(H(m->r), H(m->g), H(c));
+}
+static double h_cook_torrance(const model_params *m, double c)
+{
+    return (double)fresnel_cook_torrance_f16(H(m->f0), H(m->eta), H(m->kappa), H(c));
+}
+static double h_exact(const model_params *m, double c)
+{
+    return m->kappa > 0.0 ? (double)fresnel_conductor_f16(H(m->eta), H(m->kappa), H(c))
+                          : (double)fresnel_dielectric_f16(H(m->eta), H(c));
+}
+static double h_conductor(const model_params *m, double c)
+{
+    return (double)fresnel_conductor_f16(H(m->eta), H(m->kappa), H(c));
+}
+static double h_dielectric(const model_params *m, double c) { return (double)fresnel_dielectric_f16(H(m->eta), H(c)); }
+static double h_approx(const model_params *m, double c)
+{
+    return (double)fresnel_approx_conductor_f16(H(m->eta), H(m->kappa), H(c));
+}
+static double h_internal(const model_params *m, double c)
+{
+    return (double)fresnel_schlick_internal_f16(H(m->f0), H(m->eta), H(c));
+}
+#define F16(fn) fn
+#else
+#define F16(fn) NULL
+#endif
+
+
+/* ---- as scene models: one material's prepared parameters (model_rgb) */
+static double ch3(fresnel_rgb v, int ch) { return ch == 0 ? v.r : (ch == 1 ? v.g : v.b); }
+
+static fresnel_rgb r_schlick(const model_rgb *q, float c) { return fresnel_schlick_rgb(q->f0, c); }
+static fresnel_rgb_q15 rq_schlick(const model_rgb *q, int32_t c) { return fresnel_schlick_q15_rgb(q->q_f0, c); }
+static double rr_schlick(const model_rgb *q, int ch, double c) { return ref_schlick(ch3(q->f0, ch), c); }
+
+static fresnel_rgb r_lsk(const model_rgb *q, float c) { return fresnel_lsk_rgb(q->eta, q->kappa, c); }
+/* Q15 LSK without compensation is the compensated form with a = alpha = 0 */
+static fresnel_rgb_q15 rq_lsk(const model_rgb *q, int32_t c) { return fresnel_lsk_comp_q15_rgb(q->q_lsk, c); }
+static double rr_lsk(const model_rgb *q, int ch, double c) { return ref_lsk(ch3(q->eta, ch), ch3(q->kappa, ch), c); }
+
+static fresnel_rgb r_lsk_comp(const model_rgb *q, float c)
+{
+    return fresnel_lsk_comp_rgb(q->eta, q->kappa, q->a, q->alpha, c);
+}
+#define rq_lsk_comp rq_lsk
+static double rr_lsk_comp(const model_rgb *q, int ch, double c)
+{
+    return ref_lsk_comp(ch3(q->eta, ch), ch3(q->kappa, ch), ch3(q->a, ch), ch3(q->alpha, ch), c);
+}
+
+static fresnel_rgb r_f82(const model_rgb *q, float c) { return fresnel_f82_rgb(q->f0, q->f82, c); }
+static fresnel_rgb_q15 rq_f82(const model_rgb *q, int32_t c) { return fresnel_f82_q15_rgb(q->q_f0, q->q_f82, c); }
+static double rr_f82(const model_rgb *q, int ch, double c) { return ref_f82(ch3(q->f0, ch), ch3(q->f82, ch), c); }
+
+static fresnel_rgb r_gulbrandsen(const model_rgb *q, float c) { return fresnel_gulbrandsen_rgb(q->r, q->g, c); }
+static fresnel_rgb_q15 rq_gulbrandsen(const model_rgb *q, int32_t c) { return fresnel_gulbrandsen_q15_rgb(q->q_r, q->q_g, c); }
+static double rr_gulbrandsen(const model_rgb *q, int ch, double c)
+{
+    return ref_gulbrandsen(ch3(q->r, ch), ch3(q->g, ch), c);
+}
+
+static fresnel_rgb r_cook_torrance(const model_rgb *q, float c)
+{
+    return fresnel_cook_torrance_rgb(q->f0, q->ct_eta, q->ct_kappa, c);
+}
+static fresnel_rgb_q15 rq_cook_torrance(const model_rgb *q, int32_t c)
+{
+    return fresnel_cook_torrance_q15_rgb(q->q_f0, &q->q_ct, c);
+}
+static double rr_cook_torrance(const model_rgb *q, int ch, double c)
+{
+    return ref_cook_torrance(ch3(q->f0, ch), q->ct_eta, q->ct_kappa, c);
+}
+
+static fresnel_rgb r_conductor(const model_rgb *q, float c) { return fresnel_conductor_rgb(q->eta, q->kappa, c); }
+static fresnel_rgb_q15 rq_conductor(const model_rgb *q, int32_t c) { return fresnel_conductor_q15_rgb(q->q_ior, c); }
+static double rr_conductor(const model_rgb *q, int ch, double c)
+{
+    return ref_conductor(ch3(q->eta, ch), ch3(q->kappa, ch), c);
+}
+
+static fresnel_rgb r_approx(const model_rgb *q, float c) { return fresnel_approx_conductor_rgb(q->eta, q->kappa, c); }
+static fresnel_rgb_q15 rq_approx(const model_rgb *q, int32_t c) { return fresnel_approx_conductor_q15_rgb(q->q_nk, c); }
+static double rr_approx(const model_rgb *q, int ch, double c)
+{
+    return ref_approx_conductor(ch3(q->eta, ch), ch3(q->kappa, ch), c);
+}
+
+/* LUTs: the table as the runtime reads it; the reference interpolates the
+ * binary32-rounded nodes in double. */
+static fresnel_rgb r_lut(const model_rgb *q, float c) { return fresnel_lut_rgb(q->table, q->n, c); }
+static fresnel_rgb r_lut_lin(const model_rgb *q, float c) { return fresnel_lut_linear_rgb(q->table, q->n, c); }
+static fresnel_rgb r_lut_res(const model_rgb *q, float c) { return fresnel_lut_residual_rgb(q->f0, q->table, q->n, c); }
+static fresnel_rgb r_lut_lin_res(const model_rgb *q, float c)
+{
+    return fresnel_lut_linear_residual_rgb(q->f0, q->table, q->n, c);
+}
+static fresnel_rgb r_lut_cubic(const model_rgb *q, float c) { return fresnel_lut_cubic_rgb(q->table, q->n, c); }
+static fresnel_rgb_q15 rq_lut(const model_rgb *q, int32_t c) { return fresnel_lut_u16_q15_rgb(q->q_table, q->n, c); }
+static fresnel_rgb_q15 rq_lut_lin(const model_rgb *q, int32_t c)
+{
+    return fresnel_lut_linear_u16_q15_rgb(q->q_table, q->n, c);
+}
+static fresnel_rgb_q15 rq_lut_res(const model_rgb *q, int32_t c)
+{
+    return fresnel_lut_residual_s16_q15_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
+}
+static fresnel_rgb_q15 rq_lut_lin_res(const model_rgb *q, int32_t c)
+{
+    return fresnel_lut_linear_residual_s16_q15_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
+}
+static fresnel_rgb_q15 rq_lut_cubic(const model_rgb *q, int32_t c)
+{
+    return fresnel_lut_cubic_u16_q15_rgb(q->q_table, q->n, c);
+}
+static double ref_nodes(const model_rgb *q, int ch, double x, int cubic)
+{
+    double nodes[MODEL_LUT_NODES_MAX];
+    int i;
+    for (i = 0; i < q->n; i++) /* at the float-rounded node values */
+        nodes[i] = q->table[ch * q->n + i];
+    return ref_lut(nodes, q->n, cubic, x);
+}
+static double rr_lut(const model_rgb *q, int ch, double c) { return ref_nodes(q, ch, sqrt(c), 0); }
+static double rr_lut_lin(const model_rgb *q, int ch, double c) { return ref_nodes(q, ch, c, 0); }
+static double rr_lut_res(const model_rgb *q, int ch, double c)
+{
+    return ref_nodes(q, ch, sqrt(c), 0) + ref_schlick(ch3(q->f0, ch), c);
+}
+static double rr_lut_lin_res(const model_rgb *q, int ch, double c)
+{
+    return ref_nodes(q, ch, c, 0) + ref_schlick(ch3(q->f0, ch), c);
+}
+static double rr_lut_cubic(const model_rgb *q, int ch, double c) { return ref_nodes(q, ch, sqrt(c), 1); }
+
+#if FRESNEL_HAS_F16
+/* binary16: scalar functions, channel by channel as a shader would */
+#define HC(fn_args) return (double)(fn_args)
+static double rh_schlick(const model_rgb *q, int ch, double c) { HC(fresnel_schlick_f16(q->h_f0[ch], H(c))); }
+static double rh_lsk(const model_rgb *q, int ch, double c) { HC(fresnel_lsk_f16(q->h_eta[ch], q->h_kappa[ch], H(c))); }
+static double rh_lsk_comp(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_lsk_comp_f16(q->h_eta[ch], q->h_kappa[ch], q->h_a[ch], q->h_alpha[ch], H(c)));
+}
+static double rh_f82(const model_rgb *q, int ch, double c) { HC(fresnel_f82_f16(q->h_f0[ch], q->h_f82[ch], H(c))); }
+static double rh_gulbrandsen(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_gulbrandsen_f16(q->h_r[ch], q->h_g[ch], H(c)));
+}
+static double rh_cook_torrance(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_cook_torrance_f16(q->h_f0[ch], q->h_ct_eta, q->h_ct_kappa, H(c)));
+}
+static double rh_conductor(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_conductor_f16(q->h_eta[ch], q->h_kappa[ch], H(c)));
+}
+static double rh_approx(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_approx_conductor_f16(q->h_eta[ch], q->h_kappa[ch], H(c)));
+}
+static double rh_lut(const model_rgb *q, int ch, double c) { HC(fresnel_lut_f16(q->h_table + ch * q->n, q->n, H(c))); }
+static double rh_lut_lin(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_lut_linear_f16(q->h_table + ch * q->n, q->n, H(c)));
+}
+static double rh_lut_res(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_lut_residual_f16(q->h_f0[ch], q->h_table + ch * q->n, q->n, H(c)));
+}
+static double rh_lut_lin_res(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_lut_linear_residual_f16(q->h_f0[ch], q->h_table + ch * q->n, q->n, H(c)));
+}
+static double rh_lut_cubic(const model_rgb *q, int ch, double c)
+{
+    HC(fresnel_lut_cubic_f16(q->h_table + ch * q->n, q->n, H(c)));
+}
+#endif
+
+/* Timed loops, one per row and type, calling the row's evaluator directly. */
+#define BATCHES(id)                                                                                \
+    static double bf_##id(const void *x, const float *c, const int32_t *cq, int n)                \
+    {                                                                                              \
+        const model_rgb *q = x;                                                                    \
+        double sum = 0.0;                                                                          \
+        int i;                                                                                     \
+        (void)cq;                                                                                  \
+        for (i = 0; i < n; i++) {                                                                  \
+            fresnel_rgb v = r_##id(q, c[i]);                                                       \
+            sum += v.r + v.g + v.b;                                                                \
+        }                                                                                          \
+        return sum;                                                                                \
+    }                                                                                              \
+    static double bq_##id(const void *x, const float *c, const int32_t *cq, int n)                \
+    {                                                                                              \
+        const model_rgb *q = x;                                                                    \
+        uint32_t sum = 0;                                                                          \
+        int i;                                                                                     \
+        (void)c;                                                                                   \
+        for (i = 0; i < n; i++) {                                                                  \
+            fresnel_rgb_q15 v = rq_##id(q, cq[i]);                                                 \
+            sum += (uint32_t)v.r + v.g + v.b;                                                      \
+        }                                                                                          \
+        return sum;                                                                                \
+    }
+BATCHES(schlick)
+BATCHES(lsk)
+BATCHES(lsk_comp)
+BATCHES(f82)
+BATCHES(gulbrandsen)
+BATCHES(cook_torrance)
+BATCHES(conductor)
+BATCHES(approx)
+BATCHES(lut)
+BATCHES(lut_lin)
+BATCHES(lut_res)
+BATCHES(lut_lin_res)
+BATCHES(lut_cubic)
+
+#if FRESNEL_HAS_F16
+#define SCENE(id) r_##id, rq_##id, rh_##id, rr_##id, bf_##id, bq_##id
+#else
+#define SCENE(id) r_##id, rq_##id, NULL, rr_##id, bf_##id, bq_##id
+#endif
+/* Rows offered in eval only carry no scene evaluators. */
+#define NO_SCENE 0, 0, ETA_FIT, LUT_PLAIN, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL
+#define EVAL_SCENE (MODEL_EVAL | MODEL_SCENE)
+
+const model model_table[] = {
+    {"schlick", EVAL_SCENE, "F0", d_schlick, s_schlick, FRESNEL_BOUND_SCHLICK,
+     q_schlick, FRESNEL_BOUND_SCHLICK_Q15, F16(h_schlick), FRESNEL_BOUND_SCHLICK_F16,
+     MP_F0, 0, ETA_FIT, LUT_PLAIN, 0, "fresnel_schlick_rgb(@f0, c)", SCENE(schlick)},
+    {"schlick-gen", MODEL_EVAL, "F0, --f90, --p", d_schlick_gen, s_schlick_gen, FRESNEL_BOUND_SCHLICK_GEN,
+     q_schlick_gen, FRESNEL_BOUND_SCHLICK_GEN_Q15, F16(h_schlick_gen), FRESNEL_BOUND_SCHLICK_GEN_F16, NO_SCENE},
+    {"lsk", EVAL_SCENE, "eta, kappa", d_lsk, s_lsk, FRESNEL_BOUND_LSK,
+     q_lsk, FRESNEL_BOUND_LSK_Q15, F16(h_lsk), FRESNEL_BOUND_LSK_F16,
+     MP_ETA_FIT, MQ_LSK, ETA_FIT, LUT_PLAIN, 0, "fresnel_lsk_rgb(@eta, @kappa, c)", SCENE(lsk)},
+    {"lsk-comp", EVAL_SCENE, "eta, kappa, LSK a and alpha", d_lsk_comp, s_lsk_comp, FRESNEL_BOUND_LSK_COMP,
+     q_lsk_comp, FRESNEL_BOUND_LSK_COMP_Q15, F16(h_lsk_comp), FRESNEL_BOUND_LSK_COMP_F16,
+     MP_ETA_FIT | MP_LSK, MQ_LSK_COMP, ETA_FIT, LUT_PLAIN, 0,
+     "fresnel_lsk_comp_rgb(@eta, @kappa, @lsk_a, @lsk_alpha, c)", SCENE(lsk_comp)},
+    {"f82", EVAL_SCENE, "F0, F82", d_f82, s_f82, FRESNEL_BOUND_F82,
+     q_f82, FRESNEL_BOUND_F82_Q15, F16(h_f82), FRESNEL_BOUND_F82_F16,
+     MP_F0 | MP_F82, 0, ETA_FIT, LUT_PLAIN, 0, "fresnel_f82_rgb(@f0, @f82, c)", SCENE(f82)},
+    {"gulbrandsen", EVAL_SCENE, "r = F0, edge tint g", d_gulbrandsen, s_gulbrandsen, FRESNEL_BOUND_GULBRANDSEN,
+     q_gulbrandsen, FRESNEL_BOUND_GULBRANDSEN_Q15, F16(h_gulbrandsen), FRESNEL_BOUND_GULBRANDSEN_F16,
+     MP_GULB, 0, ETA_FIT, LUT_PLAIN, 0, "fresnel_gulbrandsen_rgb(@gulbrandsen_r, @gulbrandsen_g, c)",
+     SCENE(gulbrandsen)},
+    {"cook-torrance", EVAL_SCENE, "F0 and the same eta, kappa as representative IOR", d_cook_torrance,
+     s_cook_torrance, FRESNEL_BOUND_COOK_TORRANCE,
+     q_cook_torrance, FRESNEL_BOUND_COOK_TORRANCE_Q15, F16(h_cook_torrance), FRESNEL_BOUND_COOK_TORRANCE_F16,
+     MP_F0 | MP_CT, MQ_CT, ETA_FIT, LUT_PLAIN, 0, "fresnel_cook_torrance_rgb(@f0, @ct_eta, @ct_kappa, c)",
+     SCENE(cook_torrance)},
+    {"exact", EVAL_SCENE | MODEL_EXACT, "eta, kappa (dielectric form when kappa = 0)", d_exact, s_exact,
+     FRESNEL_BOUND_CONDUCTOR, q_exact, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_exact), FRESNEL_BOUND_CONDUCTOR_F16,
+     MP_ETA_FIT, MQ_IOR, ETA_FIT, LUT_PLAIN, 0, "fresnel_conductor_rgb(@eta, @kappa, c)", SCENE(conductor)},
+    /* Metzgar's Gaussian-window and point-sampled eta, kappa: scene models
+     * only; as functions of eta, kappa they are the exact conductor. */
+    {"exact-gaussian", MODEL_SCENE | MODEL_EXACT, "eta', kappa' in a Gaussian window", d_conductor, s_conductor,
+     FRESNEL_BOUND_CONDUCTOR, q_conductor, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_conductor), FRESNEL_BOUND_CONDUCTOR_F16,
+     MP_ETA_GAUSS, MQ_IOR_GAUSS, ETA_GAUSS, LUT_PLAIN, 0, "fresnel_conductor_rgb(@eta_gaussian, @kappa_gaussian, c)",
+     SCENE(conductor)},
+    {"exact-point", MODEL_SCENE | MODEL_EXACT, "eta, kappa point-sampled", d_conductor, s_conductor,
+     FRESNEL_BOUND_CONDUCTOR, q_conductor, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_conductor), FRESNEL_BOUND_CONDUCTOR_F16,
+     MP_ETA_POINT, MQ_IOR_POINT, ETA_POINT, LUT_PLAIN, 0, "fresnel_conductor_rgb(@eta_point, @kappa_point, c)",
+     SCENE(conductor)},
+    {"exact-conductor", MODEL_EVAL | MODEL_EXACT, "eta, kappa (conductor form always)", d_conductor, s_conductor,
+     FRESNEL_BOUND_CONDUCTOR, q_conductor, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_conductor), FRESNEL_BOUND_CONDUCTOR_F16,
+     NO_SCENE},
+    {"exact-dielectric", MODEL_EVAL | MODEL_EXACT, "eta (kappa ignored)", d_dielectric, s_dielectric,
+     FRESNEL_BOUND_DIELECTRIC, q_dielectric, FRESNEL_BOUND_DIELECTRIC_Q15, F16(h_dielectric),
+     FRESNEL_BOUND_DIELECTRIC_F16, NO_SCENE},
+    {"approx-conductor", EVAL_SCENE, "eta, kappa", d_approx, s_approx, FRESNEL_BOUND_APPROX_CONDUCTOR,
+     q_approx, FRESNEL_BOUND_APPROX_CONDUCTOR_Q15, F16(h_approx), FRESNEL_BOUND_APPROX_CONDUCTOR_F16,
+     MP_ETA_FIT, MQ_NK, ETA_FIT, LUT_PLAIN, 0, "fresnel_approx_conductor_rgb(@eta, @kappa, c)", SCENE(approx)},
+    {"schlick-internal", MODEL_EVAL, "F0, eta (eta < 1: from inside the denser medium)", d_internal,
+     s_internal, FRESNEL_BOUND_SCHLICK_INTERNAL,
+     q_internal, FRESNEL_BOUND_SCHLICK_INTERNAL_Q15, F16(h_internal), FRESNEL_BOUND_SCHLICK_INTERNAL_F16, NO_SCENE},
+};
+const int model_count = (int)(sizeof model_table / sizeof model_table[0]);
+
+/* The LUT forms: a family of scene models named by pattern, lutN (plain),
+ * lutN-residual (from Schlick's F0) and lutN-cubic; one row per form and
+ * node spacing, as the runtime has one function for each. */
+#define LUT_ROW(name, reads, form, uniform, id) \
+    {name, MODEL_SCENE | MODEL_LUT, "", NULL, NULL, 0.0f, NULL, 0.0, NULL, 0.0, reads, 0, ETA_FIT, form, uniform, NULL, SCENE(id)}
+static const model lut_table[] = {
+    LUT_ROW("lutN", 0, LUT_PLAIN, 0, lut),
+    LUT_ROW("lutN", 0, LUT_PLAIN, 1, lut_lin),
+    LUT_ROW("lutN-residual", MP_F0, LUT_RESIDUAL, 0, lut_res),
+    LUT_ROW("lutN-residual", MP_F0, LUT_RESIDUAL, 1, lut_lin_res),
+    LUT_ROW("lutN-cubic", 0, LUT_CUBIC, 0, lut_cubic),
+};
+const char model_lut_patterns[] = "lutN lutN-residual lutN-cubic";
+
+const char model_curve_default[] =
+    "schlick lsk lsk-comp f82 gulbrandsen cook-torrance exact exact-gaussian approx-conductor lut16 lut32";
+const char *const model_approaches_order[] = {"exact-gaussian", "exact-point", "schlick", "f82", "exact",
+                                              "gulbrandsen", "lsk", "lsk-comp", "cook-torrance",
+                                              "approx-conductor", "lut8", "lut16", "lut32", "lut16-residual",
+                                              "lut16-cubic", "lut32-cubic", NULL};
+
+const model *const model_exact = &model_table[7];
+const model *const model_f82 = &model_table[4];
+const model *const model_gulbrandsen = &model_table[5];
+const model *const model_schlick_internal = &model_table[13];
+
+const model *model_find_offered(const char *name, unsigned offered)
+{
+    int i;
+    for (i = 0; i < model_count; i++)
+        if ((model_table[i].offered & offered) == offered && !strcmp(model_table[i].name, name))
+            return &model_table[i];
+    return NULL;
+}
+
+const model *model_find(const char *name) { return model_find_offered(name, MODEL_EVAL); }
+
+int model_lut_size(const char *name, int lo, int hi, lut_form *form)
+{
+    const char *p;
+    int n = 0, digits = 0;
+    size_t i;
+    if (name == NULL || strncmp(name, "lut", 3) != 0)
+        return 0;
+    p = name + 3;
+    if (*p == '0') /* one spelling per size, so duplicates are caught by name */
+        return 0;
+    while (isdigit((unsigned char)*p) && digits < 4) {
+        n = n * 10 + (*p - '0');
+        p++;
+        digits++;
+    }
+    if (digits == 0 || n < lo || n > hi)
+        return 0;
+    /* the rest must be a LUT row's name after its "lutN" */
+    for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
+        if (!strcmp(p, lut_table[i].name + 4)) {
+            if (form)
+                *form = lut_table[i].form;
+            return n;
+        }
+    return 0;
+}
+
+const model *model_scene_row(const char *name, lut_spacing spacing)
+{
+    lut_form form;
+    size_t i;
+    if (model_lut_size(name, 1, MODEL_LUT_NODES_MAX, &form)) {
+        int uniform = spacing == LUT_UNIFORM;
+        for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
+            if (lut_table[i].form == form && (lut_table[i].uniform == uniform || form == LUT_CUBIC))
+                return &lut_table[i];
+        return NULL;
+    }
+    return model_find_offered(name, MODEL_SCENE);
+}
+
+int model_names(unsigned offered, const char **out, int max)
+{
+    int i, n = 0;
+    for (i = 0; i < model_count && n < max - 1; i++)
+        if ((model_table[i].offered & offered) == offered)
+            out[n++] = model_table[i].name;
+    out[n] = NULL;
+    return n;
+}
+
+void model_derive(double eta, double kappa, double n1, double f90, double p, model_params *out)
+{
+    memset(out, 0, sizeof *out);
+    out->eta = eta / n1;
+    out->kappa = kappa / n1;
+    out->f0 = ref_f0_from_ior(out->eta, out->kappa);
+    out->f82 = ref_conductor(out->eta, out->kappa, 1.0 / 7.0);
+    out->f90 = f90;
+    out->p = p;
+    ref_lsk_fit(out->eta, out->kappa, &out->a, &out->alpha);
+    ref_gulbrandsen_rg(out->eta, out->kappa, &out->r, &out->g);
+}
+
+void model_params_round_f32(model_params *m)
+{
+    double *fields[] = {&m->eta, &m->kappa, &m->f0, &m->f82, &m->f90,
+                        &m->p,   &m->a,     &m->alpha, &m->r, &m->g};
+    size_t i;
+    for (i = 0; i < sizeof fields / sizeof fields[0]; i++)
+        *fields[i] = (double)(float)*fields[i];
+}
+
+void model_params_round_fixed(model_params *m)
+{
+    fresnel_qf a;
+    m->f0 = fixed_q15(m->f0) / 32768.0;
+    m->f82 = fixed_q15(m->f82) / 32768.0;
+    m->f90 = fixed_q15(m->f90) / 32768.0;
+    /* r at its code, and at the fixed-point clamp (32764, the largest code
+     * below fresnel.h's 0.9999) where the code is above it */
+    m->r = (fixed_q15(m->r) < FRESNEL_GULBRANDSEN_R_MAX_Q15 ? fixed_q15(m->r) : FRESNEL_GULBRANDSEN_R_MAX_Q15) / 32768.0;
+    m->g = fixed_q15(m->g) / 32768.0;
+    m->p = fixed_q16(m->p) / 65536.0;
+    m->alpha = fixed_q16(ref_clamp(m->alpha, 0.0, FRESNEL_ALPHA_MAX)) / 65536.0;
+    a = fixed_qf(ref_clamp(m->a, 0.0, FRESNEL_A_MAX));
+    m->a = fixed_qf_value(a);
+}
+
+void model_fixed_from_params(const model_params *m, model_fixed *out)
+{
+    memset(out, 0, sizeof *out);
+    out->f0 = fixed_q15(m->f0);
+    out->f82 = fixed_q15(m->f82);
+    out->f90 = fixed_q15(m->f90);
+    out->r = fixed_q15(m->r);
+    out->g = fixed_q15(m->g);
+    out->p = fixed_q16(m->p);
+    fixed_ior(m->eta, m->kappa, &out->ior);
+    fixed_ior(m->eta, 0.0, &out->dior);
+    fixed_nk(m->eta, m->kappa, &out->nk);
+    out->gnk = fresnel_gulbrandsen_nk_q15(out->r, out->g);
+    fixed_lsk(m->eta, m->kappa, m->a, m->alpha, &out->lsk);
+}
+
+void model_params_round_f16(model_params *m)
+{
+#if FRESNEL_HAS_F16
+    double *fields[] = {&m->eta, &m->kappa, &m->f0, &m->f82, &m->f90,
+                        &m->p,   &m->a,     &m->alpha, &m->r, &m->g};
+    size_t i;
+    for (i = 0; i < sizeof fields / sizeof fields[0]; i++)
+        *fields[i] = (double)(fresnel_f16)*fields[i];
+#else
+    (void)m;
+#endif
+}
+
+static fresnel_rgb rgb3(const double v[3])
+{
+    fresnel_rgb o;
+    o.r = (float)v[0];
+    o.g = (float)v[1];
+    o.b = (float)v[2];
+    return o;
+}
+
+static fresnel_rgb_q15 q15_3(const double v[3])
+{
+    fresnel_rgb_q15 o;
+    o.r = (fresnel_q15)fixed_q15(v[0]);
+    o.g = (fresnel_q15)fixed_q15(v[1]);
+    o.b = (fresnel_q15)fixed_q15(v[2]);
+    return o;
+}
+
+static const double *eta_of(const model *def, const material_params *p, int kappa)
+{
+    switch (def->eta) {
+    case ETA_GAUSS: return kappa ? p->kappa_gauss : p->eta_gauss;
+    case ETA_POINT: return kappa ? p->kappa_point : p->eta_point;
+    default: return kappa ? p->kappa_fit : p->eta_fit;
+    }
+}
+
+void model_rgb_prepare_f32(const model *def, const material_params *p, const float *table, int n,
+                           lut_spacing spacing, model_rgb *q)
+{
+    memset(q, 0, sizeof *q);
+    q->def = def;
+    q->n = n;
+    q->spacing = spacing;
+    q->f0 = rgb3(p->f0);
+    q->f82 = rgb3(p->f82);
+    q->eta = rgb3(eta_of(def, p, 0));
+    q->kappa = rgb3(eta_of(def, p, 1));
+    q->a = rgb3(p->lsk_a);
+    q->alpha = rgb3(p->lsk_alpha);
+    q->r = rgb3(p->gulb_r);
+    q->g = rgb3(p->gulb_g);
+    q->ct_eta = (float)p->ct_eta;
+    q->ct_kappa = (float)p->ct_kappa;
+    q->table = table;
+}
+
+int model_rgb_prepare(const model *def, const material_params *p, const float *table, const double *table_d, int n,
+                      lut_spacing spacing, model_rgb *q)
+{
+    const double *eta = eta_of(def, p, 0), *kappa = eta_of(def, p, 1);
+    int comp = (def->q15_reads & MQ_LSK_COMP) != 0, ch, i;
+    model_rgb_prepare_f32(def, p, table, n, spacing, q);
+    q->q_f0 = q15_3(p->f0);
+    q->q_f82 = q15_3(p->f82);
+    q->q_r = q15_3(p->gulb_r);
+    q->q_g = q15_3(p->gulb_g);
+    fixed_ior(p->ct_eta, p->ct_kappa, &q->q_ct);
+    for (ch = 0; ch < 3; ch++) {
+        fixed_ior(eta[ch], kappa[ch], &q->q_ior[ch]);
+        fixed_nk(eta[ch], kappa[ch], &q->q_nk[ch]);
+        fixed_lsk(eta[ch], kappa[ch], comp ? p->lsk_a[ch] : 0.0, comp ? p->lsk_alpha[ch] : 0.0, &q->q_lsk[ch]);
+    }
+    if (n) {
+        double big = 0.0;
+        q->q_table = malloc(3 * (size_t)n * sizeof *q->q_table);
+        q->q_res = malloc(3 * (size_t)n * sizeof *q->q_res);
+        if (!q->q_table || !q->q_res) {
+            model_rgb_free(q);
+            return -1;
+        }
+        for (i = 0; i < 3 * n; i++)
+            if (fabs(table_d[i]) > big)
+                big = fabs(table_d[i]);
+        /* residuals are small: as many fraction bits as int16 holds */
+        for (q->q_frac = 15; q->q_frac < 30 && big * ldexp(1.0, q->q_frac + 1) <= 32767.0; q->q_frac++)
+            ;
+        for (i = 0; i < 3 * n; i++) {
+            q->q_table[i] = (uint16_t)fixed_q15(table_d[i]);
+            q->q_res[i] = (int16_t)lround(table_d[i] * ldexp(1.0, q->q_frac));
+        }
+    }
+#if FRESNEL_HAS_F16
+    for (ch = 0; ch < 3; ch++) {
+        q->h_f0[ch] = (fresnel_f16)p->f0[ch];
+        q->h_f82[ch] = (fresnel_f16)p->f82[ch];
+        q->h_eta[ch] = (fresnel_f16)eta[ch];
+        q->h_kappa[ch] = (fresnel_f16)kappa[ch];
+        q->h_a[ch] = (fresnel_f16)p->lsk_a[ch];
+        q->h_alpha[ch] = (fresnel_f16)p->lsk_alpha[ch];
+        q->h_r[ch] = (fresnel_f16)p->gulb_r[ch];
+        q->h_g[ch] = (fresnel_f16)p->gulb_g[ch];
+    }
+    q->h_ct_eta = (fresnel_f16)p->ct_eta;
+    q->h_ct_kappa = (fresnel_f16)p->ct_kappa;
+    if (n) {
+        if (!(q->h_table = malloc(3 * (size_t)n * sizeof *q->h_table))) {
+            model_rgb_free(q);
+            return -1;
+        }
+        for (i = 0; i < 3 * n; i++)
+            q->h_table[i] = (fresnel_f16)table_d[i];
+    }
+#endif
+    return 0;
+}
+
+void model_rgb_free(model_rgb *q)
+{
+    free(q->q_table);
+    free(q->q_res);
+    q->q_table = NULL;
+    q->q_res = NULL;
+#if FRESNEL_HAS_F16
+    free(q->h_table);
+    q->h_table = NULL;
+#endif
+}

@@ -1,0 +1,196 @@
+/* The model registry: every model the tool knows is one row of model_table
+ * (registry.c), holding its names, where it is offered, the parameters it
+ * reads, and its evaluators in every number type. Scene parsing and
+ * evaluation, `eval`, `curve`, `accuracy`, `report`, `extremes`, `bench` and
+ * the three emitters read the rows; no other file names a model to choose
+ * or list models (tests/test_gen_layout.sh checks it).
+ *
+ * Adding a model: its runtime functions (src/, include/), its double
+ * reference (reference.c), and one row with its evaluators here. */
+#ifndef FRESNEL_REGISTRY_H
+#define FRESNEL_REGISTRY_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "fresnel.h"
+#include "fresnel_f16.h"
+#include "fresnel_fixed.h"
+#include "3_encode/encode.h"
+
+/* Where a row is offered. */
+#define MODEL_EVAL 1u  /* a function of eta, kappa, c: `fresnel eval`, `extremes`, the bound tests */
+#define MODEL_SCENE 2u /* a scene model: manifests, `gen`, `curve`, `report`, `bench` */
+#define MODEL_LUT 4u   /* a LUT form; its scene names are lutN, lutN-residual, lutN-cubic */
+#define MODEL_EXACT 8u /* the Fresnel equations themselves (the reference `accuracy` measures against) */
+
+/* The derived parameters (material_params) a scene model reads, one bit per
+ * group, in the order the C and GLSL emitters write them (emit_header.c). */
+#define MP_F0 0x01u
+#define MP_F82 0x02u
+#define MP_ETA_FIT 0x04u
+#define MP_LSK 0x08u
+#define MP_ETA_GAUSS 0x10u
+#define MP_ETA_POINT 0x20u
+#define MP_GULB 0x40u
+#define MP_CT 0x80u
+/* Prepared Q15 constants (fresnel_fixed.h) a scene model reads, in the order
+ * the Q15 emitter writes them (emit_fixed.c), after the MP_ groups. */
+#define MQ_LSK 0x01u
+#define MQ_LSK_COMP 0x02u
+#define MQ_IOR 0x04u
+#define MQ_IOR_GAUSS 0x08u
+#define MQ_IOR_POINT 0x10u
+#define MQ_NK 0x20u
+#define MQ_CT 0x40u
+
+/* The most nodes a scene LUT has (scene.h: SCENE_LUT_MAX). */
+#define MODEL_LUT_NODES_MAX 256
+
+/* Which eta, kappa a scene model's exact or LSK forms read. */
+typedef enum model_eta { ETA_FIT, ETA_GAUSS, ETA_POINT } model_eta;
+
+/* Everything any model needs. eta and kappa are relative to the incident
+ * medium; the rest are derived from them by the reference (model_derive). */
+typedef struct model_params {
+    double eta, kappa;
+    double f0, f82, f90, p;
+    double a, alpha; /* LSK compensation */
+    double r, g;     /* Gulbrandsen */
+} model_params;
+
+/* A model's parameters in the fixed-point runtime's formats (fresnel_fixed.h). */
+typedef struct model_fixed {
+    int32_t f0, f82, f90, r, g; /* Q15 codes */
+    fresnel_q16 p;
+    fresnel_ior_prep_q15 ior;  /* eta, kappa for the exact models and Cook-Torrance */
+    fresnel_ior_prep_q15 dior; /* eta, kappa 0 for exact-dielectric */
+    fresnel_nk_prep_q15 nk;    /* eta, kappa for the approximate conductor */
+    fresnel_nk_prep_q15 gnk;   /* Gulbrandsen's n, k from r, g (fresnel_gulbrandsen_nk_q15) */
+    fresnel_lsk_prep_q15 lsk;
+} model_fixed;
+
+/* One material's scene parameters prepared for one model in every number
+ * type (model_rgb_prepare): what the scene evaluators read. */
+typedef struct model_rgb {
+    const struct model *def;
+    int n; /* LUT nodes; 0 for analytic models */
+    lut_spacing spacing;
+    /* binary32 */
+    fresnel_rgb f0, f82, eta, kappa, a, alpha, r, g;
+    float ct_eta, ct_kappa;
+    const float *table; /* 3n nodes */
+    /* Q1.15 */
+    fresnel_rgb_q15 q_f0, q_f82, q_r, q_g;
+    fresnel_ior_prep_q15 q_ior[3], q_ct;
+    fresnel_nk_prep_q15 q_nk[3];
+    fresnel_lsk_prep_q15 q_lsk[3];
+    uint16_t *q_table;
+    int16_t *q_res;
+    int q_frac;
+#if FRESNEL_HAS_F16
+    fresnel_f16 h_f0[3], h_f82[3], h_eta[3], h_kappa[3], h_a[3], h_alpha[3], h_r[3], h_g[3], h_ct_eta, h_ct_kappa;
+    fresnel_f16 *h_table;
+#endif
+} model_rgb;
+
+/* A timed loop over n cosines (c for the float types, cq the same as Q15
+ * codes) of one prepared model: the row's evaluator is called directly, so
+ * no dispatch sits inside the loop (bench.h's bench_batch). */
+typedef double (*model_batch)(const void *q, const float *c, const int32_t *cq, int n);
+
+typedef struct model {
+    const char *name;   /* the one name: manifests, --model, report and curve columns */
+    unsigned offered;   /* MODEL_* */
+    const char *params; /* which parameters it reads, for --help */
+
+    /* As a function of eta, kappa, c (MODEL_EVAL) */
+    double (*f64)(const model_params *m, double c);
+    float (*f32)(const model_params *m, float c);
+    float bound; /* documented binary32 error bound, FRESNEL_BOUND_* */
+    /* Q15 runtime: the result code at cos code c (0..32768), and its
+     * documented bound in LSB, FRESNEL_BOUND_*_Q15 */
+    int32_t (*q15)(const model_fixed *m, int32_t c);
+    double q15_bound;
+    /* binary16 runtime with every parameter and c rounded to binary16 (NULL
+     * where the compiler has no _Float16), and FRESNEL_BOUND_*_F16 */
+    double (*f16)(const model_params *m, double c);
+    double f16_bound;
+
+    /* As a scene model (MODEL_SCENE) */
+    unsigned reads;     /* MP_* */
+    unsigned q15_reads; /* MQ_* */
+    model_eta eta;      /* which eta, kappa its exact or LSK forms read */
+    lut_form form;      /* MODEL_LUT rows */
+    int uniform;        /* MODEL_LUT rows: 1 nodes uniform in c, 0 in sqrt(c) */
+    /* GLSL return expression (ports/glsl/fresnel.glsl); '@' stands for the
+     * material's identifier prefix and '_'. NULL for LUT rows, whose GLSL
+     * the emitter builds from the form. */
+    const char *glsl;
+    fresnel_rgb (*rgb_f32)(const model_rgb *q, float c);
+    fresnel_rgb_q15 (*rgb_q15)(const model_rgb *q, int32_t c);
+    double (*ch_f16)(const model_rgb *q, int ch, double c); /* NULL without _Float16 */
+    /* The double reference on the binary32-rounded parameters, channel ch */
+    double (*ch_ref)(const model_rgb *q, int ch, double c);
+    model_batch batch_f32, batch_q15;
+} model;
+
+extern const model model_table[];
+extern const int model_count;
+/* The row named name offered as `offered`; NULL if none. */
+const model *model_find_offered(const char *name, unsigned offered);
+/* The MODEL_EVAL row named name (fresnel eval); NULL if none. */
+const model *model_find(const char *name);
+/* The scene row for a manifest's model name (a LUT name: the row of its form
+ * and spacing); NULL for an unknown name. */
+const model *model_scene_row(const char *name, lut_spacing spacing);
+/* N for "lutN", "lutN-residual" or "lutN-cubic" (N in lo..hi, no leading
+ * zeros), setting *form (if not NULL); 0 for every other string. */
+int model_lut_size(const char *name, int lo, int hi, lut_form *form);
+/* The rows offered as `offered`, without LUT rows, NULL-terminated: their
+ * names for messages and --help. max includes the NULL. */
+int model_names(unsigned offered, const char **out, int max);
+/* The LUT names' patterns for --help ("lutN lutN-residual lutN-cubic"). */
+extern const char model_lut_patterns[];
+
+/* The models `fresnel curve` draws without --models. */
+extern const char model_curve_default[];
+/* The column order of the report's table of the papers' approaches. */
+extern const char *const model_approaches_order[];
+
+/* Rows other code needs by role. */
+extern const model *const model_exact;            /* exact, the dielectric form at kappa 0 */
+extern const model *const model_f82;              /* the F82 model (extremes: F0, F82 pairs) */
+extern const model *const model_gulbrandsen;      /* Gulbrandsen (extremes: r, g pairs) */
+extern const model *const model_schlick_internal; /* Schlick from inside (accuracy: its own table) */
+
+/* Parameters of a material of index eta + i kappa seen from a medium of index
+ * n1: F0 = exact at c = 1, F82 = exact at c = 1/7, LSK a and alpha, Gulbrandsen
+ * r and g, with f90 and p as given (generalized Schlick). */
+void model_derive(double eta, double kappa, double n1, double f90, double p, model_params *out);
+
+/* Round every parameter to binary32, so that a double evaluation sees exactly
+ * the inputs the float one does and the difference is the runtime's error. */
+void model_params_round_f32(model_params *m);
+
+/* The same for the fixed-point runtime: F0, F82, F90, r, g to Q15 codes (r
+ * at most FRESNEL_GULBRANDSEN_R_MAX_Q15, the runtime's clamp), p and alpha to
+ * Q16.16, a to its 31-bit mantissa. eta and kappa are kept: the prepared
+ * constants carry 31-bit mantissas, and eta^2 - kappa^2 - 1 two words, so
+ * their rounding is part of the error the tests measure. */
+void model_params_round_fixed(model_params *m);
+/* Prepared constants and codes from (rounded) parameters. */
+void model_fixed_from_params(const model_params *m, model_fixed *out);
+/* And for binary16: every parameter rounded to binary16 (a no-op without _Float16). */
+void model_params_round_f16(model_params *m);
+
+/* A scene model's parameters for material p: the binary32 ones only (no
+ * allocation; q->table = table), or every type (the LUT's Q15 and binary16
+ * copies allocated from table_d: model_rgb_free). 0, or -1 when out of memory. */
+void model_rgb_prepare_f32(const model *def, const material_params *p, const float *table, int n,
+                           lut_spacing spacing, model_rgb *q);
+int model_rgb_prepare(const model *def, const material_params *p, const float *table, const double *table_d, int n,
+                      lut_spacing spacing, model_rgb *q);
+void model_rgb_free(model_rgb *q);
+
+#endif
