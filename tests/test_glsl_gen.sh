@@ -17,7 +17,8 @@ san=
 if nm "$BUILD/libfresnel.a" 2>/dev/null | grep -q '__asan_'; then
     san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 fi
-gen_obj=$(ls "$BUILD"/obj/gen/*/*.o | grep -v '/main\.o$')
+# the objects of today's sources (a stale object of a removed file is not linked)
+gen_obj=$(for f in gen/*/*.c; do echo "$BUILD/obj/${f%.c}.o"; done)
 cat >"$out/glsl_all_models.scene" <<'SCENE'
 # every analytic model and every LUT kind, nodes uniform in sqrt(cos theta)
 materials = au ag bk7
