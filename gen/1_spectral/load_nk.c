@@ -209,6 +209,30 @@ static int grow(nk_table *t, int *capacity)
     return 0;
 }
 
+int nk_check_row(const char *path, int line, double wl, double n, double k)
+{
+    char where[1100];
+    snprintf(where, sizeof where, "%s:%d", path, line);
+    if (!(wl > 0.0))
+        return cli_error(where, "wavelength %.10g not positive", wl);
+    /* n <= 0 has no physical passive medium behind it and would make eta/n1
+     * meaningless; k < 0 would be a gain medium. */
+    if (!(n > 0.0))
+        return cli_error(where, "n = %.10g, expected n > 0", n);
+    if (!(k >= 0.0))
+        return cli_error(where, "k = %.10g, expected k >= 0", k);
+    /* Headers hold n and k (and what derives from them) as binary32: a value
+     * beyond FLT_MAX would be an infinity there, an n below FLT_MIN zero or
+     * a subnormal. A tiny k flushing to 0 changes nothing measurable. */
+    if (n > FLT_MAX || n < FLT_MIN)
+        return cli_error(where, "n = %.10g, expected n in [%.9g, %.9g] (binary32, the generated headers' float)", n,
+                         (double)FLT_MIN, (double)FLT_MAX);
+    if (k > FLT_MAX)
+        return cli_error(where, "k = %.10g, expected k <= %.9g (binary32, the generated headers' float)", k,
+                         (double)FLT_MAX);
+    return 0;
+}
+
 /* One data row into wl, n, k, with the per-row rules; 0 or CLI_BAD_INPUT. */
 static int parse_nk_row(const csv_reader *r, char *row, double *wl, double *n, double *k)
 {
@@ -219,24 +243,7 @@ static int parse_nk_row(const csv_reader *r, char *row, double *wl, double *n, d
     if (csv_number(r, field[0], "wavelength_nm", wl) || csv_number(r, field[1], "n", n) ||
         csv_number(r, field[2], "k", k))
         return CLI_BAD_INPUT;
-    if (!(*wl > 0.0))
-        return csv_error(r, "wavelength %.10g not positive", *wl);
-    /* n <= 0 has no physical passive medium behind it and would make eta/n1
-     * meaningless; k < 0 would be a gain medium. */
-    if (!(*n > 0.0))
-        return csv_error(r, "n = %.10g, expected n > 0", *n);
-    if (!(*k >= 0.0))
-        return csv_error(r, "k = %.10g, expected k >= 0", *k);
-    /* Headers hold n and k (and what derives from them) as binary32: a value
-     * beyond FLT_MAX would be an infinity there, an n below FLT_MIN zero or
-     * a subnormal. A tiny k flushing to 0 changes nothing measurable. */
-    if (*n > FLT_MAX || *n < FLT_MIN)
-        return csv_error(r, "n = %.10g, expected n in [%.9g, %.9g] (binary32, the generated headers' float)", *n,
-                         (double)FLT_MIN, (double)FLT_MAX);
-    if (*k > FLT_MAX)
-        return csv_error(r, "k = %.10g, expected k <= %.9g (binary32, the generated headers' float)", *k,
-                         (double)FLT_MAX);
-    return 0;
+    return nk_check_row(r->path, r->line, *wl, *n, *k);
 }
 
 int load_nk(const char *path, nk_table *t)
@@ -246,6 +253,8 @@ int load_nk(const char *path, nk_table *t)
     char *row;
     t->rows = 0;
     t->wl = t->n = t->k = NULL;
+    t->first_line = 2;
+    t->unit = "nm";
     if (csv_open(&r, path, NK_HEADER))
         return CLI_BAD_INPUT;
     while ((got = csv_next_row(&r, &row)) == 1) {
@@ -280,6 +289,7 @@ int load_nk(const char *path, nk_table *t)
         csv_error(&r, "expected at least two data rows (" NK_HEADER "), got %d", t->rows);
         goto fail;
     }
+    t->last_line = last_row_line;
     csv_close(&r);
     return 0;
 fail:

@@ -73,19 +73,34 @@ static int warned_before(const char *path)
 
 int spectrum_coverage_warnings = 1;
 
+/* How the wavelengths were read, for a message about the range: a table in
+ * the wrong unit is the usual cause of a range that misses the visible. */
+static const char *unit_note(const nk_table *t, char *buf, size_t size)
+{
+    const char *unit = t->unit ? t->unit : "nm";
+    const char *hint = "";
+    if (!strcmp(unit, "nm") && t->wl[t->rows - 1] < 30.0)
+        hint = "; the values look like micrometres: a refractiveindex.info file or export is read in um "
+               "(fresnel import FILE converts it)";
+    snprintf(buf, size, " (wavelengths read as %s%s)", unit, hint);
+    return buf;
+}
+
 static int coverage(const char *path, const nk_table *t)
 {
     int last = t->rows - 1;
-    char where[1100];
+    int first_line = t->first_line > 0 ? t->first_line : 2;
+    int last_line = t->last_line > 0 ? t->last_line : last + 2;
+    char where[1100], note[256];
     if (t->wl[last] <= SPEC_LO_NM || t->wl[0] >= SPEC_HI_NM) {
-        int line = t->wl[0] >= SPEC_HI_NM ? 2 : last + 2;
+        int line = t->wl[0] >= SPEC_HI_NM ? first_line : last_line;
         snprintf(where, sizeof where, "%s:%d", path, line);
-        return cli_error(where, "the table covers %.10g-%.10g nm, expected it to reach into %g-%g nm",
-                         t->wl[0], t->wl[last], SPEC_LO_NM, SPEC_HI_NM);
+        return cli_error(where, "the table covers %.10g-%.10g nm, expected it to reach into %g-%g nm%s",
+                         t->wl[0], t->wl[last], SPEC_LO_NM, SPEC_HI_NM, unit_note(t, note, sizeof note));
     }
     if ((t->wl[0] > SPEC_LO_NM || t->wl[last] < SPEC_HI_NM) && spectrum_coverage_warnings &&
         !warned_before(path)) {
-        int line = t->wl[0] > SPEC_LO_NM ? 2 : last + 2;
+        int line = t->wl[0] > SPEC_LO_NM ? first_line : last_line;
         snprintf(where, sizeof where, "%s:%d", path, line);
         fprintf(stderr, "%s: warning: measured %.10g-%.10g nm, n and k held at the end values over the rest of %g-%g nm\n",
                 where, t->wl[0], t->wl[last], SPEC_LO_NM, SPEC_HI_NM);
@@ -93,10 +108,19 @@ static int coverage(const char *path, const nk_table *t)
     return 0;
 }
 
+int spectrum_from_table(const char *path, const nk_table *t, spectrum *s)
+{
+    if (coverage(path, t))
+        return CLI_BAD_INPUT;
+    resample(t, s);
+    return 0;
+}
+
 int spectrum_load(const char *dir, const char *id, spectrum *s)
 {
     char path[1024];
     nk_table t;
+    int status;
     /* The id names a file inside dir; refuse anything that would leave it. */
     if (*id == '\0' || strchr(id, '/') || *id == '.')
         return cli_error("material", "expected a material id, got '%s'", id);
@@ -104,11 +128,7 @@ int spectrum_load(const char *dir, const char *id, spectrum *s)
         return cli_error(dir, "data directory path too long");
     if (load_nk(path, &t))
         return CLI_BAD_INPUT;
-    if (coverage(path, &t)) {
-        nk_table_free(&t);
-        return CLI_BAD_INPUT;
-    }
-    resample(&t, s);
+    status = spectrum_from_table(path, &t, s);
     nk_table_free(&t);
-    return 0;
+    return status;
 }

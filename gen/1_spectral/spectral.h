@@ -2,6 +2,8 @@
  * papers give it [MS18 sections 4-5; Hof20 "Computing RGB parameter values"]:
  *
  *   load_nk.c              measured wavelength,n,k table, validated
+ *   import*.c, load_*.c    the same table from a user's file in another format
+ *                          (refractiveindex.info YAML or CSV, SOPRA .nk, .spd)
  *   resample.c             0.1 nm grid over 360-830 nm, ends held
  *   colorimetry.c          CIE 1931 2-degree CMFs and the D65 SPD
  *   colour_space.c         primaries/white -> XYZ->RGB with Bradford adaptation
@@ -37,9 +39,17 @@ void data_dir_program(const char *argv0);
 typedef struct nk_table {
     int rows;
     double *wl, *n, *k; /* malloc'd; nk_table_free */
+    /* For messages about the table as a whole (coverage): the file lines of
+     * the first and last rows, and how the file's wavelengths were read
+     * ("nm", "um", "eV", "um, formula 2"). */
+    int first_line, last_line;
+    const char *unit;
 } nk_table;
 int load_nk(const char *path, nk_table *t); /* 0, or CLI_BAD_INPUT after a file:line message */
 void nk_table_free(nk_table *t);
+/* The per-row rules every format shares (wavelength > 0, n > 0, k >= 0, both
+ * representable in binary32), reported at path:line; 0 or CLI_BAD_INPUT. */
+int nk_check_row(const char *path, int line, double wl_nm, double n, double k);
 
 /* The other data tables (CMFs, illuminant, colour spaces, materials) are read
  * through the same strict line reader as the n,k tables, so every file in
@@ -68,12 +78,33 @@ int csv_error(const csv_reader *r, const char *fmt, ...)
     ;
 void csv_close(csv_reader *r);
 
+/* ---- import.c: a user's n,k file. The format is told from the content
+ * (--format overrides); import.c's opening comment gives each format's rules.
+ * The table comes back in nm, ascending, checked as load_nk's rows are. */
+typedef enum nk_format {
+    NK_FORMAT_AUTO,
+    NK_FORMAT_CSV,      /* the data pack's wavelength_nm,n,k */
+    NK_FORMAT_RII_YAML, /* refractiveindex.info database file */
+    NK_FORMAT_RII_CSV,  /* refractiveindex.info CSV export */
+    NK_FORMAT_SOPRA,    /* SOPRA .nk */
+    NK_FORMAT_SPD       /* pbrt / Mitsuba .spd, n and k in two files */
+} nk_format;
+extern const char *const nk_format_names[]; /* indexed by nk_format, NULL-terminated */
+/* What a generated header records of a file so a build can be reproduced. */
+typedef struct nk_file_info {
+    char file[256];   /* base name(s): "TiN.yml", "Au.eta.spd + Au.k.spd" */
+    const char *format;
+    long bytes;       /* size of the file(s) read */
+    char sha256[65];  /* of the bytes read (both files, in that order, for a .spd pair) */
+} nk_file_info;
+
 /* ---- materials: data/materials.csv indexes the <id>.csv files. */
 typedef struct material_info {
     char id[32];
     char name[96];
     char dataset[160];
     char kind[16]; /* "metal" or "dielectric" */
+    nk_file_info file; /* a user's file: file.file[0] != 0 */
 } material_info;
 /* Look up id; 0, or CLI_BAD_INPUT (unknown id) after a message naming `where`. */
 int material_lookup(const char *dir, const char *id, material_info *out, const char *where);
@@ -92,6 +123,30 @@ void resample(const nk_table *t, spectrum *s);
  * columns and clears it unless --verbose. */
 extern int spectrum_coverage_warnings;
 int spectrum_load(const char *dir, const char *id, spectrum *s);
+/* The coverage rule and the resampling for a table read from path. */
+int spectrum_from_table(const char *path, const nk_table *t, spectrum *s);
+
+/* Read path in `format` (NK_FORMAT_AUTO: told from the content) into t, and
+ * what identifies the bytes read into info; 0 or CLI_BAD_INPUT after a
+ * file:line message. A table that covers only part of 360-830 nm is read;
+ * spectrum_from_table applies the coverage rule. */
+int nk_import(const char *path, nk_format format, nk_table *t, nk_file_info *info);
+
+/* A material: a data-pack id (path NULL or ""), or a user's file in any
+ * format nk_import reads, named id in generated code. */
+typedef struct material_source {
+    const char *id;
+    const char *path;
+    nk_format format;
+} material_source;
+/* Load and resample a material; info gets the data pack's row or, for a
+ * file, id, the file's name and provenance, and a kind from its k. 0 or
+ * CLI_BAD_INPUT. */
+int material_load(const char *dir, const material_source *m, material_info *info, spectrum *s);
+/* A material id from a file name: the base name up to its first '.',
+ * lower-cased, every run of characters outside a-z 0-9 one '_' ("TiN.yml" ->
+ * "tin", "Au.eta.spd" -> "au"). */
+void material_id_from_path(const char *path, char out[32]);
 
 /* ---- colorimetry.c */
 typedef struct colorimetry {

@@ -56,9 +56,10 @@ int gen_context_load(const char *dir, const char *space, gen_context *g);
 void ground_truth_clamped(const spectrum *s, const gen_context *g, double n1, double c,
                           double rgb[3]);
 
-/* Load data/<id>.csv and derive everything; 0 or CLI_BAD_INPUT. *s receives
- * the resampled spectrum for callers that need more ground truth. */
-int derive_parameters(const gen_context *g, const char *id, double sigma, double n1, spectrum *s,
+/* Load the material (data/<id>.csv or the user's file) and derive
+ * everything; 0 or CLI_BAD_INPUT. *s receives the resampled spectrum for
+ * callers that need more ground truth. */
+int derive_parameters(const gen_context *g, const material_source *m, double sigma, double n1, spectrum *s,
                       material_params *out);
 
 #endif

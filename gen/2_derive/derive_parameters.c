@@ -27,7 +27,7 @@ void ground_truth_clamped(const spectrum *s, const gen_context *g, double n1, do
         rgb[ch] = ref_clamp(rgb[ch], 0.0, 1.0);
 }
 
-int derive_parameters(const gen_context *g, const char *id, double sigma, double n1, spectrum *s,
+int derive_parameters(const gen_context *g, const material_source *m, double sigma, double n1, spectrum *s,
                       material_params *p)
 {
     double cosines[GEN_FIT_ANGLES], target[3][GEN_FIT_ANGLES], weight[3][GEN_FIT_ANGLES], rgb[3], green[3], eta[3],
@@ -35,7 +35,7 @@ int derive_parameters(const gen_context *g, const char *id, double sigma, double
     lab_space ls;
     int i, ch;
     memset(p, 0, sizeof *p);
-    if (material_lookup(g->dir, id, &p->info, "material") || spectrum_load(g->dir, id, s))
+    if (material_load(g->dir, m, &p->info, s))
         return CLI_BAD_INPUT;
     p->measured_lo = s->measured_lo;
     p->measured_hi = s->measured_hi;
@@ -85,7 +85,7 @@ int derive_parameters(const gen_context *g, const char *id, double sigma, double
         fit_report rep;
         if (fit_eta_kappa_weighted(cosines, target[ch], weight[ch], GEN_FIT_ANGLES, &p->eta_fit[ch],
                                    &p->kappa_fit[ch], &rep))
-            return cli_error(id, "fitting eta, kappa to the ground truth failed");
+            return cli_error(m->id, "fitting eta, kappa to the ground truth failed");
         p->fit_rms[ch] = rep.rms;
         ref_lsk_fit_target(p->eta_fit[ch], p->kappa_fit[ch], green[ch], &p->lsk_a[ch], &p->lsk_alpha[ch]);
         p->gulb_r[ch] = p->f0[ch];

@@ -26,6 +26,9 @@ int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
  * message. */
 int emit_scene(const char *manifest, const char *out_path, const char *tex_path, const char *dir_option, int glsl);
 void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
+/* The opening comment's list of materials and where each came from: a data
+ * pack file, or a user's file by name, format, size and SHA-256. */
+void emit_material_list(FILE *f, const emit_input *in);
 /* One material's float parameters for the scene's models, through the back
  * end's syntax for an RGB triple and a scalar. */
 typedef void (*emit_rgb_fn)(FILE *f, const char *prefix, const char *name, const double v[3], const char *why);

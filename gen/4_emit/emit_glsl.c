@@ -321,12 +321,8 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
                " * channel to [0, 1] (out-of-gamut policy, gen/2_derive/derive.h).\n * Models:");
     for (m = 0; m < sc->model_count; m++)
         fprintf(f, " %s", sc->models[m]);
-    fprintf(f, ".\n * Materials (file in the data pack, dataset, measured range; outside it the end values are held):\n");
-    for (i = 0; i < sc->material_count; i++) {
-        const material_params *p = &in->params[i];
-        fprintf(f, " *   %-18s %s.csv, %s, %s, %.1f-%.1f nm\n", p->info.id, p->info.id, p->info.name,
-                p->info.dataset, p->measured_lo, p->measured_hi);
-    }
+    fprintf(f, ".\n");
+    emit_material_list(f, in);
     fprintf(f, " * GLSL for every dialect of ports/glsl/fresnel.glsl (GLSL ES 1.00, ES 3.00, desktop 3.30 and\n"
                " * later): paste after it. Each material and model has vec3 %s_<material>_<model>_rgb(c)\n"
                " * (lsk-comp -> lsk_comp), computing what the C runtime computes from the C header of the\n"

@@ -146,6 +146,23 @@ void emit_material_params(FILE *f, const scene *sc, const material_params *p, co
 }
 
 /* What a user ships when they ship generated constants (C and GLSL). */
+void emit_material_list(FILE *f, const emit_input *in)
+{
+    int i;
+    fprintf(f, " * Materials (file in the data pack, dataset, measured range; outside it the end values are held):\n");
+    for (i = 0; i < in->sc->material_count; i++) {
+        const material_params *p = &in->params[i];
+        const nk_file_info *file = &p->info.file;
+        if (file->file[0])
+            fprintf(f, " *   %-18s %s (a user's file: %s, %ld bytes), %.1f-%.1f nm\n *   %-18s sha256 %s\n",
+                    p->info.id, file->file, file->format, file->bytes, p->measured_lo, p->measured_hi, "",
+                    file->sha256);
+        else
+            fprintf(f, " *   %-18s %s.csv, %s, %s, %.1f-%.1f nm\n", p->info.id, p->info.id, p->info.name,
+                    p->info.dataset, p->measured_lo, p->measured_hi);
+    }
+}
+
 void emit_licence_comment(FILE *f)
 {
     fprintf(f, " * Licence: the numbers below are facts derived from refractiveindex.info data (CC0 1.0) and the\n"
@@ -179,12 +196,8 @@ int emit_header(FILE *f, const emit_input *in)
     fprintf(f, "; number types:");
     for (m = 0; m < sc->type_count; m++)
         fprintf(f, " %s", sc->types[m]);
-    fprintf(f, ".\n * Materials (file in the data pack, dataset, measured range; outside it the end values are held):\n");
-    for (i = 0; i < sc->material_count; i++) {
-        const material_params *p = &in->params[i];
-        fprintf(f, " *   %-18s %s.csv, %s, %s, %.1f-%.1f nm\n", p->info.id, p->info.id, p->info.name,
-                p->info.dataset, p->measured_lo, p->measured_hi);
-    }
+    fprintf(f, ".\n");
+    emit_material_list(f, in);
     fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n", guard, guard);
     if (scene_has_type(sc, "q15"))
         fprintf(f, "#include \"fresnel_fixed.h\"\n");

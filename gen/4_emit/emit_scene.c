@@ -43,11 +43,11 @@ int emit_scene(const char *manifest, const char *out_path, const char *tex_path,
     }
     if ((status = gen_context_load(data_dir(dir_option), sc->space, g)))
         goto done;
-    snprintf(where, sizeof where, "%s:%d", manifest, sc->materials_line);
     /* Every unknown material is reported, not only the first. */
     for (i = 0; i < sc->material_count; i++) {
         material_info info;
-        if (material_lookup(g->dir, sc->materials[i], &info, where))
+        snprintf(where, sizeof where, "%s:%d", manifest, sc->material_line[i]);
+        if (!sc->material_file[i][0] && material_lookup(g->dir, sc->materials[i], &info, where))
             status = CLI_BAD_INPUT;
     }
     if (status)
@@ -57,7 +57,8 @@ int emit_scene(const char *manifest, const char *out_path, const char *tex_path,
             status = cli_oom(WHERE);
             goto done;
         }
-        if ((status = derive_parameters(g, sc->materials[i], sc->sigma, sc->n1, spectra[i], &params[i])))
+        material_source m = scene_material(sc, i);
+        if ((status = derive_parameters(g, &m, sc->sigma, sc->n1, spectra[i], &params[i])))
             goto done;
     }
     in.sc = sc;

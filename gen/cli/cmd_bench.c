@@ -36,10 +36,12 @@ static int bench_targets_print(int count, int runs)
 int cmd_bench(int argc, char **argv)
 {
     const char *scene_path = "data/scenes/report.scene", *material = "au", *only_model = NULL, *only_type = NULL,
-               *dir_option = NULL;
+               *dir_option = NULL, *nk_file = NULL;
+    char nk_id[32];
+    material_source source;
     int count = 1 << 20, runs = 5, i, m, t, status = 0, targets = 0, count_set = 0, runs_set = 0,
         scene_options = 0;
-    static const char *const options[] = {"--scene", "--material", "--model", "--type", "--data", "--count",
+    static const char *const options[] = {"--scene", "--material", "--nk", "--model", "--type", "--data", "--count",
                                           "--runs", "--targets", "--help", NULL};
     const char *v;
     scene sc;
@@ -49,13 +51,14 @@ int cmd_bench(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            printf("usage: fresnel bench [--scene FILE] [--material ID] [--model NAME] [--type f32|q15|f16]\n"
+            printf("usage: fresnel bench [--scene FILE] [--material ID | --nk FILE] [--model NAME] [--type f32|q15|f16]\n"
                    "                     [--count N] [--runs R] [--data DIR]\n"
                    "       fresnel bench --targets [--count N] [--runs R]\n\n"
                    "Prints CSV model,type,ns_per_rgb_eval: the median of R timed batches (default 5) of N\n"
                    "evaluations (default 2^20) over fixed pseudo-random cosines, for each model of the\n"
                    "scene (default data/scenes/report.scene) and material ID (default au). --runs 0\n"
-                   "runs one untimed batch (the callgrind workload of `make report`).\n\n"
+                   "runs one untimed batch (the callgrind workload of `make report`). --nk FILE takes the\n"
+                   "material from a user's n,k file (formats: fresnel import --help).\n\n"
                    "--targets: the library's speed targets, CSV\n"
                    "  name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n"
                    "one channel of copper at 650 nm (eta 0.24, kappa 3.63), every row timed back to back\n"
@@ -82,6 +85,8 @@ int cmd_bench(int argc, char **argv)
             scene_path = v;
         else if (!strcmp(o, "--material"))
             material = v;
+        else if (!strcmp(o, "--nk"))
+            nk_file = v;
         else if (!strcmp(o, "--model"))
             only_model = v;
         else if (!strcmp(o, "--type")) {
@@ -108,6 +113,13 @@ int cmd_bench(int argc, char **argv)
     }
     if ((status = scene_load(scene_path, &sc)))
         return status;
+    source.id = material;
+    source.path = nk_file;
+    source.format = NK_FORMAT_AUTO;
+    if (nk_file) {
+        material_id_from_path(nk_file, nk_id);
+        source.id = nk_id;
+    }
     if (scene_lut_spacing(&sc) == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `fresnel bench --targets` and "
                                      "`make cross-count` time fresnel_lut_pl_u16_q15_fast");
@@ -123,7 +135,7 @@ int cmd_bench(int argc, char **argv)
         goto done;
     }
     if ((status = gen_context_load(data_dir(dir_option), sc.space, g)) ||
-        (status = derive_parameters(g, material, sc.sigma, sc.n1, s, &p)))
+        (status = derive_parameters(g, &source, sc.sigma, sc.n1, s, &p)))
         goto done;
     if (runs > 0)
         printf("model,type,ns_per_rgb_eval\n");

@@ -1,23 +1,33 @@
 /* Options shared by `fresnel curve` and `fresnel params` (see material_options.h). */
 #include "cli/material_options.h"
 
+#include <stdio.h>
 #include <string.h>
 
 #include "cli/cli.h"
 
 const char material_options_help[] =
-    "  --material ID   material id (fresnel materials lists them), required\n"
+    "  --material ID   material id (fresnel materials lists them); this or --nk is required\n"
+    "  --nk FILE       the material from your own n,k file: refractiveindex.info YAML or CSV,\n"
+    "                  SOPRA .nk, .spd (NAME.eta.spd + NAME.k.spd) or wavelength_nm,n,k CSV,\n"
+    "                  told from its content (fresnel import --help gives each format's rules)\n"
+    "  --name ID       the id --nk's material is shown under (default: from the file name)\n"
+    "  --format NAME   read --nk as auto (default), csv, rii-yaml, rii-csv, sopra or spd\n"
     "  --space NAME    srgb (default), display-p3, dci-p3, adobe-rgb, rec2020, acescg\n"
     "                  (any case; aliases sRGB, rec709, bt709, p3, bt2020, ACEScg)\n"
     "  --sigma S       Gaussian window in nm for Metzgar's eta', kappa' (default 25; 0 = point sampling)\n"
     "  --n1 X          real index of the incident medium (default 1)\n"
     "  --data DIR      data directory (default $FRESNEL_DATA, else the build's data/)\n";
 
-const char *const material_option_names[] = {"--material", "--space", "--sigma", "--n1", "--data", "--help", NULL};
+const char *const material_option_names[] = {"--material", "--nk",   "--name", "--format", "--space",
+                                              "--sigma",    "--n1",   "--data", "--help",   NULL};
 
 void material_options_init(material_options *o)
 {
     o->material = NULL;
+    o->nk = o->name = NULL;
+    o->format = NK_FORMAT_AUTO;
+    o->id[0] = '\0';
     o->space = "srgb";
     o->data = NULL;
     o->sigma = 25.0;
@@ -28,6 +38,21 @@ int material_option(const char *where, const char *opt, const char *val, materia
 {
     if (!strcmp(opt, "--material"))
         o->material = val;
+    else if (!strcmp(opt, "--nk"))
+        o->nk = val;
+    else if (!strcmp(opt, "--name")) {
+        size_t len = strlen(val);
+        if (len == 0 || len > 31 || strspn(val, "abcdefghijklmnopqrstuvwxyz0123456789_") != len)
+            return cli_error(where, "--name expects 1-31 characters of a-z, 0-9 and '_', got '%s'", val);
+        o->name = val;
+    } else if (!strcmp(opt, "--format")) {
+        int f;
+        for (f = 0; nk_format_names[f] && strcmp(nk_format_names[f], val); f++)
+            ;
+        if (!nk_format_names[f])
+            return cli_unknown(where, "format", val, nk_format_names);
+        o->format = (nk_format)f;
+    }
     else if (!strcmp(opt, "--space"))
         o->space = val;
     else if (!strcmp(opt, "--data"))
@@ -43,12 +68,27 @@ int material_option(const char *where, const char *opt, const char *val, materia
     return 1;
 }
 
-int material_options_derive(const char *where, const material_options *o, gen_context *g, spectrum *s,
+int material_options_derive(const char *where, material_options *o, gen_context *g, spectrum *s,
                             material_params *p)
 {
-    if (!o->material)
-        return cli_error(where, "--material is required (fresnel materials lists the ids)");
+    material_source m;
+    if (o->material && o->nk)
+        return cli_error(where, "expected --material ID or --nk FILE, not both");
+    if (!o->material && !o->nk)
+        return cli_error(where, "--material ID or --nk FILE is required (fresnel materials lists the ids)");
+    if ((o->name || o->format != NK_FORMAT_AUTO) && !o->nk)
+        return cli_error(where, "--name and --format describe --nk FILE, which is not given");
     if (gen_context_load(data_dir(o->data), o->space, g))
         return CLI_BAD_INPUT;
-    return derive_parameters(g, o->material, o->sigma, o->n1, s, p);
+    m.id = o->material;
+    m.path = o->nk;
+    m.format = o->format;
+    if (o->nk) {
+        if (o->name)
+            snprintf(o->id, sizeof o->id, "%s", o->name);
+        else
+            material_id_from_path(o->nk, o->id);
+        m.id = o->id;
+    }
+    return derive_parameters(g, &m, o->sigma, o->n1, s, p);
 }

@@ -1,5 +1,6 @@
 /* Options shared by the commands that look at one material in one colour
- * space: --material ID, --space NAME, --sigma S, --n1 X, --data DIR. */
+ * space: --material ID or --nk FILE [--name ID] [--format NAME], --space
+ * NAME, --sigma S, --n1 X, --data DIR. */
 #ifndef FRESNEL_MATERIAL_OPTIONS_H
 #define FRESNEL_MATERIAL_OPTIONS_H
 
@@ -7,6 +8,9 @@
 
 typedef struct material_options {
     const char *material;
+    const char *nk, *name; /* --nk FILE, --name ID */
+    nk_format format;      /* --format NAME */
+    char id[32];           /* --name, or the id material_id_from_path gives --nk's file */
     const char *space;
     const char *data;
     double sigma, n1;
@@ -23,7 +27,7 @@ extern const char *const material_option_names[];
 
 /* Load the colour space and derive the material's parameters; 0 or
  * CLI_BAD_INPUT. */
-int material_options_derive(const char *where, const material_options *o, gen_context *g, spectrum *s,
+int material_options_derive(const char *where, material_options *o, gen_context *g, spectrum *s,
                             material_params *p);
 
 #endif

@@ -214,7 +214,8 @@ static int compute_hoffman(report_run *r)
         material_params p;
         double gt[REPORT_ANGLES][3], sch[REPORT_ANGLES][3], fit[REPORT_ANGLES][3], ps[REPORT_ANGLES][3];
         double mean, max;
-        if ((status = derive_parameters(g, hoffman[i].id, 25.0, 1.0, s, &p)))
+        material_source pack = {hoffman[i].id, NULL, NK_FORMAT_AUTO};
+        if ((status = derive_parameters(g, &pack, 25.0, 1.0, s, &p)))
             goto done;
         r->hoffman_in_gamut[i] = 1;
         for (ch = 0; ch < 3; ch++)
@@ -403,15 +404,16 @@ int report_write(const report_options *o)
     for (i = 0; i < r.sc.material_count; i++) {
         report_material *rm = &r.mats[i];
         char where[1100];
-        snprintf(where, sizeof where, "%s:%d", scene_path, r.sc.materials_line);
-        if ((status = material_lookup(r.g->dir, r.sc.materials[i], &rm->p.info, where)))
+        material_source source = scene_material(&r.sc, i);
+        snprintf(where, sizeof where, "%s:%d", scene_path, r.sc.material_line[i]);
+        if (!source.path && (status = material_lookup(r.g->dir, r.sc.materials[i], &rm->p.info, where)))
             goto done;
         if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models)) ||
             !(rm->prepared = calloc((size_t)r.sc.model_count, sizeof *rm->prepared))) {
             status = cli_oom(WHERE);
             goto done;
         }
-        if ((status = derive_parameters(r.g, r.sc.materials[i], r.sc.sigma, r.sc.n1, rm->s, &rm->p)))
+        if ((status = derive_parameters(r.g, &source, r.sc.sigma, r.sc.n1, rm->s, &rm->p)))
             goto done;
         report_ground_truth(r.g, &r.ls, rm);
         for (m = 0; m < r.sc.model_count; m++) {

@@ -169,24 +169,47 @@ static int find_in(char (*list)[SCENE_NAME_SIZE], int count, const char *s)
     return -1;
 }
 
+/* Append material id (named at line; file "" for the data pack's). */
+static int add_material(const char *path, int line, const char *id, const char *file, scene *s)
+{
+    int i;
+    if (!material_id_ok(id))
+        return report(path, line, "expected material ids made of a-z, 0-9 and _, got '%s'", id);
+    if (strlen(id) >= SCENE_ID_SIZE)
+        return report(path, line, "expected a material id of at most %d characters, got '%s'", SCENE_ID_SIZE - 1, id);
+    for (i = 0; i < s->material_count; i++)
+        if (strcmp(s->materials[i], id) == 0)
+            return report(path, line, "expected each material once, '%s' is already named at line %d", id,
+                          s->material_line[i]);
+    if (s->material_count == SCENE_MAX_MATERIALS)
+        return report(path, line, "expected at most %d materials", SCENE_MAX_MATERIALS);
+    strcpy(s->materials[s->material_count], id);
+    strcpy(s->material_file[s->material_count], file);
+    s->material_line[s->material_count++] = line;
+    return 0;
+}
+
 static int parse_materials(const char *path, int line, char *value, scene *s)
 {
     char *cursor = value, *id;
-    int i;
-    while ((id = next_token(&cursor)) != NULL) {
-        if (!material_id_ok(id))
-            return report(path, line, "expected material ids made of a-z, 0-9 and _, got '%s'", id);
-        if (strlen(id) >= SCENE_ID_SIZE)
-            return report(path, line, "expected a material id of at most %d characters, got '%s'",
-                          SCENE_ID_SIZE - 1, id);
-        for (i = 0; i < s->material_count; i++)
-            if (strcmp(s->materials[i], id) == 0)
-                return report(path, line, "expected each material once, '%s' is listed twice", id);
-        if (s->material_count == SCENE_MAX_MATERIALS)
-            return report(path, line, "expected at most %d materials", SCENE_MAX_MATERIALS);
-        strcpy(s->materials[s->material_count++], id);
-    }
+    while ((id = next_token(&cursor)) != NULL)
+        if (add_material(path, line, id, "", s))
+            return CLI_BAD_INPUT;
     return 0;
+}
+
+/* `material ID = FILE`: FILE relative to the manifest's directory unless
+ * absolute. */
+static int parse_material_file(const char *path, int line, char *id, const char *file, scene *s)
+{
+    const char *slash = strrchr(path, '/');
+    int dir_len = file[0] == '/' || !slash ? 0 : (int)(slash - path) + 1;
+    char resolved[SCENE_PATH_SIZE];
+    if (*id == '\0' || strpbrk(id, " \t"))
+        return report(path, line, "expected 'material ID = FILE' with one material id, got 'material %s'", id);
+    if ((size_t)snprintf(resolved, sizeof resolved, "%.*s%s", dir_len, path, file) >= sizeof resolved)
+        return report(path, line, "expected a file path of at most %d characters", SCENE_PATH_SIZE - 1);
+    return add_material(path, line, id, resolved, s);
 }
 
 static int parse_models(const char *path, int line, char *value, scene *s)
@@ -348,6 +371,11 @@ static int parse_line(const char *path, int line, char *text, scene *s)
     value = trim(eq + 1);
     if (*key == '\0')
         return report(path, line, "expected a key before '='");
+    if (!strncmp(key, "material", 8) && isspace((unsigned char)key[8])) {
+        if (*value == '\0')
+            return report(path, line, "expected a file after 'material %s ='", trim(key + 8));
+        return parse_material_file(path, line, trim(key + 8), value, s);
+    }
     k = table_index(key_names, key);
     if (k < 0) {
         char near[SCENE_NAME_SIZE + 32];
@@ -416,9 +444,9 @@ int scene_load(const char *path, scene *out)
     fclose(f);
     if (rc != 0)
         return rc;
-    if (out->materials_line == 0)
+    if (out->material_count == 0)
         return report(path, line > 0 ? line : 1,
-                      "expected a 'materials = id ...' line, the required key is missing");
+                      "expected a 'materials = id ...' or 'material id = FILE' line, no material is named");
     if (out->models_line == 0)
         return report(path, line > 0 ? line : 1,
                       "expected a 'models = name ...' line, the required key is missing");
@@ -445,6 +473,15 @@ int scene_load(const char *path, scene *out)
                               out->models[m], out->lut_spacing_line);
     }
     return 0;
+}
+
+material_source scene_material(const scene *sc, int i)
+{
+    material_source m;
+    m.id = sc->materials[i];
+    m.path = sc->material_file[i][0] ? sc->material_file[i] : NULL;
+    m.format = NK_FORMAT_AUTO;
+    return m;
 }
 
 unsigned scene_reads(const scene *sc, int q15)

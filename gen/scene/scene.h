@@ -9,10 +9,17 @@
  *   byte-order mark at the start of the file are accepted. Each key may appear
  *   at most once.
  *
- *   materials    required. Whitespace-separated material ids, each matching
- *                [a-z0-9_]+ and at most 31 characters, at most 64 of them,
- *                no duplicates. Whether they exist in the data pack is the
- *                caller's check (report it at scene.materials_line).
+ *   materials    Whitespace-separated material ids of the data pack, each
+ *                matching [a-z0-9_]+ and at most 31 characters. Whether they
+ *                exist in the data pack is the caller's check (report it at
+ *                scene.material_line[i]).
+ *   material ID = FILE
+ *                a material from the user's own n,k file, named ID in the
+ *                generated code; FILE (no '#' in it) is relative to the
+ *                manifest's directory unless absolute, in any format
+ *                `fresnel import` reads (1_spectral/import.c). One line per
+ *                material; repeatable.
+ *                At least one material in all, at most 64, each id once.
  *   models       required. Whitespace-separated, no duplicates, each the
  *                name of a MODEL_SCENE row of the model registry
  *                (model/registry.c: `fresnel gen --help` lists them) or a
@@ -77,6 +84,7 @@
 #define SCENE_LUT_MIN 4
 #define SCENE_LUT_MAX MODEL_LUT_NODES_MAX
 #define SCENE_PREFIX_SIZE 41 /* scene name, NUL included */
+#define SCENE_PATH_SIZE 1024 /* a material file's path as resolved, NUL included */
 
 /* The vocabulary, NULL-terminated, for reuse in --help text (colour spaces:
  * colour_space_ids in spectral.h; models: the registry's MODEL_SCENE rows,
@@ -90,8 +98,10 @@ typedef struct scene {
         lut_spacing_line, name_line;
     char name[SCENE_PREFIX_SIZE]; /* the name key; "" when not given */
 
-    int material_count;
+    int material_count; /* in the order the file names them */
     char materials[SCENE_MAX_MATERIALS][SCENE_ID_SIZE];
+    char material_file[SCENE_MAX_MATERIALS][SCENE_PATH_SIZE]; /* "" for the data pack's */
+    int material_line[SCENE_MAX_MATERIALS];
     int model_count;
     char models[SCENE_MAX_MODELS][SCENE_NAME_SIZE];
     int type_count;
@@ -119,6 +129,9 @@ void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE]);
 
 /* 1 if the model name is one the manifest accepts, else 0. */
 int scene_model_known(const char *model);
+
+/* Material i as derive_parameters takes it (pointing into sc). */
+material_source scene_material(const scene *sc, int i);
 
 /* 1 if the loaded scene names this model / number type, else 0. */
 int scene_has_model(const scene *sc, const char *model);
