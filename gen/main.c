@@ -17,6 +17,7 @@ static const struct command commands[] = {
     {"eval", cmd_eval, "evaluate one model on eta,kappa,cos lines from stdin"},
     {"wavelengths", cmd_wavelengths, "dominant wavelengths of a colour space's primaries"},
     {"materials", cmd_materials, "list the materials in data/ and their measured ranges"},
+    {"import", cmd_import, "convert your own n,k file (refractiveindex.info, SOPRA, .spd) to the data pack's CSV"},
     {"gen", cmd_gen, "write a scene's C header from its manifest"},
     {"params", cmd_params, "every parameter derived for one material in a colour space"},
     {"curve", cmd_curve, "ground truth and every model over angle for one material (CSV)"},

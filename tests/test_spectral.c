@@ -566,9 +566,9 @@ static void test_commands(void)
         rc = run_command(cmd_materials, 1, argv, out, sizeof out, err, sizeof err);
         CHECK("fresnel materials lists every material with its measured range",
               rc == 0 &&
-                  !strncmp(out, "id,name,kind,dataset,measured_lo_nm,measured_hi_nm\n", 51) &&
+                  !strncmp(out, "id,name,dataset,kind,measured_lo_nm,measured_hi_nm\n", 51) &&
                   strstr(out, "\nmoissanite,") && strstr(out, ",405,830\n") &&
-                  strstr(out, "\ncu,Copper Cu,metal,Johnson & Christy 1972,360,830\n"),
+                  strstr(out, "\ncu,Copper Cu,Johnson & Christy 1972,metal,360,830\n"),
               "rc %d err '%s'", rc, err);
     }
     {

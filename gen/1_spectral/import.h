@@ -33,6 +33,12 @@ int text_error(const text_file *t, int line, const char *fmt, ...)
  * naming the word that is not a finite number. */
 int text_numbers(const text_file *t, int line, char *s, const char *seps, double *out, int max);
 
+/* um in nm as the decimal the file wrote would read in nm: 0.1879 um is
+ * the double nearest 187.9, where 0.1879 * 1000 is one unit in the last
+ * place off, and the data pack's CSV of the same rows would then resample
+ * differently in the last bits. Exact for up to 15 significant digits. */
+double nm_from_um(double um);
+
 /* One quantity (n or k) against wavelength in nm, strictly ascending, with
  * the file line of each row. */
 typedef struct nk_column {

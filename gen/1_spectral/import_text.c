@@ -138,6 +138,18 @@ int text_numbers(const text_file *t, int line, char *s, const char *seps, double
     return count;
 }
 
+double nm_from_um(double um)
+{
+    char buf[48], *e;
+    int exponent;
+    snprintf(buf, sizeof buf, "%.14e", um);
+    if (!(e = strchr(buf, 'e')))
+        return um * 1000.0;
+    exponent = atoi(e + 1);
+    snprintf(e, sizeof buf - (size_t)(e - buf), "e%d", exponent + 3);
+    return strtod(buf, NULL);
+}
+
 int column_push(const text_file *t, nk_column *c, double wl, double v, int line)
 {
     if (c->rows > 0 && !(wl > c->wl[c->rows - 1]))

@@ -76,9 +76,9 @@ int load_rii_csv(text_file *t, nk_table *out)
                        block == BLOCK_NK ? "wl,n,k" : block == BLOCK_N ? "wl,n" : "wl,k", got);
             goto done;
         }
-        if (block != BLOCK_K && column_push(t, &n, v[0] * 1000.0, v[1], t->line))
+        if (block != BLOCK_K && column_push(t, &n, nm_from_um(v[0]), v[1], t->line))
             goto done;
-        if (block != BLOCK_N && column_push(t, &k, v[0] * 1000.0, v[want - 1], t->line))
+        if (block != BLOCK_N && column_push(t, &k, nm_from_um(v[0]), v[want - 1], t->line))
             goto done;
         block_rows++;
     }

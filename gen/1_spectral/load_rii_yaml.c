@@ -121,7 +121,7 @@ static int formula_n(int type, const double *c, double um, double *n)
 static int sample_formula(const text_file *t, const entry *e, nk_column *n)
 {
     int i;
-    double lo_nm = e->range[0] * 1000.0, hi_nm = e->range[1] * 1000.0;
+    double lo_nm = nm_from_um(e->range[0]), hi_nm = nm_from_um(e->range[1]);
     for (i = 0; i < SPEC_N; i++) {
         double nm = (3600 + i) / 10.0, v;
         if (nm < lo_nm - 1e-9 || nm > hi_nm + 1e-9)
@@ -206,9 +206,9 @@ static int parse_row(const text_file *t, int line, char *s, entry *e)
         return text_error(t, line, "expected %d numbers (%s) for type %s, got %d", want,
                           want == 3 ? "um n k" : e->kind == ENTRY_N ? "um n" : "um k",
                           want == 3 ? "tabulated nk" : e->kind == ENTRY_N ? "tabulated n" : "tabulated k", got);
-    if (e->kind != ENTRY_K && column_push(t, &e->n, v[0] * 1000.0, v[1], line))
+    if (e->kind != ENTRY_K && column_push(t, &e->n, nm_from_um(v[0]), v[1], line))
         return CLI_BAD_INPUT;
-    if (e->kind != ENTRY_N && column_push(t, &e->k, v[0] * 1000.0, want == 3 ? v[2] : v[1], line))
+    if (e->kind != ENTRY_N && column_push(t, &e->k, nm_from_um(v[0]), want == 3 ? v[2] : v[1], line))
         return CLI_BAD_INPUT;
     return 0;
 }

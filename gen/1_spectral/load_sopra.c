@@ -30,6 +30,8 @@ int load_sopra(text_file *t, nk_table *out)
     memset(&k, 0, sizeof k);
     if (!text_next(t, &line))
         return text_error(t, 1, "expected the SOPRA header 'unit start end intervals', got an empty file");
+    if (!strchr("0123456789.+-", line[strspn(line, " \t")]))
+        return text_error(t, 1, "expected the SOPRA header 'unit start end intervals', got '%.40s'", line);
     if ((got = text_numbers(t, 1, line, ";", head, 5)) < 0)
         return CLI_BAD_INPUT;
     if (got != 4)
@@ -83,7 +85,7 @@ int load_sopra(text_file *t, nk_table *out)
     for (i = 0; i <= intervals; i++) {
         int j = unit == 1 ? intervals - i : i;
         double x = head[1] + (head[2] - head[1]) * j / intervals;
-        double nm = unit == 1 ? HC_EV_NM / x : unit == 2 ? x * 1000.0 : x;
+        double nm = unit == 1 ? HC_EV_NM / x : unit == 2 ? nm_from_um(x) : x;
         if (column_push(t, &n, nm, values[2 * j], lines[2 * j]) ||
             column_push(t, &k, nm, values[2 * j + 1], lines[2 * j + 1]))
             goto done;

@@ -82,6 +82,8 @@ static const char *unit_note(const nk_table *t, char *buf, size_t size)
     if (!strcmp(unit, "nm") && t->wl[t->rows - 1] < 30.0)
         hint = "; the values look like micrometres: a refractiveindex.info file or export is read in um "
                "(fresnel import FILE converts it)";
+    else if (!strcmp(unit, "um") && t->wl[0] > 30000.0)
+        hint = "; the values look like nm: this format's wavelengths are micrometres";
     snprintf(buf, size, " (wavelengths read as %s%s)", unit, hint);
     return buf;
 }

@@ -23,15 +23,16 @@ int cmd_curve(int argc, char **argv)
     scene_model models[MAX_MODELS];
     char *names = NULL, *tok;
     const char *model_list = model_curve_default;
-    static const char *const options[] = {"--material", "--space", "--sigma", "--n1", "--data", "--samples",
-                                          "--models", "--lut-spacing", "--help", NULL};
+    static const char *const options[] = {"--material", "--nk",      "--name",   "--format",      "--space",
+                                          "--sigma",    "--n1",      "--data",   "--samples",     "--models",
+                                          "--lut-spacing", "--help", NULL};
     const char *val;
     int samples = 91, n_models = 0, i, r, status = 0;
     lut_spacing spacing = LUT_GRAZING;
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: fresnel curve --material ID [--space NAME] [--sigma S] [--samples N]\n"
+            printf("usage: fresnel curve (--material ID | --nk FILE) [--space NAME] [--sigma S] [--samples N]\n"
                    "                     [--models \"NAME ...\"] [--lut-spacing grazing|uniform] [--n1 X] [--data DIR]\n\n"
                    "Prints CSV: theta_deg,cos,gt_r,gt_g,gt_b (the spectral ground truth, clamped to\n"
                    "[0,1] as the generator's out-of-gamut policy says), then <model>_r,_g,_b for each\n"

@@ -16,7 +16,8 @@ static void materials_usage(FILE *out)
             "usage: fresnel materials [--data DIR] [--verbose]\n"
             "\n"
             "Lists the materials of DIR/materials.csv as CSV with the header\n"
-            "id,name,kind,dataset,measured_lo_nm,measured_hi_nm; the last two give the\n"
+            "id,name,dataset,kind,measured_lo_nm,measured_hi_nm: materials.csv's own columns\n"
+            "in its order (data/README.md describes them), then two that give the\n"
             "part of 360-830 nm that the material's n,k table covers (outside it the\n"
             "generator holds the end value). Every table is loaded and checked, so a\n"
             "damaged file is reported as file:line with exit status 2.\n"
@@ -68,9 +69,9 @@ int cmd_materials(int argc, char **argv)
         lo[i] = s->measured_lo;
         hi[i] = s->measured_hi;
     }
-    printf("id,name,kind,dataset,measured_lo_nm,measured_hi_nm\n");
+    printf("id,name,dataset,kind,measured_lo_nm,measured_hi_nm\n");
     for (i = 0; i < count; i++)
-        printf("%s,%s,%s,%s,%g,%g\n", list[i].id, list[i].name, list[i].kind, list[i].dataset,
+        printf("%s,%s,%s,%s,%g,%g\n", list[i].id, list[i].name, list[i].dataset, list[i].kind,
                lo[i], hi[i]);
     status = 0;
 done:

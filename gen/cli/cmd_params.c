@@ -24,7 +24,8 @@ int cmd_params(int argc, char **argv)
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: fresnel params --material ID [--space NAME] [--sigma S] [--n1 X] [--data DIR]\n\n"
+            printf("usage: fresnel params (--material ID | --nk FILE [--name ID]) [--space NAME] [--sigma S] [--n1 X]\n"
+                   "                      [--data DIR]\n\n"
                    "Prints, as CSV parameter,r,g,b, every parameter the generator derives for one\n"
                    "material from its spectral ground truth (GT) in a colour space: dominant\n"
                    "wavelengths, F0 (unclamped and clamped to [0,1], the out-of-gamut policy), F82,\n"

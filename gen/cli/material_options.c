@@ -78,6 +78,9 @@ int material_options_derive(const char *where, material_options *o, gen_context 
         return cli_error(where, "--material ID or --nk FILE is required (fresnel materials lists the ids)");
     if ((o->name || o->format != NK_FORMAT_AUTO) && !o->nk)
         return cli_error(where, "--name and --format describe --nk FILE, which is not given");
+    if (o->material && strpbrk(o->material, "./"))
+        return cli_error(where, "--material takes a data-pack id, got '%s'; a file of your own is read with --nk FILE",
+                         o->material);
     if (gen_context_load(data_dir(o->data), o->space, g))
         return CLI_BAD_INPUT;
     m.id = o->material;

@@ -174,7 +174,8 @@ static int add_material(const char *path, int line, const char *id, const char *
 {
     int i;
     if (!material_id_ok(id))
-        return report(path, line, "expected material ids made of a-z, 0-9 and _, got '%s'", id);
+        return report(path, line, "expected material ids made of a-z, 0-9 and _, got '%s'%s", id,
+                      strpbrk(id, "./") ? " (a file of your own is named by a line 'material ID = FILE')" : "");
     if (strlen(id) >= SCENE_ID_SIZE)
         return report(path, line, "expected a material id of at most %d characters, got '%s'", SCENE_ID_SIZE - 1, id);
     for (i = 0; i < s->material_count; i++)

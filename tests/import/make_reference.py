@@ -86,3 +86,54 @@ for p in sys.argv[1:] or ["Au-Johnson.yml", "TiN-Pfluger.yml", "N-BK7.yml", "BOR
                           "TiO2-Devore-o.yml", "PMMA-495-specs.yml", "Ar-Peck-15C.yml", "herzberger-constructed.yml",
                           "TlCl-Schroter.yml", "urea-Rosker-e.yml"]:
     convert(p)
+
+# The other formats, constructed from the same Johnson & Christy gold rows
+# (and N-BK7's formula), each with its reference CSV.
+HC = 1239.8419843320026  # eV nm
+au = [(r[0] * 1000, r[1], r[2]) for r in rows_of(yaml.safe_load(open("Au-Johnson.yml"))["DATA"][0]["data"])]
+au_wl = [r[0] for r in au]
+
+def write_reference(name, rows):
+    with open(name, "w") as o:
+        o.write("wavelength_nm,n,k\n")
+        for w, n, k in sorted(rows):
+            o.write("%.10g,%.10g,%.10g\n" % (w, n, k))
+
+# refractiveindex.info CSV export, two blocks (um)
+with open("Au-Johnson.export.csv", "w") as o:
+    o.write("wl,n\n" + "".join("%.4f,%.4g\n" % (w / 1000, n) for w, n, k in au))
+    o.write("wl,k\n" + "".join("%.4f,%.4g\n" % (w / 1000, k) for w, n, k in au))
+write_reference("Au-Johnson.export.reference.csv", [(float("%.4f" % (w / 1000)) * 1000, n, k) for w, n, k in au])
+
+# refractiveindex.info CSV export, one wl,n,k block (um), from N-BK7's reference rows
+bk7 = [tuple(float(v) for v in line.split(",")) for line in open("N-BK7.reference.csv").read().split("\n")[1:] if line]
+with open("N-BK7.export.csv", "w") as o:
+    o.write("wl,n,k\n" + "".join("%.4f,%.8f,%.5g\n" % (w / 1000, n, k) for w, n, k in bk7[::10]))
+write_reference("N-BK7.export.reference.csv",
+                [(float("%.4f" % (w / 1000)) * 1000, float("%.8f" % n), float("%.5g" % k)) for w, n, k in bk7[::10]])
+
+# SOPRA, eV (unit 1) and nm (unit 4): gold interpolated onto the file's uniform grid
+def sopra(name, unit, start, end, intervals):
+    rows = []
+    with open(name, "w") as o:
+        o.write("%d\t%g\t%g\t%d\n" % (unit, start, end, intervals))
+        for i in range(intervals + 1):
+            x = start + (end - start) * i / intervals
+            nm = HC / x if unit == 1 else x
+            n = round(interp(au_wl, [r[1] for r in au], nm), 5)
+            k = round(interp(au_wl, [r[2] for r in au], nm), 5)
+            o.write("%.5f\t%.5f\n" % (n, k))
+            rows.append((nm, n, k))
+    write_reference(name.rsplit(".", 1)[0] + ".reference.csv", rows)
+
+sopra("Au-eV.nk", 1, 1.4, 3.6, 44)
+sopra("Au-nm.nk", 4, 350, 850, 50)
+
+# Mitsuba-style .spd pair (nm), with comment lines as Mitsuba's files have
+with open("Au.eta.spd", "w") as o:
+    o.write("# gold, Johnson & Christy 1972 (refractiveindex.info Au/Johnson.yml)\n# wavelength_nm n\n")
+    o.write("".join("%.1f %.4g\n" % (w, n) for w, n, k in au))
+with open("Au.k.spd", "w") as o:
+    o.write("# gold, Johnson & Christy 1972\n# wavelength_nm k\n")
+    o.write("".join("%.1f %.4g\n" % (w, k) for w, n, k in au))
+write_reference("Au.spd.reference.csv", au)
