@@ -12,7 +12,6 @@
  * rules; all of them end in the same per-row checks (nk_check_row) and the
  * same coverage rule (spectrum_from_table), so a user's file is held to the
  * data pack's standard. */
-#include <ctype.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -197,19 +196,7 @@ int nk_import(const char *path, nk_format format, nk_table *t, nk_file_info *inf
 void material_id_from_path(const char *path, char out[32])
 {
     const char *base = base_name(path);
-    size_t i = 0;
-    for (; *base && *base != '.' && i + 1 < 32; base++) {
-        unsigned char ch = (unsigned char)*base;
-        char c = ch < 128 && isalnum(ch) ? (char)tolower(ch) : '_';
-        if (c == '_' && (i == 0 || out[i - 1] == '_'))
-            continue;
-        out[i++] = c;
-    }
-    while (i > 0 && out[i - 1] == '_')
-        i--;
-    if (i == 0)
-        memcpy(out, "material", (i = 8));
-    out[i] = '\0';
+    cli_identifier(base, strcspn(base, "."), out, 32, "material");
 }
 
 int material_load(const char *dir, const material_source *m, material_info *info, spectrum *s)

@@ -204,6 +204,25 @@ int cli_unknown(const char *where, const char *what, const char *name, const cha
     return cli_error(where, "unknown %s '%s' (expected one of: %s)", what, name, list);
 }
 
+void cli_identifier(const char *s, size_t len, char *out, size_t size, const char *fallback)
+{
+    size_t i = 0;
+    for (; len > 0 && i + 1 < size; s++, len--) {
+        unsigned char ch = (unsigned char)*s;
+        char c = ch < 128 && isalnum(ch) ? (char)tolower(ch) : '_';
+        if (c == '_' && (i == 0 || out[i - 1] == '_'))
+            continue; /* no leading '_', no '__' */
+        out[i++] = c;
+    }
+    while (i > 0 && out[i - 1] == '_')
+        i--;
+    if (i == 0) {
+        snprintf(out, size, "%s", fallback);
+        return;
+    }
+    out[i] = '\0';
+}
+
 size_t cli_skip_bom(const char *s)
 {
     return !strncmp(s, "\xEF\xBB\xBF", 3) ? 3 : 0;

@@ -51,6 +51,11 @@ int cli_bad_argument(const char *where, const char *arg, const char *const *opti
 const char *cli_suggest(const char *name, const char *const *candidates);
 int cli_unknown(const char *where, const char *what, const char *name, const char *const *candidates);
 
+/* The first len bytes of s as an identifier part: letters lower-cased,
+ * every run of other characters one '_', none at either end, at most size - 1
+ * characters; fallback when nothing is left. */
+void cli_identifier(const char *s, size_t len, char *out, size_t size, const char *fallback);
+
 /* Length of a leading UTF-8 byte-order mark in s (3 or 0). */
 size_t cli_skip_bom(const char *s);
 

@@ -313,23 +313,11 @@ static int parse_name(const char *path, int line, const char *value, scene *s)
 void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE])
 {
     const char *base = strrchr(path, '/'), *end;
-    size_t i = 0;
     base = base ? base + 1 : path;
     end = base + strlen(base);
     if ((size_t)(end - base) > 6 && strcmp(end - 6, ".scene") == 0)
         end -= 6;
-    for (; base < end && i + 1 < SCENE_PREFIX_SIZE; base++) {
-        unsigned char ch = (unsigned char)*base;
-        char c = ch < 128 && isalnum(ch) ? (char)tolower(ch) : '_';
-        if (c == '_' && (i == 0 || out[i - 1] == '_'))
-            continue; /* no leading '_', no '__' */
-        out[i++] = c;
-    }
-    while (i > 0 && out[i - 1] == '_')
-        i--;
-    if (i == 0)
-        memcpy(out, "scene", (i = 5));
-    out[i] = '\0';
+    cli_identifier(base, (size_t)(end - base), out, SCENE_PREFIX_SIZE, "scene");
 }
 
 static int parse_value(const char *path, int line, int key, char *value, scene *s)
