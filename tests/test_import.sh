@@ -144,7 +144,7 @@ expect "YAML: a truncated row" "$y" ':14: expected 3 numbers \(um n k\)'
 head -13 "$au" >"$y"
 expect "YAML: a truncated block (data: | and no rows)" "$y" ":13: expected rows after 'data: \|'"
 sed 's/^        \([0-9.]*\) /        \1e3 /' "$au" >"$y"
-expect "YAML: wavelengths in nm (wrong unit)" "$y" ':[0-9]+: the table covers .* \(wavelengths read as um; the values look like nm'
+expect "YAML: wavelengths in nm (wrong unit)" "$y" ':[0-9]+: the table covers .* \(wavelengths read as um; were the numbers meant as nm'
 sed 's/tabulated nk/formula 12/' "$au" >"$y"
 expect "YAML: an unknown formula type" "$y" ":12: expected type .*got 'formula 12'"
 printf 'DATA:\n  - type: formula A\n    wavelength_range: 0.4 0.8\n    coefficients: 1 2\n' >"$y"
@@ -201,7 +201,7 @@ expect "CSV export: a row with three fields under wl,n" "$c" ':2: expected 2 com
 awk '/^wl,k/ { print; exit } { print }' "$ex" >"$c"
 expect "CSV export: a wl,k header without rows (truncated)" "$c" ':[0-9]+: expected rows after this header, got none'
 awk -F, '/^[0-9]/ { printf "%g,%s\n", $1 * 1000, $2; next } { print }' "$ex" >"$c"
-expect "CSV export: wavelengths in nm (wrong unit)" "$c" ':[0-9]+: the table covers .* \(wavelengths read as um; the values look like nm'
+expect "CSV export: wavelengths in nm (wrong unit)" "$c" ':[0-9]+: the table covers .* \(wavelengths read as um; were the numbers meant as nm'
 sed 's/^wl,k/wl,n/' "$ex" >"$c"
 expect "CSV export: n given twice" "$c" ':[0-9]+: expected each of n and k once'
 sed '1s/.*/wl,n,x/' "$ex" >"$c"

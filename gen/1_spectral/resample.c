@@ -79,11 +79,13 @@ static const char *unit_note(const nk_table *t, char *buf, size_t size)
 {
     const char *unit = t->unit ? t->unit : "nm";
     const char *hint = "";
-    if (!strcmp(unit, "nm") && t->wl[t->rows - 1] < 30.0)
+    /* The file's numbers, read in the other unit, would meet the visible. */
+    double lo = t->wl[0], hi = t->wl[t->rows - 1];
+    if (!strcmp(unit, "nm") && lo * 1000.0 < SPEC_HI_NM && hi * 1000.0 > SPEC_LO_NM)
         hint = "; the values look like micrometres: a refractiveindex.info file or export is read in um "
                "(fresnel import FILE converts it)";
-    else if (!strcmp(unit, "um") && t->wl[0] > 30000.0)
-        hint = "; the values look like nm: this format's wavelengths are micrometres";
+    else if (!strcmp(unit, "um") && lo / 1000.0 < SPEC_HI_NM && hi / 1000.0 > SPEC_LO_NM)
+        hint = "; were the numbers meant as nm? this format's wavelengths are micrometres";
     snprintf(buf, size, " (wavelengths read as %s%s)", unit, hint);
     return buf;
 }
