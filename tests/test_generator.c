@@ -118,6 +118,27 @@ int main(void)
          * exact curve follows exactly, hence its larger residual. */
         snprintf(name, sizeof name, "%s: fitted eta, kappa follow the ground truth (RMS %.2g)", metals[i], worst_rms);
         CHECK(name, worst_rms < 0.01, "fit RMS %.3g", worst_rms);
+        {
+            /* F_avg: the Gauss rule at 64 panels against itself at 256 and
+             * against Simpson's rule on 2000 intervals of the same curve. */
+            double fine[3], simpson[3] = {0.0, 0.0, 0.0}, worst_gauss = 0.0, worst_simpson = 0.0;
+            int k;
+            ground_truth_average(s, g, 1.0, 1, 256, fine);
+            for (k = 0; k <= 2000; k++) {
+                double mu = k / 2000.0, w = (k == 0 || k == 2000) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+                ground_truth_clamped(s, g, 1.0, mu, gt);
+                for (ch = 0; ch < 3; ch++)
+                    simpson[ch] += 2.0 * w * gt[ch] * mu / (3.0 * 2000.0);
+            }
+            for (ch = 0; ch < 3; ch++) {
+                worst_gauss = fmax(worst_gauss, fabs(p.f_avg[ch] - fine[ch]));
+                worst_simpson = fmax(worst_simpson, fabs(p.f_avg[ch] - simpson[ch]));
+            }
+            snprintf(name, sizeof name, "%s: F_avg converged (64 vs 256 Gauss panels %.1e, vs Simpson 2000 %.1e)",
+                     metals[i], worst_gauss, worst_simpson);
+            CHECK(name, worst_gauss < 1e-7 && worst_simpson < 1e-6, "F_avg %.6g %.6g %.6g", p.f_avg[0], p.f_avg[1],
+                  p.f_avg[2]);
+        }
         if (i == 1 || i == 13) /* copper, chromium: the LUT fit (below) */
             check_lut_fit(metals[i], s, g, &p);
     }

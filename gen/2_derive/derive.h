@@ -34,6 +34,7 @@ typedef struct material_params {
     double nm[3];               /* dominant wavelengths of the space's primaries */
     double f0_unclamped[3];     /* ground truth at normal incidence */
     double f0[3], f82[3];       /* clamped ground truth at c = 1 and c = 1/7 */
+    double f_avg[3], f_avg_unclamped[3]; /* 2 x integral of F(mu) mu over [0, 1]: clamped and not */
     double eta_gauss[3], kappa_gauss[3]; /* Metzgar's Gaussian window, sigma nm */
     double eta_point[3], kappa_point[3]; /* point-sampled at the dominant wavelengths (Hoffman's "PS") */
     double eta_fit[3], kappa_fit[3];     /* Hoffman's black-box fit to the ground truth */
@@ -51,6 +52,13 @@ typedef struct gen_context {
     double nm[3];
 } gen_context;
 int gen_context_load(const char *dir, const char *space, gen_context *g);
+
+/* The cosine-weighted hemispherical average F_avg = 2 int_0^1 F(mu) mu dmu
+ * of the ground truth, clamped (the policy above) or not, per channel, by a
+ * composite 5-point Gauss-Legendre rule on `panels` panels. */
+#define GEN_AVG_PANELS 64
+void ground_truth_average(const spectrum *s, const gen_context *g, double n1, int clamped, int panels,
+                          double avg[3]);
 
 /* Clamped ground truth (the policy above) at cosine c. */
 void ground_truth_clamped(const spectrum *s, const gen_context *g, double n1, double c,

@@ -29,6 +29,7 @@ int cmd_params(int argc, char **argv)
                    "Prints, as CSV parameter,r,g,b, every parameter the generator derives for one\n"
                    "material from its spectral ground truth (GT) in a colour space: dominant\n"
                    "wavelengths, F0 (unclamped and clamped to [0,1], the out-of-gamut policy), F82,\n"
+                   "the hemispherical average F_avg = 2 int F(mu) mu dmu (unclamped and clamped),\n"
                    "Metzgar's Gaussian-window eta', kappa', the black-box fitted eta, kappa and\n"
                    "the fit's RMS, LSK a and alpha (on the fitted eta, kappa), Gulbrandsen r and g,\n"
                    "and Cook-Torrance's representative IOR (scalar, repeated in r, g, b). eta and\n"
@@ -60,6 +61,8 @@ int cmd_params(int argc, char **argv)
         row("f0_unclamped", p.f0_unclamped);
         row("f0", p.f0);
         row("f82", p.f82);
+        row("f_avg_unclamped", p.f_avg_unclamped);
+        row("f_avg", p.f_avg);
         row("eta_gaussian", p.eta_gauss);
         row("kappa_gaussian", p.kappa_gauss);
         row("eta_point", p.eta_point);
