@@ -145,6 +145,10 @@ extern "C" {
 #define FRESNEL_BOUND_CONDUCTOR        4e-7f
 #define FRESNEL_BOUND_CONDUCTOR_PREPARED 4e-7f /* fresnel_conductor_prepared, _batch */
 #define FRESNEL_BOUND_DIELECTRIC       3e-7f
+/* The hemispherical averages (fresnel_*_avg) against the double closed form. */
+#define FRESNEL_BOUND_SCHLICK_AVG      2e-7f
+#define FRESNEL_BOUND_SCHLICK_GEN_AVG  3e-7f
+#define FRESNEL_BOUND_F82_AVG          2e-7f
 
 /* Three channels of one quantity (reflectance, eta or kappa). */
 typedef struct fresnel_rgb {
@@ -170,6 +174,16 @@ fresnel_rgb fresnel_schlick_rgb(fresnel_rgb f0, float c);
  * Cost: p = 5: 6 flops; other p: 4 flops, expf, log1pf. */
 float fresnel_schlick_gen(float f0, float f90, float p, float c);
 fresnel_rgb fresnel_schlick_gen_rgb(fresnel_rgb f0, fresnel_rgb f90, float p, float c);
+
+/* Hemispherical averages F_avg = 2 int_0^1 F(c) c dc of the two Schlick
+ * forms (the albedo a multiple-scattering compensation needs [Kulla-Conty]):
+ *   fresnel_schlick_avg:      F0 + (1 - F0) / 21,
+ *   fresnel_schlick_gen_avg:  F0 + (F90 - F0) 2 / ((p + 1)(p + 2)),
+ * arguments clamped as the curves clamp them. Error <= FRESNEL_BOUND_SCHLICK_AVG,
+ * FRESNEL_BOUND_SCHLICK_GEN_AVG. Cost: 2 flops; 6 flops, div. */
+float fresnel_schlick_avg(float f0);
+fresnel_rgb fresnel_schlick_avg_rgb(fresnel_rgb f0);
+float fresnel_schlick_gen_avg(float f0, float f90, float p);
 
 /* Schlick for internal reflection [Hof20], eta relative to the incident side
  * (1/1.5 from glass out into air):
@@ -223,6 +237,15 @@ fresnel_rgb fresnel_lsk_comp_rgb(fresnel_rgb eta, fresnel_rgb kappa, fresnel_rgb
  * Error <= FRESNEL_BOUND_F82. Cost: 14 flops. */
 float fresnel_f82(float f0, float f82, float c);
 fresnel_rgb fresnel_f82_rgb(fresnel_rgb f0, fresnel_rgb f82, float c);
+
+/* Its hemispherical average, the integral of the curve above (a c (1-c)^6
+ * integrates to a / 126):
+ *   F_avg = F0 + (1 - F0) / 21 - a / 126,   clamped to [0, 1];
+ * equal to the average of fresnel_f82 wherever its curve stays inside [0, 1]
+ * (every measured material's does; tests/test_average.c).
+ * Error <= FRESNEL_BOUND_F82_AVG. Cost: 6 flops. */
+float fresnel_f82_avg(float f0, float f82);
+fresnel_rgb fresnel_f82_avg_rgb(fresnel_rgb f0, fresnel_rgb f82);
 
 /* ----------------------------------------------------------- gulbrandsen.c */
 

@@ -114,6 +114,8 @@ typedef struct fresnel_rgb_q15 {
 #define FRESNEL_BOUND_COOK_TORRANCE_Q15 0.501
 #define FRESNEL_BOUND_CONDUCTOR_Q15 0.501
 #define FRESNEL_BOUND_DIELECTRIC_Q15 0.501
+#define FRESNEL_BOUND_SCHLICK_AVG_Q15 0.51 /* against the exact average of the argument codes */
+#define FRESNEL_BOUND_F82_AVG_Q15 0.55 /* 0.5 rounding + 0.05 from its Q18 constants */
 #define FRESNEL_BOUND_LUT_Q15 1.01 /* nodes uniform in sqrt(c); 0.501 uniform in c */
 #define FRESNEL_BOUND_LUT_CUBIC_Q15 2.2 /* on any table */
 
@@ -157,6 +159,11 @@ fresnel_lsk_prep_q15 fresnel_lsk_prepare_q15(fresnel_q16 eta, fresnel_q16 kappa,
  * Error <= FRESNEL_BOUND_SCHLICK_Q15 LSB. Cost: 8 mul. */
 fresnel_q15 fresnel_schlick_q15(int32_t f0, int32_t c);
 fresnel_rgb_q15 fresnel_schlick_q15_rgb(fresnel_rgb_q15 f0, int32_t c);
+
+/* Its hemispherical average 2 int_0^1 F c dc = F0 + (1 - F0)/21 (fresnel_schlick_avg).
+ * Error <= FRESNEL_BOUND_SCHLICK_AVG_Q15 LSB. Cost: 1 mul. */
+fresnel_q15 fresnel_schlick_avg_q15(int32_t f0);
+fresnel_rgb_q15 fresnel_schlick_avg_q15_rgb(fresnel_rgb_q15 f0);
 
 /* Generalized Schlick:  F = F0 + (F90 - F0)(1 - c)^p,  p Q16.16 in
  * [FRESNEL_P_MIN_Q16, FRESNEL_P_MAX_Q16] (clamped).
@@ -203,6 +210,11 @@ fresnel_rgb_q15 fresnel_lsk_comp_q15_rgb(const fresnel_lsk_prep_q15 m[3], int32_
  * Error <= FRESNEL_BOUND_F82_Q15 LSB. Cost: ~16 mul. */
 fresnel_q15 fresnel_f82_q15(int32_t f0, int32_t f82, int32_t c);
 fresnel_rgb_q15 fresnel_f82_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82, int32_t c);
+
+/* Its hemispherical average F0 + (1 - F0)/21 - a/126, clamped to [0, 1]
+ * (fresnel_f82_avg). Error <= FRESNEL_BOUND_F82_AVG_Q15 LSB. Cost: 2 mul. */
+fresnel_q15 fresnel_f82_avg_q15(int32_t f0, int32_t f82);
+fresnel_rgb_q15 fresnel_f82_avg_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82);
 
 /* -------------------------------------------------------- gulbrandsen_q15.c */
 

@@ -35,6 +35,26 @@ fresnel_rgb fresnel_schlick_gen_rgb(fresnel_rgb f0, fresnel_rgb f90, float p, fl
             fresnel_schlick_gen(f0.b, f90.b, p, c));
 }
 
+/* 2 int_0^1 (1-c)^p c dc = 2 B(2, p+1) = 2 / ((p+1)(p+2)); p = 5 gives 1/21. */
+float fresnel_schlick_avg(float f0)
+{
+    f0 = fresnel_i_unit(f0);
+    return f0 + (1.0f - f0) * (1.0f / 21.0f);
+}
+
+fresnel_rgb fresnel_schlick_avg_rgb(fresnel_rgb f0)
+{
+    FRESNEL_I_RGB(fresnel_schlick_avg(f0.r), fresnel_schlick_avg(f0.g), fresnel_schlick_avg(f0.b));
+}
+
+float fresnel_schlick_gen_avg(float f0, float f90, float p)
+{
+    f0 = fresnel_i_unit(f0);
+    f90 = fresnel_i_unit(f90);
+    p = fresnel_i_clamp(p, FRESNEL_P_MIN, FRESNEL_P_MAX);
+    return fresnel_i_unit(f0 + (f90 - f0) * (2.0f / ((p + 1.0f) * (p + 2.0f))));
+}
+
 /* The Fresnel curve is the same function of the angle on either side, so
  * Schlick is evaluated with the cosine in the less dense medium: ct, from
  * eta^2 ct^2 = eta^2 - sin^2 formed without cancellation

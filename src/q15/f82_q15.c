@@ -55,6 +55,26 @@ fresnel_rgb_q15 fresnel_f82_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82, int
                 fresnel_i_f82_q15(fresnel_i_q15_arg(f0.b), fresnel_i_q15_arg(f82.b), x5, g));
 }
 
+/* F0 - (13/756)(1 - F0) - (K1/126)(F0 - F82) (f32/f82.c), the two
+ * corrections in Q18 with the constants round(2^18 13/756) = 4508 and
+ * round(2^18 K1/126) = 36724 (Q18 is the finest that keeps the sum inside
+ * int32); their rounding adds up to 0.05 LSB to the final rounding's 0.5. */
+fresnel_q15 fresnel_f82_avg_q15(int32_t f0_in, int32_t f82_in)
+{
+    int32_t f0 = (int32_t)fresnel_i_q15_arg(f0_in), f82 = (int32_t)fresnel_i_q15_arg(f82_in);
+    /* R: |corr| <= 2^15 (4508 + 36724) < 1.36e9 < 2^31 */
+    int32_t corr = (32768 - f0) * 4508 + (f0 - f82) * 36724, v;
+    /* rounded to Q15 without shifting a negative number (implementation-defined in C99) */
+    v = f0 - (corr >= 0 ? (corr + (1 << 17)) >> 18 : -((-corr + (1 << 17)) >> 18));
+    return (fresnel_q15)(v < 0 ? 0 : v > 32768 ? 32768 : v);
+}
+
+fresnel_rgb_q15 fresnel_f82_avg_q15_rgb(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82)
+{
+    FRESNEL_I_RGB_Q15(fresnel_f82_avg_q15(f0.r, f82.r), fresnel_f82_avg_q15(f0.g, f82.g),
+                      fresnel_f82_avg_q15(f0.b, f82.b));
+}
+
 #else
 typedef int fresnel_i_f82_q15_disabled;
 #endif

@@ -27,6 +27,20 @@ fresnel_q15 fresnel_schlick_q15(int32_t f0, int32_t c)
     return fresnel_i_q30_to_q15(fresnel_i_schlick_q30(fresnel_i_q15_arg(f0), fresnel_i_pow5_q30(x)));
 }
 
+/* F0 + (1 - F0)/21 with the division a multiplication by round(2^20/21):
+ * (1 - F0) 2^15 <= 2^15 keeps the product below 2^31, and the constant's
+ * rounding moves the result by under 0.01 LSB. */
+fresnel_q15 fresnel_schlick_avg_q15(int32_t f0_in)
+{
+    uint32_t f0 = fresnel_i_q15_arg(f0_in);
+    return (fresnel_q15)(f0 + (((FRESNEL_I_ONE_Q15 - f0) * 49932u + (1u << 19)) >> 20));
+}
+
+fresnel_rgb_q15 fresnel_schlick_avg_q15_rgb(fresnel_rgb_q15 f0)
+{
+    FRESNEL_I_RGB_Q15(fresnel_schlick_avg_q15(f0.r), fresnel_schlick_avg_q15(f0.g), fresnel_schlick_avg_q15(f0.b));
+}
+
 fresnel_rgb_q15 fresnel_schlick_q15_rgb(fresnel_rgb_q15 f0, int32_t c)
 {
     uint32_t x5 = fresnel_i_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_q15_arg(c));
