@@ -322,7 +322,7 @@ int load_rii_yaml(text_file *t, nk_table *out)
     enum { SECTION_NONE, SECTION_META, SECTION_DATA } section = SECTION_NONE;
     entry e;
     nk_column n, k;
-    int n_line = 0, k_line = 0, data_seen = 0, block = 0, block_indent = 0, key_indent = 0, status = CLI_BAD_INPUT;
+    int n_line = 0, k_line = 0, data_seen = 0, block = 0, key_indent = 0, status = CLI_BAD_INPUT;
     char *line;
     memset(&e, 0, sizeof e);
     memset(&n, 0, sizeof n);
@@ -342,14 +342,11 @@ int load_rii_yaml(text_file *t, nk_table *out)
                     text_error(t, t->line, "expected a row of numbers inside the data block, got a comment");
                     goto done;
                 }
-                if (!block_indent)
-                    block_indent = indent;
                 if (parse_row(t, t->line, content, &e))
                     goto done;
                 continue;
             }
             block = 0;
-            block_indent = 0;
         }
         if (content[0] == '#')
             continue;

@@ -117,11 +117,11 @@ typedef struct spectrum {
     double measured_lo, measured_hi; /* part of 360-830 the table covered; outside it the end value is held */
 } spectrum;
 void resample(const nk_table *t, spectrum *s);
-/* load + resample of data/<id>.csv; 0 or CLI_BAD_INPUT. */
 /* 1 (the default): spectrum_load warns, once per file, when a table covers
  * only part of 360-830 nm. `fresnel materials` lists the coverage as
  * columns and clears it unless --verbose. */
 extern int spectrum_coverage_warnings;
+/* load + resample of data/<id>.csv; 0 or CLI_BAD_INPUT. */
 int spectrum_load(const char *dir, const char *id, spectrum *s);
 /* The coverage rule and the resampling for a table read from path. */
 int spectrum_from_table(const char *path, const nk_table *t, spectrum *s);
