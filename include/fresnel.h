@@ -67,7 +67,15 @@
  *            reflectances or edge tints, domain [0, 1]; clamped, NaN gives 0.
  *            (Out-of-gamut F0 above 1 is therefore evaluated as 1.)
  *   result   always in [0, 1], never NaN or Inf, for every input including
- *            NaN and Inf.
+ *            NaN and Inf; the curve tables (fresnel_lut, _linear, _cubic)
+ *            are in [0, max(1, largest node)] (finite nodes).
+ *   Colours outside the display's gamut: the generator's gamut policy
+ *   (README) decides what the constants and tables hold. Under `keep`
+ *   (values above 1 kept, for HDR and wide-gamut pipelines) only the curve
+ *   tables carry them, here and in fresnel_fixed.h (uint16_t nodes, up to
+ *   2 - 2^-15) and fresnel_f16.h; every other function, the residual tables
+ *   included, clamps F0 and its result to 1 as above, so gold's F0 of 1.04
+ *   in linear sRGB is evaluated as 1 by them.
  *   Error bounds are absolute, against a double-precision evaluation of the
  *   SAME model with the same binary32 inputs (gen/model/reference.c). They hold for
  *   eta in [0.01, 100], kappa in {0} u [1e-3, 1000] (relative indices, such
@@ -340,7 +348,10 @@ float fresnel_dielectric(float eta, float c);
 
 /* Tabulated curves made by `fresnel gen`: table[i], i = 0..n-1, is the
  * reflectance at node i, and F interpolates linearly between the two nodes
- * around c, clamped to [0, 1]; table values are trusted (generated).
+ * around c; table values are trusted (generated). A curve table's result is
+ * clamped to [0, max(1, the two nodes)]: nodes above 1 (the keep policy's
+ * out-of-gamut colours) are kept, a table inside [0, 1] gives [0, 1]. The
+ * residual forms are clamped to [0, 1].
  *   fresnel_lut:         nodes uniform in sqrt(c), c_i = (i/(n-1))^2
  *   fresnel_lut_linear:  nodes uniform in c, c_i = i/(n-1)
  *   _residual:           F = fresnel_schlick(f0, c) + the interpolated
@@ -364,7 +375,7 @@ fresnel_rgb fresnel_lut_linear_residual_rgb(fresnel_rgb f0, const float *table, 
 /* Catmull-Rom on the nodes of fresnel_lut (uniform in sqrt(c)), the outer
  * nodes clamped to the table's ends: with x = sqrt(c), t = frac(x (n-1)),
  *   F = p1 + t/2 (p2 - p0 + t (2p0 - 5p1 + 4p2 - p3 + t (3 (p1 - p2) + p3 - p0))),
- * clamped to [0, 1]. Tables are fitted for it (lutN-cubic in a scene), not
+ * clamped to [0, max(1, p1, p2)]. Tables are fitted for it (lutN-cubic in a scene), not
  * interchangeable with fresnel_lut's; n as fresnel_lut.
  * Error: the table's own plus <= 5e-7 on reflectance curves (n <= 256); on
  * arbitrary tables up to about (n-1) 2^-24 times the largest step between

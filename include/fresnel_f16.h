@@ -141,7 +141,9 @@ fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);
  * FRESNEL_LUT_N_MAX_F16 for FRESNEL_LUT_N_MAX. Nodes uniform in sqrt(c): the
  * position sqrt(c) (n-1), root and product each rounded to half (as the GLSL
  * port's fresnel_lut_pos), so above 257 nodes it keeps fewer than 3
- * fraction bits. */
+ * fraction bits. Curve tables clamp to [0, max(1, the nodes around c)]
+ * (nodes above 1 carry out-of-gamut values, fresnel.h), residual ones to
+ * [0, 1]. */
 fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);

@@ -21,13 +21,15 @@
  * NUMBER FORMATS
  *   fresnel_q15  unsigned Q1.15 in uint16_t: value = code / 32768.
  *                FRESNEL_ONE_Q15 = 32768 = 0x8000 is 1.0; codes 32769..65535
- *                (up to 2 - 2^-15) are headroom that no result uses.
+ *                (up to 2 - 2^-15) are headroom that only the uint16_t
+ *                curve tables use (the generator's keep policy, fresnel.h).
  *                Used for cos(theta), F0, F82, F90, Gulbrandsen r and g,
  *                and every result. Arguments are taken as int32_t so that a
  *                signed dot product can be passed as is: values below 0 are
  *                0, above 32768 are 32768 (the same clamping policy as
  *                fresnel.h; F0 above 1 is therefore evaluated as 1). Results
- *                are always in [0, 32768].
+ *                are always in [0, 32768], the uint16_t curve tables'
+ *                (_u16 plain and cubic) in [0, max(32768, largest node)].
  *   fresnel_q16  signed Q16.16 in int32_t: value = code / 65536, range
  *                [-32768, 32768). Used for eta, kappa, the generalized
  *                Schlick exponent p and the LSK exponent alpha when they are
@@ -117,7 +119,8 @@ typedef struct fresnel_rgb_q15 {
 #define FRESNEL_BOUND_SCHLICK_AVG_Q15 0.51 /* against the exact average of the argument codes */
 #define FRESNEL_BOUND_F82_AVG_Q15 0.55 /* 0.5 rounding + 0.05 from its Q18 constants */
 #define FRESNEL_BOUND_LUT_Q15 1.01 /* nodes uniform in sqrt(c); 0.501 uniform in c */
-#define FRESNEL_BOUND_LUT_CUBIC_Q15 2.2 /* on any table */
+#define FRESNEL_BOUND_LUT_CUBIC_Q15 2.2 /* on any table with nodes in [0, one] */
+#define FRESNEL_BOUND_LUT_CUBIC_Q15_HEADROOM 4.8 /* on any table (nodes up to 65535) */
 
 #if FRESNEL_HAS_FIXED
 
@@ -268,11 +271,13 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_ior_prep_q15 *m, int32_t c);
 
 /* Lookup tables (fresnel_lut and friends) in integers. table[i], i = 0..n-1,
  * is the reflectance at node i; the result interpolates linearly between
- * the two nodes around c, clamped to [0, one]. Nodes as fresnel.h's:
+ * the two nodes around c, clamped to [0, one] (_u16: to [0, max(one, the
+ * two nodes)], so nodes above one carry out-of-gamut values as in
+ * fresnel.h). Nodes as fresnel.h's:
  *   fresnel_lut_*        uniform in sqrt(c), node i at c = (i/(n-1))^2
  *   fresnel_lut_linear_* uniform in c, node i at c = i/(n-1)
  * Encodings:
- *   _u16  uint16_t, F = v / 32768 (v <= 32768)
+ *   _u16  uint16_t, F = v / 32768 (v above 32768: headroom, up to 2 - 2^-15)
  *   _u8   uint8_t,  F = v / 255
  *   residual (F = Schlick(F0, c) + interpolated residual):
  *   _s16  int16_t, residual = v / 2^frac, frac in [14, 30]
@@ -311,8 +316,9 @@ fresnel_rgb_q15 fresnel_lut_linear_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const
                                                        int n, int frac, int32_t c);
 
 /* fresnel_lut_cubic (fresnel.h) on uint16_t nodes, n as fresnel_lut_u16_q15,
- * clamped to [0, one]; tables fitted for the cubic (lutN-cubic).
- * Error <= FRESNEL_BOUND_LUT_CUBIC_Q15 LSB against the same cubic in double
+ * clamped to [0, max(one, p1, p2)]; tables fitted for the cubic (lutN-cubic).
+ * Error <= FRESNEL_BOUND_LUT_CUBIC_Q15 LSB (nodes in [0, one];
+ * FRESNEL_BOUND_LUT_CUBIC_Q15_HEADROOM with nodes above) against the same cubic in double
  * at the table's values. Cost: the position of fresnel_lut_u16_q15, 7 mul
  * for the weights, 4 per channel. */
 fresnel_q15 fresnel_lut_cubic_u16_q15(const uint16_t *table, int n, int32_t c);

@@ -17,7 +17,8 @@
  * inline, so a firmware that uses one of them links no library code for it.
  *
  * PRECONDITIONS (outside them the behaviour is undefined):
- *   f0 in [0, FRESNEL_ONE_Q15]; LUT entries in [0, FRESNEL_ONE_Q15];
+ *   f0 in [0, FRESNEL_ONE_Q15]; LUT entries any uint16_t (above
+ *   FRESNEL_ONE_Q15: out-of-gamut headroom, as fresnel_fixed.h's tables);
  *   Schlick and F82: c <= FRESNEL_C_MAX_Q15_FAST (one + 2435; any c < 0 is
  *   read as 0, c in [one, one + 2435] gives F0, the value at one), F82's
  *   a_q12 in [FRESNEL_F82_A_MIN_Q15_FAST, FRESNEL_F82_A_MAX_Q15_FAST];
@@ -25,7 +26,8 @@
  *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
  *   as that many nodes; with n a compile-time constant these tests fold
  *   away). The table must hold min(n, that maximum) entries.
- * RESULTS are in [0, FRESNEL_ONE_Q15] for every input that meets them.
+ * RESULTS are in [0, FRESNEL_ONE_Q15] for every input that meets them; a
+ * LUT's in [0, max(FRESNEL_ONE_Q15, its largest entry)].
  * ERROR BOUNDS (LSB of Q15, FRESNEL_BOUND_*_Q15_FAST) bound
  * |result/32768 - reference| over every cos code 0..32768, against the
  * references of fresnel_fixed.h's ERROR BOUNDS; tests/README.md names the

@@ -69,11 +69,11 @@ printf 'materials = au nope\nmodels = schlick\n' >"$t/bad.scene"
     echo "PASS gen: a failed run leaves an existing output untouched and no temp file" || echo "FAIL gen: output clobbered or temp left"
 
 "$F" curve --material cu --space srgb --samples 7 >"$t/curve.csv"
-head -1 "$t/curve.csv" | grep -q '^theta_deg,cos,gt_r,gt_g,gt_b,schlick_r,schlick_g,schlick_b,' &&
-    [ "$(wc -l <"$t/curve.csv")" -eq 8 ] && sed -n 2p "$t/curve.csv" | grep -q '^0,1,' && tail -1 "$t/curve.csv" | grep -q '^90,0,1,1,1' &&
+head -1 "$t/curve.csv" | grep -q '^theta_deg,cos,gt_r,gt_g,gt_b,unclipped_r,unclipped_g,unclipped_b,schlick_r,schlick_g,schlick_b,' &&
+    [ "$(wc -l <"$t/curve.csv")" -eq 8 ] && sed -n 2p "$t/curve.csv" | grep -q '^0,1,' && tail -1 "$t/curve.csv" | grep -q '^90,0,1,1,1,1,1,1' &&
     echo "PASS curve: header, N rows from 0 to 90 degrees, GT white at grazing" || echo "FAIL curve: $(head -2 "$t/curve.csv" | cut -c1-120)"
 n=$(head -1 "$t/curve.csv" | tr ',' '\n' | wc -l)
-[ "$n" -eq $((5 + 3 * 11)) ] && echo "PASS curve: 11 default models x 3 channels" || echo "FAIL curve: $n columns"
+[ "$n" -eq $((8 + 3 * 11)) ] && echo "PASS curve: 11 default models x 3 channels" || echo "FAIL curve: $n columns"
 "$F" params --material au --space display-p3 --sigma 12 >"$t/p.csv"
 for k in dominant_nm f0_unclamped f0 f82 eta_gaussian kappa_gaussian eta_fit kappa_fit lsk_a lsk_alpha gulbrandsen_r gulbrandsen_g cook_torrance_eta; do
     grep -q "^$k," "$t/p.csv" || missing="$missing $k"

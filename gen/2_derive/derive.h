@@ -9,18 +9,29 @@
  *
  * OUT-OF-GAMUT POLICY. A material's spectral ground truth can leave [0, 1]
  * in a display's linear RGB (gold's red F0 is about 1.04 in linear sRGB with
- * this data: its colour is outside the sRGB gamut). The runtime's results are
- * reflectances in [0, 1], so the ground truth is clamped per channel to
- * [0, 1] before any parameter is derived from it, as a display would clip.
- * Of the peers' choices (keep the value, rescale the colour by its maximum as
- * Filament's tool does, clamp) clamping changes the fewest channels and keeps
- * grazing incidence white; `fresnel params` still prints the unclamped F0.
- * The report measures every model against the clamped ground truth (what a
- * model can represent) and states the clamp's own CIEDE2000 cost separately. */
+ * this data: its colour is outside the sRGB gamut, inside Display-P3's).
+ * Every parameter, table and figure is derived from the ground truth under
+ * the run's policy (a scene's `gamut` key, --gamut on the commands):
+ *   map   (default) the in-gamut colour nearest in CIEDE2000 to the
+ *         unclipped truth at each node angle, joined smoothly (gamut.c);
+ *         for a display that shows [0, 1] only.
+ *   clip  each channel clamped to [0, 1]: what a display does to a value
+ *         above 1; kept to compare with.
+ *   keep  no mapping; values above 1 stay (below 0 is 0), for pipelines
+ *         that work in linear RGB with headroom and map the gamut at display.
+ * `fresnel params` also prints the unclipped F0 and F_avg; the report
+ * measures the policy's own cost and every model against the unclipped
+ * truth for each material that leaves the gamut. */
 #ifndef FRESNEL_DERIVE_H
 #define FRESNEL_DERIVE_H
 
+#include "1_spectral/colour_difference.h"
 #include "1_spectral/spectral.h"
+
+typedef enum gamut_policy { GAMUT_MAP, GAMUT_CLIP, GAMUT_KEEP } gamut_policy;
+extern const char *const gamut_policy_names[]; /* "map", "clip", "keep", NULL */
+/* Node angles of the map policy: theta_k = k 90 / (GAMUT_NODES - 1) degrees. */
+#define GAMUT_NODES 181
 
 #define GEN_FIT_ANGLES 91 /* ground truth samples for fitting: theta = 0, 1, ..., 90 degrees */
 
@@ -33,8 +44,8 @@ typedef struct material_params {
     double n1, sigma;
     double nm[3];               /* dominant wavelengths of the space's primaries */
     double f0_unclamped[3];     /* ground truth at normal incidence */
-    double f0[3], f82[3];       /* clamped ground truth at c = 1 and c = 1/7 */
-    double f_avg[3], f_avg_unclamped[3]; /* 2 x integral of F(mu) mu over [0, 1]: clamped and not */
+    double f0[3], f82[3];       /* ground truth under the gamut policy at c = 1 and c = 1/7 */
+    double f_avg[3], f_avg_unclamped[3]; /* 2 x integral of F(mu) mu over [0, 1]: under the policy and not */
     double eta_gauss[3], kappa_gauss[3]; /* Metzgar's Gaussian window, sigma nm */
     double eta_point[3], kappa_point[3]; /* point-sampled at the dominant wavelengths (Hoffman's "PS") */
     double eta_fit[3], kappa_fit[3];     /* Hoffman's black-box fit to the ground truth */
@@ -42,6 +53,8 @@ typedef struct material_params {
     double lsk_a[3], lsk_alpha[3];       /* compensation of LSK on the fitted eta, kappa */
     double gulb_r[3], gulb_g[3];         /* r = F0, g from F0 and the fitted eta */
     double ct_eta, ct_kappa;             /* Cook-Torrance: the IOR at the green wavelength */
+    int gamut_mapped;                    /* the map policy moved some node (gamut.c) */
+    double gamut_shift[GAMUT_NODES][3];  /* nearest in-gamut colour - truth at theta_k */
 } material_params;
 
 /* Colour science shared by every material of a run. */
@@ -50,19 +63,29 @@ typedef struct gen_context {
     colorimetry cm;
     colour_space cs;
     double nm[3];
+    gamut_policy gamut;
 } gen_context;
+/* Loads the space's colorimetry; the policy is GAMUT_MAP until the caller
+ * sets another. */
 int gen_context_load(const char *dir, const char *space, gen_context *g);
 
 /* The cosine-weighted hemispherical average F_avg = 2 int_0^1 F(mu) mu dmu
- * of the ground truth, clamped (the policy above) or not, per channel, by a
- * composite 5-point Gauss-Legendre rule on `panels` panels. */
+ * per channel of the ground truth, under the policy (clamped = 1) or
+ * unclipped (0), by a composite 5-point Gauss-Legendre rule on `panels`
+ * panels. */
 #define GEN_AVG_PANELS 64
-void ground_truth_average(const spectrum *s, const gen_context *g, double n1, int clamped, int panels,
-                          double avg[3]);
+void ground_truth_average(const spectrum *s, const gen_context *g, const material_params *p, int clamped,
+                          int panels, double avg[3]);
 
-/* Clamped ground truth (the policy above) at cosine c. */
-void ground_truth_clamped(const spectrum *s, const gen_context *g, double n1, double c,
-                          double rgb[3]);
+/* gamut.c. The ground truth at cosine c under g->gamut, for the material
+ * whose map derive_parameters built into p. */
+void ground_truth_gamut(const spectrum *s, const gen_context *g, const material_params *p, double c,
+                        double rgb[3]);
+/* The map policy's nodes for p (p->n1 set); nothing for the other policies. */
+void gamut_map_build(const spectrum *s, const gen_context *g, material_params *p);
+/* The linear RGB in [0, 1]^3 nearest in CIEDE2000 to truth; returns the
+ * difference. */
+double gamut_nearest(const lab_space *ls, const double truth[3], double out[3]);
 
 /* Load the material (data/<id>.csv or the user's file) and derive
  * everything; 0 or CLI_BAD_INPUT. *s receives the resampled spectrum for

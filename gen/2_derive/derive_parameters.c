@@ -16,15 +16,8 @@ int gen_context_load(const char *dir, const char *space, gen_context *g)
     if (colorimetry_load(dir, &g->cm) || colour_space_load(dir, space, &g->cm, &g->cs))
         return CLI_BAD_INPUT;
     dominant_wavelengths(&g->cm, &g->cs, g->nm);
+    g->gamut = GAMUT_MAP;
     return 0;
-}
-
-void ground_truth_clamped(const spectrum *s, const gen_context *g, double n1, double c, double rgb[3])
-{
-    int ch;
-    ground_truth(s, &g->cm, &g->cs, n1, c, rgb);
-    for (ch = 0; ch < 3; ch++)
-        rgb[ch] = ref_clamp(rgb[ch], 0.0, 1.0);
 }
 
 /* The five-point Gauss-Legendre rule on [-1, 1]. */
@@ -33,8 +26,8 @@ static const double gl5_node[5] = {-0.9061798459386640, -0.5384693101056831, 0.0
 static const double gl5_weight[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
                                      0.4786286704993665, 0.2369268850561891};
 
-void ground_truth_average(const spectrum *s, const gen_context *g, double n1, int clamped, int panels,
-                          double avg[3])
+void ground_truth_average(const spectrum *s, const gen_context *g, const material_params *p, int clamped,
+                          int panels, double avg[3])
 {
     int i, j, ch;
     for (ch = 0; ch < 3; ch++)
@@ -47,9 +40,9 @@ void ground_truth_average(const spectrum *s, const gen_context *g, double n1, in
         for (j = 0; j < 5; j++) {
             double mu = (i + 0.5 + 0.5 * gl5_node[j]) / panels, rgb[3];
             if (clamped)
-                ground_truth_clamped(s, g, n1, mu, rgb);
+                ground_truth_gamut(s, g, p, mu, rgb);
             else
-                ground_truth(s, &g->cm, &g->cs, n1, mu, rgb);
+                ground_truth(s, &g->cm, &g->cs, p->n1, mu, rgb);
             for (ch = 0; ch < 3; ch++)
                 avg[ch] += gl5_weight[j] * rgb[ch] * mu / panels; /* 2 x (1/2 per panel width) */
         }
@@ -71,11 +64,12 @@ int derive_parameters(const gen_context *g, const material_source *m, double sig
     p->sigma = sigma;
     memcpy(p->nm, g->nm, sizeof p->nm);
 
+    gamut_map_build(s, g, p);
     ground_truth(s, &g->cm, &g->cs, n1, 1.0, p->f0_unclamped);
-    ground_truth_clamped(s, g, n1, 1.0, p->f0);
-    ground_truth_clamped(s, g, n1, 1.0 / 7.0, p->f82);
-    ground_truth_average(s, g, n1, 1, GEN_AVG_PANELS, p->f_avg);
-    ground_truth_average(s, g, n1, 0, GEN_AVG_PANELS, p->f_avg_unclamped);
+    ground_truth_gamut(s, g, p, 1.0, p->f0);
+    ground_truth_gamut(s, g, p, 1.0 / 7.0, p->f82);
+    ground_truth_average(s, g, p, 1, GEN_AVG_PANELS, p->f_avg);
+    ground_truth_average(s, g, p, 0, GEN_AVG_PANELS, p->f_avg_unclamped);
 
     gaussian_window(s, g->nm, sigma, eta, kappa);
     for (ch = 0; ch < 3; ch++) {
@@ -99,7 +93,7 @@ int derive_parameters(const gen_context *g, const material_source *m, double sig
     lab_space_init(&ls, &g->cs);
     for (i = 0; i < GEN_FIT_ANGLES; i++) {
         cosines[i] = cos(i * (3.14159265358979323846 / 180.0));
-        ground_truth_clamped(s, g, n1, cosines[i], rgb);
+        ground_truth_gamut(s, g, p, cosines[i], rgb);
         for (ch = 0; ch < 3; ch++) {
             double moved[3], lab0[3], lab1[3], h = rgb[ch] > 0.5 ? -1e-4 : 1e-4;
             memcpy(moved, rgb, sizeof moved);
@@ -110,7 +104,7 @@ int derive_parameters(const gen_context *g, const material_source *m, double sig
             weight[ch][i] = fmax(ciede2000(lab0, lab1) / 1e-4, 1e-3);
         }
     }
-    ground_truth_clamped(s, g, n1, 0.15, green); /* LSK's matching point */
+    ground_truth_gamut(s, g, p, 0.15, green); /* LSK's matching point */
     for (ch = 0; ch < 3; ch++) {
         fit_report rep;
         if (fit_eta_kappa_weighted(cosines, target[ch], weight[ch], GEN_FIT_ANGLES, &p->eta_fit[ch],

@@ -16,10 +16,13 @@ double lut_node_cos(lut_spacing spacing, int i, int n);
  * the curve (fresnel_lut_cubic). */
 typedef enum lut_form { LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC } lut_form;
 /* table[ch * n + i]: node i of channel ch, least-squares fitted through the
- * form's interpolation to the clamped ground truth (minus Schlick(F0) for
- * LUT_RESIDUAL) at theta every 0.05 degrees and at the nodes; curve nodes
- * that would leave [0, 1] are held at the bound and the others refitted.
+ * form's interpolation to the ground truth under the gamut policy (minus
+ * Schlick(F0) for LUT_RESIDUAL) at theta every 0.05 degrees and at the
+ * nodes; curve nodes that would leave [0, 1] (under the keep policy
+ * [0, the curve's maximum], at most ENCODE_LUT_KEEP_MAX) are held at the
+ * bound and the others refitted.
  * 0, or -1 when out of memory. */
+#define ENCODE_LUT_KEEP_MAX (65535.0 / 32768.0) /* the largest uint16_t Q15 node */
 int encode_lut(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing, int n,
                lut_form form, double *table);
 

@@ -117,7 +117,7 @@ static void sample_at(const spectrum *s, const gen_context *g, const material_pa
     if (truth)
         memcpy(out->y, truth, sizeof out->y);
     else
-        ground_truth_clamped(s, g, p->n1, c, out->y);
+        ground_truth_gamut(s, g, p, c, out->y);
     for (ch = 0; ch < 3; ch++)
         if (form == LUT_RESIDUAL)
             out->y[ch] -= ref_schlick(p->f0[ch], c);
@@ -135,21 +135,24 @@ static struct {
     colorimetry cm;
     colour_space cs;
     double n1;
+    gamut_policy gamut;
     double y[FIT_STEPS + 1][3];
 } gt_cache;
 
-static const double *grid_truth(const spectrum *s, const gen_context *g, double n1, int k)
+static const double *grid_truth(const spectrum *s, const gen_context *g, const material_params *p, int k)
 {
-    if (k == 0 && !(gt_cache.valid && gt_cache.n1 == n1 && !memcmp(&gt_cache.s, s, sizeof *s) &&
+    if (k == 0 && !(gt_cache.valid && gt_cache.n1 == p->n1 && gt_cache.gamut == g->gamut &&
+                    !memcmp(&gt_cache.s, s, sizeof *s) &&
                     !memcmp(&gt_cache.cm, &g->cm, sizeof g->cm) && !memcmp(&gt_cache.cs, &g->cs, sizeof g->cs))) {
         int j;
         gt_cache.valid = 0;
         for (j = 0; j <= FIT_STEPS; j++)
-            ground_truth_clamped(s, g, n1, j == FIT_STEPS ? 0.0 : cos(j * half_pi / FIT_STEPS), gt_cache.y[j]);
+            ground_truth_gamut(s, g, p, j == FIT_STEPS ? 0.0 : cos(j * half_pi / FIT_STEPS), gt_cache.y[j]);
         gt_cache.s = *s;
         gt_cache.cm = g->cm;
         gt_cache.cs = g->cs;
-        gt_cache.n1 = n1;
+        gt_cache.n1 = p->n1;
+        gt_cache.gamut = g->gamut;
         gt_cache.valid = 1;
     }
     return gt_cache.y[k];
@@ -175,7 +178,7 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
     }
     for (k = 0; k <= FIT_STEPS; k++) {
         double c = k == FIT_STEPS ? 0.0 : cos(k * half_pi / FIT_STEPS);
-        const double *y = grid_truth(s, g, p->n1, k);
+        const double *y = grid_truth(s, g, p, k);
         sample_at(s, g, p, spacing, form, n, c, y, &sm[k]);
     }
     for (k = 0; k < n; k++)
@@ -183,12 +186,20 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
     for (ch = 0; ch < 3; ch++) {
         /* A curve's nodes must stay reflectances: the fit overshoots 1 at
          * grazing incidence for some metals. Nodes that leave [0, 1] are
-         * held at the bound and the rest refitted, until none leaves. A
+         * held at the bound and the rest refitted, until none leaves. Under
+         * the keep policy the top is the curve's own maximum where that is
+         * above 1 (at most ENCODE_LUT_KEEP_MAX, the most a Q15 node holds),
+         * so that a material inside the gamut gets the same table under
+         * every policy. A
          * residual is a difference of two reflectances, in [-1, 1], but its
          * fit overshoots that at a total-reflection edge (water under
          * n1 = 1.5); its nodes are held to [-1, 1], the range the Q15
          * residual encodings of fresnel_fixed.h hold. */
         int nheld = 0, again = 1;
+        double hi = 1.0;
+        if (form != LUT_RESIDUAL && g->gamut == GAMUT_KEEP)
+            for (k = 0; k < count; k++)
+                hi = fmin(fmax(hi, sm[k].y[ch]), ENCODE_LUT_KEEP_MAX);
         for (k = 0; k < n; k++)
             held[k] = 0;
         while (again) {
@@ -217,8 +228,8 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
             again = 0;
             for (k = 0; k < n && nheld < n; k++) {
                 double lo = form == LUT_RESIDUAL ? -1.0 : 0.0;
-                if (!held[k] && (atb[k] < lo || atb[k] > 1.0)) {
-                    fixed[k] = atb[k] < lo ? lo : 1.0;
+                if (!held[k] && (atb[k] < lo || atb[k] > hi)) {
+                    fixed[k] = atb[k] < lo ? lo : hi;
                     held[k] = 1;
                     nheld++;
                     again = 1;

@@ -29,7 +29,7 @@ double fixed_qf_value(fresnel_qf x) { return ldexp((double)x.m, x.e); }
 
 int32_t fixed_q15(double x)
 {
-    return (int32_t)floor(ref_clamp(x, 0.0, 1.0) * 32768.0 + 0.5);
+    return (int32_t)floor(ref_clamp(x, 0.0, 65535.0 / 32768.0) * 32768.0 + 0.5);
 }
 
 fresnel_q16 fixed_q16(double x)

@@ -8,7 +8,7 @@
 #include "fresnel_fixed.h"
 
 fresnel_qf fixed_qf(double x);          /* x >= 0; 0 for x <= 0 or NaN */
-int32_t fixed_q15(double x);            /* round(x 32768), x clamped to [0, 1] */
+int32_t fixed_q15(double x);            /* round(x 32768), x clamped to [0, 65535/32768] (Q15 headroom) */
 fresnel_q16 fixed_q16(double x);        /* round(x 65536), clamped to int32 */
 /* eta, kappa relative to the incident medium, clamped like fresnel.h. */
 void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out);

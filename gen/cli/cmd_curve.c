@@ -24,7 +24,7 @@ int cmd_curve(int argc, char **argv)
     char *names = NULL, *tok;
     const char *model_list = model_curve_default;
     static const char *const options[] = {"--material", "--nk",      "--name",   "--format",      "--space",
-                                          "--sigma",    "--n1",      "--data",   "--samples",     "--models",
+                                          "--gamut",    "--sigma",    "--n1",      "--data",   "--samples",     "--models",
                                           "--lut-spacing", "--help", NULL};
     const char *val;
     int samples = 91, n_models = 0, i, r, status = 0;
@@ -32,12 +32,15 @@ int cmd_curve(int argc, char **argv)
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: fresnel curve (--material ID | --nk FILE) [--space NAME] [--sigma S] [--samples N]\n"
-                   "                     [--models \"NAME ...\"] [--lut-spacing grazing|uniform] [--n1 X] [--data DIR]\n\n"
-                   "Prints CSV: theta_deg,cos,gt_r,gt_g,gt_b (the spectral ground truth, clamped to\n"
-                   "[0,1] as the generator's out-of-gamut policy says), then <model>_r,_g,_b for each\n"
-                   "model, evaluated by the binary32 runtime with the parameters `fresnel params`\n"
-                   "prints. N rows (default 91), theta uniform from 0 to 90 degrees.\n"
+            printf("usage: fresnel curve (--material ID | --nk FILE) [--space NAME] [--gamut map|clip|keep]\n"
+                   "                     [--sigma S] [--samples N] [--models \"NAME ...\"]\n"
+                   "                     [--lut-spacing grazing|uniform] [--n1 X] [--data DIR]\n\n"
+                   "Prints CSV: theta_deg,cos,gt_r,gt_g,gt_b (the spectral ground truth under the\n"
+                   "--gamut policy, which every model is derived from), unclipped_r,_g,_b (the\n"
+                   "spectral ground truth itself, outside [0,1] where the colour leaves the space's\n"
+                   "gamut), then <model>_r,_g,_b for each model, evaluated by the binary32 runtime\n"
+                   "with the parameters `fresnel params` prints. N rows (default 91), theta\n"
+                   "uniform from 0 to 90 degrees.\n"
                    "Default models: %s\n\n%s"
                    "  --samples N     rows, 2..100000\n",
                    model_curve_default, material_options_help);
@@ -81,16 +84,17 @@ int cmd_curve(int argc, char **argv)
             goto done;
         n_models++;
     }
-    printf("theta_deg,cos,gt_r,gt_g,gt_b");
+    printf("theta_deg,cos,gt_r,gt_g,gt_b,unclipped_r,unclipped_g,unclipped_b");
     for (i = 0; i < n_models; i++)
         printf(",%s_r,%s_g,%s_b", models[i].name, models[i].name, models[i].name);
     printf("\n");
     for (r = 0; r < samples; r++) {
         double theta = 90.0 * r / (samples - 1), c = r == samples - 1 ? 0.0 : cos(theta * (3.14159265358979323846 / 180.0));
-        double gt[3];
+        double gt[3], raw[3];
         int m;
-        ground_truth_clamped(s, g, p.n1, c, gt);
-        printf("%.6g,%.9g,%.9g,%.9g,%.9g", theta, c, gt[0], gt[1], gt[2]);
+        ground_truth_gamut(s, g, &p, c, gt);
+        ground_truth(s, &g->cm, &g->cs, p.n1, c, raw);
+        printf("%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", theta, c, gt[0], gt[1], gt[2], raw[0], raw[1], raw[2]);
         for (m = 0; m < n_models; m++) {
             float v[3];
             scene_model_eval(&models[m], &p, (float)c, v);

@@ -15,12 +15,14 @@ const char material_options_help[] =
     "  --format NAME   read --nk as auto (default), csv, rii-yaml, rii-csv, sopra or spd\n"
     "  --space NAME    srgb (default), display-p3, dci-p3, adobe-rgb, rec2020, acescg\n"
     "                  (any case; aliases sRGB, rec709, bt709, p3, bt2020, ACEScg)\n"
+    "  --gamut NAME    out-of-gamut colour: map (default; nearest in CIEDE2000, for a [0, 1] display),\n"
+    "                  clip (per channel), keep (values above 1 stay, for HDR / wide-gamut pipelines)\n"
     "  --sigma S       Gaussian window in nm for Metzgar's eta', kappa' (default 25; 0 = point sampling)\n"
     "  --n1 X          real index of the incident medium (default 1)\n"
     "  --data DIR      data directory (default $FRESNEL_DATA, else the build's data/)\n";
 
 const char *const material_option_names[] = {"--material", "--nk",   "--name", "--format", "--space",
-                                              "--sigma",    "--n1",   "--data", "--help",   NULL};
+                                              "--gamut",    "--sigma",    "--n1",   "--data", "--help",   NULL};
 
 void material_options_init(material_options *o)
 {
@@ -32,6 +34,18 @@ void material_options_init(material_options *o)
     o->data = NULL;
     o->sigma = 25.0;
     o->n1 = 1.0;
+    o->gamut = GAMUT_MAP;
+}
+
+int gamut_option(const char *where, const char *val, gamut_policy *out)
+{
+    int i;
+    for (i = 0; gamut_policy_names[i] && strcmp(gamut_policy_names[i], val); i++)
+        ;
+    if (!gamut_policy_names[i])
+        return cli_unknown(where, "--gamut", val, gamut_policy_names);
+    *out = (gamut_policy)i;
+    return 0;
 }
 
 int material_option(const char *where, const char *opt, const char *val, material_options *o)
@@ -55,6 +69,10 @@ int material_option(const char *where, const char *opt, const char *val, materia
     }
     else if (!strcmp(opt, "--space"))
         o->space = val;
+    else if (!strcmp(opt, "--gamut")) {
+        if (gamut_option(where, val, &o->gamut))
+            return CLI_BAD_INPUT;
+    }
     else if (!strcmp(opt, "--data"))
         o->data = val;
     else if (!strcmp(opt, "--sigma")) {
@@ -83,6 +101,7 @@ int material_options_derive(const char *where, material_options *o, gen_context 
                          o->material);
     if (gen_context_load(data_dir(o->data), o->space, g))
         return CLI_BAD_INPUT;
+    g->gamut = o->gamut;
     m.id = o->material;
     m.path = o->nk;
     m.format = o->format;

@@ -1,6 +1,6 @@
 /* Options shared by the commands that look at one material in one colour
  * space: --material ID or --nk FILE [--name ID] [--format NAME], --space
- * NAME, --sigma S, --n1 X, --data DIR. */
+ * NAME, --gamut NAME, --sigma S, --n1 X, --data DIR. */
 #ifndef FRESNEL_MATERIAL_OPTIONS_H
 #define FRESNEL_MATERIAL_OPTIONS_H
 
@@ -14,6 +14,7 @@ typedef struct material_options {
     const char *space;
     const char *data;
     double sigma, n1;
+    gamut_policy gamut; /* --gamut NAME */
 } material_options;
 
 void material_options_init(material_options *o);
@@ -22,6 +23,8 @@ void material_options_init(material_options *o);
  * option. */
 int material_option(const char *where, const char *opt, const char *val, material_options *o);
 extern const char material_options_help[];
+/* --gamut's value: 0, or CLI_BAD_INPUT after a message. */
+int gamut_option(const char *where, const char *val, gamut_policy *out);
 /* The shared options' names, NULL-terminated (with --help). */
 extern const char *const material_option_names[];
 

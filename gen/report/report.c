@@ -222,7 +222,7 @@ static int compute_hoffman(report_run *r)
             r->hoffman_in_gamut[i] &= p.f0_unclamped[ch] >= 0.0 && p.f0_unclamped[ch] <= 1.0;
         for (a = 0; a < REPORT_ANGLES; a++) {
             double c = report_cos(a);
-            ground_truth_clamped(s, g, 1.0, c, gt[a]);
+            ground_truth_gamut(s, g, &p, c, gt[a]);
             for (ch = 0; ch < 3; ch++) {
                 sch[a][ch] = ref_schlick(p.f0[ch], c);
                 fit[a][ch] = ref_conductor(p.eta_fit[ch], p.kappa_fit[ch], c);

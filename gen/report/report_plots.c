@@ -138,12 +138,12 @@ static int write_curves(report_run *r, int mi)
     svg_text(&d, 10, 24, 16, SVG_START, "black", title);
     for (a = 0; a < CURVE_N; a++) {
         th[a] = a * 0.5;
-        ground_truth_clamped(rm->s, r->g, rm->p.n1, a == CURVE_N - 1 ? 0.0 : cos(th[a] * 3.14159265358979323846 / 180.0),
+        ground_truth_gamut(rm->s, r->g, &rm->p, a == CURVE_N - 1 ? 0.0 : cos(th[a] * 3.14159265358979323846 / 180.0),
                              gt[a]);
     }
     for (a = 0; a < ZOOM_N; a++) {
         zt[a] = 70.0 + a * 0.1;
-        ground_truth_clamped(rm->s, r->g, rm->p.n1,
+        ground_truth_gamut(rm->s, r->g, &rm->p,
                              a == ZOOM_N - 1 ? 0.0 : cos(zt[a] * 3.14159265358979323846 / 180.0), zgt[a]);
     }
     for (m = 0; m < r->sc.model_count; m++) {

@@ -72,7 +72,7 @@ static int lut_metal(report_run *r, const report_material *rm, const lut_variant
     } else
         for (i = 0; i < v->n; i++) {
             double gt[3];
-            ground_truth_clamped(rm->s, r->g, rm->p.n1, lut_node_cos(v->spacing, i, v->n), gt);
+            ground_truth_gamut(rm->s, r->g, &rm->p, lut_node_cos(v->spacing, i, v->n), gt);
             for (ch = 0; ch < 3; ch++)
                 table[ch * v->n + i] = gt[ch];
         }

@@ -26,20 +26,36 @@ static const float *fresnel_i_lut_channel(const float *table, int n, int ch)
     return p;
 }
 
-/* Interpolate table at position x in [0, 1] along its n nodes. */
-static float fresnel_i_interp(const float *table, int n, float x)
+/* A curve table's result: in [0, max(1, the nodes interpolated)], so that
+ * a table whose nodes carry values above 1 (the generator's keep policy)
+ * keeps them, and any other stays in [0, 1]; NaN gives 0. */
+static float fresnel_i_lut_clamp(float v, float hi)
 {
-    float pos, t;
+    return v >= 0.0f ? (v < hi ? v : hi) : 0.0f;
+}
+
+static float fresnel_i_max1(float a, float b)
+{
+    float m = a > b ? a : b;
+    return m > 1.0f ? m : 1.0f;
+}
+
+/* Interpolate table at position x in [0, 1] along its n nodes; a curve's
+ * (curve = 1) is clamped as fresnel_i_lut_clamp says, a residual's not. */
+static float fresnel_i_interp(const float *table, int n, float x, int curve)
+{
+    float pos, t, v;
     int i;
     n = fresnel_i_lut_n(n);
     if (n < 2)
-        return n == 1 ? table[0] : 0.0f;
+        return n == 1 ? (curve ? fresnel_i_lut_clamp(table[0], fresnel_i_max1(table[0], 0.0f)) : table[0]) : 0.0f;
     pos = x * (float)(n - 1);
     i = (int)pos;
     if (i >= n - 1)
         i = n - 2; /* x = 1 lands on the last segment's end */
     t = pos - (float)i;
-    return table[i] + t * (table[i + 1] - table[i]);
+    v = table[i] + t * (table[i + 1] - table[i]);
+    return curve ? fresnel_i_lut_clamp(v, fresnel_i_max1(table[i], table[i + 1])) : v;
 }
 
 /* Catmull-Rom through the four nodes around x, the outer ones clamped to the
@@ -52,7 +68,7 @@ static float fresnel_i_cubic(const float *table, int n, float x)
     int i;
     n = fresnel_i_lut_n(n);
     if (n < 2)
-        return n == 1 ? table[0] : 0.0f;
+        return n == 1 ? fresnel_i_lut_clamp(table[0], fresnel_i_max1(table[0], 0.0f)) : 0.0f;
     pos = x * (float)(n - 1);
     i = (int)pos;
     if (i > n - 2)
@@ -66,41 +82,42 @@ static float fresnel_i_cubic(const float *table, int n, float x)
     d = p2 - p1;
     m1 = 0.5f * (p2 - p0);
     m2 = 0.5f * (p3 - p1);
-    return p1 + t * (m1 + t * ((3.0f * d - 2.0f * m1 - m2) + t * (m1 + m2 - 2.0f * d)));
+    return fresnel_i_lut_clamp(p1 + t * (m1 + t * ((3.0f * d - 2.0f * m1 - m2) + t * (m1 + m2 - 2.0f * d))),
+                               fresnel_i_max1(p1, p2));
 }
 
 float fresnel_lut_cubic(const float *table, int n, float c)
 {
-    return fresnel_i_unit(fresnel_i_cubic(table, n, sqrtf(fresnel_i_unit(c))));
+    return fresnel_i_cubic(table, n, sqrtf(fresnel_i_unit(c)));
 }
 
 fresnel_rgb fresnel_lut_cubic_rgb(const float *table, int n, float c)
 {
     float x = sqrtf(fresnel_i_unit(c));
-    FRESNEL_I_RGB(fresnel_i_unit(fresnel_i_cubic(table, n, x)), fresnel_i_unit(fresnel_i_cubic(fresnel_i_lut_channel(table, n, 1), n, x)),
-            fresnel_i_unit(fresnel_i_cubic(fresnel_i_lut_channel(table, n, 2), n, x)));
+    FRESNEL_I_RGB(fresnel_i_cubic(table, n, x), fresnel_i_cubic(fresnel_i_lut_channel(table, n, 1), n, x),
+            fresnel_i_cubic(fresnel_i_lut_channel(table, n, 2), n, x));
 }
 
 float fresnel_lut(const float *table, int n, float c)
 {
-    return fresnel_i_unit(fresnel_i_interp(table, n, sqrtf(fresnel_i_unit(c))));
+    return fresnel_i_interp(table, n, sqrtf(fresnel_i_unit(c)), 1);
 }
 
 float fresnel_lut_linear(const float *table, int n, float c)
 {
-    return fresnel_i_unit(fresnel_i_interp(table, n, fresnel_i_unit(c)));
+    return fresnel_i_interp(table, n, fresnel_i_unit(c), 1);
 }
 
 float fresnel_lut_residual(float f0, const float *table, int n, float c)
 {
     c = fresnel_i_unit(c);
-    return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_interp(table, n, sqrtf(c)));
+    return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_interp(table, n, sqrtf(c), 0));
 }
 
 float fresnel_lut_linear_residual(float f0, const float *table, int n, float c)
 {
     c = fresnel_i_unit(c);
-    return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_interp(table, n, c));
+    return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_interp(table, n, c, 0));
 }
 
 fresnel_rgb fresnel_lut_rgb(const float *table, int n, float c)

@@ -97,9 +97,9 @@ static uint32_t fresnel_i_sqrt_w(int32_t c)
 /* c in Q30 for linear spacing. */
 static uint32_t fresnel_i_linear_w(int32_t c) { return fresnel_i_q15_arg(c) << 15; }
 
-/* Interpolate two values v0, v1 <= 2^15 with a 15-bit fraction: the result
- * is scaled by 2^15 (Q30 for Q15 values). R: v0 2^15 <= 2^30,
- * |v1 - v0| t <= 2^15 2^15; the sum is a convex combination in [0, 2^30]. */
+/* Interpolate two values v0, v1 <= 2^16 - 1 with a 15-bit fraction: the
+ * result is scaled by 2^15 (Q30 for Q15 values). R: v0 2^15 < 2^31,
+ * |v1 - v0| t < 2^31; the sum is a convex combination in [0, 2^31). */
 static uint32_t fresnel_i_lerp_q30(uint32_t v0, uint32_t v1, uint32_t t)
 {
     return v1 >= v0 ? (v0 << 15) + (v1 - v0) * t : (v0 << 15) - (v0 - v1) * t;
@@ -116,7 +116,17 @@ static uint32_t fresnel_i_div255_round(uint32_t v)
     return q;
 }
 
-static uint32_t fresnel_i_u16_q15(uint16_t v) { return v > FRESNEL_I_ONE_Q15 ? FRESNEL_I_ONE_Q15 : v; }
+/* A curve's result rounded from Q30 and held to [0, max(one, the nodes
+ * interpolated)]: uint16_t nodes carry values up to 2 - 2^-15 (the
+ * generator's keep policy), and a table whose nodes are all in [0, one]
+ * gives results in [0, one]. R: v < 2^32 - 2^14. */
+static fresnel_q15 fresnel_i_curve_q15(uint32_t v, uint32_t a, uint32_t b)
+{
+    uint32_t hi = a > b ? a : b, r = (v + (1u << 14)) >> 15;
+    if (hi < FRESNEL_I_ONE_Q15)
+        hi = FRESNEL_I_ONE_Q15;
+    return (fresnel_q15)(r < hi ? r : hi);
+}
 
 /* Channel ch (0 for the scalar forms) of a table of n nodes per channel,
  * n as fresnel_i_lut_n gives it: 0 reads nothing. */
@@ -127,7 +137,8 @@ static fresnel_q15 fresnel_i_lut_u16(const uint16_t *table, int n, int ch, uint3
         return 0;
     table += ch * n;
     p = fresnel_i_position(x, n);
-    return fresnel_i_q30_to_q15(fresnel_i_lerp_q30(fresnel_i_u16_q15(table[p.i]), fresnel_i_u16_q15(table[FRESNEL_I_NEXT(p, n)]), p.t));
+    return fresnel_i_curve_q15(fresnel_i_lerp_q30(table[p.i], table[FRESNEL_I_NEXT(p, n)], p.t), table[p.i],
+                               table[FRESNEL_I_NEXT(p, n)]);
 }
 
 /* uint8 nodes mean v / 255: interpolated in units of 2^-15 / 255 (the lerp
@@ -219,18 +230,27 @@ static fresnel_i_cubic_w fresnel_i_cubic_weights(uint32_t t)
     return w;
 }
 
-/* R: node values <= 2^15; |w| sum <= 1.25 2^15 + 4, so |sum| < 1.3 2^30.
- * The outer nodes repeat the end ones (index clamped to [0, n-1]). */
+/* The outer nodes repeat the end ones (index clamped to [0, n-1]). The
+ * positive and negative terms are summed apart in uint32: w1, w2 >= 0 and
+ * w1 + w2 <= 1.125 2^15 + 2, node values < 2^16, so the positive sum is
+ * below 2.5 10^9 < 2^32 - 2^14 and the negative one below 2^29; a negative
+ * total is 0.
+ * The result is held as fresnel_i_curve_q15 holds it (the cubic may pass
+ * its two nodes; it is kept to [0, max(one, v1, v2)]). */
 static fresnel_q15 fresnel_i_cubic_u16(const uint16_t *table, int n, int ch, fresnel_i_pos p, fresnel_i_cubic_w w)
 {
     int last = n - 1;
-    int32_t v0, v1, v2, v3;
+    uint32_t v0, v1, v2, v3, pos, neg;
     table += ch * n;
-    v0 = (int32_t)fresnel_i_u16_q15(table[p.i > 0 ? p.i - 1 : 0]);
-    v1 = (int32_t)fresnel_i_u16_q15(table[p.i]);
-    v2 = (int32_t)fresnel_i_u16_q15(table[FRESNEL_I_NEXT(p, n)]);
-    v3 = (int32_t)fresnel_i_u16_q15(table[FRESNEL_I_NEXT(p, n) + 1 <= last ? FRESNEL_I_NEXT(p, n) + 1 : last]);
-    return fresnel_i_q30s_to_q15(w.w1 * v1 + w.w2 * v2 - w.w0 * v0 - w.w3 * v3);
+    v0 = table[p.i > 0 ? p.i - 1 : 0];
+    v1 = table[p.i];
+    v2 = table[FRESNEL_I_NEXT(p, n)];
+    v3 = table[FRESNEL_I_NEXT(p, n) + 1 <= last ? FRESNEL_I_NEXT(p, n) + 1 : last];
+    FRESNEL_I_RANGE("cubic weight w1", w.w1, 0, 37000);
+    FRESNEL_I_RANGE("cubic weight w2", w.w2, 0, 37000);
+    pos = (uint32_t)w.w1 * v1 + (uint32_t)w.w2 * v2;
+    neg = (uint32_t)w.w0 * v0 + (uint32_t)w.w3 * v3;
+    return neg >= pos ? 0 : fresnel_i_curve_q15(pos - neg, v1, v2);
 }
 
 fresnel_q15 fresnel_lut_cubic_u16_q15(const uint16_t *table, int n_in, int32_t c)
