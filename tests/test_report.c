@@ -31,8 +31,10 @@ int main(void)
     report_curve_de(&ls, (const double(*)[3])rm.gt, (const double(*)[3])rm.gt, &mean, &rms, &max);
     CHECK("report: ground truth against itself is 0 dE2000", mean == 0.0 && rms == 0.0 && max == 0.0, "%g %g %g",
           mean, rms, max);
-    CHECK("report: copper is inside the sRGB gamut (the clamp costs nothing)", rm.clamp_de_max == 0.0, "%g",
-          rm.clamp_de_max);
+    CHECK("report: copper is inside the sRGB gamut (no policy costs anything)",
+          !rm.out_of_gamut && rm.policy_de_max[GAMUT_MAP] == 0.0 && rm.policy_de_max[GAMUT_CLIP] == 0.0 &&
+              rm.policy_de_max[GAMUT_KEEP] == 0.0,
+          "%g %g %g", rm.policy_de_max[0], rm.policy_de_max[1], rm.policy_de_max[2]);
     rm.models = sm;
     rm.prepared = q;
     for (m = 0; m < 6; m++) {

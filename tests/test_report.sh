@@ -18,7 +18,8 @@ rows=$(sed -n '/^## Summary/,/^## Every/p' "$t/out/report.md" | grep -c '^| [a-z
 [ -z "$bad" ] && [ "$rows" -ge 3 ] && echo "PASS report: $rows summary rows, every dE finite and >= 0" ||
     echo "FAIL report summary: rows $rows, bad: $bad"
 grep -q '## Reproducing Hoffman' "$t/out/report.md" && grep -q '## Which model for which budget' "$t/out/report.md" &&
-    grep -q '## Gaussian window width' "$t/out/report.md" && echo "PASS report: every section present" ||
+    grep -q '## Gaussian window width' "$t/out/report.md" && grep -q '## Colours outside the gamut' "$t/out/report.md" &&
+    grep -q '## Hemispherical average F_avg' "$t/out/report.md" && echo "PASS report: every section present" ||
     echo "FAIL report: a section is missing"
 "$F" report --scene "$t/missing.scene" -o "$t/out2" --no-timing >/dev/null 2>"$t/err"
 [ $? -eq 2 ] && [ ! -e "$t/out2/report.md" ] && echo "PASS report: a missing scene is an error (exit 2), nothing written" ||

@@ -43,6 +43,7 @@ int emit_scene(const char *manifest, const char *out_path, const char *tex_path,
     }
     if ((status = gen_context_load(data_dir(dir_option), sc->space, g)))
         goto done;
+    g->gamut = scene_gamut(sc);
     /* Every unknown material is reported, not only the first. */
     for (i = 0; i < sc->material_count; i++) {
         material_info info;

@@ -134,8 +134,10 @@ int cmd_bench(int argc, char **argv)
         status = cli_oom(WHERE);
         goto done;
     }
-    if ((status = gen_context_load(data_dir(dir_option), sc.space, g)) ||
-        (status = derive_parameters(g, &source, sc.sigma, sc.n1, s, &p)))
+    if ((status = gen_context_load(data_dir(dir_option), sc.space, g)))
+        goto done;
+    g->gamut = scene_gamut(&sc);
+    if ((status = derive_parameters(g, &source, sc.sigma, sc.n1, s, &p)))
         goto done;
     if (runs > 0)
         printf("model,type,ns_per_rgb_eval\n");

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "cli/material_options.h"
 #include "report/report.h"
 
 #define WHERE "fresnel report"
@@ -11,7 +12,7 @@
 static void report_usage(FILE *out)
 {
     fprintf(out, "usage: fresnel report [--scene FILE] [-o DIR] [--data DIR] [--cross FILE] [--size FILE]\n"
-                 "                      [--no-timing] [--no-instructions]\n\n"
+                 "                      [--gamut map|clip|keep] [--no-timing] [--no-instructions]\n\n"
                  "Measures every material x model x number type of the scene (default\n"
                  "data/scenes/report.scene) against the spectral ground truth and writes\n"
                  "DIR/report.md, DIR/pareto.svg, DIR/sigma.svg and DIR/curves/<material>.svg\n"
@@ -20,14 +21,15 @@ static void report_usage(FILE *out)
                  "--no-timing and --no-instructions skip those (for tests). --cross FILE and\n"
                  "--size FILE: the output of `make cross-count` and of `make size`, for the\n"
                  "targets table's Cortex-M0 rows and the report's instruction-count and\n"
-                 "code-size sections (make report passes both).\n");
+                 "code-size sections (make report passes both). --gamut overrides the scene's\n"
+                 "gamut policy.\n");
 }
 
 int cmd_report(int argc, char **argv)
 {
     report_options o;
-    static const char *const options[] = {"--scene", "-o", "--cross", "--size", "--data", "--no-timing", "--no-instructions",
-                                          "--help", NULL};
+    static const char *const options[] = {"--scene", "-o", "--cross", "--size", "--data", "--gamut", "--no-timing",
+                                          "--no-instructions", "--help", NULL};
     int i;
     memset(&o, 0, sizeof o);
     o.scene_path = "data/scenes/report.scene";
@@ -55,6 +57,11 @@ int cmd_report(int argc, char **argv)
                 o.cross_path = v;
             else if (!strcmp(argv[i - 1], "--size"))
                 o.size_path = v;
+            else if (!strcmp(argv[i - 1], "--gamut")) {
+                if (gamut_option(WHERE, v, &o.gamut))
+                    return CLI_BAD_INPUT;
+                o.gamut_given = 1;
+            }
             else
                 o.data_dir = v;
         }

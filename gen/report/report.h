@@ -23,9 +23,12 @@ typedef struct report_prepared report_prepared;
 typedef struct report_material {
     material_params p;
     spectrum *s;
-    double gt[REPORT_ANGLES][3];     /* clamped ground truth: what models are measured against */
-    double gt_raw[REPORT_ANGLES][3]; /* before the out-of-gamut clamp */
-    double clamp_de_mean, clamp_de_max; /* CIEDE2000 of the clamp itself */
+    double gt[REPORT_ANGLES][3];     /* ground truth under the gamut policy: what models are measured against */
+    double gt_raw[REPORT_ANGLES][3]; /* the unclipped spectral ground truth */
+    int out_of_gamut;                /* gt_raw leaves [0, 1] at some angle */
+    /* CIEDE2000 mean and max against gt_raw of each policy's own curve
+     * (gamut_policy order: map, clip, keep). */
+    double policy_de_mean[3], policy_de_max[3];
     scene_model *models;             /* one per report model */
     report_prepared **prepared;      /* the same, prepared for every type */
 } report_material;
@@ -45,9 +48,11 @@ extern const int report_type_count;
 double report_time(const report_type *t, const report_prepared *q, int n, int runs);
 
 typedef struct report_cell {
-    double de_mean, de_rms, de_max; /* CIEDE2000 against the clamped ground truth */
+    double de_mean, de_rms, de_max; /* CIEDE2000 against the ground truth under the gamut policy */
+    double raw_de_mean, raw_de_max; /* CIEDE2000 against the unclipped ground truth */
     double abs_max[3];              /* max |model - GT| per channel */
     double vs_ref_max;              /* max |model in this type - same model in double| */
+    double avg[3];                  /* the model's F_avg = 2 int F(mu) mu dmu in this type */
 } report_cell;
 
 /* One run of the report: the scene, its materials and every measurement. */
@@ -108,6 +113,8 @@ typedef struct report_options {
     const char *scene_path, *out_dir, *data_dir; /* data_dir NULL: the default */
     const char *cross_path, *size_path;          /* `make cross-count`, `make size` output, or NULL */
     int timing, instructions; /* 0: skip timing / callgrind counts */
+    int gamut_given;          /* 1: gamut overrides the scene's key */
+    gamut_policy gamut;
 } report_options;
 int report_write(const report_options *o);
 

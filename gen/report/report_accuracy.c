@@ -32,22 +32,53 @@ void report_curve_de(const lab_space *ls, const double (*gt)[3], const double (*
 
 void report_ground_truth(const gen_context *g, const lab_space *ls, report_material *rm)
 {
-    double rms;
-    int a, ch;
+    double curve[REPORT_ANGLES][3], rms;
+    gen_context other = *g;
+    material_params mapped = rm->p;
+    int a, ch, pol;
+    rm->out_of_gamut = 0;
     for (a = 0; a < REPORT_ANGLES; a++) {
         ground_truth(rm->s, &g->cm, &g->cs, rm->p.n1, report_cos(a), rm->gt_raw[a]);
+        ground_truth_gamut(rm->s, g, &rm->p, report_cos(a), rm->gt[a]);
         for (ch = 0; ch < 3; ch++)
-            rm->gt[a][ch] = rm->gt_raw[a][ch] < 0.0 ? 0.0 : rm->gt_raw[a][ch] > 1.0 ? 1.0 : rm->gt_raw[a][ch];
+            rm->out_of_gamut |= rm->gt_raw[a][ch] < 0.0 || rm->gt_raw[a][ch] > 1.0;
     }
-    report_curve_de(ls, (const double(*)[3])rm->gt_raw, (const double(*)[3])rm->gt, &rm->clamp_de_mean, &rms,
-                    &rm->clamp_de_max);
+    /* Every policy's own cost, whichever the scene uses (map needs its nodes). */
+    other.gamut = GAMUT_MAP;
+    gamut_map_build(rm->s, &other, &mapped);
+    for (pol = 0; pol < 3; pol++) {
+        other.gamut = (gamut_policy)pol;
+        for (a = 0; a < REPORT_ANGLES; a++)
+            ground_truth_gamut(rm->s, &other, &mapped, report_cos(a), curve[a]);
+        report_curve_de(ls, (const double(*)[3])rm->gt_raw, (const double(*)[3])curve, &rm->policy_de_mean[pol], &rms,
+                        &rm->policy_de_max[pol]);
+    }
+}
+
+/* The five-point Gauss-Legendre rule on 64 panels, as the generator's
+ * ground_truth_average: F_avg of a model's curve in one type. */
+static void model_average(const report_prepared *q, const report_type *t, double avg[3])
+{
+    static const double node[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                                   0.9061798459386640};
+    static const double weight[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                                     0.4786286704993665, 0.2369268850561891};
+    int i, j, ch;
+    avg[0] = avg[1] = avg[2] = 0.0;
+    for (i = 0; i < GEN_AVG_PANELS; i++)
+        for (j = 0; j < 5; j++) {
+            double mu = (i + 0.5 + 0.5 * node[j]) / GEN_AVG_PANELS, rgb[3];
+            t->eval(q, mu, rgb);
+            for (ch = 0; ch < 3; ch++)
+                avg[ch] += weight[j] * rgb[ch] * mu / GEN_AVG_PANELS;
+        }
 }
 
 void report_measure(const lab_space *ls, const report_material *rm, int model, const report_type *t,
                     report_cell *out)
 {
     const scene_model *m = &rm->models[model];
-    double rgb[REPORT_ANGLES][3];
+    double rgb[REPORT_ANGLES][3], rms;
     int a, ch;
     out->abs_max[0] = out->abs_max[1] = out->abs_max[2] = 0.0;
     out->vs_ref_max = 0.0;
@@ -65,4 +96,7 @@ void report_measure(const lab_space *ls, const report_material *rm, int model, c
     }
     report_curve_de(ls, (const double(*)[3])rm->gt, (const double(*)[3])rgb, &out->de_mean, &out->de_rms,
                     &out->de_max);
+    report_curve_de(ls, (const double(*)[3])rm->gt_raw, (const double(*)[3])rgb, &out->raw_de_mean, &rms,
+                    &out->raw_de_max);
+    model_average(rm->prepared[model], t, out->avg);
 }

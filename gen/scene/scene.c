@@ -16,11 +16,12 @@
 /* Number types the generator can emit; a new type is one more entry here. */
 const char *const scene_type_names[] = {"f32", "q15", NULL};
 const char *const scene_lut_spacing_names[] = {"uniform", "grazing", "grazing-pl", NULL};
+const char *const scene_f_avg_names[] = {"no", "yes", NULL};
 
 enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
-                 KEY_LUT_SPACING, KEY_NAME, KEY_COUNT };
-static const char *const key_names[] = {"materials", "models", "space",       "sigma",
-                                        "n1",        "types",  "lut_spacing", "name", NULL};
+                 KEY_LUT_SPACING, KEY_NAME, KEY_GAMUT, KEY_F_AVG, KEY_COUNT };
+static const char *const key_names[] = {"materials", "models", "space",       "sigma", "n1",
+                                        "types",     "lut_spacing", "name", "gamut", "f_avg", NULL};
 
 #define SIGMA_MAX 200.0
 #define SCENE_MAX_ERRORS 50
@@ -37,6 +38,8 @@ static int *key_line(scene *s, int key)
     case KEY_N1: return &s->n1_line;
     case KEY_TYPES: return &s->types_line;
     case KEY_NAME: return &s->name_line;
+    case KEY_GAMUT: return &s->gamut_line;
+    case KEY_F_AVG: return &s->f_avg_line;
     default: return &s->lut_spacing_line;
     }
 }
@@ -332,6 +335,15 @@ static int parse_value(const char *path, int line, int key, char *value, scene *
     case KEY_LUT_SPACING:
         return parse_choice(path, line, "LUT spacing", scene_lut_spacing_names, value,
                             s->lut_spacing);
+    case KEY_GAMUT:
+        return parse_choice(path, line, "gamut policy", gamut_policy_names, value, s->gamut);
+    case KEY_F_AVG: {
+        char yes_no[SCENE_NAME_SIZE];
+        if (parse_choice(path, line, "f_avg value", scene_f_avg_names, value, yes_no))
+            return CLI_BAD_INPUT;
+        s->f_avg = !strcmp(yes_no, "yes");
+        return 0;
+    }
     case KEY_SIGMA: return parse_number(path, line, "sigma (nm)", value, 0.0, SIGMA_MAX, &s->sigma);
     default: return parse_number(path, line, "n1", value, N1_MIN, N1_MAX, &s->n1);
     }
@@ -342,6 +354,7 @@ static void set_defaults(scene *s)
     memset(s, 0, sizeof *s);
     strcpy(s->space, "srgb");
     strcpy(s->lut_spacing, "grazing");
+    strcpy(s->gamut, "map");
     strcpy(s->types[0], "f32");
     s->type_count = 1;
     s->sigma = 25.0;
@@ -492,6 +505,12 @@ int scene_has_model(const scene *sc, const char *model)
         if (!strcmp(sc->models[i], model))
             return 1;
     return 0;
+}
+
+gamut_policy scene_gamut(const scene *sc)
+{
+    int i = table_index(gamut_policy_names, sc->gamut);
+    return i < 0 ? GAMUT_MAP : (gamut_policy)i;
 }
 
 lut_spacing scene_lut_spacing(const scene *sc)

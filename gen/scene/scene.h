@@ -43,6 +43,15 @@
  *                grazing-pl (uniform in a 64-piece linear stand-in for
  *                sqrt(cos theta), read by fresnel_lut_pl_u16_q15_fast
  *                without a square root: types = q15 only, lutN with N <= 64).
+ *   gamut        optional, default map; what the constants and tables hold
+ *                where a material's colour leaves the space's gamut
+ *                (2_derive/derive.h, OUT-OF-GAMUT POLICY): map (the nearest
+ *                in-gamut colour in CIEDE2000), clip (per channel) or keep
+ *                (values above 1 kept, for HDR and wide-gamut pipelines).
+ *   f_avg        optional, default no; yes emits each material's
+ *                hemispherical average F_avg = 2 int F(mu) mu dmu of the
+ *                ground truth under the gamut policy, per channel, beside
+ *                the models' constants (a scene that reads it only).
  *   name         optional; the scene's part of every C identifier in the
  *                header (fresnel_<name>_<material>_<constant>, include guard
  *                FRESNEL_SCENE_<NAME>_H): 1 to SCENE_PREFIX_SIZE - 1 of
@@ -91,11 +100,12 @@
  * model_names, and its LUT patterns). */
 extern const char *const scene_type_names[];
 extern const char *const scene_lut_spacing_names[];
+extern const char *const scene_f_avg_names[]; /* "no", "yes" */
 
 typedef struct scene {
     /* Line of the file where each key was set; 0 where the default applies. */
     int materials_line, models_line, space_line, sigma_line, n1_line, types_line,
-        lut_spacing_line, name_line;
+        lut_spacing_line, name_line, gamut_line, f_avg_line;
     char name[SCENE_PREFIX_SIZE]; /* the name key; "" when not given */
 
     int material_count; /* in the order the file names them */
@@ -108,6 +118,8 @@ typedef struct scene {
     char types[SCENE_MAX_TYPES][SCENE_NAME_SIZE];
     char space[SCENE_NAME_SIZE];
     char lut_spacing[SCENE_NAME_SIZE];
+    char gamut[SCENE_NAME_SIZE]; /* a gamut_policy_names entry */
+    int f_avg;                   /* 1: emit each material's F_avg */
     double sigma; /* nm */
     double n1;
 } scene;
@@ -141,5 +153,7 @@ unsigned scene_reads(const scene *sc, int q15);
 int scene_has_type(const scene *sc, const char *type);
 /* The loaded scene's LUT spacing. */
 lut_spacing scene_lut_spacing(const scene *sc);
+/* The policy of the gamut key (GAMUT_MAP by default). */
+gamut_policy scene_gamut(const scene *sc);
 
 #endif
