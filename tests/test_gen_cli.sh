@@ -28,6 +28,34 @@ if [ "$consts" -eq 1 ] && grep -q 'fresnel_only_cu_f0 ' "$t/only.h" && ! grep -q
 else
     echo "FAIL gen: schlick-only scene emitted $consts constants: $(grep '^static const' "$t/only.h" | cut -c1-80)"
 fi
+# f_avg = yes adds each material's F_avg (binary32 and Q1.15), the value
+# `fresnel params` prints; gamut = keep carries gold's red above 1 into the
+# constants and the curve tables, which the runtimes return.
+printf 'materials = au cu\nmodels = schlick lut16-cubic\ntypes = f32 q15\ngamut = keep\nf_avg = yes\n' >"$t/keep.scene"
+"$F" gen "$t/keep.scene" -o "$t/keep.h" 2>"$t/err"
+pavg=$("$F" params --material au --gamut keep | grep '^f_avg,' | cut -d, -f2)
+havg=$(grep 'fresnel_keep_au_f_avg FRESNEL' "$t/keep.h" | sed 's/.*{\([0-9.]*\)f.*/\1/')
+if grep -q 'fresnel_keep_au_f_avg_q15' "$t/keep.h" && awk -v a="$pavg" -v b="$havg" 'BEGIN { exit !(a > 1.02 && (a - b < 1e-6 && b - a < 1e-6)) }'; then
+    echo "PASS gen: f_avg = yes emits F_avg (f32 and Q15); under keep gold's red is $havg, as fresnel params prints"
+else
+    echo "FAIL gen f_avg: params '$pavg', header '$havg', $(head -2 "$t/err")"
+fi
+cat >"$t/keep_use.c" <<'EOF2'
+#include "keep.h"
+int main(void)
+{
+    fresnel_rgb f = fresnel_lut_cubic_rgb(fresnel_keep_au_lut16_cubic, 16, 1.0f);
+    fresnel_rgb_q15 q = fresnel_lut_cubic_u16_q15_rgb(fresnel_keep_au_lut16_cubic_q15, 16, FRESNEL_ONE_Q15);
+    fresnel_rgb g = fresnel_lut_cubic_rgb(fresnel_keep_au_lut16_cubic, 16, 0.0f);
+    /* red above 1 at normal incidence in both runtimes, white at grazing */
+    return f.r > 1.03f && f.r < 1.045f && q.r > 33700 && q.r < 34300 && g.r > 0.9999f && g.r < 1.0001f && f.g < 1.0f ? 0 : 1;
+}
+EOF2
+if cc $W -Iinclude -I"$t" "$t/keep_use.c" src/f32/*.c src/q15/*.c -lm -o "$t/keep_use" 2>"$t/cc" && "$t/keep_use"; then
+    echo "PASS gen: gamut = keep tables return gold's red above 1 in binary32 and Q1.15"
+else
+    echo "FAIL gen keep tables: $(head -3 "$t/cc")"
+fi
 printf 'materials = ag al\nmodels = f82 lut16-residual lsk-comp gulbrandsen cook-torrance exact-gaussian approx-conductor lsk exact lut8\nlut_spacing = uniform\n' >"$t/all.scene"
 if "$F" gen "$t/all.scene" -o "$t/all.h" 2>"$t/err" &&
     printf '#include "all.h"\nint main(void) { return 0; }\n' >"$t/all.c" &&
@@ -57,6 +85,8 @@ expect_gen_error "an unknown space" 'materials = au\nmodels = schlick\nspace = c
 expect_gen_error "an unknown key" 'materials = au\nmodels = schlick\ncolour = red\n' 'bad.scene:3: .*colour'
 expect_gen_error "a duplicate key" 'materials = au\nmodels = schlick\nmaterials = cu\n' 'bad.scene:3: .*materials.*line 1'
 expect_gen_error "a malformed number" 'materials = au\nmodels = schlick\nsigma = 2x5\n' 'bad.scene:3: .*2x5'
+expect_gen_error "an unknown gamut policy" 'materials = au\nmodels = schlick\ngamut = mapp\n' "bad.scene:3: expected a gamut policy .*did you mean 'map'"
+expect_gen_error "a bad f_avg value" 'materials = au\nmodels = schlick\nf_avg = true\n' 'bad.scene:3: expected a f_avg value'
 expect_gen_error "an unknown type" 'materials = au\nmodels = schlick\ntypes = f32 f128\n' 'bad.scene:3: .*f128'
 "$F" gen "$t/missing.scene" -o "$t/out.h" 2>"$t/err"
 rc=$?

@@ -112,7 +112,7 @@ int derive_parameters(const gen_context *g, const material_source *m, double sig
             return cli_error(m->id, "fitting eta, kappa to the ground truth failed");
         p->fit_rms[ch] = rep.rms;
         ref_lsk_fit_target(p->eta_fit[ch], p->kappa_fit[ch], green[ch], &p->lsk_a[ch], &p->lsk_alpha[ch]);
-        p->gulb_r[ch] = p->f0[ch];
+        p->gulb_r[ch] = fmin(p->f0[ch], 1.0); /* a reflectivity: below 1 under the keep policy too */
         p->gulb_g[ch] = ref_gulbrandsen_g(p->f0[ch], p->eta_fit[ch]);
     }
     return 0;

@@ -59,11 +59,13 @@ static void put_qf(fx_out *o, fresnel_qf q, const char *what, const char *id)
     fprintf(o->f, "{%lu, %ld}", (unsigned long)q.m, (long)q.e);
 }
 
-/* A reflectance-like value in Q1.15: round(v 32768) in [0, hi]. */
+/* A reflectance-like value in Q1.15: round(v 32768) in [0, hi]; hi is
+ * 65535 for values the keep policy may take above 1. */
 static long q15_code(fx_out *o, double v, long hi, const char *what, const char *id)
 {
     fx_finite(o, v, what, id);
-    return fx_check(o, v - v == 0.0 ? floor(v * 32768.0 + 0.5) : 0.0, 0.0, (double)hi, "Q1.15 [0, one]", what, id);
+    return fx_check(o, v - v == 0.0 ? floor(v * 32768.0 + 0.5) : 0.0, 0.0, (double)hi,
+                    hi == 32768 ? "Q1.15 [0, one]" : "Q1.15 [0, 2)", what, id);
 }
 
 static void emit_q15_rgb(fx_out *o, const char *prefix, const char *name, const double v[3], long hi,
@@ -219,7 +221,7 @@ static int emit_lut_q15(fx_out *o, const char *prefix, const char *model, const 
             v = fx_check(o, t[i] - t[i] == 0.0 ? floor(t[i] * ldexp(1.0, frac) + 0.5) : 0.0, -32768.0, 32767.0,
                          "int16_t", "a residual LUT node", id);
         else
-            v = q15_code(o, t[i], 32768, "a LUT node", id);
+            v = q15_code(o, t[i], 65535, "a LUT node", id);
         fprintf(f, "%s%ld%s", i % 12 == 0 ? "\n    " : " ", v, i + 1 < 3 * n ? "," : "");
     }
     fprintf(f, "\n};\n");
@@ -239,12 +241,14 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
     o.in = in;
     o.bad = 0;
     if (reads & MP_F0)
-        emit_q15_rgb(&o, prefix, "f0", p->f0, 32768, "F0");
+        emit_q15_rgb(&o, prefix, "f0", p->f0, 65535, "F0");
+    if (sc->f_avg)
+        emit_q15_rgb(&o, prefix, "f_avg", p->f_avg, 65535, "F_avg = 2 int F(mu) mu dmu of the ground truth");
     if (reads & MP_F82) {
         int ch;
         char id[160];
         long a[3];
-        emit_q15_rgb(&o, prefix, "f82", p->f82, 32768, "F82");
+        emit_q15_rgb(&o, prefix, "f82", p->f82, 65535, "F82");
         snprintf(id, sizeof id, "%s_f82_a_q12", prefix);
         for (ch = 0; ch < 3; ch++) {
             fx_finite(&o, p->f0[ch], "F0", id);

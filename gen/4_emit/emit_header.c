@@ -89,7 +89,7 @@ static int params_fit_float(const emit_input *in, const material_params *p)
         const char *what;
         const double *v;
         int count;
-    } all[] = {{"F0", p->f0, 3},           {"F82", p->f82, 3},           {"eta", p->eta_fit, 3},
+    } all[] = {{"F0", p->f0, 3},           {"F82", p->f82, 3},           {"F_avg", p->f_avg, 3},           {"eta", p->eta_fit, 3},
                {"kappa", p->kappa_fit, 3}, {"LSK a", p->lsk_a, 3},      {"LSK alpha", p->lsk_alpha, 3},
                {"eta'", p->eta_gauss, 3},  {"kappa'", p->kappa_gauss, 3}, {"eta point", p->eta_point, 3},
                {"kappa point", p->kappa_point, 3}, {"Gulbrandsen r", p->gulb_r, 3},
@@ -116,6 +116,8 @@ void emit_material_params(FILE *f, const scene *sc, const material_params *p, co
     unsigned reads = scene_reads(sc, 0);
     if (reads & MP_F0)
         rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");
+    if (sc->f_avg)
+        rgb(f, prefix, "f_avg", p->f_avg, "F_avg: 2 int F(mu) mu dmu of the ground truth (multiple-scattering albedo)");
     if (reads & MP_F82)
         rgb(f, prefix, "f82", p->f82, "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
     if (reads & MP_ETA_FIT) {
