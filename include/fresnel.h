@@ -157,6 +157,7 @@ extern "C" {
 #define FRESNEL_BOUND_SCHLICK_AVG      2e-7f
 #define FRESNEL_BOUND_SCHLICK_GEN_AVG  3e-7f
 #define FRESNEL_BOUND_F82_AVG          2e-7f
+#define FRESNEL_BOUND_LUT_AVG          3e-7f /* fresnel_lut_*_avg */
 
 /* Three channels of one quantity (reflectance, eta or kappa). */
 typedef struct fresnel_rgb {
@@ -382,6 +383,30 @@ fresnel_rgb fresnel_lut_linear_residual_rgb(fresnel_rgb f0, const float *table, 
  * nodes. Cost: sqrtf + 12 flops, no division. */
 float fresnel_lut_cubic(const float *table, int n, float c);
 fresnel_rgb fresnel_lut_cubic_rgb(const float *table, int n, float c);
+
+/* ---------------------------------------------------------------- lut_avg.c */
+
+/* The hemispherical average F_avg = 2 int_0^1 F(c) c dc of a curve table's
+ * interpolant (fresnel_lut, fresnel_lut_cubic, fresnel_lut_linear), exact:
+ * a weighted sum of the nodes, sum_i w_i table[i], with N = n - 1,
+ * h = 1/N, x_i = i h:
+ *   fresnel_lut_avg          w_0 = h^4/5, w_i = 4h x_i^3 + 2h^3 x_i,
+ *                            w_N = 4h (1/2 - h/2 + h^2/4 - h^3/20)
+ *   fresnel_lut_cubic_avg    w_i = 4h x_i^3 for 2 <= i <= N-2; the end
+ *                            nodes' weights in lut_avg.c
+ *   fresnel_lut_linear_avg   w_0 = h^2/3, w_i = 2h x_i, w_N = h - h^2/3
+ * (the weights sum to 1). Equal to the average of the clamped curve
+ * wherever the interpolant stays inside [0, max(1, nodes)], which fitted
+ * tables do. n as fresnel_lut; result in [0, max(1, largest node)].
+ * Error <= FRESNEL_BOUND_LUT_AVG against the interpolant's integral in
+ * double, every n (nodes up to 2). Cost: about 14 flops per node (a
+ * compensated sum) and one division; a material's average is made once. */
+float fresnel_lut_avg(const float *table, int n);
+float fresnel_lut_cubic_avg(const float *table, int n);
+float fresnel_lut_linear_avg(const float *table, int n);
+fresnel_rgb fresnel_lut_avg_rgb(const float *table, int n);
+fresnel_rgb fresnel_lut_cubic_avg_rgb(const float *table, int n);
+fresnel_rgb fresnel_lut_linear_avg_rgb(const float *table, int n);
 
 #endif /* FRESNEL_HAS_FLOAT */
 

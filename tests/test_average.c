@@ -3,7 +3,11 @@
  * first the closed forms in double against Simpson's rule on the models'
  * own double curves (the formulas), then the binary32 and Q15 functions
  * against the double closed form over their whole argument domain (the
- * stated bounds), and non-finite arguments. */
+ * stated bounds), and non-finite arguments. Then the LUT averages
+ * (lut_avg.c, lut_avg_q15.c): the weighted node sums against the integral
+ * of the interpolant itself, by a 4-point Gauss-Legendre rule on each
+ * interval (exact for its degree-6 integrand up to rounding), on tables
+ * inside [0, 1], with headroom up to 2, and of Fresnel shape. */
 #include <math.h>
 #include <stdint.h>
 
@@ -64,6 +68,111 @@ static int f82_inside(double f0, double f82)
 }
 
 static double clampd(double x) { return x < 0.0 ? 0.0 : x > 1.0 ? 1.0 : x; }
+
+/* The interpolant of fresnel_lut (form 0), fresnel_lut_cubic (1) or
+ * fresnel_lut_linear (2) at position u in node units on interval j. */
+static double interp_at(const double *t, int n, int form, int j, double u)
+{
+    int last = n - 1, q0 = j > 0 ? j - 1 : 0, q3 = j + 2 <= last ? j + 2 : last;
+    double p0 = t[q0], p1 = t[j], p2 = t[j + 1], p3 = t[q3];
+    if (form != 1)
+        return p1 + u * (p2 - p1);
+    return p1 + 0.5 * u * (p2 - p0 + u * (2.0 * p0 - 5.0 * p1 + 4.0 * p2 - p3 + u * (3.0 * (p1 - p2) + p3 - p0)));
+}
+
+/* 2 int_0^1 L(c) c dc: in x = sqrt(c) it is int L 4x^3 dx (forms 0, 1). */
+static double lut_avg_ref(const double *t, int n, int form)
+{
+    static const double gx[4] = {0.0694318442029737, 0.3300094782075719, 0.6699905217924281, 0.9305681557970263};
+    static const double gw[4] = {0.1739274225687269, 0.3260725774312731, 0.3260725774312731, 0.1739274225687269};
+    double h = 1.0 / (n - 1), sum = 0.0;
+    int j, k;
+    if (n == 1)
+        return t[0];
+    for (j = 0; j < n - 1; j++)
+        for (k = 0; k < 4; k++) {
+            double x = (j + gx[k]) * h, v = interp_at(t, n, form, j, gx[k]);
+            sum += gw[k] * h * v * (form == 2 ? 2.0 * x : 4.0 * x * x * x);
+        }
+    return sum;
+}
+
+static uint32_t lcg = 2463534242u;
+static double next01(void)
+{
+    lcg = lcg * 1664525u + 1013904223u;
+    return (lcg >> 8) / 16777216.0;
+}
+
+static void check_lut_averages(void)
+{
+    static const int sizes[] = {1, 2, 3, 4, 5, 6, 8, 16, 17, 33, 64, 256, 1024, 4096, 32768};
+    static double t[32768], tq[32768];
+    static float tf[32768];
+    static uint16_t q[32768];
+    double worst_f32 = 0.0, worst_q15 = 0.0;
+    int si, kind, form, i, ok_range = 1, ok_const = 1;
+    for (si = 0; si < (int)(sizeof sizes / sizeof sizes[0]); si++)
+        for (kind = 0; kind < 5; kind++) {
+            int n = sizes[si];
+            for (i = 0; i < n; i++) {
+                double x = n > 1 ? (double)i / (n - 1) : 1.0, c = x * x;
+                switch (kind) {
+                case 0: t[i] = next01(); break;                       /* [0, 1] */
+                case 1: t[i] = 2.0 * next01() * 65535.0 / 65536.0; break; /* headroom */
+                case 2: t[i] = 0.9 + 0.1 * pow(1 - c, 5) - 0.3 * c * pow(1 - c, 6); break;
+                case 3: t[i] = i % 2 ? 65535.0 / 32768.0 : 0.0; break;
+                default: t[i] = 1.0; break;
+                }
+                tf[i] = (float)t[i];
+                q[i] = (uint16_t)floor(t[i] * 32768.0 + 0.5);
+                tq[i] = q[i] / 32768.0;
+                t[i] = tf[i];
+            }
+            for (form = 0; form < 3; form++) {
+                double ref = lut_avg_ref(t, n, form), refq = lut_avg_ref(tq, n, form), top = 1.0, tqtop = 1.0;
+                float v = form == 0 ? fresnel_lut_avg(tf, n) : (form == 1 ? fresnel_lut_cubic_avg(tf, n) : fresnel_lut_linear_avg(tf, n));
+                fresnel_q15 r = form == 0 ? fresnel_lut_avg_u16_q15(q, n)
+                                          : (form == 1 ? fresnel_lut_cubic_avg_u16_q15(q, n) : fresnel_lut_linear_avg_u16_q15(q, n));
+                double eq = fabs(r - 32768.0 * refq);
+                for (i = 0; i < n; i++) {
+                    top = fmax(top, t[i]);
+                    tqtop = fmax(tqtop, tq[i]);
+                }
+                ok_range &= v >= 0.0f && v <= top && r <= 32768.0 * tqtop;
+                if (kind == 4)
+                    ok_const &= fabs(v - 1.0) <= 4e-7 && (r >= 32767 && r <= 32769);
+                worst_f32 = fmax(worst_f32, fabs(v - ref));
+                worst_q15 = fmax(worst_q15, eq);
+            }
+        }
+    NOTE("LUT averages against the interpolant's integral, n 1 to 32768: binary32 %.3g, Q15 %.4f LSB", worst_f32,
+         worst_q15);
+    CHECK("fresnel_lut_*_avg within FRESNEL_BOUND_LUT_AVG of the interpolant's integral",
+          worst_f32 <= FRESNEL_BOUND_LUT_AVG, "%.3g", worst_f32);
+    CHECK("fresnel_lut_*_avg_u16_q15 within FRESNEL_BOUND_LUT_AVG_Q15 LSB", worst_q15 <= FRESNEL_BOUND_LUT_AVG_Q15,
+          "%.4f", worst_q15);
+    CHECK("LUT averages in [0, max(1, largest node)]; a constant table of 1 averages to 1", ok_range && ok_const,
+          "range %d, constant %d", ok_range, ok_const);
+    {
+        /* RGB forms are the scalar ones per channel; n <= 0 gives 0. */
+        int ok = 1;
+        fresnel_rgb f;
+        fresnel_rgb_q15 r;
+        for (i = 0; i < 48; i++) {
+            tf[i] = (float)next01();
+            q[i] = (uint16_t)(tf[i] * 32768.0f);
+        }
+        f = fresnel_lut_cubic_avg_rgb(tf, 16);
+        r = fresnel_lut_avg_u16_q15_rgb(q, 16);
+        ok &= f.r == fresnel_lut_cubic_avg(tf, 16) && f.g == fresnel_lut_cubic_avg(tf + 16, 16) &&
+              f.b == fresnel_lut_cubic_avg(tf + 32, 16);
+        ok &= r.r == fresnel_lut_avg_u16_q15(q, 16) && r.g == fresnel_lut_avg_u16_q15(q + 16, 16) &&
+              r.b == fresnel_lut_avg_u16_q15(q + 32, 16);
+        ok &= fresnel_lut_avg(tf, 0) == 0.0f && fresnel_lut_linear_avg_u16_q15(q, -5) == 0;
+        CHECK("LUT average RGB forms equal the scalar ones; n <= 0 gives 0", ok, "differ");
+    }
+}
 
 int main(void)
 {
@@ -171,5 +280,6 @@ int main(void)
             }
         CHECK("Q15 averages: codes outside [0, 32768] are clamped, results in [0, 32768]", ok, "out of range");
     }
+    check_lut_averages();
     return harness_exit();
 }
