@@ -172,7 +172,7 @@ static void write_ablation(FILE *f, const lut_result *o)
         return;
     fprintf(f, "\nWhich LUT choice bought what (Q1.15 tables, 2 bytes per node and channel, through the Q1.15 "
                "runtime; CIEDE2000 over Hoffman's 14 metals, worst per-metal mean and max, and gold, whose red F0 "
-               "is out of the sRGB gamut and clamped):\n\n"
+               "is out of the sRGB gamut, against its curve under the gamut policy):\n\n"
                "| LUT | bytes per material | worst mean | worst max | gold mean / max |\n|---|---:|---:|---:|---:|\n");
     for (v = 0; v < N_VARIANTS; v++)
         fprintf(f, "| %s | %d | %.4f (%s) | %.4f (%s) | %.4f / %.4f |\n", lut_variants[v].what, 6 * lut_variants[v].n,
@@ -344,7 +344,7 @@ void report_targets(report_run *r, FILE *f)
     lut_result luts[N_VARIANTS];
     lut_measure(r, luts);
     fprintf(f, "## Targets\n\nEach target of the library with the value this run measured. Accuracy: "
-               "theta 0-90 deg in 1 deg steps, linear %s, against the clamped spectral ground truth, on the 14 "
+               "theta 0-90 deg in 1 deg steps, linear %s, against the spectral ground truth under the gamut policy, on the 14 "
                "metals of Hoffman's table.\n\n| target | goal | measured | |\n|---|---|---|---|\n",
             r->sc.space);
     lut_target(f, "LUT, 16 nodes per channel in Q1.15 (96 bytes per material): lut16-cubic", &luts[V_LUT16_CUBIC],
@@ -354,7 +354,7 @@ void report_targets(report_run *r, FILE *f)
                &luts[V_LUT32_PL], 0.005, 0.03);
     hoffman_target(r, f);
     if (luts[V_LUT16_CUBIC].measured)
-        target(f, "Gold (red F0 1.04 in linear sRGB, out of gamut): clamp per channel, then the LUT targets",
+        target(f, "Gold (red F0 1.04 in linear sRGB, out of gamut): the LUT targets against its curve under the gamut policy",
                "lut16: <= 0.01 / 0.05; lut32: <= 0.005 / 0.03",
                luts[V_LUT16_CUBIC].gold_mean <= 0.01 && luts[V_LUT16_CUBIC].gold_max <= 0.05 &&
                        luts[V_LUT32].gold_mean <= 0.005 && luts[V_LUT32].gold_max <= 0.03
