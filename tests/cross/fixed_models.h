@@ -66,6 +66,24 @@ static fresnel_q15 e_lut_linear_residual_s8(const conform_material *m, int32_t c
     (void)m;
     return fresnel_lut_linear_residual_s8_q15(conform_lut_f0, conform_lut_s8[1], CONFORM_LUT_N, conform_lut_frac8, c);
 }
+static fresnel_q15 e_lut_cubic_u16(const conform_material *m, int32_t c)
+{
+    (void)m;
+    return fresnel_lut_cubic_u16_q15(conform_lut_u16[0], CONFORM_LUT_N, c);
+}
+/* The averages take no cosine: the code's low two bits pick the form and
+ * the next six the number of nodes read (2 to 64; masks, as the M0 has no
+ * division). */
+static fresnel_q15 e_lut_avg_u16(const conform_material *m, int32_t c)
+{
+    int form = (int)(c & 3), n = 2 + (int)((c >> 2) & 63);
+    (void)m;
+    if (n > CONFORM_LUT_N)
+        n = CONFORM_LUT_N;
+    return form == 1 ? fresnel_lut_cubic_avg_u16_q15(conform_lut_u16[0], n)
+                     : (form == 2 ? fresnel_lut_linear_avg_u16_q15(conform_lut_u16[1], n)
+                                  : fresnel_lut_avg_u16_q15(conform_lut_u16[0], n));
+}
 /* The fast paths (fresnel_fixed.h, "fast paths"): their preconditions hold
  * here (c, F0, F82 in [0, one]; a 64-node table). */
 static fresnel_q15 e_schlick_fast(const conform_material *m, int32_t c) { return fresnel_schlick_q15_fast(m->f0, c); }
@@ -106,6 +124,8 @@ static const fixed_model fixed_models[] = {
     {"lut u8", e_lut_u8, 0},
     {"lut-residual s16", e_lut_residual_s16, 0},
     {"lut-linear-residual s8", e_lut_linear_residual_s8, 0},
+    {"lut-cubic u16", e_lut_cubic_u16, 0},
+    {"lut averages u16", e_lut_avg_u16, 0},
     {"schlick fast", e_schlick_fast, 1},
     {"f82 fast", e_f82_fast, 1},
     {"lut u16 fast", e_lut_u16_fast, 0},
