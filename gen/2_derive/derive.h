@@ -70,11 +70,13 @@ typedef struct gen_context {
 int gen_context_load(const char *dir, const char *space, gen_context *g);
 
 /* The cosine-weighted hemispherical average F_avg = 2 int_0^1 F(mu) mu dmu
- * per channel of the ground truth, under the policy (clamped = 1) or
- * unclipped (0), by a composite 5-point Gauss-Legendre rule on `panels`
- * panels. */
+ * per channel of a curve, by a composite 5-point Gauss-Legendre rule on
+ * `panels` panels; ground_truth_average's curve is the ground truth under
+ * the policy (under_policy = 1) or unclipped (0). */
 #define GEN_AVG_PANELS 64
-void ground_truth_average(const spectrum *s, const gen_context *g, const material_params *p, int clamped,
+void hemispherical_average(void (*curve)(const void *ctx, double mu, double rgb[3]), const void *ctx, int panels,
+                           double avg[3]);
+void ground_truth_average(const spectrum *s, const gen_context *g, const material_params *p, int under_policy,
                           int panels, double avg[3]);
 
 /* gamut.c. The ground truth at cosine c under g->gamut, for the material

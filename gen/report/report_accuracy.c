@@ -55,23 +55,15 @@ void report_ground_truth(const gen_context *g, const lab_space *ls, report_mater
     }
 }
 
-/* The five-point Gauss-Legendre rule on 64 panels, as the generator's
- * ground_truth_average: F_avg of a model's curve in one type. */
-static void model_average(const report_prepared *q, const report_type *t, double avg[3])
+typedef struct model_curve {
+    const report_prepared *q;
+    const report_type *t;
+} model_curve;
+
+static void model_at(const void *ctx, double mu, double rgb[3])
 {
-    static const double node[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                                   0.9061798459386640};
-    static const double weight[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                                     0.4786286704993665, 0.2369268850561891};
-    int i, j, ch;
-    avg[0] = avg[1] = avg[2] = 0.0;
-    for (i = 0; i < GEN_AVG_PANELS; i++)
-        for (j = 0; j < 5; j++) {
-            double mu = (i + 0.5 + 0.5 * node[j]) / GEN_AVG_PANELS, rgb[3];
-            t->eval(q, mu, rgb);
-            for (ch = 0; ch < 3; ch++)
-                avg[ch] += weight[j] * rgb[ch] * mu / GEN_AVG_PANELS;
-        }
+    const model_curve *m = ctx;
+    m->t->eval(m->q, mu, rgb);
 }
 
 void report_measure(const lab_space *ls, const report_material *rm, int model, const report_type *t,
@@ -98,5 +90,11 @@ void report_measure(const lab_space *ls, const report_material *rm, int model, c
                     &out->de_max);
     report_curve_de(ls, (const double(*)[3])rm->gt_raw, (const double(*)[3])rgb, &out->raw_de_mean, &rms,
                     &out->raw_de_max);
-    model_average(rm->prepared[model], t, out->avg);
+    {
+        /* the model's F_avg in this type, by the rule the ground truth's uses */
+        model_curve mc;
+        mc.q = rm->prepared[model];
+        mc.t = t;
+        hemispherical_average(model_at, &mc, GEN_AVG_PANELS, out->avg);
+    }
 }
