@@ -32,10 +32,10 @@ LIB_SRC  := $(wildcard src/*/*.c)
 GEN_SRC  := $(wildcard gen/*/*.c)
 TEST_SRC := $(wildcard tests/test_*.c)
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
-GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o)
+GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/embed/viewer_assets.o
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all main-job test test-bins install uninstall deps clean report bench
+.PHONY: all main-job test test-bins install uninstall deps clean report bench viewer
 .DELETE_ON_ERROR:
 
 all: $(BUILD)/libfresnel.a $(BUILD)/fresnel
@@ -62,6 +62,16 @@ $(BUILD)/obj/src/%.o: src/%.c
 	$(CC) $(CFLAGS_LIB) -c $< -o $@
 
 $(BUILD)/obj/gen/%.o: gen/%.c
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_GEN) -c $< -o $@
+
+# `fresnel viewer` carries its page template and the GLSL port inside the
+# tool (gen/viewer/embed.sh), so it reads no file of the tree at run time.
+$(BUILD)/embed/viewer_assets.c: ports/webgl/viewer.html ports/glsl/fresnel.glsl gen/viewer/embed.sh
+	@mkdir -p $(@D)
+	sh gen/viewer/embed.sh $@ viewer_page=ports/webgl/viewer.html viewer_glsl_port=ports/glsl/fresnel.glsl
+
+$(BUILD)/obj/embed/viewer_assets.o: $(BUILD)/embed/viewer_assets.c
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -c $< -o $@
 
@@ -123,6 +133,10 @@ report: $(BUILD)/fresnel
 bench: $(BUILD)/fresnel
 	$(BUILD)/fresnel bench
 
+# `make viewer`: the default scene as one page, build/viewer/index.html.
+viewer: $(BUILD)/fresnel
+	$(BUILD)/fresnel viewer $(SCENE) -o $(BUILD)/viewer
+
 install: $(BUILD)/libfresnel.a $(BUILD)/fresnel
 	@sh ports/install.sh install '$(DESTDIR)' '$(PREFIX)' '$(BUILD)'
 
@@ -178,7 +192,7 @@ $(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(LIB_
 	    $(FUZZ_GEN) -lm -o $@
 
 # The end-to-end generator target links `fresnel gen` and what it calls.
-FUZZ_GEN_HEADER := gen/cli/cmd_gen.c $(filter-out gen/cli/cmd_%.c gen/bench/% gen/report/%,$(GEN_SRC))
+FUZZ_GEN_HEADER := gen/cli/cmd_gen.c $(filter-out gen/cli/cmd_%.c gen/bench/% gen/report/% gen/viewer/%,$(GEN_SRC))
 $(BUILD)/fuzz/fuzz_gen_header: tests/fuzz/fuzz_gen_header.c tests/header_check.h $(wildcard tests/fuzz/*.h) \
                                $(LIB_SRC) $(wildcard src/*/*.h) $(FUZZ_GEN_HEADER)
 	@mkdir -p $(@D)

@@ -22,6 +22,7 @@ static const struct command commands[] = {
     {"params", cmd_params, "every parameter derived for one material in a colour space"},
     {"curve", cmd_curve, "ground truth and every model over angle for one material (CSV)"},
     {"bench", cmd_bench, "time per evaluation of every model and number type (make bench)"},
+    {"viewer", cmd_viewer, "a scene as one HTML page that renders every model beside the spectral reference"},
     {"report", cmd_report, "accuracy, speed and size of every model and type, with plots"},
     {"extremes", cmd_extremes, "every model and type on extreme inputs against the reference (Markdown)"},
     {"accuracy", cmd_accuracy, "each model's error against exact Fresnel for measured materials"},

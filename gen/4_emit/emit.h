@@ -19,6 +19,20 @@ typedef struct emit_input {
 } emit_input;
 
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
+/* A manifest loaded and every material derived (emit_scene.c): what the
+ * back ends read. emit_load returns 0 or a CLI_* status after a message
+ * (then nothing is held); glsl 1 also checks the GLSL back end can express
+ * the scene. emit_loaded_free releases it. */
+typedef struct emit_loaded {
+    scene *sc;
+    gen_context *g;
+    material_params *params;
+    spectrum **spectra;
+    char name[SCENE_PREFIX_SIZE];
+    emit_input in;
+} emit_loaded;
+int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loaded *l);
+void emit_loaded_free(emit_loaded *l);
 /* `fresnel gen`: load the manifest, derive every material, emit the C header
  * (glsl 0) or the GLSL source and, if tex_path, its LUT texture, each written
  * to a temporary beside its target and renamed over it only on success
@@ -29,6 +43,8 @@ void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
 /* The opening comment's list of materials and where each came from: a data
  * pack file, or a user's file by name, format, size and SHA-256. */
 void emit_material_list(FILE *f, const emit_input *in);
+/* The opening comment's ground-truth line, with the scene's gamut policy. */
+void emit_truth_comment(FILE *f, const scene *sc);
 /* One material's float parameters for the scene's models, through the back
  * end's syntax for an RGB triple and a scalar. */
 typedef void (*emit_rgb_fn)(FILE *f, const char *prefix, const char *name, const double v[3], const char *why);

@@ -317,8 +317,8 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
             g->cs.white[0], g->cs.white[1], g->nm[0], g->nm[1], g->nm[2]);
     fprintf(f, " * Gaussian window sigma %g nm; incident medium n1 %g (eta, kappa below are relative to it).\n",
             sc->sigma, sc->n1);
-    fprintf(f, " * Ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs -> linear RGB, clamped per\n"
-               " * channel to [0, 1] (out-of-gamut policy, gen/2_derive/derive.h).\n * Models:");
+    emit_truth_comment(f, sc);
+    fprintf(f, " * Models:");
     for (m = 0; m < sc->model_count; m++)
         fprintf(f, " %s", sc->models[m]);
     fprintf(f, ".\n");

@@ -147,6 +147,17 @@ void emit_material_params(FILE *f, const scene *sc, const material_params *p, co
     }
 }
 
+/* The ground truth's definition and the scene's gamut policy, for the C and
+ * GLSL headers' opening comments. */
+void emit_truth_comment(FILE *f, const scene *sc)
+{
+    static const char *const what[] = {"the in-gamut colour nearest in CIEDE2000", "each channel clamped to [0, 1]",
+                                       "values above 1 kept"};
+    fprintf(f, " * Ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs -> linear RGB, under the gamut\n"
+               " * policy %s (%s; gen/2_derive/derive.h).\n",
+            sc->gamut, what[scene_gamut(sc)]);
+}
+
 /* What a user ships when they ship generated constants (C and GLSL). */
 void emit_material_list(FILE *f, const emit_input *in)
 {
@@ -190,8 +201,7 @@ int emit_header(FILE *f, const emit_input *in)
             g->cs.white[0], g->cs.white[1], g->nm[0], g->nm[1], g->nm[2]);
     fprintf(f, " * Gaussian window sigma %g nm; incident medium n1 %g (eta, kappa below are relative to it).\n",
             sc->sigma, sc->n1);
-    fprintf(f, " * Ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs -> linear RGB, clamped per\n"
-               " * channel to [0, 1] (out-of-gamut policy, gen/2_derive/derive.h).\n");
+    emit_truth_comment(f, in->sc);
     fprintf(f, " * Models:");
     for (m = 0; m < sc->model_count; m++)
         fprintf(f, " %s", sc->models[m]);

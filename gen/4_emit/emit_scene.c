@@ -12,71 +12,92 @@
 
 #define WHERE "fresnel gen"
 
-int emit_scene(const char *manifest, const char *out_path, const char *tex_path, const char *dir_option, int glsl)
+void emit_loaded_free(emit_loaded *l)
 {
-    scene *sc = NULL;
-    gen_context *g = NULL;
-    material_params *params = NULL;
-    spectrum **spectra = NULL;
-    char name[SCENE_PREFIX_SIZE], where[1100];
-    int i, status = 0;
-    cli_outfile out, tex;
-    emit_input in;
+    int i;
+    if (l->spectra)
+        for (i = 0; l->sc && i < l->sc->material_count; i++)
+            free(l->spectra[i]);
+    free(l->spectra);
+    free(l->params);
+    free(l->g);
+    free(l->sc);
+    memset(l, 0, sizeof *l);
+}
 
-    if (!(sc = malloc(sizeof *sc)) || !(g = malloc(sizeof *g))) {
+int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loaded *l)
+{
+    char where[1100];
+    int i, status = 0;
+    memset(l, 0, sizeof *l);
+    if (!(l->sc = malloc(sizeof *l->sc)) || !(l->g = malloc(sizeof *l->g))) {
         status = cli_oom(WHERE);
         goto done;
     }
-    if ((status = scene_load(manifest, sc)))
+    if ((status = scene_load(manifest, l->sc)))
         goto done;
-    if (sc->name[0])
-        snprintf(name, sizeof name, "%s", sc->name);
+    if (l->sc->name[0])
+        snprintf(l->name, sizeof l->name, "%s", l->sc->name);
     else
-        scene_name_from_path(manifest, name);
-    if (glsl && (status = emit_glsl_check(sc, manifest, name)))
+        scene_name_from_path(manifest, l->name);
+    if (glsl && (status = emit_glsl_check(l->sc, manifest, l->name)))
         goto done;
-    params = calloc((size_t)sc->material_count, sizeof *params);
-    spectra = calloc((size_t)sc->material_count, sizeof *spectra);
-    if (!params || !spectra) {
+    l->params = calloc((size_t)l->sc->material_count, sizeof *l->params);
+    l->spectra = calloc((size_t)l->sc->material_count, sizeof *l->spectra);
+    if (!l->params || !l->spectra) {
         status = cli_oom(WHERE);
         goto done;
     }
-    if ((status = gen_context_load(data_dir(dir_option), sc->space, g)))
+    if ((status = gen_context_load(data_dir(dir_option), l->sc->space, l->g)))
         goto done;
-    g->gamut = scene_gamut(sc);
+    l->g->gamut = scene_gamut(l->sc);
     /* Every unknown material is reported, not only the first. */
-    for (i = 0; i < sc->material_count; i++) {
+    for (i = 0; i < l->sc->material_count; i++) {
         material_info info;
-        snprintf(where, sizeof where, "%s:%d", manifest, sc->material_line[i]);
-        if (!sc->material_file[i][0] && material_lookup(g->dir, sc->materials[i], &info, where))
+        snprintf(where, sizeof where, "%s:%d", manifest, l->sc->material_line[i]);
+        if (!l->sc->material_file[i][0] && material_lookup(l->g->dir, l->sc->materials[i], &info, where))
             status = CLI_BAD_INPUT;
     }
     if (status)
         goto done;
-    for (i = 0; i < sc->material_count; i++) {
-        if (!(spectra[i] = malloc(sizeof *spectra[i]))) {
+    for (i = 0; i < l->sc->material_count; i++) {
+        material_source m;
+        if (!(l->spectra[i] = malloc(sizeof *l->spectra[i]))) {
             status = cli_oom(WHERE);
             goto done;
         }
-        material_source m = scene_material(sc, i);
-        if ((status = derive_parameters(g, &m, sc->sigma, sc->n1, spectra[i], &params[i])))
+        m = scene_material(l->sc, i);
+        if ((status = derive_parameters(l->g, &m, l->sc->sigma, l->sc->n1, l->spectra[i], &l->params[i])))
             goto done;
     }
-    in.sc = sc;
-    in.name = name;
-    in.manifest_name = strrchr(manifest, '/') ? strrchr(manifest, '/') + 1 : manifest;
-    in.manifest_path = manifest;
-    in.g = g;
-    in.params = params;
-    in.spectra = spectra;
-    in.glsl = glsl;
+    l->in.sc = l->sc;
+    l->in.name = l->name;
+    l->in.manifest_name = strrchr(manifest, '/') ? strrchr(manifest, '/') + 1 : manifest;
+    l->in.manifest_path = manifest;
+    l->in.g = l->g;
+    l->in.params = l->params;
+    l->in.spectra = l->spectra;
+    l->in.glsl = glsl;
+done:
+    if (status)
+        emit_loaded_free(l);
+    return status;
+}
+
+int emit_scene(const char *manifest, const char *out_path, const char *tex_path, const char *dir_option, int glsl)
+{
+    emit_loaded l;
+    int status;
+    cli_outfile out, tex;
+    if ((status = emit_load(manifest, dir_option, glsl, &l)))
+        return status;
     if ((status = cli_out_open(&out, out_path)))
         goto done;
     if (tex_path && (status = cli_out_open(&tex, tex_path))) {
         cli_out_abort(&out);
         goto done;
     }
-    status = glsl ? emit_glsl(out.f, tex_path ? tex.f : NULL, &in) : emit_header(out.f, &in);
+    status = glsl ? emit_glsl(out.f, tex_path ? tex.f : NULL, &l.in) : emit_header(out.f, &l.in);
     if (status) {
         cli_out_abort(&out);
         if (tex_path)
@@ -89,12 +110,6 @@ int emit_scene(const char *manifest, const char *out_path, const char *tex_path,
     }
     status = cli_out_commit(&out);
 done:
-    if (spectra)
-        for (i = 0; sc && i < sc->material_count; i++)
-            free(spectra[i]);
-    free(spectra);
-    free(params);
-    free(g);
-    free(sc);
+    emit_loaded_free(&l);
     return status;
 }

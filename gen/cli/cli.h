@@ -103,5 +103,6 @@ int cmd_bench(int argc, char **argv);
 int cmd_curve(int argc, char **argv);
 int cmd_extremes(int argc, char **argv);
 int cmd_import(int argc, char **argv);
+int cmd_viewer(int argc, char **argv);
 
 #endif

@@ -133,6 +133,9 @@ typedef struct model {
     /* The double reference on the binary32-rounded parameters, channel ch */
     double (*ch_ref)(const model_rgb *q, int ch, double c);
     model_batch batch_f32, batch_q15;
+    /* The runtime's closed-form hemispherical average (fresnel_*_avg_rgb,
+     * binary32); NULL where the runtime has none. */
+    fresnel_rgb (*avg_f32)(const model_rgb *q);
 } model;
 
 extern const model model_table[];

@@ -1,0 +1,47 @@
+/* fresnel viewer: a scene manifest in, one self-contained HTML page out. */
+#include <stdio.h>
+#include <string.h>
+
+#include "cli/cli.h"
+#include "viewer/viewer.h"
+
+#define WHERE "fresnel viewer"
+
+int cmd_viewer(int argc, char **argv)
+{
+    const char *manifest = NULL, *out_dir = NULL, *dir_option = NULL;
+    static const char *const options[] = {"-o", "--data", "--help", NULL};
+    int i;
+    for (i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            printf("usage: fresnel viewer SCENE -o DIR [--data DIR]\n\n"
+                   "Writes DIR/index.html: one self-contained page (JavaScript, GLSL and the scene's\n"
+                   "constants inline; no network access) that renders the scene's materials as a\n"
+                   "sphere over a plate, lit by a sky and three lights, with GGX (Smith G2) or\n"
+                   "normalised Blinn-Phong, each model of the scene beside (or split with, or\n"
+                   "differenced against) the spectral reference; with the model's CIEDE2000 figures\n"
+                   "and a plot of its curves. WebGL 2; output in sRGB or, where the browser has one,\n"
+                   "a Display-P3 drawing buffer. The models run the GLSL port (ports/glsl/fresnel.glsl)\n"
+                   "on the constants `fresnel gen --glsl` emits. `make viewer` writes the default\n"
+                   "scene's to build/viewer/.\n");
+            return 0;
+        }
+        if (argv[i][0] == '-' && argv[i][1]) {
+            const char *v;
+            if (!cli_in_list(argv[i], options))
+                return cli_bad_argument(WHERE, argv[i], options);
+            if (!(v = cli_option_value(WHERE, argc, argv, &i)))
+                return CLI_BAD_INPUT;
+            if (!strcmp(argv[i - 1], "-o"))
+                out_dir = v;
+            else
+                dir_option = v;
+        } else if (!manifest)
+            manifest = argv[i];
+        else
+            return cli_error(WHERE, "unexpected argument '%s' (one scene manifest)", argv[i]);
+    }
+    if (!manifest || !out_dir)
+        return cli_error(WHERE, "expected a scene manifest and -o DIR (fresnel viewer --help)");
+    return viewer_write(manifest, out_dir, dir_option);
+}

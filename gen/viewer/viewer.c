@@ -1,0 +1,268 @@
+/* `fresnel viewer`: one self-contained HTML page that renders a scene's
+ * materials with every model of the scene beside the spectral reference
+ * (Metzgar & Semwal's WebGL application [MS18]). The page template
+ * (ports/webgl/viewer.html) and the GLSL port (ports/glsl/fresnel.glsl) are
+ * embedded in the tool at build time (embed.sh); this file fills the
+ * template's slots with the scene's GLSL (`fresnel gen --glsl`), a
+ * dispatcher over its materials and models, and the data the page plots and
+ * tests against: the reference table, the C runtime's curves and the
+ * CIEDE2000 figures of the report's measure. */
+#include "viewer/viewer.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "cli/cli.h"
+#include "4_emit/emit.h"
+#include "4_emit/emit_glsl.h"
+#include "report/report.h"
+#include "scene/scene_eval.h"
+
+#define WHERE "fresnel viewer"
+
+extern const unsigned char viewer_page[];      /* ports/webgl/viewer.html */
+extern const unsigned char viewer_glsl_port[]; /* ports/glsl/fresnel.glsl */
+
+/* The curves' angles: theta = 0, 0.5, ..., 90 degrees, as `fresnel curve
+ * --samples VIEWER_ANGLES` prints them. */
+#define VIEWER_ANGLES 181
+static double viewer_cos(int k)
+{
+    return k == VIEWER_ANGLES - 1 ? 0.0 : cos(90.0 * k / (VIEWER_ANGLES - 1) * (3.14159265358979323846 / 180.0));
+}
+
+static void model_ident(const char *model, char *out, size_t size)
+{
+    size_t i;
+    for (i = 0; model[i] && i + 1 < size; i++)
+        out[i] = model[i] == '-' ? '_' : model[i];
+    out[i] = '\0';
+}
+
+/* vec3 fresnel_select(int mat, int model, float c): the scene's functions
+ * by index, in the scene's order of materials and models. */
+static void write_select(FILE *f, const emit_loaded *l)
+{
+    int i, m;
+    fprintf(f, "vec3 fresnel_select(int mat, int model, FRESNEL_HIGHP float c)\n{\n");
+    for (i = 0; i < l->sc->material_count; i++) {
+        fprintf(f, "    if (mat == %d) {\n", i);
+        for (m = 0; m < l->sc->model_count; m++) {
+            char id[SCENE_NAME_SIZE];
+            model_ident(l->sc->models[m], id, sizeof id);
+            fprintf(f, "        if (model == %d)\n            return fresnel_%s_%s_%s_rgb(c);\n", m, l->name,
+                    l->sc->materials[i], id);
+        }
+        fprintf(f, "    }\n");
+    }
+    fprintf(f, "    return vec3(0.0);\n}\n");
+}
+
+static void put_rgb(FILE *f, const double v[3])
+{
+    fprintf(f, "[%.9g,%.9g,%.9g]", v[0], v[1], v[2]);
+}
+
+/* M = out.xyz_to_rgb x (scene RGB -> XYZ), column-major for uniformMatrix3fv. */
+static int write_matrix(FILE *f, const gen_context *g, const lab_space *ls, const char *out_space)
+{
+    colour_space cs;
+    int r, c, k;
+    if (colour_space_load(g->dir, out_space, &g->cm, &cs))
+        return CLI_BAD_INPUT;
+    fprintf(f, "\"%s\":[", out_space);
+    for (c = 0; c < 3; c++)
+        for (r = 0; r < 3; r++) {
+            double v = 0.0;
+            for (k = 0; k < 3; k++)
+                v += cs.xyz_to_rgb[r][k] * ls->rgb_to_xyz[k][c];
+            fprintf(f, "%s%.9g", c + r ? "," : "", v);
+        }
+    fprintf(f, "]");
+    return 0;
+}
+
+static int write_data(FILE *f, const emit_loaded *l)
+{
+    const scene *sc = l->sc;
+    const gen_context *g = l->g;
+    lab_space ls;
+    int i, m, k;
+    lab_space_init(&ls, &g->cs);
+    fprintf(f, "{\"scene\":\"%s\",\"space\":\"%s\",\"gamut\":\"%s\",\"refN\":%d,\n\"materials\":[", l->name, sc->space,
+            sc->gamut, VIEWER_REF_NODES);
+    for (i = 0; i < sc->material_count; i++) {
+        const char *name = l->params[i].info.name;
+        fprintf(f, "%s{\"id\":\"%s\",\"name\":\"", i ? "," : "", sc->materials[i]);
+        for (; *name; name++) /* names are printable text; keep JSON's two specials out */
+            fputc(*name == '"' || *name == '\\' ? '\'' : *name, f);
+        fprintf(f, "\"}");
+    }
+    fprintf(f, "],\n\"models\":[");
+    for (m = 0; m < sc->model_count; m++)
+        fprintf(f, "%s\"%s\"", m ? "," : "", sc->models[m]);
+    fprintf(f, "],\n\"theta\":[");
+    for (k = 0; k < VIEWER_ANGLES; k++)
+        fprintf(f, "%s%.6g", k ? "," : "", 90.0 * k / (VIEWER_ANGLES - 1));
+    fprintf(f, "],\n\"cos\":[");
+    for (k = 0; k < VIEWER_ANGLES; k++)
+        fprintf(f, "%s%.9g", k ? "," : "", (double)(float)viewer_cos(k));
+    fprintf(f, "],\n\"reference\":[");
+    for (i = 0; i < sc->material_count; i++)
+        for (k = 0; k < VIEWER_REF_NODES; k++) {
+            double x = (double)k / (VIEWER_REF_NODES - 1), rgb[3];
+            ground_truth(l->spectra[i], &g->cm, &g->cs, l->params[i].n1, x * x, rgb);
+            fprintf(f, "%s%.9g,%.9g,%.9g", i + k ? "," : "", rgb[0], rgb[1], rgb[2]);
+        }
+    fprintf(f, "],\n\"unclipped\":[");
+    for (i = 0; i < sc->material_count; i++) {
+        fprintf(f, "%s[", i ? "," : "");
+        for (k = 0; k < VIEWER_ANGLES; k++) {
+            double rgb[3];
+            ground_truth(l->spectra[i], &g->cm, &g->cs, l->params[i].n1, viewer_cos(k), rgb);
+            fprintf(f, "%s", k ? "," : "");
+            put_rgb(f, rgb);
+        }
+        fprintf(f, "]");
+    }
+    fprintf(f, "],\n\"curves\":[");
+    for (i = 0; i < sc->material_count; i++) {
+        fprintf(f, "%s[", i ? "," : "");
+        for (m = 0; m < sc->model_count; m++) {
+            scene_model sm;
+            if (scene_model_prepare(sc->models[m], scene_lut_spacing(sc), l->spectra[i], g, &l->params[i], &sm))
+                return CLI_BAD_INPUT;
+            fprintf(f, "%s[", m ? "," : "");
+            for (k = 0; k < VIEWER_ANGLES; k++) {
+                float v[3];
+                double d[3];
+                scene_model_eval(&sm, &l->params[i], (float)viewer_cos(k), v);
+                d[0] = v[0];
+                d[1] = v[1];
+                d[2] = v[2];
+                fprintf(f, "%s", k ? "," : "");
+                put_rgb(f, d);
+            }
+            fprintf(f, "]");
+            scene_model_free(&sm);
+        }
+        fprintf(f, "]");
+    }
+    /* The report's measure: CIEDE2000 over theta 0..90 in 1 degree steps,
+     * binary32, against the truth under the policy and unclipped. */
+    fprintf(f, "],\n\"report\":[");
+    for (i = 0; i < sc->material_count; i++) {
+        fprintf(f, "%s[", i ? "," : "");
+        for (m = 0; m < sc->model_count; m++) {
+            static double gt[REPORT_ANGLES][3], raw[REPORT_ANGLES][3], v[REPORT_ANGLES][3];
+            double mean, rms, max, raw_mean, raw_max;
+            scene_model sm;
+            int a;
+            if (scene_model_prepare(sc->models[m], scene_lut_spacing(sc), l->spectra[i], g, &l->params[i], &sm))
+                return CLI_BAD_INPUT;
+            for (a = 0; a < REPORT_ANGLES; a++) {
+                float rgb[3];
+                ground_truth_gamut(l->spectra[i], g, &l->params[i], report_cos(a), gt[a]);
+                ground_truth(l->spectra[i], &g->cm, &g->cs, l->params[i].n1, report_cos(a), raw[a]);
+                scene_model_eval(&sm, &l->params[i], (float)report_cos(a), rgb);
+                v[a][0] = rgb[0];
+                v[a][1] = rgb[1];
+                v[a][2] = rgb[2];
+            }
+            scene_model_free(&sm);
+            report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])v, &mean, &rms, &max);
+            report_curve_de(&ls, (const double(*)[3])raw, (const double(*)[3])v, &raw_mean, &rms, &raw_max);
+            fprintf(f, "%s{\"mean\":%.6g,\"max\":%.6g,\"raw_mean\":%.6g,\"raw_max\":%.6g}", m ? "," : "", mean, max,
+                    raw_mean, raw_max);
+        }
+        fprintf(f, "]");
+    }
+    fprintf(f, "],\n\"toOutput\":{");
+    if (write_matrix(f, g, &ls, "srgb"))
+        return CLI_BAD_INPUT;
+    fprintf(f, ",");
+    if (write_matrix(f, g, &ls, "display-p3"))
+        return CLI_BAD_INPUT;
+    fprintf(f, "}}");
+    return 0;
+}
+
+/* The template with each @@SLOT@@ replaced by what fill() writes. */
+static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene)
+{
+    const char *p = (const char *)viewer_page;
+    while (*p) {
+        const char *slot = strstr(p, "@@");
+        const char *end = slot ? strstr(slot + 2, "@@") : NULL;
+        size_t len;
+        int status = 0;
+        if (!slot || !end) {
+            fputs(p, f);
+            break;
+        }
+        fwrite(p, 1, (size_t)(slot - p), f);
+        len = (size_t)(end - slot - 2);
+        if (len == 5 && !strncmp(slot + 2, "TITLE", len))
+            fprintf(f, "Fresnel viewer: scene %s, %s, gamut %s", l->name, l->sc->space, l->sc->gamut);
+        else if (len == 9 && !strncmp(slot + 2, "GLSL_PORT", len))
+            fputs((const char *)viewer_glsl_port, f);
+        else if (len == 10 && !strncmp(slot + 2, "GLSL_SCENE", len))
+            fputs(glsl_scene, f);
+        else if (len == 11 && !strncmp(slot + 2, "GLSL_SELECT", len))
+            write_select(f, l);
+        else if (len == 4 && !strncmp(slot + 2, "DATA", len))
+            status = write_data(f, l);
+        else
+            return cli_error(WHERE, "the page template has an unknown slot '%.*s'", (int)len, slot + 2);
+        if (status)
+            return status;
+        p = end + 2;
+    }
+    return 0;
+}
+
+int viewer_write(const char *manifest, const char *out_dir, const char *dir_option)
+{
+    emit_loaded l;
+    cli_outfile out;
+    char *glsl = NULL, path[CLI_PATH_MAX];
+    size_t glsl_len = 0;
+    FILE *mem;
+    int status;
+    if ((status = emit_load(manifest, dir_option, 1, &l)))
+        return status;
+    if (!(mem = open_memstream(&glsl, &glsl_len))) {
+        status = cli_oom(WHERE);
+        goto done;
+    }
+    status = emit_glsl(mem, NULL, &l.in);
+    if (fclose(mem) && !status)
+        status = cli_oom(WHERE);
+    if (status)
+        goto done;
+    if (mkdir(out_dir, 0777) && errno != EEXIST) {
+        status = cli_error(out_dir, "cannot create the directory: %s", strerror(errno));
+        goto done;
+    }
+    if (snprintf(path, sizeof path, "%s/index.html", out_dir) >= (int)sizeof path) {
+        status = cli_error(out_dir, "path too long");
+        goto done;
+    }
+    if ((status = cli_out_open(&out, path)))
+        goto done;
+    if ((status = write_page(out.f, &l, glsl))) {
+        cli_out_abort(&out);
+        goto done;
+    }
+    status = cli_out_commit(&out);
+    if (!status)
+        fprintf(stderr, "%s: wrote %s\n", WHERE, path);
+done:
+    free(glsl);
+    emit_loaded_free(&l);
+    return status;
+}

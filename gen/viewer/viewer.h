@@ -1,0 +1,15 @@
+/* `fresnel viewer` (viewer.c): a scene as one self-contained HTML page that
+ * renders its materials with each of its models beside the spectral
+ * reference, in WebGL 2, through the GLSL port. */
+#ifndef FRESNEL_VIEWER_H
+#define FRESNEL_VIEWER_H
+
+/* Nodes of the page's reference table, uniform in sqrt(c). */
+#define VIEWER_REF_NODES 1024
+
+/* Load the manifest, derive its materials and write OUT_DIR/index.html
+ * (the directory is made if missing; the file written to a temporary and
+ * renamed only on success). 0, or a CLI_* status after a message. */
+int viewer_write(const char *manifest, const char *out_dir, const char *dir_option);
+
+#endif
