@@ -33,6 +33,7 @@ all   file /usr/include/GL/osmesa.h libosmesa6-dev
 all   cmd  cmake                    cmake
 all   cmd  glslangValidator         glslang-tools
 all   cmd  spirv-val                spirv-tools
+all   cmd  chromium                 chromium
 cross cmd  arm-none-eabi-gcc        gcc-arm-none-eabi
 cross cmd  arm-none-eabi-nm         binutils-arm-none-eabi
 cross dir  /usr/lib/arm-none-eabi/newlib libnewlib-arm-none-eabi

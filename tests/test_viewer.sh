@@ -1,0 +1,115 @@
+#!/bin/sh
+# `fresnel viewer` (gen/viewer/) and its page in a real browser engine:
+# headless Chromium with software GL (SwiftShader), no display.
+# - bad input: a missing manifest, a scene the GLSL port cannot express:
+#   exit 2, a message, no page (and an existing page left as it was);
+# - the page names no network resource; in Chromium it loads with no
+#   console message, requests nothing (its own count of resource entries),
+#   and its test hook (#test) renders every material x model of the default
+#   scene, and the spectral reference, at the cosines of theta = 0, 0.5, ...,
+#   90 degrees into a float framebuffer and prints the pixels;
+# - each pixel equals the C runtime's value (`fresnel curve`, binary32) within
+#   1e-6 for the models (the GLSL port's functions on the constants `fresnel
+#   gen --glsl` emits) and 2e-6 for the reference (the page's 1024-node table
+#   of the unclipped truth, linear in sqrt(c));
+# - a screenshot per view goes to $BUILD/viewer/.
+# The browser part runs once (not in the sanitizer pass, whose subject is
+# the C tool).
+F="$BUILD/fresnel"
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+pass() { echo "PASS viewer: $1"; }
+fail() { echo "FAIL viewer: $1"; }
+
+"$F" viewer "$t/missing.scene" -o "$t/out" 2>"$t/err"
+rc=$?
+[ "$rc" -eq 2 ] && [ ! -e "$t/out/index.html" ] && grep -q 'missing.scene' "$t/err" &&
+    pass "a missing manifest: exit 2, no page ($(head -1 "$t/err" | sed "s|$t/||"))" ||
+    fail "missing manifest: exit $rc, $(cat "$t/err")"
+printf 'materials = au\nmodels = lut16\ntypes = q15\nlut_spacing = grazing-pl\n' >"$t/pl.scene"
+mkdir -p "$t/keep"
+echo old >"$t/keep/index.html"
+"$F" viewer "$t/pl.scene" -o "$t/keep" 2>"$t/err"
+rc=$?
+[ "$rc" -eq 2 ] && [ "$(cat "$t/keep/index.html")" = old ] && grep -q 'pl.scene:4' "$t/err" &&
+    [ -z "$(ls "$t/keep" | grep -v '^index.html$')" ] &&
+    pass "a scene the GLSL port cannot express: exit 2 at its line, the old page untouched, no temporary ($(head -1 "$t/err" | sed "s|$t/||"))" ||
+    fail "grazing-pl scene: exit $rc, $(cat "$t/err")"
+
+out="$BUILD/viewer"
+if ! "$F" viewer data/scenes/default.scene -o "$out" 2>"$t/err"; then
+    fail "fresnel viewer on the default scene: $(cat "$t/err")"
+    exit 0
+fi
+page="$out/index.html"
+if grep -qiE '(src|href)=["'"'"']?(https?:|//)|https?://' "$page"; then
+    fail "the page names a network resource: $(grep -oiE '(src|href)=.{0,40}|https?://[^ ]{0,40}' "$page" | head -3)"
+else
+    pass "the page is one self-contained file ($(wc -c <"$page") bytes) naming no network resource"
+fi
+case "$BUILD" in *asan*) exit 0 ;; esac
+if ! command -v chromium >/dev/null 2>&1; then
+    fail "chromium not found (tests/deps.sh installs it)"
+    exit 0
+fi
+browse() { # log, then chromium arguments
+    log=$1
+    shift
+    HOME="$t/home" timeout 180 chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader \
+        --no-first-run --disable-extensions --enable-logging=stderr --v=0 --user-data-dir="$t/profile" \
+        --virtual-time-budget=30000 "$@" 2>"$log"
+}
+abs=$(cd "$out" && pwd)/index.html
+browse "$t/log" --dump-dom "file://$abs#test" >"$t/page"
+# the test hook's lines: the text of <pre id="test-result">
+sed -n '/<pre id="test-result">/,/<\/pre>/p' "$t/page" | sed 's/.*<pre id="test-result">//; s/<\/pre>.*//' >"$t/dom"
+if grep -q '^DONE$' "$t/dom" && ! grep -q '^ERROR' "$t/dom"; then
+    pass "the page renders its probes in Chromium (WebGL 2 on SwiftShader)"
+else
+    fail "the page did not finish: $(grep ERROR "$t/dom" | head -3) $(grep CONSOLE "$t/log" | head -3)"
+    exit 0
+fi
+if grep -q 'CONSOLE' "$t/log"; then
+    fail "console messages: $(grep CONSOLE "$t/log" | head -3)"
+else
+    pass "no console message while loading and rendering"
+fi
+grep -q '^RESOURCES 0$' "$t/dom" && pass "no network request (the page's resource entries: 0)" ||
+    fail "resources fetched: $(grep '^RESOURCES' "$t/dom")"
+
+models=$(awk -F= '/^models/ { sub(/#.*/, "", $2); print $2 }' data/scenes/default.scene)
+materials=$(awk -F= '/^materials/ { sub(/#.*/, "", $2); print $2 }' data/scenes/default.scene)
+ok=1
+worst=""
+for m in $materials; do
+    "$F" curve --material "$m" --models "$models" --samples 181 >"$t/$m.csv" || ok=0
+    grep "^PROBE $m " "$t/dom" >"$t/$m.probe"
+    r=$(awk -F, -v mat="$m" 'NR == FNR { if (FNR == 1) { for (i = 1; i <= NF; i++) col[$i] = i; next } row[$1 + 0] = $0; next }
+        { split($0, p, " "); model = p[3]; split(row[p[4] + 0], c, ","); base = model == "reference" ? "unclipped" : model
+          n[model]++
+          for (ch = 0; ch < 3; ch++) { k = col[base "_" substr("rgb", ch + 1, 1)]
+              if (!k) { print "BAD no column " base; exit }
+              d = p[5 + ch] - c[k]; if (d < 0) d = -d; if (d > w[model]) w[model] = d } }
+        END { for (model in w) { tol = model == "reference" ? 2e-6 : 1e-6
+                  printf "%s %s %d %.3g %s\n", mat, model, n[model], w[model], w[model] <= tol ? "ok" : "over" } }' "$t/$m.csv" "$t/$m.probe")
+    echo "$r" | grep -q 'over\|BAD' && ok=0
+    [ "$(echo "$r" | grep -c ' 181 ')" -eq $(($(echo "$models" | wc -w) + 1)) ] || ok=0
+    worst="$worst$(echo "$r" | awk '{ printf "%s %s %s; ", $1, $2, $4 }')"
+done
+echo "NOTE viewer: largest |page - C runtime| per material and model: $worst"
+[ "$ok" -eq 1 ] && pass "every model of every material, and the reference, at 181 angles: the page's pixels equal the C runtime within 1e-6 (reference 2e-6)" ||
+    fail "page and C runtime differ: $worst"
+
+shots=0
+for view in "material=au&model=f82&dist=1" "material=cu&model=lut32&dist=1" "material=ag&model=schlick&dist=0" \
+    "material=al&model=exact&dist=1&mode=1" "material=cr&model=lut16-cubic&dist=1" \
+    "material=au&model=schlick&dist=1&mode=2"; do
+    name=$(echo "$view" | sed 's/material=//; s/&model=/-/; s/&dist=1/-ggx/; s/&dist=0/-blinn-phong/; s/&mode=1/-split/; s/&mode=2/-difference/')
+    browse "$t/shot.log" --window-size=1000,1000 --screenshot="$abs.$name.png" "file://$abs#$view" >/dev/null
+    png="$out/index.html.$name.png"
+    if [ -s "$png" ] && [ "$(wc -c <"$png")" -gt 20000 ]; then
+        mv "$png" "$out/$name.png"
+        shots=$((shots + 1))
+    fi
+done
+[ "$shots" -eq 6 ] && pass "6 screenshots in $out/ (one per view)" || fail "$shots of 6 screenshots written"
