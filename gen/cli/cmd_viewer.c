@@ -9,12 +9,12 @@
 
 int cmd_viewer(int argc, char **argv)
 {
-    const char *manifest = NULL, *out_dir = NULL, *dir_option = NULL;
-    static const char *const options[] = {"-o", "--data", "--help", NULL};
+    const char *manifest = NULL, *out_dir = NULL, *dir_option = NULL, *cross_path = NULL;
+    static const char *const options[] = {"-o", "--data", "--cross", "--help", NULL};
     int i;
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: fresnel viewer SCENE -o DIR [--data DIR]\n\n"
+            printf("usage: fresnel viewer SCENE -o DIR [--cross FILE] [--data DIR]\n\n"
                    "Writes DIR/index.html: one self-contained page (JavaScript, GLSL and the scene's\n"
                    "constants inline; no network access) that renders the scene's materials as a\n"
                    "sphere over a plate, lit by a sky and three lights, with GGX (Smith G2) or\n"
@@ -23,7 +23,9 @@ int cmd_viewer(int argc, char **argv)
                    "and a plot of its curves. WebGL 2; output in sRGB or, where the browser has one,\n"
                    "a Display-P3 drawing buffer. The models run the GLSL port (ports/glsl/fresnel.glsl)\n"
                    "on the constants `fresnel gen --glsl` emits. `make viewer` writes the default\n"
-                   "scene's to build/viewer/.\n");
+                   "scene's to build/viewer/. Beside each model: its CIEDE2000 figures, its time per\n"
+                   "call on this host and, with --cross FILE (the output of `make cross-count`), its\n"
+                   "instructions on the Cortex-M0.\n");
             return 0;
         }
         if (argv[i][0] == '-' && argv[i][1]) {
@@ -34,6 +36,8 @@ int cmd_viewer(int argc, char **argv)
                 return CLI_BAD_INPUT;
             if (!strcmp(argv[i - 1], "-o"))
                 out_dir = v;
+            else if (!strcmp(argv[i - 1], "--cross"))
+                cross_path = v;
             else
                 dir_option = v;
         } else if (!manifest)
@@ -43,5 +47,5 @@ int cmd_viewer(int argc, char **argv)
     }
     if (!manifest || !out_dir)
         return cli_error(WHERE, "expected a scene manifest and -o DIR (fresnel viewer --help)");
-    return viewer_write(manifest, out_dir, dir_option);
+    return viewer_write(manifest, out_dir, dir_option, cross_path);
 }

@@ -372,47 +372,47 @@ BATCHES(lut_cubic)
 #define SCENE(id) r_##id, rq_##id, NULL, rr_##id, batch_f32_##id, batch_q15_##id
 #endif
 /* Rows offered in eval only carry no scene evaluators. */
-#define NO_SCENE 0, 0, ETA_FIT, LUT_PLAIN, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL
+#define NO_SCENE 0, 0, ETA_FIT, LUT_PLAIN, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL
 #define EVAL_SCENE (MODEL_EVAL | MODEL_SCENE)
 
 const model model_table[] = {
     {"schlick", EVAL_SCENE, "F0", d_schlick, s_schlick, FRESNEL_BOUND_SCHLICK,
      q_schlick, FRESNEL_BOUND_SCHLICK_Q15, F16(h_schlick), FRESNEL_BOUND_SCHLICK_F16,
-     MP_F0, 0, ETA_FIT, LUT_PLAIN, 0, "fresnel_schlick_rgb(@f0, c)", SCENE(schlick), a_schlick},
+     MP_F0, 0, ETA_FIT, LUT_PLAIN, 0, "fresnel_schlick_rgb(@f0, c)", SCENE(schlick), a_schlick, "schlick"},
     {"schlick-gen", MODEL_EVAL, "F0, --f90, --p", d_schlick_gen, s_schlick_gen, FRESNEL_BOUND_SCHLICK_GEN,
      q_schlick_gen, FRESNEL_BOUND_SCHLICK_GEN_Q15, F16(h_schlick_gen), FRESNEL_BOUND_SCHLICK_GEN_F16, NO_SCENE},
     {"lsk", EVAL_SCENE, "eta, kappa", d_lsk, s_lsk, FRESNEL_BOUND_LSK,
      q_lsk, FRESNEL_BOUND_LSK_Q15, F16(h_lsk), FRESNEL_BOUND_LSK_F16,
-     MP_ETA_FIT, MQ_LSK, ETA_FIT, LUT_PLAIN, 0, "fresnel_lsk_rgb(@eta, @kappa, c)", SCENE(lsk), NULL},
+     MP_ETA_FIT, MQ_LSK, ETA_FIT, LUT_PLAIN, 0, "fresnel_lsk_rgb(@eta, @kappa, c)", SCENE(lsk), NULL, "lsk"},
     {"lsk-comp", EVAL_SCENE, "eta, kappa, LSK a and alpha", d_lsk_comp, s_lsk_comp, FRESNEL_BOUND_LSK_COMP,
      q_lsk_comp, FRESNEL_BOUND_LSK_COMP_Q15, F16(h_lsk_comp), FRESNEL_BOUND_LSK_COMP_F16,
      MP_ETA_FIT | MP_LSK, MQ_LSK_COMP, ETA_FIT, LUT_PLAIN, 0,
-     "fresnel_lsk_comp_rgb(@eta, @kappa, @lsk_a, @lsk_alpha, c)", SCENE(lsk_comp), NULL},
+     "fresnel_lsk_comp_rgb(@eta, @kappa, @lsk_a, @lsk_alpha, c)", SCENE(lsk_comp), NULL, "lsk-comp"},
     {"f82", EVAL_SCENE, "F0, F82", d_f82, s_f82, FRESNEL_BOUND_F82,
      q_f82, FRESNEL_BOUND_F82_Q15, F16(h_f82), FRESNEL_BOUND_F82_F16,
-     MP_F0 | MP_F82, 0, ETA_FIT, LUT_PLAIN, 0, "fresnel_f82_rgb(@f0, @f82, c)", SCENE(f82), a_f82},
+     MP_F0 | MP_F82, 0, ETA_FIT, LUT_PLAIN, 0, "fresnel_f82_rgb(@f0, @f82, c)", SCENE(f82), a_f82, "f82"},
     {"gulbrandsen", EVAL_SCENE, "r = F0, edge tint g", d_gulbrandsen, s_gulbrandsen, FRESNEL_BOUND_GULBRANDSEN,
      q_gulbrandsen, FRESNEL_BOUND_GULBRANDSEN_Q15, F16(h_gulbrandsen), FRESNEL_BOUND_GULBRANDSEN_F16,
      MP_GULB, 0, ETA_FIT, LUT_PLAIN, 0, "fresnel_gulbrandsen_rgb(@gulbrandsen_r, @gulbrandsen_g, c)",
-     SCENE(gulbrandsen), NULL},
+     SCENE(gulbrandsen), NULL, "gulbrandsen"},
     {"cook-torrance", EVAL_SCENE, "F0 and the same eta, kappa as representative IOR", d_cook_torrance,
      s_cook_torrance, FRESNEL_BOUND_COOK_TORRANCE,
      q_cook_torrance, FRESNEL_BOUND_COOK_TORRANCE_Q15, F16(h_cook_torrance), FRESNEL_BOUND_COOK_TORRANCE_F16,
      MP_F0 | MP_CT, MQ_CT, ETA_FIT, LUT_PLAIN, 0, "fresnel_cook_torrance_rgb(@f0, @ct_eta, @ct_kappa, c)",
-     SCENE(cook_torrance), NULL},
+     SCENE(cook_torrance), NULL, "cook-torrance"},
     {"exact", EVAL_SCENE | MODEL_EXACT, "eta, kappa (dielectric form when kappa = 0)", d_exact, s_exact,
      FRESNEL_BOUND_CONDUCTOR, q_exact, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_exact), FRESNEL_BOUND_CONDUCTOR_F16,
-     MP_ETA_FIT, MQ_IOR, ETA_FIT, LUT_PLAIN, 0, "fresnel_conductor_rgb(@eta, @kappa, c)", SCENE(conductor), NULL},
+     MP_ETA_FIT, MQ_IOR, ETA_FIT, LUT_PLAIN, 0, "fresnel_conductor_rgb(@eta, @kappa, c)", SCENE(conductor), NULL, "exact-conductor"},
     /* Metzgar's Gaussian-window and point-sampled eta, kappa: scene models
      * only; as functions of eta, kappa they are the exact conductor. */
     {"exact-gaussian", MODEL_SCENE | MODEL_EXACT, "eta', kappa' in a Gaussian window", d_conductor, s_conductor,
      FRESNEL_BOUND_CONDUCTOR, q_conductor, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_conductor), FRESNEL_BOUND_CONDUCTOR_F16,
      MP_ETA_GAUSS, MQ_IOR_GAUSS, ETA_GAUSS, LUT_PLAIN, 0, "fresnel_conductor_rgb(@eta_gaussian, @kappa_gaussian, c)",
-     SCENE(conductor), NULL},
+     SCENE(conductor), NULL, "exact-conductor"},
     {"exact-point", MODEL_SCENE | MODEL_EXACT, "eta, kappa point-sampled", d_conductor, s_conductor,
      FRESNEL_BOUND_CONDUCTOR, q_conductor, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_conductor), FRESNEL_BOUND_CONDUCTOR_F16,
      MP_ETA_POINT, MQ_IOR_POINT, ETA_POINT, LUT_PLAIN, 0, "fresnel_conductor_rgb(@eta_point, @kappa_point, c)",
-     SCENE(conductor), NULL},
+     SCENE(conductor), NULL, "exact-conductor"},
     {"exact-conductor", MODEL_EVAL | MODEL_EXACT, "eta, kappa (conductor form always)", d_conductor, s_conductor,
      FRESNEL_BOUND_CONDUCTOR, q_conductor, FRESNEL_BOUND_CONDUCTOR_Q15, F16(h_conductor), FRESNEL_BOUND_CONDUCTOR_F16,
      NO_SCENE},
@@ -421,7 +421,7 @@ const model model_table[] = {
      FRESNEL_BOUND_DIELECTRIC_F16, NO_SCENE},
     {"approx-conductor", EVAL_SCENE, "eta, kappa", d_approx, s_approx, FRESNEL_BOUND_APPROX_CONDUCTOR,
      q_approx, FRESNEL_BOUND_APPROX_CONDUCTOR_Q15, F16(h_approx), FRESNEL_BOUND_APPROX_CONDUCTOR_F16,
-     MP_ETA_FIT, MQ_NK, ETA_FIT, LUT_PLAIN, 0, "fresnel_approx_conductor_rgb(@eta, @kappa, c)", SCENE(approx), NULL},
+     MP_ETA_FIT, MQ_NK, ETA_FIT, LUT_PLAIN, 0, "fresnel_approx_conductor_rgb(@eta, @kappa, c)", SCENE(approx), NULL, "approx-conductor"},
     {"schlick-internal", MODEL_EVAL, "F0, eta (eta < 1: from inside the denser medium)", d_internal,
      s_internal, FRESNEL_BOUND_SCHLICK_INTERNAL,
      q_internal, FRESNEL_BOUND_SCHLICK_INTERNAL_Q15, F16(h_internal), FRESNEL_BOUND_SCHLICK_INTERNAL_F16, NO_SCENE},
@@ -431,14 +431,14 @@ const int model_count = (int)(sizeof model_table / sizeof model_table[0]);
 /* The LUT forms: a family of scene models named by pattern, lutN (plain),
  * lutN-residual (from Schlick's F0) and lutN-cubic; one row per form and
  * node spacing, as the runtime has one function for each. */
-#define LUT_ROW(name, reads, form, uniform, id, avg) \
-    {name, MODEL_SCENE | MODEL_LUT, "", NULL, NULL, 0.0f, NULL, 0.0, NULL, 0.0, reads, 0, ETA_FIT, form, uniform, NULL, SCENE(id), avg}
+#define LUT_ROW(name, reads, form, uniform, id, avg, cross) \
+    {name, MODEL_SCENE | MODEL_LUT, "", NULL, NULL, 0.0f, NULL, 0.0, NULL, 0.0, reads, 0, ETA_FIT, form, uniform, NULL, SCENE(id), avg, cross}
 static const model lut_table[] = {
-    LUT_ROW("lutN", 0, LUT_PLAIN, 0, lut, a_lut),
-    LUT_ROW("lutN", 0, LUT_PLAIN, 1, lut_lin, a_lut_lin),
-    LUT_ROW("lutN-residual", MP_F0, LUT_RESIDUAL, 0, lut_res, NULL),
-    LUT_ROW("lutN-residual", MP_F0, LUT_RESIDUAL, 1, lut_lin_res, NULL),
-    LUT_ROW("lutN-cubic", 0, LUT_CUBIC, 0, lut_cubic, a_lut_cubic),
+    LUT_ROW("lutN", 0, LUT_PLAIN, 0, lut, a_lut, "lut u16"),
+    LUT_ROW("lutN", 0, LUT_PLAIN, 1, lut_lin, a_lut_lin, "lut-linear u16"),
+    LUT_ROW("lutN-residual", MP_F0, LUT_RESIDUAL, 0, lut_res, NULL, "lut-residual s16"),
+    LUT_ROW("lutN-residual", MP_F0, LUT_RESIDUAL, 1, lut_lin_res, NULL, NULL),
+    LUT_ROW("lutN-cubic", 0, LUT_CUBIC, 0, lut_cubic, a_lut_cubic, "lut-cubic u16"),
 };
 const char model_lut_patterns[] = "lutN lutN-residual lutN-cubic";
 

@@ -136,6 +136,9 @@ typedef struct model {
     /* The runtime's closed-form hemispherical average (fresnel_*_avg_rgb,
      * binary32); NULL where the runtime has none. */
     fresnel_rgb (*avg_f32)(const model_rgb *q);
+    /* Its row in `make cross-count`'s tables (tests/cross/fixed_models.h),
+     * the Q15 function a firmware calls for it; NULL where there is none. */
+    const char *cross_row;
 } model;
 
 extern const model model_table[];

@@ -46,6 +46,9 @@ extern const report_type report_types[];
 extern const int report_type_count;
 /* ns per RGB evaluation of q in type t (bench.c): median of runs batches of n. */
 double report_time(const report_type *t, const report_prepared *q, int n, int runs);
+/* The Cortex-M0 mean instructions per call of row `name` in a `make
+ * cross-count` output file; NaN when the file or the row is missing. */
+double report_m0_count(const char *path, const char *name);
 
 typedef struct report_cell {
     double de_mean, de_rms, de_max; /* CIEDE2000 against the ground truth under the gamut policy */

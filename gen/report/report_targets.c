@@ -244,7 +244,7 @@ static void speed_targets(FILE *f, int timing)
 
 /* Mean instructions of row `name` in the "== m0 fixed point" section: the
  * row is the name, spaces, then mean, min and max. NaN when absent. */
-static double m0_count(const char *path, const char *name)
+double report_m0_count(const char *path, const char *name)
 {
     FILE *in = fopen(path, "r");
     char line[512];
@@ -309,8 +309,8 @@ static void m0_targets(const report_run *r, FILE *f)
         return;
     }
     for (k = 0; k < 5; k++) {
-        double fast = m0_count(r->cross_path, counts[k].row);
-        double lib = counts[k].library_row ? m0_count(r->cross_path, counts[k].library_row) : NAN;
+        double fast = report_m0_count(r->cross_path, counts[k].row);
+        double lib = counts[k].library_row ? report_m0_count(r->cross_path, counts[k].library_row) : NAN;
         char what[160], goal[32];
         snprintf(what, sizeof what, "Cortex-M0 fixed point, %s: instructions per evaluation (qemu trace)",
                  counts[k].what);

@@ -19,6 +19,7 @@
 #include "cli/cli.h"
 #include "4_emit/emit.h"
 #include "4_emit/emit_glsl.h"
+#include "bench/bench.h"
 #include "report/report.h"
 #include "scene/scene_eval.h"
 
@@ -86,7 +87,35 @@ static int write_matrix(FILE *f, const gen_context *g, const lab_space *ls, cons
     return 0;
 }
 
-static int write_data(FILE *f, const emit_loaded *l)
+/* What one call costs: the binary32 RGB evaluation timed on this host
+ * (the report's timing: median of 3 batches of 2^16), and, given a `make
+ * cross-count` output, the Q15 function's instructions on the Cortex-M0. */
+static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_path)
+{
+    scene_model sm;
+    report_prepared *q;
+    int t;
+    double ns = NAN, m0 = NAN;
+    for (t = 0; t < report_type_count && strcmp(report_types[t].name, "f32"); t++)
+        ;
+    if (!scene_model_prepare(l->sc->models[m], scene_lut_spacing(l->sc), l->spectra[0], l->g, &l->params[0], &sm)) {
+        if ((q = report_prepare(&sm, &l->params[0]))) {
+            ns = report_time(&report_types[t], q, 1 << 16, 3);
+            report_prepared_free(q);
+        }
+        if (cross_path && sm.def->cross_row)
+            m0 = report_m0_count(cross_path, sm.def->cross_row);
+        scene_model_free(&sm);
+    }
+    fprintf(f, "\"");
+    if (!isnan(ns))
+        fprintf(f, "%.1f ns per RGB call here (binary32, %s)", ns, bench_compiler());
+    if (!isnan(m0))
+        fprintf(f, "; %.0f instructions per channel on the Cortex-M0 (Q15)", m0);
+    fprintf(f, "\"");
+}
+
+static int write_data(FILE *f, const emit_loaded *l, const char *cross_path)
 {
     const scene *sc = l->sc;
     const gen_context *g = l->g;
@@ -181,6 +210,11 @@ static int write_data(FILE *f, const emit_loaded *l)
         }
         fprintf(f, "]");
     }
+    fprintf(f, "],\n\"cost\":[");
+    for (m = 0; m < sc->model_count; m++) {
+        fprintf(f, "%s", m ? "," : "");
+        write_cost(f, l, m, cross_path);
+    }
     fprintf(f, "],\n\"toOutput\":{");
     if (write_matrix(f, g, &ls, "srgb"))
         return CLI_BAD_INPUT;
@@ -192,7 +226,7 @@ static int write_data(FILE *f, const emit_loaded *l)
 }
 
 /* The template with each @@SLOT@@ replaced by what fill() writes. */
-static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene)
+static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene, const char *cross_path)
 {
     const char *p = (const char *)viewer_page;
     while (*p) {
@@ -215,7 +249,7 @@ static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene)
         else if (len == 11 && !strncmp(slot + 2, "GLSL_SELECT", len))
             write_select(f, l);
         else if (len == 4 && !strncmp(slot + 2, "DATA", len))
-            status = write_data(f, l);
+            status = write_data(f, l, cross_path);
         else
             return cli_error(WHERE, "the page template has an unknown slot '%.*s'", (int)len, slot + 2);
         if (status)
@@ -225,7 +259,7 @@ static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene)
     return 0;
 }
 
-int viewer_write(const char *manifest, const char *out_dir, const char *dir_option)
+int viewer_write(const char *manifest, const char *out_dir, const char *dir_option, const char *cross_path)
 {
     emit_loaded l;
     cli_outfile out;
@@ -254,7 +288,7 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
     }
     if ((status = cli_out_open(&out, path)))
         goto done;
-    if ((status = write_page(out.f, &l, glsl))) {
+    if ((status = write_page(out.f, &l, glsl, cross_path))) {
         cli_out_abort(&out);
         goto done;
     }

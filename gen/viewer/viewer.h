@@ -9,7 +9,8 @@
 
 /* Load the manifest, derive its materials and write OUT_DIR/index.html
  * (the directory is made if missing; the file written to a temporary and
- * renamed only on success). 0, or a CLI_* status after a message. */
-int viewer_write(const char *manifest, const char *out_dir, const char *dir_option);
+ * renamed only on success). cross_path: a `make cross-count` output for the
+ * Cortex-M0 costs, or NULL. 0, or a CLI_* status after a message. */
+int viewer_write(const char *manifest, const char *out_dir, const char *dir_option, const char *cross_path);
 
 #endif
