@@ -16,7 +16,8 @@
 #   positions equal tests/viewer_lit.c's host shading with the C runtime's
 #   Fresnel within 1e-3 relative (binary32 on the GPU against double: the
 #   Blinn-Phong exponent 510 at roughness 0.25 magnifies n.h's rounding);
-# - a screenshot per view goes to $BUILD/viewer/.
+# - a screenshot per view (each material, both distributions, split,
+#   difference, CIEDE2000 per pixel) goes to $BUILD/viewer/.
 # The browser part runs once, in the main pass (BUILD=build): the page is the
 # same in the sanitizer and other-compiler passes, whose subject is the C tool.
 F="$BUILD/fresnel"
@@ -113,8 +114,8 @@ echo "$lit" | awk '{ exit !($1 <= 1e-3 && $2 == 1440 && $3 == 0) }' &&
 shots=0
 for view in "material=au&model=f82&dist=1" "material=cu&model=lut32&dist=1" "material=ag&model=schlick&dist=0" \
     "material=al&model=exact&dist=1&mode=1" "material=cr&model=lut16-cubic&dist=1" \
-    "material=au&model=schlick&dist=1&mode=2"; do
-    name=$(echo "$view" | sed 's/material=//; s/&model=/-/; s/&dist=1/-ggx/; s/&dist=0/-blinn-phong/; s/&mode=1/-split/; s/&mode=2/-difference/')
+    "material=au&model=schlick&dist=1&mode=2" "material=au&model=schlick&dist=1&mode=5"; do
+    name=$(echo "$view" | sed 's/material=//; s/&model=/-/; s/&dist=1/-ggx/; s/&dist=0/-blinn-phong/; s/&mode=1/-split/; s/&mode=2/-difference/; s/&mode=5/-ciede2000/')
     browse "$t/shot.log" --window-size=1000,1000 --screenshot="$abs.$name.png" "file://$abs#$view" >/dev/null
     png="$out/index.html.$name.png"
     if [ -s "$png" ] && [ "$(wc -c <"$png")" -gt 20000 ]; then
@@ -122,4 +123,4 @@ for view in "material=au&model=f82&dist=1" "material=cu&model=lut32&dist=1" "mat
         shots=$((shots + 1))
     fi
 done
-[ "$shots" -eq 6 ] && pass "6 screenshots in $out/ (one per view)" || fail "$shots of 6 screenshots written"
+[ "$shots" -eq 7 ] && pass "7 screenshots in $out/ (one per view)" || fail "$shots of 7 screenshots written"

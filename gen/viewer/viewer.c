@@ -215,7 +215,10 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path)
         fprintf(f, "%s", m ? "," : "");
         write_cost(f, l, m, cross_path);
     }
-    fprintf(f, "],\n\"toOutput\":{");
+    fprintf(f, "],\n\"toXYZ\":[");
+    for (k = 0; k < 9; k++) /* column-major */
+        fprintf(f, "%s%.9g", k ? "," : "", ls.rgb_to_xyz[k % 3][k / 3]);
+    fprintf(f, "],\n\"white\":[%.9g,%.9g,%.9g],\n\"toOutput\":{", ls.white[0], ls.white[1], ls.white[2]);
     if (write_matrix(f, g, &ls, "srgb"))
         return CLI_BAD_INPUT;
     fprintf(f, ",");
