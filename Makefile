@@ -136,10 +136,11 @@ report: $(BUILD)/fresnel
 bench: $(BUILD)/fresnel
 	$(BUILD)/fresnel bench
 
-# `make viewer`: the default scene as one page, build/viewer/index.html
+# `make viewer`: the viewer's scene as one page, build/viewer/index.html
 # (with the Cortex-M0 costs when `make report` has left its cross-count).
+VIEWER_SCENE := data/scenes/viewer.scene
 viewer: $(BUILD)/fresnel
-	$(BUILD)/fresnel viewer $(SCENE) -o $(BUILD)/viewer \
+	$(BUILD)/fresnel viewer $(VIEWER_SCENE) -o $(BUILD)/viewer \
 	    $(if $(wildcard $(BUILD)/report/cross-count.txt),--cross $(BUILD)/report/cross-count.txt)
 
 install: $(BUILD)/libfresnel.a $(BUILD)/fresnel
