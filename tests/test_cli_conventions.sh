@@ -131,7 +131,7 @@ printf 'materials = au\nmodels = schlick\nspace = rec2020\n' >"$t/canon.scene"
 grep -q rec2020 "$t/a.h" && pass "manifest: space = BT2020 is rec2020" || fail "manifest space alias"
 
 # Help and user-facing text speak of the product.
-for c in eval wavelengths materials gen params curve bench report extremes accuracy; do
+for c in eval wavelengths materials gen params curve bench report extremes accuracy viewer import; do
     if "$F" "$c" --help 2>&1 | grep -qiE 'issue [0-9]|issue.s'; then fail "$c --help mentions work history"; else pass "$c --help: no work history"; fi
 done
 "$F" extremes | grep -qiE 'issue [0-9]' && fail "extremes output mentions an issue" || pass "extremes output: no work history"
