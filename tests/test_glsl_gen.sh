@@ -17,8 +17,9 @@ san=
 if nm "$BUILD/libfresnel.a" 2>/dev/null | grep -q '__asan_'; then
     san="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer"
 fi
-# the objects of today's sources (a stale object of a removed file is not linked)
-gen_obj=$(for f in gen/*/*.c; do echo "$BUILD/obj/${f%.c}.o"; done)
+# the objects of today's sources (a stale object of a removed file is not
+# linked), and the viewer's embedded page (Makefile, viewer_assets)
+gen_obj="$(for f in gen/*/*.c; do echo "$BUILD/obj/${f%.c}.o"; done) $BUILD/obj/embed/viewer_assets.o"
 cat >"$out/glsl_all_models.scene" <<'SCENE'
 # every analytic model and every LUT kind, nodes uniform in sqrt(cos theta)
 materials = au ag bk7
