@@ -53,8 +53,7 @@ for manifest in data/scenes/default.scene "$out/glsl_all_models.scene" "$out/gls
         -DFR_TEX_WIDTH="FRESNEL_${IDENT}_LUT_TEXTURE_WIDTH" -DFR_TEX_HEIGHT="FRESNEL_${IDENT}_LUT_TEXTURE_HEIGHT" \
         -o "$out/glsl_gen_test_$ident" tests/glsl_gen_test.c ports/glsl/host/glctx.c $gen_obj "$BUILD/libfresnel.a" \
         $(pkg-config --cflags --libs osmesa) -lm >"$out/build_$ident.log" 2>&1; then
-        echo "FAIL glsl gen: tests/glsl_gen_test.c does not build with $ident:"
-        cat "$out/build_$ident.log"
+        echo "FAIL glsl gen: tests/glsl_gen_test.c does not build with $ident: $(grep -m 3 -iE 'error|undefined' "$out/build_$ident.log" | tr '\n' ' ')"
         status=1
         continue
     fi
