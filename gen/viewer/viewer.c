@@ -45,12 +45,14 @@ static void model_ident(const char *model, char *out, size_t size)
 }
 
 /* vec3 fresnel_select(int mat, int model, float c): the scene's functions
- * by index, in the scene's order of materials and models. */
+ * by index, in the scene's order of materials and models; with
+ * FRESNEL_VIEWER_MATERIAL defined, only that material's (WebGL 1). */
 static void write_select(FILE *f, const emit_loaded *l)
 {
     int i, m;
     fprintf(f, "vec3 fresnel_select(int mat, int model, FRESNEL_HIGHP float c)\n{\n");
     for (i = 0; i < l->sc->material_count; i++) {
+        fprintf(f, "#if !defined(FRESNEL_VIEWER_MATERIAL) || FRESNEL_VIEWER_MATERIAL == %d\n", i);
         fprintf(f, "    if (mat == %d) {\n", i);
         for (m = 0; m < l->sc->model_count; m++) {
             char id[SCENE_NAME_SIZE];
@@ -58,7 +60,7 @@ static void write_select(FILE *f, const emit_loaded *l)
             fprintf(f, "        if (model == %d)\n            return fresnel_%s_%s_%s_rgb(c);\n", m, l->name,
                     l->sc->materials[i], id);
         }
-        fprintf(f, "    }\n");
+        fprintf(f, "    }\n#endif\n");
     }
     fprintf(f, "    return vec3(0.0);\n}\n");
 }
@@ -115,7 +117,31 @@ static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_p
     fprintf(f, "\"");
 }
 
-static int write_data(FILE *f, const emit_loaded *l, const char *cross_path)
+/* The packed LUT texture (GLSL ES 1.00's tables, emit_glsl.c) as JSON:
+ * {"w":W,"h":H,"data":[bytes]} from the C header the GLSL emitter writes,
+ * or null for a scene without tables. */
+static int write_lut_texture(FILE *f, const char *tex)
+{
+    const char *w = tex ? strstr(tex, "_LUT_TEXTURE_WIDTH ") : NULL, *h = tex ? strstr(tex, "_LUT_TEXTURE_HEIGHT ") : NULL;
+    const char *p = tex ? strstr(tex, "= {") : NULL;
+    long count = 0;
+    if (!w || !h || !p) {
+        fputs("null", f);
+        return 0;
+    }
+    fprintf(f, "{\"w\":%ld,\"h\":%ld,\"data\":[", strtol(w + 19, NULL, 10), strtol(h + 20, NULL, 10));
+    for (p += 3; *p && *p != '}'; p++)
+        if (*p >= '0' && *p <= '9') {
+            char *end;
+            long v = strtol(p, &end, 10);
+            fprintf(f, "%s%ld", count++ ? "," : "", v);
+            p = end - 1;
+        }
+    fputs("]}", f);
+    return 0;
+}
+
+static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, const char *tex)
 {
     const scene *sc = l->sc;
     const gen_context *g = l->g;
@@ -215,7 +241,9 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path)
         fprintf(f, "%s", m ? "," : "");
         write_cost(f, l, m, cross_path);
     }
-    fprintf(f, "],\n\"toXYZ\":[");
+    fprintf(f, "],\n\"lutTexture\":");
+    write_lut_texture(f, tex);
+    fprintf(f, ",\n\"toXYZ\":[");
     for (k = 0; k < 9; k++) /* column-major */
         fprintf(f, "%s%.9g", k ? "," : "", ls.rgb_to_xyz[k % 3][k / 3]);
     fprintf(f, "],\n\"white\":[%.9g,%.9g,%.9g],\n\"toOutput\":{", ls.white[0], ls.white[1], ls.white[2]);
@@ -229,7 +257,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path)
 }
 
 /* The template with each @@SLOT@@ replaced by what fill() writes. */
-static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene, const char *cross_path)
+static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene, const char *tex, const char *cross_path)
 {
     const char *p = (const char *)viewer_page;
     while (*p) {
@@ -252,7 +280,7 @@ static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene, con
         else if (len == 11 && !strncmp(slot + 2, "GLSL_SELECT", len))
             write_select(f, l);
         else if (len == 4 && !strncmp(slot + 2, "DATA", len))
-            status = write_data(f, l, cross_path);
+            status = write_data(f, l, cross_path, tex);
         else
             return cli_error(WHERE, "the page template has an unknown slot '%.*s'", (int)len, slot + 2);
         if (status)
@@ -266,18 +294,22 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
 {
     emit_loaded l;
     cli_outfile out;
-    char *glsl = NULL, path[CLI_PATH_MAX];
-    size_t glsl_len = 0;
-    FILE *mem;
-    int status;
+    char *glsl = NULL, *tex = NULL, path[CLI_PATH_MAX];
+    size_t glsl_len = 0, tex_len = 0;
+    FILE *mem, *tex_mem;
+    int status, m;
     if ((status = emit_load(manifest, dir_option, 1, &l)))
         return status;
-    if (!(mem = open_memstream(&glsl, &glsl_len))) {
+    if (!(mem = open_memstream(&glsl, &glsl_len)) || !(tex_mem = open_memstream(&tex, &tex_len))) {
+        if (mem)
+            fclose(mem);
         status = cli_oom(WHERE);
         goto done;
     }
-    status = emit_glsl(mem, NULL, &l.in);
-    if (fclose(mem) && !status)
+    for (m = 0; m < l.sc->model_count && !scene_model_lut_size(l.sc->models[m], NULL); m++)
+        ;
+    status = emit_glsl(mem, m < l.sc->model_count ? tex_mem : NULL, &l.in); /* a texture only with tables */
+    if ((fclose(mem) | fclose(tex_mem)) && !status)
         status = cli_oom(WHERE);
     if (status)
         goto done;
@@ -291,7 +323,7 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
     }
     if ((status = cli_out_open(&out, path)))
         goto done;
-    if ((status = write_page(out.f, &l, glsl, cross_path))) {
+    if ((status = write_page(out.f, &l, glsl, tex_len ? tex : NULL, cross_path))) {
         cli_out_abort(&out);
         goto done;
     }
@@ -300,6 +332,7 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
         fprintf(stderr, "%s: wrote %s\n", WHERE, path);
 done:
     free(glsl);
+    free(tex);
     emit_loaded_free(&l);
     return status;
 }
