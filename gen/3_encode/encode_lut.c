@@ -1,7 +1,7 @@
 /* Stage 3, encode: the LUT tables the runtime interpolates (include/fresnel.h,
  * src/lut.c). The node values are not the curve sampled at the nodes: they
  * are the least-squares fit, through the runtime's own interpolation, of the
- * clamped ground truth at every 0.05 degrees from 0 to 90 (the report
+ * ground truth (under the gamut policy) at every 0.05 degrees from 0 to 90 (the report
  * measures every degree). Sampling at the nodes puts all of the error between
  * them; the fit spreads it, and for 16 nodes on Hoffman's metals it lowers
  * the worst max CIEDE2000 by about a third (linear) and lets a Catmull-Rom

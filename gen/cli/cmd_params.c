@@ -24,12 +24,12 @@ int cmd_params(int argc, char **argv)
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: fresnel params (--material ID | --nk FILE [--name ID]) [--space NAME] [--sigma S] [--n1 X]\n"
-                   "                      [--data DIR]\n\n"
+            printf("usage: fresnel params (--material ID | --nk FILE [--name ID]) [--space NAME] [--gamut POLICY]\n"
+                   "                      [--sigma S] [--n1 X] [--data DIR]\n\n"
                    "Prints, as CSV parameter,r,g,b, every parameter the generator derives for one\n"
                    "material from its spectral ground truth (GT) in a colour space: dominant\n"
-                   "wavelengths, F0 (unclamped and clamped to [0,1], the out-of-gamut policy), F82,\n"
-                   "the hemispherical average F_avg = 2 int F(mu) mu dmu (unclamped and clamped),\n"
+                   "wavelengths, F0 (unclipped, and under the --gamut policy), F82, the\n"
+                   "hemispherical average F_avg = 2 int F(mu) mu dmu (unclipped, and under the policy),\n"
                    "Metzgar's Gaussian-window eta', kappa', the black-box fitted eta, kappa and\n"
                    "the fit's RMS, LSK a and alpha (on the fitted eta, kappa), Gulbrandsen r and g,\n"
                    "and Cook-Torrance's representative IOR (scalar, repeated in r, g, b). eta and\n"
