@@ -142,6 +142,7 @@ report: $(BUILD)/fresnel
 # (`make bench OPT='-O3 -march=native'`). Each compiler and flag set builds
 # the program, the runtime's sources and the peers in its own directory,
 # with $(OPT) $(MATH_FLAGS), so no object of another flag set is reused.
+# SPEED_ARGS='--rounds R' sets the number of interleaved rounds (default 41).
 SPEED_DIR := $(BUILD)/bench/$(notdir $(firstword $(CC)))$(subst =,-,$(subst $() ,,$(OPT)))
 SPEED_SRC := speed/speed.c speed/kernels.c gen/bench/bench_compare.c gen/bench/speed_targets.c \
              $(wildcard src/f32/*.c src/q15/*.c)
@@ -151,7 +152,7 @@ $(SPEED_DIR)/speed: $(SPEED_SRC) $(wildcard speed/*.h gen/bench/*.h include/*.h 
 	$(CC) $(SPEED_CFLAGS) -DSPEED_OPT='"$(OPT)"' -DSPEED_CFLAGS='"$(CC) $(SPEED_CFLAGS)"' $(SPEED_SRC) $(LDLIBS) -o $@
 
 bench-run: $(SPEED_DIR)/speed
-	@$(SPEED_DIR)/speed
+	@$(SPEED_DIR)/speed $(SPEED_ARGS)
 
 bench:
 ifeq ($(origin OPT),file)

@@ -12,7 +12,7 @@ const char *const speed_flagset_names[SPEED_FLAGSETS] = {"-O2", "-O3 -march=nati
  * "mitsuba-inline-rgb", ...}, speed/speed.c timing both. */
 const speed_target speed_targets[] = {
     {"batch-vs-mitsuba-inline", "conductor-batch", "mitsuba-inline",
-     "fresnel_conductor_batch against Mitsuba 3's fresnel_conductor inlined in an array loop", {0.5, 0.8}},
+     "fresnel_conductor_batch against Mitsuba 3's fresnel_conductor inlined in an array loop (x86-64 host)", {0.5, 0.8}},
     {"conductor-vs-mitsuba-call", "conductor-call", "mitsuba-call",
      "fresnel_conductor against Mitsuba 3's fresnel_conductor, both out-of-line calls", {1.0, 1.0}},
     {"lut16-cubic-vs-schlick", "lut16-cubic-f32", "schlick-f32",
@@ -60,14 +60,15 @@ static void text_value(char *dst, size_t size, const char *v)
     dst[n] = '\0';
 }
 
-int speed_file_read(const char *path, speed_file *f, char *err, int errlen)
+int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, const char **what)
 {
     FILE *in = fopen(path, "r");
     char line[512];
     int ln = 0, has_opt = 0;
     memset(f, 0, sizeof *f);
     if (!in) {
-        snprintf(err, (size_t)errlen, "%s: cannot open (expected the output of `make bench`)", path);
+        snprintf(where, (size_t)wherelen, "%s", path);
+        *what = "cannot open (expected the output of `make bench`)";
         return -1;
     }
     while (fgets(line, sizeof line, in)) {
@@ -75,7 +76,7 @@ int speed_file_read(const char *path, speed_file *f, char *err, int errlen)
         const char *bad = NULL;
         ln++;
         if (!strchr(line, '\n') && !feof(in))
-            bad = "a line shorter than 512 bytes";
+            bad = "expected a line shorter than 512 bytes";
         else if (!strncmp(line, "# opt: ", 7)) {
             text_value(f->opt, sizeof f->opt, line + 7);
             has_opt = 1;
@@ -94,7 +95,7 @@ int speed_file_read(const char *path, speed_file *f, char *err, int errlen)
             else if (sscanf(line, "row %39s %15s %lf %lf %lf %lf %lf %lf %lf %lf %c", name, form, &r->ns[0], &r->ns[1],
                             &r->ns[2], &r->ns[3], &r->ns[4], &r->x[0], &r->x[1], &r->x[2], &tail) != 10 ||
                      !(r->ns[0] > 0.0 && r->ns[0] <= r->ns[2] && r->ns[2] <= r->ns[4] && r->x[0] > 0.0))
-                bad = "row NAME FORM then 8 numbers: ns min q1 median q3 max (0 < min <= median <= max), "
+                bad = "expected row NAME FORM then 8 numbers: ns min q1 median q3 max (0 < min <= median <= max), "
                       "ratio median q1 q3 (> 0)";
             else {
                 strcpy(r->name, name);
@@ -106,22 +107,24 @@ int speed_file_read(const char *path, speed_file *f, char *err, int errlen)
             if (f->n_targets == SPEED_MAX_ROWS)
                 bad = "at most 48 targets";
             else if (sscanf(line, "target %39s %lf %lf %lf", name, &t->med, &t->q1, &t->q3) != 4 || !(t->med > 0.0))
-                bad = "target ID then its ratio: median q1 q3 (median > 0)";
+                bad = "expected target ID then its ratio: median q1 q3 (median > 0)";
             else {
                 strcpy(t->id, name);
                 f->n_targets++;
             }
         } else
-            bad = "'# ...', 'row ...' or 'target ...'";
+            bad = "expected '# ...', 'row ...' or 'target ...'";
         if (bad) {
-            snprintf(err, (size_t)errlen, "%s:%d: expected %s", path, ln, bad);
+            snprintf(where, (size_t)wherelen, "%s:%d", path, ln);
+            *what = bad;
             fclose(in);
             return -1;
         }
     }
     fclose(in);
     if (!has_opt) {
-        snprintf(err, (size_t)errlen, "%s:%d: expected an '# opt: FLAGS' line (the output of `make bench`)", path, ln);
+        snprintf(where, (size_t)wherelen, "%s:%d", path, ln);
+        *what = "expected an '# opt: FLAGS' line (the output of `make bench`)";
         return -1;
     }
     return 0;

@@ -50,9 +50,10 @@ typedef struct speed_file {
     speed_ratio targets[SPEED_MAX_ROWS];
 } speed_file;
 
-/* Reads a file in the format above: 0, or -1 after writing "path:line:
- * what was expected" into err (errlen bytes). An "# opt:" line is required. */
-int speed_file_read(const char *path, speed_file *f, char *err, int errlen);
+/* Reads a file in the format above: 0, or -1 with where = "path:line" (or
+ * "path"; wherelen bytes) and *what = what was expected there. An
+ * "# opt:" line is required. */
+int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, const char **what);
 /* The target with this id in f, or NULL. */
 const speed_ratio *speed_file_target(const speed_file *f, const char *id);
 const speed_row *speed_file_row(const speed_file *f, const char *name);
