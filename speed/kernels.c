@@ -12,23 +12,25 @@
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
 
+/* The material's scalars are read into locals before the loop, as a
+ * renderer holds them: a store to out[] cannot alias them, so an inlined
+ * formula may keep them in registers and the compiler may vectorise. */
+#define LOOP_BODY(dst, expr)                                                                                  \
+    const float eta = x->eta, kappa = x->kappa, f0 = x->f0;                                                  \
+    const int32_t f0q = x->f0q;                                                                               \
+    int i;                                                                                                    \
+    (void)eta, (void)kappa, (void)f0, (void)f0q, (void)c, (void)cq, (void)out, (void)outq;                   \
+    for (i = 0; i < n; i++)                                                                                   \
+        dst[i] = (expr);
 #define LOOP(name, expr)                                                                                      \
     static void name(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq, int n) \
     {                                                                                                         \
-        int i;                                                                                                \
-        (void)cq;                                                                                             \
-        (void)outq;                                                                                           \
-        for (i = 0; i < n; i++)                                                                               \
-            out[i] = (expr);                                                                                  \
+        LOOP_BODY(out, expr)                                                                                  \
     }
 #define LOOP_Q15(name, expr)                                                                                  \
     static void name(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq, int n) \
     {                                                                                                         \
-        int i;                                                                                                \
-        (void)c;                                                                                              \
-        (void)out;                                                                                            \
-        for (i = 0; i < n; i++)                                                                               \
-            outq[i] = (expr);                                                                                 \
+        LOOP_BODY(outq, expr)                                                                                 \
     }
 
 /* Schlick's formula written out in the loop, no clamp: the cheapest loop
@@ -39,17 +41,17 @@ static inline float schlick_minimal(float f0, float c)
     return f0 + (1.0f - f0) * (m2 * m2 * m);
 }
 
-LOOP(k_copy, ((void)x, c[i]))
-LOOP(k_schlick_inline, schlick_minimal(x->f0, c[i]))
-LOOP(k_schlick, fresnel_schlick(x->f0, c[i]))
-LOOP_Q15(k_schlick_q15, fresnel_schlick_q15(x->f0q, cq[i]))
-LOOP_Q15(k_schlick_q15_fast, fresnel_schlick_q15_fast(x->f0q, cq[i]))
-LOOP(k_conductor, fresnel_conductor(x->eta, x->kappa, c[i]))
+LOOP(k_copy, c[i])
+LOOP(k_schlick_inline, schlick_minimal(f0, c[i]))
+LOOP(k_schlick, fresnel_schlick(f0, c[i]))
+LOOP_Q15(k_schlick_q15, fresnel_schlick_q15(f0q, cq[i]))
+LOOP_Q15(k_schlick_q15_fast, fresnel_schlick_q15_fast(f0q, cq[i]))
+LOOP(k_conductor, fresnel_conductor(eta, kappa, c[i]))
 LOOP(k_conductor_prepared, fresnel_conductor_prepared(&x->prep, c[i]))
-LOOP(k_mitsuba_call, cmp_mitsuba_conductor(x->eta, x->kappa, c[i]))
-LOOP(k_mitsuba_inline, peer_mitsuba_conductor(x->eta, x->kappa, c[i]))
-LOOP(k_pbrt_call, cmp_pbrt_conductor(x->eta, x->kappa, c[i]))
-LOOP(k_pbrt_inline, peer_pbrt_conductor(x->eta, x->kappa, c[i]))
+LOOP(k_mitsuba_call, cmp_mitsuba_conductor(eta, kappa, c[i]))
+LOOP(k_mitsuba_inline, peer_mitsuba_conductor(eta, kappa, c[i]))
+LOOP(k_pbrt_call, cmp_pbrt_conductor(eta, kappa, c[i]))
+LOOP(k_pbrt_inline, peer_pbrt_conductor(eta, kappa, c[i]))
 LOOP(k_lut16_cubic, fresnel_lut_cubic(x->lut16, 16, c[i]))
 LOOP(k_lut32, fresnel_lut(x->lut32, 32, c[i]))
 LOOP(k_lut16_linear, fresnel_lut_linear(x->lin16, 16, c[i]))
