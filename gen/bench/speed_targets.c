@@ -78,6 +78,8 @@ int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, 
         if (!strchr(line, '\n') && !feof(in))
             bad = "expected a line shorter than 512 bytes";
         else if (!strncmp(line, "# opt: ", 7)) {
+            if (has_opt)
+                bad = "expected one flag set per file (a second '# opt:' line; `make bench OPT=...` prints one)";
             text_value(f->opt, sizeof f->opt, line + 7);
             has_opt = 1;
         } else if (!strncmp(line, "# compiler: ", 12))
@@ -123,7 +125,7 @@ int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, 
     }
     fclose(in);
     if (!has_opt) {
-        snprintf(where, (size_t)wherelen, "%s:%d", path, ln);
+        snprintf(where, (size_t)wherelen, "%s", path);
         *what = "expected an '# opt: FLAGS' line (the output of `make bench`)";
         return -1;
     }
