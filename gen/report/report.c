@@ -419,7 +419,10 @@ static int write_speed(const report_run *r, FILE *f)
     fputs("\n## Host speed against other renderers' algorithms\n\n"
           "The output of `make bench` at each flag set (speed/speed.c; format in gen/bench/speed_targets.h), from "
           "which the targets table's speed rows come: ns per evaluation, one channel, and the time over the "
-          "schlick-f32 row of the same round.\n",
+          "schlick-f32 row of the same round. The mitsuba-* and pbrt-* rows are this project's binary32 "
+          "transcriptions (gen/bench/peers.h), no code of theirs, of Mitsuba 3's fresnel_conductor "
+          "(include/mitsuba/render/fresnel.h) and pbrt-v4's FrComplex (src/pbrt/util/scattering.h), each timed as "
+          "an out-of-line call and inlined into the array loop.\n",
           f);
     for (i = 0; i < r->speed_count; i++) {
         fprintf(f, "\n`make bench OPT='%s'`:\n\n```\n", r->speed[i]->opt);
