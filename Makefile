@@ -124,8 +124,10 @@ test: deps
 	@sh tests/run.sh build build/asan build/$(OTHER_CC)@$(OTHER_CC)
 
 # Benchmarks, never tests: `make report` writes build/report/ (accuracy against
-# the spectral ground truth, time and instructions per evaluation, plots),
-# `make bench` prints time per evaluation.
+# the spectral ground truth, time and instructions per evaluation, plots, and
+# the speed targets from `make bench` at -O2 and -O3 -march=native, saved as
+# build/report/speed-*.txt), `make bench` prints time per evaluation against
+# the peers' algorithms (below).
 report: $(BUILD)/fresnel
 	@mkdir -p $(BUILD)/report
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) cross-count > $(BUILD)/report/cross-count.txt
