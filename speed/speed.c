@@ -203,6 +203,8 @@ int main(int argc, char **argv)
            "", "unknown",
 #endif
            cpu, vector_isa());
+    /* The runtime's own batch SIMD width joins the header here when
+     * fresnel.h exposes it as a macro. */
     printf("# workload: %d cosines in [0, 1] (L1-resident), %d kernel calls per sample, %d interleaved rounds in "
            "rotating order\n"
            "# peers: mitsuba-* and pbrt-* are this project's binary32 transcriptions (gen/bench/peers.h) of "
