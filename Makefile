@@ -21,8 +21,8 @@ WARN       := -std=c99 -Wall -Wextra -Wpedantic -Werror
 # inlines sqrtf and vectorises fresnel_conductor_batch.
 MATH_FLAGS := -fno-math-errno -fno-trapping-math
 CFLAGS_LIB := $(WARN) $(OPT) $(MATH_FLAGS) $(SAN) -Iinclude -MMD -MP
-# Other renderers' algorithms, timed against ours by `fresnel bench
-# --targets`: compiled with the same math flags, so the race is fair.
+# Other renderers' algorithms (gen/bench/peers.h), measured against ours by
+# `fresnel bench --targets`: compiled with the runtime's math flags.
 $(BUILD)/obj/gen/bench/bench_compare.o: CFLAGS_GEN += $(MATH_FLAGS)
 CFLAGS_GEN := $(WARN) $(OPT) $(SAN) -D_POSIX_C_SOURCE=200809L -DFRESNEL_DATA_DIR=\"$(CURDIR)/data\" \
               -DFRESNEL_CFLAGS='"$(CC) $(OPT) $(MATH_FLAGS) $(SAN), no LTO"' -Iinclude -Igen -MMD -MP
@@ -35,7 +35,7 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/embed/viewer_assets.o
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all main-job test test-bins install uninstall deps clean report bench viewer
+.PHONY: all main-job test test-bins install uninstall deps clean report bench bench-run viewer
 .DELETE_ON_ERROR:
 
 all: $(BUILD)/libfresnel.a $(BUILD)/fresnel
@@ -124,17 +124,45 @@ test: deps
 	@sh tests/run.sh build build/asan build/$(OTHER_CC)@$(OTHER_CC)
 
 # Benchmarks, never tests: `make report` writes build/report/ (accuracy against
-# the spectral ground truth, time and instructions per evaluation, plots),
-# `make bench` prints time per evaluation.
+# the spectral ground truth, time and instructions per evaluation, plots, and
+# the speed targets from `make bench` at -O2 and -O3 -march=native, saved as
+# build/report/speed-*.txt), `make bench` prints time per evaluation against
+# the peers' algorithms (below).
 report: $(BUILD)/fresnel
 	@mkdir -p $(BUILD)/report
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) cross-count > $(BUILD)/report/cross-count.txt
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) size > $(BUILD)/report/size.txt
-	$(BUILD)/fresnel report -o $(BUILD)/report --cross $(BUILD)/report/cross-count.txt --size $(BUILD)/report/size.txt
+	$(MAKE) -s --no-print-directory BUILD=$(BUILD) OPT=-O2 bench-run > $(BUILD)/report/speed-O2.txt
+	$(MAKE) -s --no-print-directory BUILD=$(BUILD) OPT='-O3 -march=native' bench-run > $(BUILD)/report/speed-O3-native.txt
+	$(BUILD)/fresnel report -o $(BUILD)/report --cross $(BUILD)/report/cross-count.txt --size $(BUILD)/report/size.txt \
+	    --speed $(BUILD)/report/speed-O2.txt --speed $(BUILD)/report/speed-O3-native.txt
 	@echo "make report: build/report/report.md (targets, accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/"
 
-bench: $(BUILD)/fresnel
-	$(BUILD)/fresnel bench
+# `make bench` times the library against the peers' algorithms and floor
+# loops (speed/speed.c; the file format is in gen/bench/speed_targets.h) at
+# -O2 and at -O3 -march=native, or only at the flag set given
+# (`make bench OPT='-O3 -march=native'`). Each compiler and flag set builds
+# the program, the runtime's sources and the peers in its own directory,
+# with $(OPT) $(MATH_FLAGS), so no object of another flag set is reused.
+# SPEED_ARGS='--rounds R' sets the number of interleaved rounds (default 41).
+SPEED_DIR := $(BUILD)/bench/$(notdir $(firstword $(CC)))$(subst =,-,$(subst $() ,,$(OPT)))
+SPEED_SRC := speed/speed.c speed/kernels.c gen/bench/bench_compare.c gen/bench/speed_targets.c \
+             $(wildcard src/f32/*.c src/q15/*.c)
+SPEED_CFLAGS := $(WARN) $(OPT) $(MATH_FLAGS) -D_POSIX_C_SOURCE=200809L -Iinclude -Igen
+$(SPEED_DIR)/speed: $(SPEED_SRC) $(wildcard speed/*.h gen/bench/*.h include/*.h src/*/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(SPEED_CFLAGS) -DSPEED_OPT='"$(OPT)"' -DSPEED_CFLAGS='"$(CC) $(SPEED_CFLAGS)"' $(SPEED_SRC) $(LDLIBS) -o $@
+
+bench-run: $(SPEED_DIR)/speed
+	@$(SPEED_DIR)/speed $(SPEED_ARGS)
+
+bench:
+ifeq ($(origin OPT),file)
+	@$(MAKE) --no-print-directory BUILD=$(BUILD) OPT=-O2 bench-run
+	@$(MAKE) --no-print-directory BUILD=$(BUILD) OPT='-O3 -march=native' bench-run
+else
+	@$(MAKE) --no-print-directory BUILD=$(BUILD) bench-run
+endif
 
 # `make viewer`: the viewer's scene as one page, build/viewer/index.html
 # (with the Cortex-M0 costs when `make report` has left its cross-count).

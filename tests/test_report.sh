@@ -24,3 +24,44 @@ grep -q '## Reproducing Hoffman' "$t/out/report.md" && grep -q '## Which model f
 "$F" report --scene "$t/missing.scene" -o "$t/out2" --no-timing >/dev/null 2>"$t/err"
 [ $? -eq 2 ] && [ ! -e "$t/out2/report.md" ] && echo "PASS report: a missing scene is an error (exit 2), nothing written" ||
     echo "FAIL report missing scene"
+
+# The host speed targets: one row per target with its ratio at both flag
+# sets of `make bench` and a mark; a miss says what it is. Synthetic --speed
+# files (the format of gen/bench/speed_targets.h), not a timing.
+speed_file() { # OPT RATIO: every target's ratio RATIO
+    printf '# opt: %s\n# compiler: test\n' "$1"
+    for r in schlick-f32 schlick-q15 conductor-call conductor-batch mitsuba-call mitsuba-inline lut16-cubic-f32 \
+        lut32-q15 lut16-cubic-q15 lut16-linear-q15; do
+        printf 'row %s call 1 1 1 1 1 1 1 1\n' "$r"
+    done
+    for id in batch-vs-mitsuba-inline conductor-vs-mitsuba-call lut16-cubic-vs-schlick lut32-q15-vs-schlick-q15 \
+        lut16-cubic-q15-vs-schlick-q15 lut16-linear-q15-vs-schlick-q15; do
+        printf 'target %s %s %s %s goal text\n' "$id" "$2" "$2" "$2"
+    done
+}
+speed_file -O2 0.25 >"$t/o2.txt"
+speed_file '-O3  -march=native' 0.9 >"$t/o3.txt"
+printf 'materials = cu\nmodels = schlick\n' >"$t/one.scene"
+if "$F" report --scene "$t/one.scene" -o "$t/sp" --no-timing --no-instructions --speed "$t/o2.txt" --speed "$t/o3.txt" \
+    >"$t/log" 2>&1; then
+    rows=$(grep '^| Host speed: ' "$t/sp/report.md")
+    n=$(echo "$rows" | grep -c 'MISS\|pass')
+    both=$(echo "$rows" | grep -c -- '-O2: [0-9.]*x (quartiles [0-9.]*-[0-9.]*) \(pass\|MISS\).*; -O3 -march=native: [0-9.]*x')
+    miss=$(echo "$rows" | grep -c 'conductor-batch / mitsuba-inline.*-O3 -march=native: 0.90x (quartiles 0.90-0.90) MISS: conductor-batch takes 0.90x the time of mitsuba-inline, goal 0.8x.*| \*\*MISS\*\* |$')
+    pass=$(echo "$rows" | grep 'lut16-linear-q15 / schlick-q15' | grep -c '| \*\*pass\*\* |$')
+    [ "$n" -eq 6 ] && [ "$both" -eq 6 ] && [ "$miss" -eq 1 ] && [ "$pass" -eq 1 ] &&
+        grep -q "^## Host speed against other renderers' algorithms" "$t/sp/report.md" &&
+        echo "PASS report: 6 host speed targets, each with its ratio at -O2 and -O3 -march=native and a pass/MISS mark; a miss says what it is" ||
+        echo "FAIL report speed rows: $n rows, $both with both flag sets, miss $miss, pass $pass: $(echo "$rows" | head -2)"
+else
+    echo "FAIL report --speed: $(tail -3 "$t/log")"
+fi
+"$F" report --scene "$t/one.scene" -o "$t/sp0" --no-timing --no-instructions >/dev/null 2>&1
+grep -q '^| Host speed against .* | not measured |$' "$t/sp0/report.md" &&
+    echo "PASS report: without --speed the host speed targets are 'not measured'" ||
+    echo "FAIL report without --speed: $(grep 'Host speed' "$t/sp0/report.md" | head -2)"
+{ speed_file -O2 0.25 | head -4; echo 'row conductor-batch call 1 2'; } >"$t/bad.txt"
+"$F" report --scene "$t/one.scene" -o "$t/sp2" --no-timing --speed "$t/bad.txt" >/dev/null 2>"$t/err"
+[ $? -eq 2 ] && [ ! -e "$t/sp2/report.md" ] && grep -q "bad.txt:5: expected row NAME FORM then 8 numbers" "$t/err" &&
+    echo "PASS report: a malformed --speed file is an error at file:line (exit 2), nothing written" ||
+    echo "FAIL report bad --speed: $(cat "$t/err")"

@@ -1,112 +1,15 @@
-/* The library's speed targets (see bench_targets.h). */
+/* The accuracy of the rows of the library's speed targets (see bench_targets.h). */
 #include "bench/bench_targets.h"
 
 #include <math.h>
 #include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 
-#include "bench/bench.h"
 #include "bench/bench_compare.h"
 #include "fresnel.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
 #include "model/reference.h"
-
-/* The timed material, one channel: copper at 650 nm (README's example). */
-#define MAT_ETA 0.24f
-#define MAT_KAPPA 3.63f
-#define CHUNK 256 /* cosines per fresnel_conductor_batch call: stays in L1 */
-
-typedef struct targets_ctx {
-    float eta, kappa, f0;
-    int32_t f0q;
-    fresnel_conductor_prep prep;
-    float lut16[16], lut32[32], lin16[16];
-    uint16_t q16[16], q32[32], qlin16[16]; /* lut16, lut32 also serve the cubic rows */
-} targets_ctx;
-
-/* ---- timed batches: one evaluation per cosine, results summed (bench.h).
- * Named batch_* like the report's, so callgrind's --toggle-collect='batch_*'
- * counts only them. */
-#define TX(x) const targets_ctx *t = (const targets_ctx *)(x)
-
-static double batch_schlick(const void *x, const float *c, const int32_t *cq, int n)
-{
-    TX(x);
-    double sum = 0.0;
-    int i;
-    (void)cq;
-    for (i = 0; i < n; i++)
-        sum += fresnel_schlick(t->f0, c[i]);
-    return sum;
-}
-
-static double batch_schlick_q15(const void *x, const float *c, const int32_t *cq, int n)
-{
-    TX(x);
-    uint32_t sum = 0;
-    int i;
-    (void)c;
-    for (i = 0; i < n; i++)
-        sum += fresnel_schlick_q15(t->f0q, cq[i]);
-    return sum;
-}
-
-#define SCALAR_BATCH(name, call)                                                                   \
-    static double name(const void *x, const float *c, const int32_t *cq, int n)                  \
-    {                                                                                              \
-        TX(x);                                                                                     \
-        double sum = 0.0;                                                                          \
-        int i;                                                                                     \
-        (void)cq;                                                                                  \
-        for (i = 0; i < n; i++)                                                                    \
-            sum += call;                                                                           \
-        return sum;                                                                                \
-    }
-SCALAR_BATCH(batch_conductor, fresnel_conductor(t->eta, t->kappa, c[i]))
-SCALAR_BATCH(batch_conductor_prepared, fresnel_conductor_prepared(&t->prep, c[i]))
-SCALAR_BATCH(batch_mitsuba, cmp_mitsuba_conductor(t->eta, t->kappa, c[i]))
-SCALAR_BATCH(batch_pbrt, cmp_pbrt_conductor(t->eta, t->kappa, c[i]))
-SCALAR_BATCH(batch_lut16, fresnel_lut(t->lut16, 16, c[i]))
-SCALAR_BATCH(batch_lut32, fresnel_lut(t->lut32, 32, c[i]))
-SCALAR_BATCH(batch_lut16_linear, fresnel_lut_linear(t->lin16, 16, c[i]))
-
-#define Q15_BATCH(name, call)                                                                      \
-    static double name(const void *x, const float *c, const int32_t *cq, int n)                  \
-    {                                                                                              \
-        TX(x);                                                                                     \
-        uint32_t sum = 0;                                                                          \
-        int i;                                                                                     \
-        (void)c;                                                                                   \
-        for (i = 0; i < n; i++)                                                                    \
-            sum += call;                                                                           \
-        return sum;                                                                                \
-    }
-Q15_BATCH(batch_lut16_q15, fresnel_lut_u16_q15(t->q16, 16, cq[i]))
-Q15_BATCH(batch_lut32_q15, fresnel_lut_u16_q15(t->q32, 32, cq[i]))
-Q15_BATCH(batch_lut16_linear_q15, fresnel_lut_linear_u16_q15(t->qlin16, 16, cq[i]))
-SCALAR_BATCH(batch_lut16_cubic, fresnel_lut_cubic(t->lut16, 16, c[i]))
-Q15_BATCH(batch_lut16_cubic_q15, fresnel_lut_cubic_u16_q15(t->q16, 16, cq[i]))
-Q15_BATCH(batch_lut32_q15_fast, fresnel_lut_u16_q15_fast(t->q32, 32, cq[i]))
-
-/* The batch API in chunks, each chunk's results summed: per cosine this
- * charges the batch one store and one load more than the scalar rows. */
-static double batch_conductor_batch(const void *x, const float *c, const int32_t *cq, int n)
-{
-    TX(x);
-    float out[CHUNK];
-    double sum = 0.0;
-    int i, j;
-    (void)cq;
-    for (i = 0; i < n; i += CHUNK) {
-        int k = n - i < CHUNK ? n - i : CHUNK;
-        fresnel_conductor_batch(&t->prep, c + i, out, k);
-        for (j = 0; j < k; j++)
-            sum += out[j];
-    }
-    return sum;
-}
 
 /* ---- rows */
 enum {
@@ -129,29 +32,31 @@ enum {
     R_COUNT
 };
 
-static const struct {
-    const char *name;
-    bench_batch fn;
-} rows_def[R_COUNT] = {
-    {"schlick", batch_schlick},
-    {"schlick-q15", batch_schlick_q15},
-    {"conductor", batch_conductor},
-    {"conductor-prepared", batch_conductor_prepared},
-    {"conductor-batch", batch_conductor_batch},
-    {"mitsuba-style", batch_mitsuba},
-    {"pbrt-style", batch_pbrt},
-    {"lut16-f32", batch_lut16},
-    {"lut32-f32", batch_lut32},
-    {"lut16-q15", batch_lut16_q15},
-    {"lut32-q15", batch_lut32_q15},
-    {"lut16-linear-f32", batch_lut16_linear},
-    {"lut16-linear-q15", batch_lut16_linear_q15},
-    {"lut16-cubic-f32", batch_lut16_cubic},
-    {"lut16-cubic-q15", batch_lut16_cubic_q15},
-    {"lut32-q15-fast", batch_lut32_q15_fast},
+static const char *const rows_def[R_COUNT] = {
+    "schlick",
+    "schlick-q15",
+    "conductor",
+    "conductor-prepared",
+    "conductor-batch",
+    "mitsuba-style",
+    "pbrt-style",
+    "lut16-f32",
+    "lut32-f32",
+    "lut16-q15",
+    "lut32-q15",
+    "lut16-linear-f32",
+    "lut16-linear-q15",
+    "lut16-cubic-f32",
+    "lut16-cubic-q15",
+    "lut32-q15-fast",
 };
 
 typedef char targets_rows_fit[R_COUNT <= BENCH_TARGET_ROWS ? 1 : -1];
+
+typedef struct targets_ctx {
+    float lut16[16], lut32[32], lin16[16];
+    uint16_t q16[16], q32[32], qlin16[16]; /* lut16, lut32 also serve the cubic rows */
+} targets_ctx;
 
 /* Tables of ref_conductor(eta, kappa) at the nodes: uniform in sqrt(c)
  * (fresnel_lut) or in c (fresnel_lut_linear), binary32 and Q15 codes. */
@@ -170,17 +75,6 @@ static void make_tables(float eta, float kappa, targets_ctx *t)
         t->lin16[i] = (float)ref_conductor(eta, kappa, x);
         t->qlin16[i] = (uint16_t)lround(ref_conductor(eta, kappa, x) * 32768.0);
     }
-}
-
-static void ctx_init(targets_ctx *t, float eta, float kappa)
-{
-    memset(t, 0, sizeof *t);
-    t->eta = eta;
-    t->kappa = kappa;
-    t->f0 = (float)ref_f0_from_ior(eta, kappa);
-    t->f0q = (int32_t)lround(ref_f0_from_ior(eta, kappa) * 32768.0);
-    t->prep = fresnel_conductor_prepare(eta, kappa);
-    make_tables(eta, kappa, t);
 }
 
 /* ---- errors */
@@ -281,37 +175,15 @@ static void matched(int row, double *at0, double *at1e4)
     }
 }
 
-int bench_speed_targets_run(bench_target_row *rows, int max_rows, int count, int runs)
+int bench_target_errors(bench_target_row *rows, int max_rows)
 {
-    targets_ctx *t = malloc(sizeof *t);
-    bench_batch fns[R_COUNT];
-    const void *ctxs[R_COUNT];
-    double ns[R_COUNT], err[R_COUNT];
+    double err[R_COUNT];
     int i, n = max_rows < R_COUNT ? max_rows : R_COUNT;
-    if (!t)
-        return -1;
-    ctx_init(t, MAT_ETA, MAT_KAPPA);
-    for (i = 0; i < R_COUNT; i++) {
-        fns[i] = rows_def[i].fn;
-        ctxs[i] = t;
-    }
-    if (bench_ns_per_eval_rounds(fns, ctxs, R_COUNT, count, runs, ns)) {
-        free(t);
-        return -1;
-    }
-    free(t);
     measure_errors(err);
     for (i = 0; i < n; i++) {
-        rows[i].name = rows_def[i].name;
-        rows[i].ns = ns[i];
-        rows[i].ratio_to_schlick = ns[0] > 0.0 ? ns[i] / ns[0] : 0.0;
+        rows[i].name = rows_def[i];
         rows[i].max_abs_err = err[i];
         matched(i, &rows[i].matched_c0, &rows[i].matched_c1e4);
     }
     return n < 0 ? 0 : n;
-}
-
-int bench_speed_targets(bench_target_row *rows, int max_rows)
-{
-    return bench_speed_targets_run(rows, max_rows, BENCH_TARGETS_COUNT, BENCH_TARGETS_RUNS);
 }

@@ -1,15 +1,13 @@
-/* The library's speed targets: time per evaluation of the exact conductor (ours
- * and two other renderers' algorithms) and of the lookup tables, as a ratio
- * to Schlick measured in the same run, with each row's largest error.
- * `fresnel bench --targets` prints it; the report's targets table reads it.
- * A benchmark: nothing here is asserted by tests. */
+/* The accuracy side of the library's speed targets: each row of `make
+ * bench` that computes the exact conductor or a table, with its largest
+ * error against the double reference. `fresnel bench --targets` prints it;
+ * the report's targets table quotes it beside the speed (`make bench`,
+ * speed/speed.c, which times the same functions). Nothing is timed here. */
 #ifndef FRESNEL_BENCH_TARGETS_H
 #define FRESNEL_BENCH_TARGETS_H
 
 typedef struct bench_target_row {
-    const char *name;        /* static string, e.g. "conductor", "mitsuba-style" */
-    double ns;               /* median ns per evaluation, one channel */
-    double ratio_to_schlick; /* ns / ns of row 0 ("schlick") of the same run */
+    const char *name; /* static string, e.g. "conductor", "mitsuba-style" */
     /* Largest |result - double reference| (NaN if a result was NaN):
      *   schlick*: against ref_schlick, F0 in 0..1 by 1/64;
      *   conductor rows (ours, mitsuba-style, pbrt-style):
@@ -28,20 +26,8 @@ typedef struct bench_target_row {
 
 #define BENCH_TARGET_ROWS 20 /* at most this many rows */
 
-/* Default workload: BENCH_TARGETS_COUNT cosines per batch (fits in L2),
- * median of BENCH_TARGETS_RUNS rounds. */
-#define BENCH_TARGETS_COUNT (1 << 16)
-#define BENCH_TARGETS_RUNS 21
-
-/* One run: every row timed back to back in rounds (bench_ns_per_eval_rounds),
- * one material (copper at 650 nm as in README: eta 0.24, kappa 3.63; Schlick's
- * F0 is its normal-incidence reflectance; the LUTs tabulate its curve), then each row's error.
- * Writes min(rows available, max_rows) rows, row 0 Schlick; returns the
- * count written, or -1 when out of memory. */
-int bench_speed_targets(bench_target_row *rows, int max_rows);
-
-/* The same with the batch size and round count given (count >= 1, runs >= 0;
- * runs = 0 times nothing: ns and ratios are 0, the callgrind workload). */
-int bench_speed_targets_run(bench_target_row *rows, int max_rows, int count, int runs);
+/* Every row's errors over the grid above. Writes min(rows available,
+ * max_rows) rows, row 0 Schlick; returns the count written. */
+int bench_target_errors(bench_target_row *rows, int max_rows);
 
 #endif

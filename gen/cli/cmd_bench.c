@@ -14,15 +14,13 @@
 #define WHERE "fresnel bench"
 
 /* --targets: one row per line. */
-static int bench_targets_print(int count, int runs)
+static int bench_targets_print(void)
 {
     bench_target_row rows[BENCH_TARGET_ROWS];
-    int n = bench_speed_targets_run(rows, BENCH_TARGET_ROWS, count, runs), i;
-    if (n < 0)
-        return cli_oom(WHERE);
-    printf("name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n");
+    int n = bench_target_errors(rows, BENCH_TARGET_ROWS), i;
+    printf("name,max_abs_err,matched_c0,matched_c1e-4\n");
     for (i = 0; i < n; i++) {
-        printf("%s,%.3f,%.2f,%.3g,", rows[i].name, rows[i].ns, rows[i].ratio_to_schlick, rows[i].max_abs_err);
+        printf("%s,%.3g,", rows[i].name, rows[i].max_abs_err);
         if (rows[i].matched_c0 == -1.0) /* not a conductor row */
             printf("-,-\n");
         else if (isnan(rows[i].matched_c0)) /* printf's NaN may carry a sign */
@@ -39,8 +37,7 @@ int cmd_bench(int argc, char **argv)
                *dir_option = NULL, *nk_file = NULL;
     char nk_id[32];
     material_source source;
-    int count = 1 << 20, runs = 5, i, m, t, status = 0, targets = 0, count_set = 0, runs_set = 0,
-        scene_options = 0;
+    int count = 1 << 20, runs = 5, i, m, t, status = 0, targets = 0, scene_options = 0;
     static const char *const options[] = {"--scene", "--material", "--nk", "--model", "--type", "--data", "--count",
                                           "--runs", "--targets", "--help", NULL};
     const char *v;
@@ -53,23 +50,21 @@ int cmd_bench(int argc, char **argv)
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
             printf("usage: fresnel bench [--scene FILE] [--material ID | --nk FILE] [--model NAME] [--type f32|q15|f16]\n"
                    "                     [--count N] [--runs R] [--data DIR]\n"
-                   "       fresnel bench --targets [--count N] [--runs R]\n\n"
+                   "       fresnel bench --targets\n\n"
                    "Prints CSV model,type,ns_per_rgb_eval: the median of R timed batches (default 5) of N\n"
                    "evaluations (default 2^20) over fixed pseudo-random cosines, for each model of the\n"
                    "scene (default data/scenes/report.scene) and material ID (default au). --runs 0\n"
                    "runs one untimed batch (the callgrind workload of `make report`). --nk FILE takes the\n"
                    "material from a user's n,k file (formats: fresnel import --help).\n\n"
-                   "--targets: the library's speed targets, CSV\n"
-                   "  name,ns,ratio_to_schlick,max_abs_err,matched_c0,matched_c1e-4\n"
-                   "one channel of copper at 650 nm (eta 0.24, kappa 3.63), every row timed back to back\n"
-                   "in R rounds (default %d) of N cosines (default %d), the median; ratio to the\n"
-                   "schlick row of the same run; max_abs_err against the double reference on the grid\n"
-                   "gen/bench/bench_targets.h describes; matched_*: the result at eta = 1, kappa = 0 (exact: 0;\n"
-                   "'-': not a conductor row).\n"
-                   "mitsuba-style and pbrt-style are this project's binary32 re-implementations of those\n"
-                   "renderers' published algorithms (gen/bench/bench_compare.c), compiled out of line as the\n"
-                   "runtime's functions are.\n%s\n",
-                   BENCH_TARGETS_RUNS, BENCH_TARGETS_COUNT, bench_compiler());
+                   "--targets: the accuracy of the rows of the library's speed targets, CSV\n"
+                   "  name,max_abs_err,matched_c0,matched_c1e-4\n"
+                   "max_abs_err against the double reference on the grid gen/bench/bench_targets.h\n"
+                   "describes; matched_*: the result at eta = 1, kappa = 0 (exact: 0; '-': not a\n"
+                   "conductor row). mitsuba-style and pbrt-style are this project's binary32\n"
+                   "transcriptions of Mitsuba 3's fresnel_conductor and pbrt-v4's FrComplex\n"
+                   "(gen/bench/peers.h). Their speed, against the library's, is `make bench`\n"
+                   "(speed/speed.c: each flag set built on its own, peers as calls and inlined).\n%s\n",
+                   bench_compiler());
             return 0;
         }
         if (!strcmp(o, "--targets")) {
@@ -80,7 +75,7 @@ int cmd_bench(int argc, char **argv)
             return cli_bad_argument(WHERE, o, options);
         if (!(v = cli_option_value(WHERE, argc, argv, &i)))
             return CLI_BAD_INPUT;
-        scene_options += strcmp(o, "--count") && strcmp(o, "--runs");
+        scene_options++;
         if (!strcmp(o, "--scene"))
             scene_path = v;
         else if (!strcmp(o, "--material"))
@@ -99,17 +94,15 @@ int cmd_bench(int argc, char **argv)
         else if (!strcmp(o, "--count")) {
             if (cli_parse_int(v, 1, 1 << 26, &count))
                 return cli_error(WHERE, "--count expects an integer 1..2^26, got '%s'", v);
-            count_set = 1;
         } else {
             if (cli_parse_int(v, 0, 101, &runs))
                 return cli_error(WHERE, "--runs expects an integer 0..101, got '%s'", v);
-            runs_set = 1;
         }
     }
     if (targets) {
         if (scene_options)
-            return cli_error(WHERE, "--targets takes only --count and --runs (see fresnel bench --help)");
-        return bench_targets_print(count_set ? count : BENCH_TARGETS_COUNT, runs_set ? runs : BENCH_TARGETS_RUNS);
+            return cli_error(WHERE, "--targets takes no other option (see fresnel bench --help)");
+        return bench_targets_print();
     }
     if ((status = scene_load(scene_path, &sc)))
         return status;
@@ -121,8 +114,8 @@ int cmd_bench(int argc, char **argv)
         source.id = nk_id;
     }
     if (scene_lut_spacing(&sc) == LUT_GRAZING_PL)
-        return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `fresnel bench --targets` and "
-                                     "`make cross-count` time fresnel_lut_pl_u16_q15_fast");
+        return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `make cross-count` "
+                                     "times fresnel_lut_pl_u16_q15_fast");
     if (only_model && !scene_has_model(&sc, only_model)) {
         const char *names[SCENE_MAX_MODELS + 1];
         for (m = 0; m < sc.model_count; m++)

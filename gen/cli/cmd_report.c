@@ -12,7 +12,7 @@
 static void report_usage(FILE *out)
 {
     fprintf(out, "usage: fresnel report [--scene FILE] [-o DIR] [--data DIR] [--cross FILE] [--size FILE]\n"
-                 "                      [--gamut map|clip|keep] [--no-timing] [--no-instructions]\n\n"
+                 "                      [--speed FILE]... [--gamut map|clip|keep] [--no-timing] [--no-instructions]\n\n"
                  "Measures every material x model x number type of the scene (default\n"
                  "data/scenes/report.scene) against the spectral ground truth and writes\n"
                  "DIR/report.md, DIR/pareto.svg, DIR/sigma.svg and DIR/curves/<material>.svg\n"
@@ -21,15 +21,17 @@ static void report_usage(FILE *out)
                  "--no-timing and --no-instructions skip those (for tests). --cross FILE and\n"
                  "--size FILE: the output of `make cross-count` and of `make size`, for the\n"
                  "targets table's Cortex-M0 rows and the report's instruction-count and\n"
-                 "code-size sections (make report passes both). --gamut overrides the scene's\n"
-                 "gamut policy.\n");
+                 "code-size sections (make report passes both). --speed FILE (up to 4): the\n"
+                 "output of `make bench` at one flag set, for the targets table's host speed\n"
+                 "rows (make report passes -O2 and -O3 -march=native). --gamut overrides the\n"
+                 "scene's gamut policy.\n");
 }
 
 int cmd_report(int argc, char **argv)
 {
     report_options o;
-    static const char *const options[] = {"--scene", "-o", "--cross", "--size", "--data", "--gamut", "--no-timing",
-                                          "--no-instructions", "--help", NULL};
+    static const char *const options[] = {"--scene", "-o", "--cross", "--size", "--speed", "--data", "--gamut",
+                                          "--no-timing", "--no-instructions", "--help", NULL};
     int i;
     memset(&o, 0, sizeof o);
     o.scene_path = "data/scenes/report.scene";
@@ -57,6 +59,11 @@ int cmd_report(int argc, char **argv)
                 o.cross_path = v;
             else if (!strcmp(argv[i - 1], "--size"))
                 o.size_path = v;
+            else if (!strcmp(argv[i - 1], "--speed")) {
+                if (o.speed_count == REPORT_MAX_SPEED)
+                    return cli_error(WHERE, "--speed: at most %d files", REPORT_MAX_SPEED);
+                o.speed_paths[o.speed_count++] = v;
+            }
             else if (!strcmp(argv[i - 1], "--gamut")) {
                 if (gamut_option(WHERE, v, &o.gamut))
                     return CLI_BAD_INPUT;

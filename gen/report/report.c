@@ -11,6 +11,7 @@
 
 #include "cli/cli.h"
 #include "bench/bench.h"
+#include "bench/speed_targets.h"
 #include "model/reference.h"
 #include "model/registry.h"
 #include "report/report.h"
@@ -409,6 +410,29 @@ static int write_cross(const report_run *r, FILE *f)
     return 0;
 }
 
+/* The `make bench` outputs the speed targets come from, as printed. */
+static int write_speed(const report_run *r, FILE *f)
+{
+    int i, status;
+    if (!r->speed_count)
+        return 0;
+    fputs("\n## Host speed against other renderers' algorithms\n\n"
+          "The output of `make bench` at each flag set (speed/speed.c; format in gen/bench/speed_targets.h), from "
+          "which the targets table's speed rows come: ns per evaluation, one channel, and the time over the "
+          "schlick-f32 row of the same round. The mitsuba-* and pbrt-* rows are this project's binary32 "
+          "transcriptions (gen/bench/peers.h), no code of theirs, of Mitsuba 3's fresnel_conductor "
+          "(include/mitsuba/render/fresnel.h) and pbrt-v4's FrComplex (src/pbrt/util/scattering.h), each timed as "
+          "an out-of-line call and inlined into the array loop.\n",
+          f);
+    for (i = 0; i < r->speed_count; i++) {
+        fprintf(f, "\n`make bench OPT='%s'`:\n\n```\n", r->speed[i]->opt);
+        if ((status = copy_file(f, r->speed_paths[i])))
+            return status;
+        fputs("```\n", f);
+    }
+    return 0;
+}
+
 static void write_budget(report_run *r, FILE *f)
 {
     int n = r->sc.model_count * report_type_count, k, j, nf = 0, a, b, use_instr = 1;
@@ -490,8 +514,29 @@ int report_write(const report_options *o)
     r.out_dir = o->out_dir;
     r.cross_path = o->cross_path;
     r.size_path = o->size_path;
-    if ((status = scene_load(scene_path, &r.sc)))
+    for (i = 0; i < o->speed_count && i < REPORT_MAX_SPEED; i++) { /* bad input: an error before anything is written */
+        speed_file *sf = malloc(sizeof *sf);
+        char where[1100];
+        const char *what;
+        if (!sf) {
+            status = cli_oom(WHERE);
+            break;
+        }
+        r.speed[i] = sf;
+        r.speed_paths[i] = o->speed_paths[i];
+        r.speed_count = i + 1;
+        if (speed_file_read(o->speed_paths[i], sf, where, (int)sizeof where, &what)) {
+            status = cli_error(where, "%s", what);
+            break;
+        }
+    }
+    if (!status)
+        status = scene_load(scene_path, &r.sc);
+    if (status) {
+        for (i = 0; i < r.speed_count; i++)
+            free((void *)r.speed[i]);
         return status;
+    }
     r.timing = timing;
     if (scene_lut_spacing(&r.sc) == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only and the report measures every number "
@@ -580,7 +625,7 @@ int report_write(const report_options *o)
     write_approaches(&r, out.f);
     write_hoffman(&r, out.f);
     write_budget(&r, out.f);
-    if ((status = write_cross(&r, out.f))) {
+    if ((status = write_cross(&r, out.f)) || (status = write_speed(&r, out.f))) {
         cli_out_abort(&out);
         goto done;
     }
@@ -608,6 +653,8 @@ done:
     free(r.ns);
     free(r.instr);
     free(r.g);
+    for (i = 0; i < r.speed_count; i++)
+        free((void *)r.speed[i]);
     free(sig_de);
     free(sig_err);
     return status;

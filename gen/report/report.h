@@ -14,6 +14,7 @@
 #define REPORT_ANGLES 91 /* theta = 0, 1, ..., 90 degrees */
 #define REPORT_MAX_TYPES 4
 #define REPORT_HOFFMAN 14 /* metals in Hoffman's table */
+#define REPORT_MAX_SPEED 4 /* --speed files */
 
 double report_cos(int angle); /* cos of angle degrees; exactly 0 at 90 */
 
@@ -73,6 +74,10 @@ typedef struct report_run {
     int hoffman_in_gamut[REPORT_HOFFMAN];  /* F0 inside ACEScg, unclamped */
     const char *cross_path;                /* `make cross-count` output, or NULL */
     const char *size_path;                 /* `make size` output, or NULL */
+    /* `make bench` outputs (--speed FILE, one per flag set), already read */
+    const char *speed_paths[REPORT_MAX_SPEED];
+    const struct speed_file *speed[REPORT_MAX_SPEED];
+    int speed_count;
     int timing;                            /* 0: --no-timing */
 } report_run;
 
@@ -115,6 +120,8 @@ void report_curve_de(const lab_space *ls, const double (*gt)[3], const double (*
 typedef struct report_options {
     const char *scene_path, *out_dir, *data_dir; /* data_dir NULL: the default */
     const char *cross_path, *size_path;          /* `make cross-count`, `make size` output, or NULL */
+    const char *speed_paths[REPORT_MAX_SPEED];   /* `make bench` outputs, read by report_write */
+    int speed_count;
     int timing, instructions; /* 0: skip timing / callgrind counts */
     int gamut_given;          /* 1: gamut overrides the scene's key */
     gamut_policy gamut;

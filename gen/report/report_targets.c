@@ -1,15 +1,17 @@
 /* The library's targets, each with the value this run measured and a pass/miss
  * mark, plus the LUT ablation that shows which encoding choice bought what.
  * Accuracy comes from the run's own materials (the 14 metals of Hoffman's
- * table must be in the scene), host speed from bench_targets.c, Cortex-M0
- * counts and sizes from the output of `make cross-count` and `make size`
- * (--cross and --size FILE; make report passes them). */
+ * table must be in the scene), host speed from the output of `make bench`
+ * at each flag set (--speed FILE) with the errors of bench_targets.c,
+ * Cortex-M0 counts and sizes from the output of `make cross-count` and
+ * `make size` (--cross and --size FILE; make report passes them all). */
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "bench/bench_targets.h"
+#include "bench/speed_targets.h"
 #include "3_encode/fixed_params.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
@@ -180,63 +182,97 @@ static void write_ablation(FILE *f, const lut_result *o)
                 o[v].gold_max);
 }
 
-/* ---- host speed (bench_targets.c), one channel per evaluation */
+/* ---- host speed: `make bench` at each flag set (--speed FILE), errors from
+ * bench_targets.c */
 
-static const bench_target_row *speed_row(const bench_target_row *rows, int n, const char *name)
+/* The accuracy row (bench_targets.c) of a speed row (speed/speed.c): the
+ * same function, timed as a call or inlined. */
+static const char *const accuracy_of[][2] = {
+    {"conductor-call", "conductor"},         {"conductor-batch", "conductor-batch"},
+    {"mitsuba-call", "mitsuba-style"},       {"mitsuba-inline", "mitsuba-style"},
+    {"lut16-cubic-f32", "lut16-cubic-f32"},  {"lut32-q15", "lut32-q15"},
+    {"lut16-cubic-q15", "lut16-cubic-q15"},  {"lut16-linear-q15", "lut16-linear-q15"},
+    {"schlick-q15", "schlick-q15"},
+    {"schlick-f32", "schlick"},
+};
+
+static double row_error(const bench_target_row *rows, int n, const char *speed_name)
 {
+    size_t k;
     int i;
-    for (i = 0; i < n; i++)
-        if (!strcmp(rows[i].name, name))
-            return &rows[i];
-    return NULL;
+    for (k = 0; k < sizeof accuracy_of / sizeof accuracy_of[0]; k++)
+        if (!strcmp(accuracy_of[k][0], speed_name))
+            for (i = 0; i < n; i++)
+                if (!strcmp(rows[i].name, accuracy_of[k][1]))
+                    return rows[i].max_abs_err;
+    return NAN;
 }
 
-static void speed_targets(FILE *f, int timing)
+/* The last --speed file at canonical flag set k, or NULL. */
+static const speed_file *speed_at(const report_run *r, int k)
+{
+    const speed_file *f = NULL;
+    int i;
+    for (i = 0; i < r->speed_count; i++)
+        if (speed_flagset(r->speed[i]->opt) == k)
+            f = r->speed[i];
+    return f;
+}
+
+static void host_speed_targets(const report_run *r, FILE *f)
 {
     bench_target_row rows[BENCH_TARGET_ROWS];
-    const bench_target_row *mit, *pbrt, *best = NULL;
-    static const char *const ours[] = {"conductor", "conductor-prepared", "conductor-batch"};
-    static const char *const luts[][2] = {{"lut16-cubic-f32", "lut16-cubic-q15"}, {"lut32-f32", "lut32-q15"},
-                                          {"lut32-f32", "lut32-q15-fast"}};
-    int n = timing ? bench_speed_targets(rows, BENCH_TARGET_ROWS) : -1, k;
-    char list[256] = "";
-    if (n <= 0) {
-        target(f, "Exact conductor f32 against Mitsuba's algorithm", "<= 1.2x its time, <= 1e-6 abs error",
-               UNMEASURED, "timing off in this run");
+    int n, t, k, i;
+    if (!r->speed_count) {
+        target(f, "Host speed against Mitsuba 3's and pbrt-v4's algorithms, LUTs against Schlick", "", UNMEASURED,
+               "run through `make report` (--speed: the output of `make bench` at -O2 and -O3 -march=native)");
         return;
     }
-    mit = speed_row(rows, n, "mitsuba-style");
-    pbrt = speed_row(rows, n, "pbrt-style");
-    for (k = 0; k < 3; k++) {
-        const bench_target_row *o = speed_row(rows, n, ours[k]);
-        if (!o)
-            continue;
-        snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s %.2fx Schlick, err %.1e", *list ? "; " : "",
-                 o->name, o->ratio_to_schlick, o->max_abs_err);
-        if (o->max_abs_err <= 1e-6 && (!best || o->ns < best->ns))
-            best = o;
-    }
-    if (mit && best)
-        target(f, "Exact conductor f32 (ours) against Mitsuba 3's algorithm (ours written from it, same run)",
-               "<= 1.2x its time, <= 1e-6 abs error", best->ns <= 1.2 * mit->ns ? PASS : MISS,
-               "best %s: %.2fx Mitsuba's time; Mitsuba-style %.2fx Schlick, err %.1e, matched index at c = 1e-4: "
-               "%.3g; ours: %s",
-               best->name, best->ns / mit->ns, mit->ratio_to_schlick, mit->max_abs_err, mit->matched_c1e4, list);
-    if (pbrt && best)
-        target(f, "Exact conductor f32 (ours) against pbrt-v4's FrComplex algorithm", ">= 2x faster",
-               pbrt->ns >= 2.0 * best->ns ? PASS : MISS, "%.2fx faster (%s); pbrt-style %.2fx Schlick, err %.1e",
-               pbrt->ns / best->ns, best->name, pbrt->ratio_to_schlick, pbrt->max_abs_err);
-    for (k = 0; k < 3; k++) {
-        const bench_target_row *a = speed_row(rows, n, luts[k][0]), *b = speed_row(rows, n, luts[k][1]);
-        const bench_target_row *sq = speed_row(rows, n, "schlick-q15");
-        char what[96];
-        if (!a || !b || !sq)
-            continue;
-        snprintf(what, sizeof what, "LUT evaluation, %s and %s", luts[k][0], luts[k][1]);
-        target(f, what, "<= 1.5x Schlick in the same number type (one channel, same run)",
-               a->ratio_to_schlick <= 1.5 && b->ns <= 1.5 * sq->ns ? PASS : MISS,
-               "f32 %.2fx binary32 Schlick; Q1.15 %.2fx Q1.15 Schlick (%.2fx binary32 Schlick)", a->ratio_to_schlick,
-               b->ns / sq->ns, b->ratio_to_schlick);
+    n = bench_target_errors(rows, BENCH_TARGET_ROWS);
+    for (t = 0; t < speed_target_count; t++) {
+        const speed_target *g = &speed_targets[t];
+        char goal[96], text[1024] = "", what[256];
+        int measured = 0, missed = 0;
+        double en = row_error(rows, n, g->num), ed = row_error(rows, n, g->den);
+        snprintf(goal, sizeof goal, "<= %gx at %s, <= %gx at %s (one process, median over interleaved rounds)",
+                 g->goal[0], speed_flagset_names[0], g->goal[1], speed_flagset_names[1]);
+        for (k = 0; k < SPEED_FLAGSETS; k++) {
+            const speed_file *sf = speed_at(r, k);
+            const speed_ratio *q = sf ? speed_file_target(sf, g->id) : NULL;
+            const speed_row *a = sf ? speed_file_row(sf, g->num) : NULL, *b = sf ? speed_file_row(sf, g->den) : NULL;
+            size_t len = strlen(text);
+            if (!q || !a || !b) {
+                snprintf(text + len, sizeof text - len, "%s%s: not measured", *text ? "; " : "",
+                         speed_flagset_names[k]);
+                continue;
+            }
+            measured++;
+            if (q->med <= g->goal[k])
+                snprintf(text + len, sizeof text - len, "%s%s: %.2fx (quartiles %.2f-%.2f) pass", *text ? "; " : "",
+                         speed_flagset_names[k], q->med, q->q1, q->q3);
+            else {
+                missed++;
+                snprintf(text + len, sizeof text - len,
+                         "%s%s: %.2fx (quartiles %.2f-%.2f) MISS: %s takes %.2fx the time of %s, goal %gx "
+                         "(%.2f ns against %.2f ns per evaluation)",
+                         *text ? "; " : "", speed_flagset_names[k], q->med, q->q1, q->q3, g->num, q->med, g->den,
+                         g->goal[k], a->ns[2], b->ns[2]);
+            }
+        }
+        for (i = 0; i < r->speed_count; i++) { /* other flag sets: their ratio, no goal */
+            const speed_ratio *q = speed_flagset(r->speed[i]->opt) < 0 ? speed_file_target(r->speed[i], g->id) : NULL;
+            size_t len = strlen(text);
+            if (q)
+                snprintf(text + len, sizeof text - len, "; %s: %.2fx (no goal at this flag set)", r->speed[i]->opt,
+                         q->med);
+        }
+        if (!isnan(en) && !isnan(ed)) {
+            size_t len = strlen(text);
+            snprintf(text + len, sizeof text - len, "; largest error %s %.1e, %s %.1e (fresnel bench --targets)",
+                     g->num, en, g->den, ed);
+        }
+        snprintf(what, sizeof what, "Host speed: %s (rows %s / %s of `make bench`)", g->what, g->num, g->den);
+        target(f, what, goal, missed ? MISS : (measured == SPEED_FLAGSETS ? PASS : UNMEASURED), "%s", text);
     }
 }
 
@@ -362,7 +398,7 @@ void report_targets(report_run *r, FILE *f)
                    : MISS,
                "lut16-cubic %.4f / %.4f, lut32 %.4f / %.4f", luts[V_LUT16_CUBIC].gold_mean,
                luts[V_LUT16_CUBIC].gold_max, luts[V_LUT32].gold_mean, luts[V_LUT32].gold_max);
-    speed_targets(f, r->timing);
+    host_speed_targets(r, f);
     m0_targets(r, f);
     write_ablation(f, luts);
     fprintf(f, "\n");

@@ -1,0 +1,151 @@
+/* The host speed targets and the `make bench` file (see speed_targets.h). */
+#include "bench/speed_targets.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+const char *const speed_flagset_names[SPEED_FLAGSETS] = {"-O2", "-O3 -march=native"};
+
+/* Row names are those of speed/speed.c. The RGB batch row joins here when
+ * the runtime has one: {"rgb-batch-vs-mitsuba-inline", "conductor-rgb-batch",
+ * "mitsuba-inline-rgb", ...}, speed/speed.c timing both. */
+const speed_target speed_targets[] = {
+    {"batch-vs-mitsuba-inline", "conductor-batch", "mitsuba-inline",
+     "fresnel_conductor_batch against Mitsuba 3's fresnel_conductor inlined in an array loop (x86-64 host)", {0.5, 0.8}},
+    {"conductor-vs-mitsuba-call", "conductor-call", "mitsuba-call",
+     "fresnel_conductor against Mitsuba 3's fresnel_conductor, both out-of-line calls", {1.0, 1.0}},
+    {"lut16-cubic-vs-schlick", "lut16-cubic-f32", "schlick-f32",
+     "fresnel_lut_cubic, 16 nodes, against fresnel_schlick (binary32 calls)", {1.5, 1.5}},
+    {"lut32-q15-vs-schlick-q15", "lut32-q15", "schlick-q15",
+     "fresnel_lut_u16_q15, 32 nodes, against fresnel_schlick_q15", {3.0, 3.0}},
+    {"lut16-cubic-q15-vs-schlick-q15", "lut16-cubic-q15", "schlick-q15",
+     "fresnel_lut_cubic_u16_q15, 16 nodes, against fresnel_schlick_q15", {3.0, 3.0}},
+    {"lut16-linear-q15-vs-schlick-q15", "lut16-linear-q15", "schlick-q15",
+     "fresnel_lut_linear_u16_q15, 16 nodes, against fresnel_schlick_q15", {3.0, 3.0}},
+};
+const int speed_target_count = (int)(sizeof speed_targets / sizeof speed_targets[0]);
+
+int speed_flagset(const char *opt)
+{
+    char words[96] = "";
+    const char *p = opt;
+    int k;
+    while (*p) { /* single blanks between words */
+        size_t n;
+        while (*p == ' ' || *p == '\t')
+            p++;
+        n = strcspn(p, " \t");
+        if (!n)
+            break;
+        if (strlen(words) + n + 2 > sizeof words)
+            return -1;
+        if (*words)
+            strcat(words, " ");
+        strncat(words, p, n);
+        p += n;
+    }
+    for (k = 0; k < SPEED_FLAGSETS; k++)
+        if (!strcmp(words, speed_flagset_names[k]))
+            return k;
+    return -1;
+}
+
+static void text_value(char *dst, size_t size, const char *v)
+{
+    size_t n = strcspn(v, "\r\n");
+    if (n >= size)
+        n = size - 1;
+    memcpy(dst, v, n);
+    dst[n] = '\0';
+}
+
+int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, const char **what)
+{
+    FILE *in = fopen(path, "r");
+    char line[512];
+    int ln = 0, has_opt = 0;
+    memset(f, 0, sizeof *f);
+    if (!in) {
+        snprintf(where, (size_t)wherelen, "%s", path);
+        *what = "cannot open (expected the output of `make bench`)";
+        return -1;
+    }
+    while (fgets(line, sizeof line, in)) {
+        char name[SPEED_NAME], form[16], tail;
+        const char *bad = NULL;
+        ln++;
+        if (!strchr(line, '\n') && !feof(in))
+            bad = "expected a line shorter than 512 bytes";
+        else if (!strncmp(line, "# opt: ", 7)) {
+            if (has_opt)
+                bad = "expected one flag set per file (a second '# opt:' line; `make bench OPT=...` prints one)";
+            text_value(f->opt, sizeof f->opt, line + 7);
+            has_opt = 1;
+        } else if (!strncmp(line, "# compiler: ", 12))
+            text_value(f->compiler, sizeof f->compiler, line + 12);
+        else if (!strncmp(line, "# cpu: ", 7))
+            text_value(f->cpu, sizeof f->cpu, line + 7);
+        else if (!strncmp(line, "# vector: ", 10))
+            text_value(f->vector, sizeof f->vector, line + 10);
+        else if (line[0] == '#' || line[strspn(line, " \t\r\n")] == '\0')
+            continue;
+        else if (!strncmp(line, "row ", 4)) {
+            speed_row *r = &f->rows[f->n_rows];
+            if (f->n_rows == SPEED_MAX_ROWS)
+                bad = "at most 48 rows";
+            else if (sscanf(line, "row %39s %15s %lf %lf %lf %lf %lf %lf %lf %lf %c", name, form, &r->ns[0], &r->ns[1],
+                            &r->ns[2], &r->ns[3], &r->ns[4], &r->x[0], &r->x[1], &r->x[2], &tail) != 10 ||
+                     !(r->ns[0] > 0.0 && r->ns[0] <= r->ns[2] && r->ns[2] <= r->ns[4] && r->x[0] > 0.0))
+                bad = "expected row NAME FORM then 8 numbers: ns min q1 median q3 max (0 < min <= median <= max), "
+                      "ratio median q1 q3 (> 0)";
+            else {
+                strcpy(r->name, name);
+                strcpy(r->form, form);
+                f->n_rows++;
+            }
+        } else if (!strncmp(line, "target ", 7)) {
+            speed_ratio *t = &f->targets[f->n_targets];
+            if (f->n_targets == SPEED_MAX_ROWS)
+                bad = "at most 48 targets";
+            else if (sscanf(line, "target %39s %lf %lf %lf", name, &t->med, &t->q1, &t->q3) != 4 || !(t->med > 0.0))
+                bad = "expected target ID then its ratio: median q1 q3 (median > 0)";
+            else {
+                strcpy(t->id, name);
+                f->n_targets++;
+            }
+        } else
+            bad = "expected '# ...', 'row ...' or 'target ...'";
+        if (bad) {
+            snprintf(where, (size_t)wherelen, "%s:%d", path, ln);
+            *what = bad;
+            fclose(in);
+            return -1;
+        }
+    }
+    fclose(in);
+    if (!has_opt) {
+        snprintf(where, (size_t)wherelen, "%s", path);
+        *what = "expected an '# opt: FLAGS' line (the output of `make bench`)";
+        return -1;
+    }
+    return 0;
+}
+
+const speed_ratio *speed_file_target(const speed_file *f, const char *id)
+{
+    int i;
+    for (i = 0; i < f->n_targets; i++)
+        if (!strcmp(f->targets[i].id, id))
+            return &f->targets[i];
+    return NULL;
+}
+
+const speed_row *speed_file_row(const speed_file *f, const char *name)
+{
+    int i;
+    for (i = 0; i < f->n_rows; i++)
+        if (!strcmp(f->rows[i].name, name))
+            return &f->rows[i];
+    return NULL;
+}

@@ -1,0 +1,119 @@
+/* The timed kernels (kernels.h), in their own translation unit, compiled
+ * with the flags of the run like the library beside them. "call" rows call
+ * a function of another translation unit per cosine (the library's, or a
+ * peer's from gen/bench/bench_compare.c); "inline" rows inline a header's
+ * static function into the loop, which the compiler may vectorise; "batch"
+ * is the library's array function; "floor" rows bound what any loop over
+ * the arrays costs. */
+#include "kernels.h"
+
+#include "bench/bench_compare.h"
+#include "bench/peers.h"
+#include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
+
+/* The material's scalars are read into locals before the loop, as a
+ * renderer holds them: a store to out[] cannot alias them, so an inlined
+ * formula may keep them in registers and the compiler may vectorise. */
+#define LOOP_BODY(dst, expr)                                                                                  \
+    const float eta = x->eta, kappa = x->kappa, f0 = x->f0;                                                  \
+    const int32_t f0q = x->f0q;                                                                               \
+    int i;                                                                                                    \
+    (void)eta, (void)kappa, (void)f0, (void)f0q, (void)c, (void)cq, (void)out, (void)outq;                   \
+    for (i = 0; i < n; i++)                                                                                   \
+        dst[i] = (expr);
+#define LOOP(name, expr)                                                                                      \
+    static void name(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq, int n) \
+    {                                                                                                         \
+        LOOP_BODY(out, expr)                                                                                  \
+    }
+#define LOOP_Q15(name, expr)                                                                                  \
+    static void name(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq, int n) \
+    {                                                                                                         \
+        LOOP_BODY(outq, expr)                                                                                 \
+    }
+
+/* Schlick's formula written out in the loop, no clamp: the cheapest loop
+ * that still computes a Fresnel factor. */
+static inline float schlick_minimal(float f0, float c)
+{
+    float m = 1.0f - c, m2 = m * m;
+    return f0 + (1.0f - f0) * (m2 * m2 * m);
+}
+
+LOOP(k_copy, c[i])
+LOOP(k_schlick_inline, schlick_minimal(f0, c[i]))
+LOOP(k_schlick, fresnel_schlick(f0, c[i]))
+LOOP_Q15(k_schlick_q15, fresnel_schlick_q15(f0q, cq[i]))
+LOOP_Q15(k_schlick_q15_fast, fresnel_schlick_q15_fast(f0q, cq[i]))
+LOOP(k_conductor, fresnel_conductor(eta, kappa, c[i]))
+LOOP(k_conductor_prepared, fresnel_conductor_prepared(&x->prep, c[i]))
+LOOP(k_mitsuba_call, cmp_mitsuba_conductor(eta, kappa, c[i]))
+LOOP(k_mitsuba_inline, peer_mitsuba_conductor(eta, kappa, c[i]))
+LOOP(k_pbrt_call, cmp_pbrt_conductor(eta, kappa, c[i]))
+LOOP(k_pbrt_inline, peer_pbrt_conductor(eta, kappa, c[i]))
+LOOP(k_lut16_cubic, fresnel_lut_cubic(x->lut16, 16, c[i]))
+LOOP(k_lut32, fresnel_lut(x->lut32, 32, c[i]))
+LOOP(k_lut16_linear, fresnel_lut_linear(x->lin16, 16, c[i]))
+LOOP_Q15(k_lut32_q15, fresnel_lut_u16_q15(x->q32, 32, cq[i]))
+LOOP_Q15(k_lut16_cubic_q15, fresnel_lut_cubic_u16_q15(x->q16, 16, cq[i]))
+LOOP_Q15(k_lut16_linear_q15, fresnel_lut_linear_u16_q15(x->qlin16, 16, cq[i]))
+LOOP_Q15(k_lut32_q15_fast, fresnel_lut_u16_q15_fast(x->q32, 32, cq[i]))
+
+static void k_conductor_batch(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq, int n)
+{
+    (void)cq;
+    (void)outq;
+    fresnel_conductor_batch(&x->prep, c, out, n);
+}
+
+/* The RGB batch row goes here when the runtime has one (its peer row: the
+ * Mitsuba loop over three channels). */
+const speed_kernel_def speed_kernels[] = {
+    {"copy", "floor", k_copy, 0},
+    {"schlick-inline", "floor", k_schlick_inline, 0},
+    {"schlick-f32", "call", k_schlick, 0},
+    {"schlick-q15", "call", k_schlick_q15, 1},
+    {"schlick-q15-fast", "inline", k_schlick_q15_fast, 1},
+    {"conductor-call", "call", k_conductor, 0},
+    {"conductor-prepared", "call", k_conductor_prepared, 0},
+    {"conductor-batch", "batch", k_conductor_batch, 0},
+    {"mitsuba-call", "call", k_mitsuba_call, 0},
+    {"mitsuba-inline", "inline", k_mitsuba_inline, 0},
+    {"pbrt-call", "call", k_pbrt_call, 0},
+    {"pbrt-inline", "inline", k_pbrt_inline, 0},
+    {"lut16-cubic-f32", "call", k_lut16_cubic, 0},
+    {"lut32-f32", "call", k_lut32, 0},
+    {"lut16-linear-f32", "call", k_lut16_linear, 0},
+    {"lut32-q15", "call", k_lut32_q15, 1},
+    {"lut16-cubic-q15", "call", k_lut16_cubic_q15, 1},
+    {"lut16-linear-q15", "call", k_lut16_linear_q15, 1},
+    {"lut32-q15-fast", "inline", k_lut32_q15_fast, 1},
+};
+const int speed_kernel_count = (int)(sizeof speed_kernels / sizeof speed_kernels[0]);
+
+static int32_t q15(float v) { return (int32_t)(v * 32768.0f + 0.5f); }
+
+/* The tables hold the library's own exact conductor at the nodes: uniform in
+ * sqrt(c) (fresnel_lut*, cubic) or in c (linear). */
+void speed_ctx_init(speed_ctx *x, float eta, float kappa)
+{
+    int i;
+    x->eta = eta;
+    x->kappa = kappa;
+    x->f0 = fresnel_conductor(eta, kappa, 1.0f);
+    x->f0q = q15(x->f0);
+    x->prep = fresnel_conductor_prepare(eta, kappa);
+    for (i = 0; i < 32; i++) {
+        float s = (float)i / 31.0f;
+        x->lut32[i] = fresnel_conductor(eta, kappa, s * s);
+        x->q32[i] = (uint16_t)q15(x->lut32[i]);
+    }
+    for (i = 0; i < 16; i++) {
+        float s = (float)i / 15.0f;
+        x->lut16[i] = fresnel_conductor(eta, kappa, s * s);
+        x->q16[i] = (uint16_t)q15(x->lut16[i]);
+        x->lin16[i] = fresnel_conductor(eta, kappa, s);
+        x->qlin16[i] = (uint16_t)q15(x->lin16[i]);
+    }
+}

@@ -1,0 +1,35 @@
+/* The timed kernels of `make bench` (speed/speed.c): each evaluates one
+ * channel of one material on n cosines and writes n results to an array, as
+ * a renderer's loop over pixels or samples does. No kernel sums or reduces:
+ * speed.c checks the outputs outside the timed region. */
+#ifndef FRESNEL_SPEED_KERNELS_H
+#define FRESNEL_SPEED_KERNELS_H
+
+#include <stdint.h>
+
+#include "fresnel.h"
+
+typedef struct speed_ctx {
+    float eta, kappa, f0;
+    int32_t f0q;
+    fresnel_conductor_prep prep;
+    float lut16[16], lut32[32], lin16[16];
+    uint16_t q16[16], q32[32], qlin16[16];
+} speed_ctx;
+
+/* c: binary32 cosines, cq: the same as Q1.15 codes; out (binary32) or outq
+ * (Q1.15) receives the results. */
+typedef void (*speed_kernel)(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
+                             int n);
+
+typedef struct speed_kernel_def {
+    const char *name, *form; /* form: floor, call, inline or batch */
+    speed_kernel fn;
+    int q15;                 /* writes outq instead of out */
+} speed_kernel_def;
+extern const speed_kernel_def speed_kernels[];
+extern const int speed_kernel_count;
+
+void speed_ctx_init(speed_ctx *x, float eta, float kappa);
+
+#endif
