@@ -139,17 +139,17 @@ report: $(BUILD)/fresnel
 	@echo "make report: build/report/report.md (targets, accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/"
 
 # `make bench` times the library against the peers' algorithms and floor
-# loops (speed/speed.c; the file format is in gen/bench/speed_targets.h) at
+# loops (tests/speed/speed.c; the file format is in gen/bench/speed_targets.h) at
 # -O2 and at -O3 -march=native, or only at the flag set given
 # (`make bench OPT='-O3 -march=native'`). Each compiler and flag set builds
 # the program, the runtime's sources and the peers in its own directory,
 # with $(OPT) $(MATH_FLAGS), so no object of another flag set is reused.
 # SPEED_ARGS='--rounds R' sets the number of interleaved rounds (default 41).
 SPEED_DIR := $(BUILD)/bench/$(notdir $(firstword $(CC)))$(subst =,-,$(subst $() ,,$(OPT)))
-SPEED_SRC := speed/speed.c speed/kernels.c gen/bench/bench_compare.c gen/bench/speed_targets.c \
+SPEED_SRC := tests/speed/speed.c tests/speed/kernels.c gen/bench/bench_compare.c gen/bench/speed_targets.c \
              $(wildcard src/f32/*.c src/q15/*.c)
 SPEED_CFLAGS := $(WARN) $(OPT) $(MATH_FLAGS) -D_POSIX_C_SOURCE=200809L -Iinclude -Igen
-$(SPEED_DIR)/speed: $(SPEED_SRC) $(wildcard speed/*.h gen/bench/*.h include/*.h src/*/*.h)
+$(SPEED_DIR)/speed: $(SPEED_SRC) $(wildcard tests/speed/*.h gen/bench/*.h include/*.h src/*/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(SPEED_CFLAGS) -DSPEED_OPT='"$(OPT)"' -DSPEED_CFLAGS='"$(CC) $(SPEED_CFLAGS)"' $(SPEED_SRC) $(LDLIBS) -o $@
 

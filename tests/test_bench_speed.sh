@@ -1,5 +1,5 @@
 #!/bin/sh
-# `make bench`'s program (speed/speed.c) builds with the flag set given and
+# `make bench`'s program (tests/speed/speed.c) builds with the flag set given and
 # prints the format gen/bench/speed_targets.h describes: its header, every
 # row, every target; `fresnel report --speed` reads what it prints. Nothing
 # about speed is checked: the numbers are benchmarks (make bench).

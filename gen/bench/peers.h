@@ -1,6 +1,6 @@
 /* Other renderers' exact conductor Fresnel, this project's own binary32
  * transcriptions of their published formulas (no code of theirs), as static
- * inline functions: `make bench` (speed/) times each inlined in an array
+ * inline functions: `make bench` (tests/speed/) times each inlined in an array
  * loop, as a renderer runs its header code, and out of line through
  * gen/bench/bench_compare.c. Never part of the runtime.
  *

@@ -7,9 +7,9 @@
 
 const char *const speed_flagset_names[SPEED_FLAGSETS] = {"-O2", "-O3 -march=native"};
 
-/* Row names are those of speed/speed.c. The RGB batch row joins here when
+/* Row names are those of tests/speed/speed.c. The RGB batch row joins here when
  * the runtime has one: {"rgb-batch-vs-mitsuba-inline", "conductor-rgb-batch",
- * "mitsuba-inline-rgb", ...}, speed/speed.c timing both. */
+ * "mitsuba-inline-rgb", ...}, tests/speed/speed.c timing both. */
 const speed_target speed_targets[] = {
     {"batch-vs-mitsuba-inline", "conductor-batch", "mitsuba-inline",
      "fresnel_conductor_batch against Mitsuba 3's fresnel_conductor inlined in an array loop (x86-64 host)", {0.5, 0.8}},

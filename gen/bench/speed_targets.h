@@ -1,5 +1,5 @@
 /* The library's host speed targets and the file `make bench` prints (one per
- * compiler flag set; speed/speed.c writes it, `fresnel report --speed FILE`
+ * compiler flag set; tests/speed/speed.c writes it, `fresnel report --speed FILE`
  * reads it). A benchmark: nothing here is asserted by tests.
  *
  * File format, one item per line, fields separated by blanks:

@@ -1,4 +1,4 @@
-/* The timed kernels of `make bench` (speed/speed.c): each evaluates one
+/* The timed kernels of `make bench` (tests/speed/speed.c): each evaluates one
  * channel of one material on n cosines and writes n results to an array, as
  * a renderer's loop over pixels or samples does. No kernel sums or reduces:
  * speed.c checks the outputs outside the timed region. */
