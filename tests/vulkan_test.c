@@ -20,7 +20,11 @@
  * The two relaxed modules are measured, not asserted (a Vulkan driver may
  * compute RelaxedPrecision at 32 bits, and lavapipe does: NOTE lines say
  * whether the results differ from the full-precision module at all);
- * every result must still be finite and in [0, 1]. The table at the end
+ * every result must still be finite and in [0, 1]. With the default scene
+ * the port functions no scene model calls (the dielectric from both sides,
+ * internal and generalized Schlick, F0 in a medium and from the IOR,
+ * Gulbrandsen's (r, g)) also run at full precision, within 1e-5; only
+ * fresnel_gulbrandsen_nk is left to the OSMesa test. The table at the end
  * (NOTE table lines) is ports/README.md's.
  *
  * Usage: vulkan_test OUT_DIR MANIFEST IDENT SCENE.glsl SCENE.hlsl
@@ -108,6 +112,119 @@ static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, in
         fprintf(f, "    %sif (fr_material == %d) r = fresnel_%s_%s_%s_rgb(c);\n", i ? "else " : "", i, ident,
                 sc->materials[i], id);
     fprintf(f, "    fr_out[3 * i] = r.x;\n    fr_out[3 * i + 1] = r.y;\n    fr_out[3 * i + 2] = r.z;\n}\n");
+}
+
+static int build_module(const char *base, const char *label, const struct variant *va);
+
+/* The port functions no scene model calls, on the same grid against the C
+ * runtime: one module per front end, a specialisation constant picks the
+ * expression (valid GLSL and HLSL), the result in the first channel. 1/1.5
+ * and 1/1.33 as their binary32 values, so both sides see the same eta. */
+static float f_diel(float c) { return fresnel_dielectric(1.5f, c); }
+static float f_diel_in(float c) { return fresnel_dielectric(0.666666687f, c); }
+static float f_internal(float c) { return fresnel_schlick_internal(0.04f, 0.751879692f, c); }
+static float f_gen(float c) { return fresnel_schlick_gen(0.04f, 0.9f, 3.7f, c); }
+static float f_medium(float c) { return fresnel_f0_in_medium(c, 1.33f); }
+static float f_ior(float c) { return fresnel_f0_from_ior(4.0f * c, 2.0f); }
+static float f_rg_r(float c) { return fresnel_gulbrandsen_rg(4.0f * c, 2.0f).r; }
+static float f_rg_g(float c) { return fresnel_gulbrandsen_rg(4.0f * c, 2.0f).g; }
+static const struct func {
+    const char *expr;
+    float (*eval)(float c);
+} funcs[] = {
+    {"fresnel_dielectric(1.5, c)", f_diel},
+    {"fresnel_dielectric(0.666666687, c)", f_diel_in},
+    {"fresnel_schlick_internal(0.04, 0.751879692, c)", f_internal},
+    {"fresnel_schlick_gen(0.04, 0.9, 3.7, c)", f_gen},
+    {"fresnel_f0_in_medium(c, 1.33)", f_medium},
+    {"fresnel_f0_from_ior(4.0 * c, 2.0)", f_ior},
+    {"fresnel_gulbrandsen_rg(4.0 * c, 2.0).x", f_rg_r},
+    {"fresnel_gulbrandsen_rg(4.0 * c, 2.0).y", f_rg_g},
+};
+#define NFUNCS ((int)(sizeof funcs / sizeof funcs[0]))
+
+static void write_funcs_main(FILE *f, int hlsl)
+{
+    int k;
+    if (hlsl)
+        fprintf(f, "\n[[vk::binding(0, 0)]] StructuredBuffer<float> fr_c;\n"
+                   "[[vk::binding(1, 0)]] RWStructuredBuffer<float> fr_out;\n"
+                   "[[vk::constant_id(0)]] const int fr_func = 0;\n"
+                   "[numthreads(%d, 1, 1)]\nvoid main(uint3 fr_id : SV_DispatchThreadID)\n{\n"
+                   "    int i = (int)fr_id.x;\n    float r = -1.0;\n    float c;\n",
+                GROUP);
+    else
+        fprintf(f, "\nlayout(local_size_x = %d) in;\n"
+                   "layout(std430, set = 0, binding = 0) readonly buffer FrIn { highp float fr_c[]; };\n"
+                   "layout(std430, set = 0, binding = 1) writeonly buffer FrOut { highp float fr_out[]; };\n"
+                   "layout(constant_id = 0) const int fr_func = 0;\n"
+                   "void main()\n{\n    int i = int(gl_GlobalInvocationID.x);\n    highp float r = -1.0;\n"
+                   "    highp float c;\n",
+                GROUP);
+    fprintf(f, "    if (i >= %d)\n        return;\n    c = fr_c[i];\n", NCOS);
+    for (k = 0; k < NFUNCS; k++)
+        fprintf(f, "    %sif (fr_func == %d) r = %s;\n", k ? "else " : "", k, funcs[k].expr);
+    fprintf(f, "    fr_out[3 * i] = r;\n    fr_out[3 * i + 1] = 0.0;\n    fr_out[3 * i + 2] = 0.0;\n}\n");
+}
+
+/* The full-precision variants (V_GLSL, V_HLSL) of funcs[]: within HIGHP_BOUND. */
+static void run_funcs(vkrun *v, const char *dir, char **src, const float *cosines)
+{
+    static const int which[2] = {V_GLSL, V_HLSL};
+    int w, k, j;
+    for (w = 0; w < 2; w++) {
+        const struct variant *va = &variants[which[w]];
+        char base[1100], path[1200], name[256], err[512];
+        uint32_t *words;
+        size_t nbytes = 0;
+        FILE *f;
+        snprintf(base, sizeof base, "%s/functions_%d", dir, which[w]);
+        snprintf(path, sizeof path, "%s.%s", base, va->ext);
+        snprintf(name, sizeof name, "vulkan: the port functions no scene model calls, %s", va->name);
+        if (!(f = fopen(path, "w"))) {
+            CHECK(name, 0, "cannot write %s", path);
+            continue;
+        }
+        if (va->hlsl) {
+            fputs("#define FRESNEL_MP float\n", f);
+            fputs(src[2], f);
+        } else {
+            fputs(src[0], f);
+            fputs("precision highp float;\n", f);
+            fputs(src[1], f);
+        }
+        write_funcs_main(f, va->hlsl);
+        if (fclose(f) || build_module(base, name, va))
+            continue;
+        snprintf(path, sizeof path, "%s.spv", base);
+        if (!(words = vkrun_read_spirv(path, &nbytes))) {
+            CHECK(name, 0, "cannot read %s", path);
+            continue;
+        }
+        for (k = 0; k < NFUNCS; k++) {
+            static float o[3 * NCOS];
+            int32_t spec = k;
+            vkrun_pipe p;
+            double worst = 0.0;
+            char fname[320];
+            snprintf(fname, sizeof fname, "vulkan: %s, %s", funcs[k].expr, va->name);
+            if (vkrun_pipeline(v, words, nbytes, &spec, 1, 0, &p, err, sizeof err) ||
+                vkrun_dispatch(v, &p, NULL, cosines, NCOS, o, 3 * NCOS, (NCOS + GROUP - 1) / GROUP, err, sizeof err)) {
+                CHECK(fname, 0, "%s", err);
+                vkrun_pipeline_free(v, &p);
+                continue;
+            }
+            vkrun_pipeline_free(v, &p);
+            for (j = 0; j < NCOS; j++) {
+                double d = fabs((double)o[3 * j] - funcs[k].eval(cosines[j]));
+                if (!(d <= worst))
+                    worst = d;
+            }
+            NOTE("%s: max |GPU - C| %.2g (bound %.2g)", fname, worst, HIGHP_BOUND);
+            CHECK(fname, worst <= HIGHP_BOUND, "max difference %.3g (bound %.3g)", worst, HIGHP_BOUND);
+        }
+        free(words);
+    }
 }
 
 /* SPIR-V decorations RelaxedPrecision (OpDecorate/OpMemberDecorate with
@@ -311,6 +428,8 @@ int main(int argc, char **argv)
                  total ? "" : ": the driver computes RelaxedPrecision in binary32");
         }
     }
+    if (!strcmp(ident, "default"))
+        run_funcs(&v, dir, src, cosines);
     /* The table of ports/README.md. */
     NOTE("table | %s | model | GLSL 4.50 highp | GLSL mediump | HLSL float | HLSL min16float | fresnel_f16.h bound |",
          ident);
