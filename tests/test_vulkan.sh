@@ -59,6 +59,36 @@ for manifest in data/scenes/default.scene "$out/vk_models.scene" "$out/vk_unifor
         "$BUILD/vulkan/vulkan_test" "$out" "$manifest" "$ident" "$out/$ident.glsl" "$out/$ident.hlsl" || status=1
 done
 
+# Every committed scene's --hlsl output compiles (glslangValidator's HLSL
+# front end) and validates, one compute shader calling every function, with
+# FRESNEL_MP min16float (the default) and float.
+for manifest in data/scenes/*.scene; do
+    ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
+    if ! "$BUILD/fresnel" gen "$manifest" --hlsl -o "$out/scene_$ident.hlsl" 2>"$out/gen.log"; then
+        echo "FAIL vulkan: fresnel gen $manifest --hlsl: $(cat "$out/gen.log")"
+        status=1
+        continue
+    fi
+    all=$(sed -n "s/^float3 \(fresnel_${ident}_[a-z0-9_]*_rgb\)(float c)$/\1(c)/p" "$out/scene_$ident.hlsl" | paste -sd+)
+    for mp in min16float float; do
+        f="$out/scene_${ident}_$mp.hlsl"
+        { echo "#define FRESNEL_MP $mp"
+          cat ports/hlsl/fresnel.hlsl "$out/scene_$ident.hlsl"
+          printf '[[vk::binding(0, 0)]] RWStructuredBuffer<float> fr_out;\n'
+          printf '[numthreads(64, 1, 1)]\nvoid main(uint3 id : SV_DispatchThreadID)\n{\n'
+          printf '    float c = (float)id.x / 64.0;\n    float3 r = %s;\n    fr_out[id.x] = r.x + r.y + r.z;\n}\n' "$all"
+        } >"$f"
+        n=$(printf '%s' "$all" | tr '+' '\n' | grep -c .)
+        if [ "$n" -gt 0 ] && glslangValidator -V -D -e main -S comp -o "$f.spv" "$f" >"$f.log" 2>&1 &&
+            spirv-val --target-env vulkan1.0 "$f.spv" >>"$f.log" 2>&1; then
+            echo "PASS vulkan: $manifest --hlsl, $n functions, FRESNEL_MP $mp: compiles and validates"
+        else
+            echo "FAIL vulkan: $manifest --hlsl, FRESNEL_MP $mp ($n functions): $(grep -m 3 -i 'error' "$f.log" | tr '\n' ' ')"
+            status=1
+        fi
+    done
+done
+
 # Bad input for --hlsl: a clear error, exit 2, the existing output untouched.
 expect_bad() {
     name=$1

@@ -74,7 +74,7 @@ FRESNEL_MP3 fresnel_i_pow5(FRESNEL_MP3 x)
     return x2 * x2 * x;
 }
 /* (1 - c)^p for c in [0, 1], p > 0. The C runtime uses exp(p log1p(-c));
- * GLSL has no log1p, and 1 - c is exact for c >= 0.5 (Sterbenz) so the
+ * HLSL has no log1p, and 1 - c is exact for c >= 0.5 (Sterbenz) so the
  * rounding p multiplies only exists where (1 - c)^p is large and its relative
  * error ~ p 6e-8 harmless. The base is >= 0 and 0 is answered without pow()
  * (pow(0, p) goes through log2(0) = -Inf). */
@@ -110,7 +110,7 @@ float fresnel_i_eta2_minus_sin2(float eta, float c)
 /* ------------------------------------------------------------- Schlick */
 
 /* F0 + (1 - F0)(1 - c)^5. mediump: (1-c)^5 underflows below 2^-14 for
- * c > 0.856, which changes F by < 6.1e-5 (see the file comment). */
+ * c > 0.856, which changes F by < 6.1e-5 (ports/glsl/fresnel.glsl's file comment). */
 FRESNEL_MP fresnel_schlick(FRESNEL_MP f0, FRESNEL_MP c)
 {
     f0 = fresnel_i_unit(f0);
@@ -255,7 +255,8 @@ FRESNEL_MP3 fresnel_lsk_comp_rgb(FRESNEL_MP3 n, FRESNEL_MP3 k, FRESNEL_MP3 a, FR
 /* F0 + (1-F0)(1-c)^5 - a c (1-c)^6, a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0),
  * clamped to [0, 1]. mediump: |a| <= 26; underflow as Schlick. The constants
  * are written out: in a mediump expression, 823543.0 / 46656.0 is folded after
- * 823543 has become binary16 Inf (measured on llvmpipe: F = 0 at c = 0).
+ * 823543 has become binary16 Inf (measured with the GLSL port on llvmpipe:
+ * F = 0 at c = 0).
  * 17.6513844 and 8.16666698 are the binary32 values of 7^7/6^6 and 49/6. */
 #define FRESNEL_I_F82_A1 17.6513844
 #define FRESNEL_I_F82_A2 8.16666698
@@ -323,7 +324,7 @@ float fresnel_i_approx_conductor_hp(float n, float k,
 
 /* ---------------------------------------------------------- Gulbrandsen */
 
-/* r, g -> (n, k), r clamped to [0, 0.9999]. highp (see the file comment).
+/* r, g -> (n, k), r clamped to [0, 0.9999]. highp (see ports/glsl/fresnel.glsl).
  * k^2 in the factored form of src/gulbrandsen.c. */
 float2 fresnel_gulbrandsen_nk(float r, float g)
 {
