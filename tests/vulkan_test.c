@@ -9,7 +9,8 @@
  * result is compared with what the C runtime computes from the same
  * manifest (gen/scene/scene_eval.c, the evaluation of the C header).
  *
- * Four modules per scene:
+ * Four variants, each one module per model (a specialisation constant picks
+ * the material, so each pipeline compiles one function):
  *   glsl highp          default precision highp: max |GPU - C| <= 1e-5, the
  *                       bound of the OSMesa tests (tests/glsl_test.c)
  *   glsl mediump        `precision mediump float;`: the mediump-safe
@@ -17,9 +18,9 @@
  *   hlsl float          FRESNEL_MP defined as float: <= 1e-5
  *   hlsl min16float     the port's default: min16float in the mediump-safe
  *                       functions, RelaxedPrecision in SPIR-V
- * The two relaxed modules are measured, not asserted (a Vulkan driver may
+ * The two relaxed variants are measured, not asserted (a Vulkan driver may
  * compute RelaxedPrecision at 32 bits, and lavapipe does: NOTE lines say
- * whether the results differ from the full-precision module at all);
+ * whether the results differ from the full-precision modules at all);
  * every result must still be finite and in [0, 1]. With the default scene
  * the port functions no scene model calls (the dielectric from both sides,
  * internal and generalized Schlick, F0 in a medium and from the IOR,
