@@ -85,7 +85,8 @@ $(BUILD)/tests/%: tests/%.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 # Programs the test scripts run, built here with the flags of this pass (so
 # the sanitizer pass runs them sanitized): the fuzz targets linked with a
 # replay driver (tests/test_fuzz_replay.sh), the OSMesa GLSL test
-# (tests/test_glsl.sh), the generated-header checker (tests/test_gen_matrix.sh).
+# (tests/test_glsl.sh), the generated-header checker (tests/test_gen_matrix.sh), the
+# Vulkan test (tests/test_vulkan.sh).
 FUZZ_REPLAY := $(patsubst tests/fuzz/%.c,$(BUILD)/fuzz-replay/%,$(wildcard tests/fuzz/fuzz_*.c))
 $(BUILD)/fuzz-replay/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay_main.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
@@ -96,6 +97,11 @@ $(BUILD)/glsl/glsl_test: $(GLSL_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Iports/glsl/host -Itests -o $@ $(GLSL_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a \
 	    $$(pkg-config --cflags --libs osmesa) $(LDLIBS)
+# The Vulkan test (tests/test_vulkan.sh): links the Vulkan loader (libvulkan-dev).
+VULKAN_TEST_SRC := tests/vulkan_test.c ports/vulkan/vkrun.c
+$(BUILD)/vulkan/vulkan_test: $(VULKAN_TEST_SRC) ports/vulkan/vkrun.h $(GEN_OBJ) $(BUILD)/libfresnel.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_GEN) -Iports/vulkan -Itests -o $@ $(VULKAN_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a -lvulkan $(LDLIBS)
 $(BUILD)/tests/viewer_lit: tests/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
@@ -104,7 +110,8 @@ $(BUILD)/tests/gen_matrix_check: tests/gen_matrix_check.c $(BUILD)/libfresnel.a
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(BUILD)/libfresnel.a $(LDLIBS)
 
 test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
-           $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit
+           $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit \
+           $(BUILD)/vulkan/vulkan_test
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with
 # apt-get when run as root, else the exact apt-get line and a stop.

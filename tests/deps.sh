@@ -33,6 +33,8 @@ all   file /usr/include/GL/osmesa.h libosmesa6-dev
 all   cmd  cmake                    cmake
 all   cmd  glslangValidator         glslang-tools
 all   cmd  spirv-val                spirv-tools
+all   file /usr/include/vulkan/vulkan.h libvulkan-dev
+all   file /usr/share/vulkan/icd.d/lvp_icd.x86_64.json mesa-vulkan-drivers
 all   cmd  chromium                 chromium
 cross cmd  arm-none-eabi-gcc        gcc-arm-none-eabi
 cross cmd  arm-none-eabi-nm         binutils-arm-none-eabi

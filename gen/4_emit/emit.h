@@ -1,4 +1,5 @@
-/* Stage 4: emitting a scene's header (C: emit_header.c, Q15: emit_fixed.c, GLSL: emit_glsl.c). */
+/* Stage 4: emitting a scene's header (C: emit_header.c, Q15: emit_fixed.c, GLSL: emit_glsl.c,
+ * HLSL: emit_hlsl.c). */
 #ifndef FRESNEL_EMIT_H
 #define FRESNEL_EMIT_H
 
@@ -15,14 +16,18 @@ typedef struct emit_input {
     const gen_context *g;
     const material_params *params; /* one per scene material, in order */
     spectrum *const *spectra;      /* the same */
-    int glsl; /* 0: C header for include/fresnel.h; 1: GLSL for ports/glsl/fresnel.glsl */
+    int glsl; /* EMIT_C: C header for include/fresnel.h; EMIT_GLSL, EMIT_HLSL: shader source */
 } emit_input;
+
+/* The back ends of `fresnel gen`: the C header, GLSL for ports/glsl/fresnel.glsl,
+ * HLSL for ports/hlsl/fresnel.hlsl. */
+enum { EMIT_C, EMIT_GLSL, EMIT_HLSL };
 
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
 /* A manifest loaded and every material derived (emit_scene.c): what the
  * back ends read. emit_load returns 0 or a CLI_* status after a message
- * (then nothing is held); glsl 1 also checks the GLSL back end can express
- * the scene. emit_loaded_free releases it. */
+ * (then nothing is held); glsl EMIT_GLSL or EMIT_HLSL also checks that back
+ * end can express the scene. emit_loaded_free releases it. */
 typedef struct emit_loaded {
     scene *sc;
     gen_context *g;
@@ -34,7 +39,8 @@ typedef struct emit_loaded {
 int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loaded *l);
 void emit_loaded_free(emit_loaded *l);
 /* `fresnel gen`: load the manifest, derive every material, emit the C header
- * (glsl 0) or the GLSL source and, if tex_path, its LUT texture, each written
+ * (glsl EMIT_C), the GLSL source and, if tex_path, its LUT texture, or the
+ * HLSL source (EMIT_HLSL), each written
  * to a temporary beside its target and renamed over it only on success
  * (dir_option NULL: the default data directory). 0 or a CLI_* status after a
  * message. */

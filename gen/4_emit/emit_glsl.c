@@ -17,8 +17,9 @@
 #define WHERE "fresnel gen"
 
 /* A binary32 literal that reads back to the same float, without suffix
- * (GLSL ES 1.00 has none): 9 significant digits, always a '.' or exponent. */
-static void put_float(FILE *f, double v)
+ * (GLSL ES 1.00 has none; HLSL reads it as float): 9 significant digits,
+ * always a '.' or exponent. */
+void emit_shader_float(FILE *f, double v)
 {
     char buf[40];
     snprintf(buf, sizeof buf, "%.9g", (double)(float)v);
@@ -27,24 +28,29 @@ static void put_float(FILE *f, double v)
         fputs(".0", f);
 }
 
+void emit_shader_const(FILE *f, const char *decl, const char *ctor, const char *prefix, const char *name,
+                       const double *v, int n, const char *why)
+{
+    int i;
+    fprintf(f, "/* %s */\n%s %s_%s = %s%s", why, decl, prefix, name, ctor ? ctor : "", ctor ? "(" : "");
+    for (i = 0; i < n; i++) {
+        if (i)
+            fputs(", ", f);
+        emit_shader_float(f, v[i]);
+    }
+    fputs(ctor ? ");\n" : ";\n", f);
+}
+
 /* Highp constants: the highp functions (conductor, Gulbrandsen, ...) then
  * get binary32 parameters even in a mediump-default shader. */
 static void emit_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
 {
-    fprintf(f, "/* %s */\nconst FRESNEL_HIGHP vec3 %s_%s = vec3(", why, prefix, name);
-    put_float(f, v[0]);
-    fputs(", ", f);
-    put_float(f, v[1]);
-    fputs(", ", f);
-    put_float(f, v[2]);
-    fputs(");\n", f);
+    emit_shader_const(f, "const FRESNEL_HIGHP vec3", "vec3", prefix, name, v, 3, why);
 }
 
 static void emit_float(FILE *f, const char *prefix, const char *name, double v, const char *why)
 {
-    fprintf(f, "/* %s */\nconst FRESNEL_HIGHP float %s_%s = ", why, prefix, name);
-    put_float(f, v);
-    fputs(";\n", f);
+    emit_shader_const(f, "const FRESNEL_HIGHP float", NULL, prefix, name, &v, 1, why);
 }
 
 /* GLSL reserves identifiers containing "__"; fresnel_<scene>_<material>_...
@@ -55,26 +61,33 @@ static int glsl_part_ok(const char *s)
     return n > 0 && s[0] != '_' && s[n - 1] != '_' && !strstr(s, "__");
 }
 
-int emit_glsl_check(const scene *sc, const char *manifest, const char *name)
+int emit_shader_check(const scene *sc, const char *manifest, const char *name, const char *flag)
 {
     char where[1100];
     int i;
-    if (scene_lut_spacing(sc) == LUT_GRAZING_PL) {
-        snprintf(where, sizeof where, "%s:%d", manifest, sc->lut_spacing_line ? sc->lut_spacing_line : 1);
-        return cli_error(where,
-                         "expected lut_spacing grazing or uniform with --glsl: grazing-pl tables are read by "
-                         "fresnel_lut_pl_u16_q15_fast, which ports/glsl/fresnel.glsl does not have");
+    for (i = 0; i < sc->model_count; i++) {
+        const char *lacks = model_shader_lacks(sc->models[i], scene_lut_spacing(sc));
+        if (!lacks)
+            continue;
+        if (scene_lut_spacing(sc) == LUT_GRAZING_PL) {
+            snprintf(where, sizeof where, "%s:%d", manifest, sc->lut_spacing_line ? sc->lut_spacing_line : 1);
+            return cli_error(where, "expected lut_spacing grazing or uniform with %s: %s", flag, lacks);
+        }
+        snprintf(where, sizeof where, "%s:%d", manifest, sc->models_line);
+        return cli_error(where, "expected models the shader ports have with %s, got '%s': %s", flag, sc->models[i],
+                         lacks);
     }
     if (!glsl_part_ok(name))
         return cli_error(manifest,
                          "expected a file name giving a scene name without leading, trailing or double '_' "
-                         "with --glsl (GLSL reserves identifiers containing \"__\"), got '%s'", name);
+                         "with %s (GLSL and HLSL reserve identifiers containing \"__\"), got '%s'", flag, name);
     snprintf(where, sizeof where, "%s:%d", manifest, sc->materials_line);
     for (i = 0; i < sc->material_count; i++)
         if (!glsl_part_ok(sc->materials[i]))
             return cli_error(where,
-                             "expected material ids without leading, trailing or double '_' with --glsl "
-                             "(GLSL reserves identifiers containing \"__\"), got '%s'", sc->materials[i]);
+                             "expected material ids without leading, trailing or double '_' with %s "
+                             "(GLSL and HLSL reserve identifiers containing \"__\"), got '%s'", flag,
+                             sc->materials[i]);
     return 0;
 }
 
@@ -170,8 +183,7 @@ static const glsl_lut *layout_find(const glsl_layout *l, int material, int model
     return NULL;
 }
 
-/* The GLSL function name part of a model: lsk-comp -> lsk_comp. */
-static void model_ident(const char *model, char out[32])
+void emit_shader_model_ident(const char *model, char out[32])
 {
     int i;
     for (i = 0; model[i] && i < 31; i++)
@@ -191,18 +203,37 @@ static void emit_lut_data(FILE *f, const char *scene_prefix, const char *prefix,
             3 * u->n);
     for (i = 0; i < 3 * u->n; i++) {
         fputs(i % 6 == 0 ? "\n    " : " ", f);
-        put_float(f, u->t[i]);
+        emit_shader_float(f, u->t[i]);
         if (i + 1 < 3 * u->n)
             fputc(',', f);
     }
     fprintf(f, "\n);\n#else\n/* strip in %s_lut_texture: texels %d..%d of row %d */\nconst FRESNEL_HIGHP vec3 %s_%s_strip = vec3(",
             scene_prefix, u->x0, u->x0 + 3 * u->n - 1, u->row, prefix, u->name);
-    put_float(f, (u->x0 + 0.5) / l->width);
+    emit_shader_float(f, (u->x0 + 0.5) / l->width);
     fputs(", ", f);
-    put_float(f, (u->row + 0.5) / l->height);
+    emit_shader_float(f, (u->row + 0.5) / l->height);
     fputs(", ", f);
-    put_float(f, 1.0 / l->width);
+    emit_shader_float(f, 1.0 / l->width);
     fputs(");\n#endif\n", f);
+}
+
+void emit_shader_lut_array_call(FILE *f, const char *prefix, const char *table, int n, lut_form form,
+                                lut_spacing spacing)
+{
+    fprintf(f, "FRESNEL_LUT_%s%sARRAY_RGB(%s%s%s_%s, %d, c)", spacing == LUT_UNIFORM ? "LINEAR_" : "",
+            form == LUT_CUBIC ? "CUBIC_" : (form == LUT_RESIDUAL ? "RESIDUAL_" : ""), form == LUT_RESIDUAL ? prefix : "",
+            form == LUT_RESIDUAL ? "_f0, " : "", prefix, table, n);
+}
+
+void emit_shader_model_expr(FILE *f, const char *prefix, const char *model)
+{
+    const struct model *row = model_find_offered(model, MODEL_SCENE);
+    const char *t;
+    for (t = row->glsl; *t; t++)
+        if (*t == '@')
+            fprintf(f, "%s_", prefix);
+        else
+            fputc(*t, f);
 }
 
 /* vec3 <prefix>_<model>_rgb(c): the model for this material, as
@@ -211,7 +242,7 @@ static void emit_model_function(FILE *f, const char *scene_prefix, const char *p
                                 const glsl_lut *u, lut_spacing spacing)
 {
     char id[32];
-    model_ident(model, id);
+    emit_shader_model_ident(model, id);
     fprintf(f, "vec3 %s_%s_rgb(FRESNEL_HIGHP float c)\n{\n", prefix, id);
     if (u) {
         const char *kind = u->form == LUT_CUBIC ? "cubic_" : (u->form == LUT_RESIDUAL ? "residual_" : "");
@@ -219,26 +250,16 @@ static void emit_model_function(FILE *f, const char *scene_prefix, const char *p
         char f0[192] = "";
         if (u->form == LUT_RESIDUAL)
             snprintf(f0, sizeof f0, "%s_f0, ", prefix);
-        fprintf(f, "#if FRESNEL_LUT_ARRAYS\n    return FRESNEL_LUT_%s%sARRAY_RGB(%s%s_%s, %d, c);\n#else\n",
-                spacing == LUT_UNIFORM ? "LINEAR_" : "",
-                u->form == LUT_CUBIC ? "CUBIC_" : (u->form == LUT_RESIDUAL ? "RESIDUAL_" : ""), f0, prefix, u->name,
-                u->n);
+        fputs("#if FRESNEL_LUT_ARRAYS\n    return ", f);
+        emit_shader_lut_array_call(f, prefix, u->name, u->n, u->form, spacing);
+        fputs(";\n#else\n", f);
         fprintf(f, "    return fresnel_lut_%s%spacked_rgb(%s%s_lut_texture, %s_%s_strip, %d.0, c);\n#endif\n}\n", lin,
                 kind, f0, scene_prefix, prefix, u->name, u->n);
         return;
     }
-    {
-        const struct model *row = model_find_offered(model, MODEL_SCENE);
-        const char *t;
-        fputs("    return ", f);
-        for (t = row->glsl; *t; t++)
-            if (*t == '@')
-                fprintf(f, "%s_", prefix);
-            else
-                fputc(*t, f);
-        fputs(";\n", f);
-    }
-    fputs("}\n", f);
+    fputs("    return ", f);
+    emit_shader_model_expr(f, prefix, model);
+    fputs(";\n}\n", f);
 }
 
 static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, const char *guard)
@@ -291,25 +312,14 @@ static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, con
     return 0;
 }
 
-int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
+void emit_shader_opening(FILE *f, const emit_input *in, char guard[96])
 {
     const scene *sc = in->sc;
     const gen_context *g = in->g;
-    lut_spacing spacing = scene_lut_spacing(sc);
-    glsl_layout l;
-    char guard[96], scene_prefix[96];
-    int i, m, status;
-    for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
+    int i, m;
+    for (i = 0; in->name[i] && i < 95; i++)
         guard[i] = (char)toupper((unsigned char)in->name[i]);
     guard[i] = '\0';
-    snprintf(scene_prefix, sizeof scene_prefix, "fresnel_%s", in->name);
-    if ((status = layout_build(in, &l)))
-        return status;
-    if (tex && l.count == 0) {
-        layout_free(&l);
-        return cli_error(WHERE, "--glsl-texture: scene %s has no LUT model, so no texture to write", in->manifest_name);
-    }
-
     fprintf(f, "/* Fresnel scene \"%s\", generated by fresnel gen %s from %s. Do not edit: regenerate.\n", in->name,
             GEN_VERSION, in->manifest_name);
     emit_licence_comment(f);
@@ -323,6 +333,24 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
         fprintf(f, " %s", sc->models[m]);
     fprintf(f, ".\n");
     emit_material_list(f, in);
+}
+
+int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
+{
+    const scene *sc = in->sc;
+    lut_spacing spacing = scene_lut_spacing(sc);
+    glsl_layout l;
+    char guard[96], scene_prefix[96];
+    int i, m, status;
+    snprintf(scene_prefix, sizeof scene_prefix, "fresnel_%s", in->name);
+    if ((status = layout_build(in, &l)))
+        return status;
+    if (tex && l.count == 0) {
+        layout_free(&l);
+        return cli_error(WHERE, "--glsl-texture: scene %s has no LUT model, so no texture to write", in->manifest_name);
+    }
+
+    emit_shader_opening(f, in, guard);
     fprintf(f, " * GLSL for every dialect of ports/glsl/fresnel.glsl (GLSL ES 1.00, ES 3.00, desktop 3.30 and\n"
                " * later): paste after it. Each material and model has vec3 %s_<material>_<model>_rgb(c)\n"
                " * (lsk-comp -> lsk_comp), computing what the C runtime computes from the C header of the\n"

@@ -1,7 +1,8 @@
 /* `fresnel gen --glsl`: a scene's constants, tables and one evaluation
  * function per material and model as GLSL for ports/glsl/fresnel.glsl
  * (emit_glsl.c), and the packed RGBA8 LUT texture that GLSL ES 1.00 reads
- * instead of const arrays. */
+ * instead of const arrays; `fresnel gen --hlsl`: the same as HLSL for
+ * ports/hlsl/fresnel.hlsl (emit_hlsl.c). */
 #ifndef FRESNEL_EMIT_GLSL_H
 #define FRESNEL_EMIT_GLSL_H
 
@@ -10,10 +11,36 @@
 #include "4_emit/emit.h"
 #include "scene/scene.h"
 
-/* Whether the GLSL back end can express the scene: 0, or CLI_BAD_INPUT after
- * printing "manifest:line: what was expected". name is the scene's
- * identifier part (fresnel_<name>_...). */
-int emit_glsl_check(const scene *sc, const char *manifest, const char *name);
+/* Whether a shader back end (flag "--glsl" or "--hlsl", for messages) can
+ * express the scene: its models (model_shader_lacks, gen/model/registry.c)
+ * and identifiers. 0, or CLI_BAD_INPUT after printing "manifest:line: what
+ * was expected". name is the scene's identifier part (fresnel_<name>_...). */
+int emit_shader_check(const scene *sc, const char *manifest, const char *name, const char *flag);
+
+/* Shared by the GLSL and HLSL back ends (emit_glsl.c, emit_hlsl.c), whose
+ * ports have the same function and macro names:
+ *   emit_shader_float       a binary32 literal without suffix (emit_shader_const:
+ *                           a constant's declaration)
+ *   emit_shader_model_ident lsk-comp -> lsk_comp (the function name part)
+ *   emit_shader_model_expr  an analytic model's return expression for the
+ *                           material prefix (the registry row's)
+ *   emit_shader_lut_array_call  FRESNEL_LUT_..._ARRAY_RGB(table, n, c) for
+ *                           the table <prefix>_<table> */
+void emit_shader_float(FILE *f, double v);
+/* "/ * why * /", then decl prefix_name = ctor(v[0], ...) (ctor NULL: v[0]). */
+void emit_shader_const(FILE *f, const char *decl, const char *ctor, const char *prefix, const char *name,
+                       const double *v, int n, const char *why);
+/* The opening comment's shared lines (scene, licence, colour space, window,
+ * truth, models, materials), and the scene name upper-cased in guard. */
+void emit_shader_opening(FILE *f, const emit_input *in, char guard[96]);
+void emit_shader_model_ident(const char *model, char out[32]);
+void emit_shader_model_expr(FILE *f, const char *prefix, const char *model);
+void emit_shader_lut_array_call(FILE *f, const char *prefix, const char *table, int n, lut_form form,
+                                lut_spacing spacing);
+
+/* `fresnel gen --hlsl`: the scene as HLSL for ports/hlsl/fresnel.hlsl
+ * (emit_hlsl.c). 0, or CLI_BAD_INPUT after a message. */
+int emit_hlsl(FILE *f, const emit_input *in);
 
 /* The GLSL to f and, if tex is not NULL, the LUT texture as a C header to
  * tex. 0, or CLI_BAD_INPUT after a message (the caller discards both). */

@@ -1,5 +1,6 @@
 /* Stage 4 driven end to end for one scene: manifest -> every material
- * through stages 1-3 -> the C or GLSL header, written safely (emit.h). */
+ * through stages 1-3 -> the C header or the GLSL or HLSL source, written
+ * safely (emit.h). */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,7 +41,7 @@ int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loade
         snprintf(l->name, sizeof l->name, "%s", l->sc->name);
     else
         scene_name_from_path(manifest, l->name);
-    if (glsl && (status = emit_glsl_check(l->sc, manifest, l->name)))
+    if (glsl && (status = emit_shader_check(l->sc, manifest, l->name, glsl == EMIT_HLSL ? "--hlsl" : "--glsl")))
         goto done;
     l->params = calloc((size_t)l->sc->material_count, sizeof *l->params);
     l->spectra = calloc((size_t)l->sc->material_count, sizeof *l->spectra);
@@ -97,7 +98,9 @@ int emit_scene(const char *manifest, const char *out_path, const char *tex_path,
         cli_out_abort(&out);
         goto done;
     }
-    status = glsl ? emit_glsl(out.f, tex_path ? tex.f : NULL, &l.in) : emit_header(out.f, &l.in);
+    status = glsl == EMIT_HLSL ? emit_hlsl(out.f, &l.in)
+           : glsl         ? emit_glsl(out.f, tex_path ? tex.f : NULL, &l.in)
+                          : emit_header(out.f, &l.in);
     if (status) {
         cli_out_abort(&out);
         if (tex_path)

@@ -13,7 +13,7 @@ static void gen_usage(FILE *out)
 {
     const char *names[SCENE_MAX_MODELS + 1];
     int i;
-    fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--glsl [--glsl-texture OUT_TEX.h]] [--data DIR]\n\n"
+    fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--glsl [--glsl-texture OUT_TEX.h] | --hlsl] [--data DIR]\n\n"
                  "Reads the scene manifest SCENE and writes a C header with static const\n"
                  "constants and tables for exactly its materials, models and number types.\n"
                  "--glsl writes the same constants as GLSL instead (const vec3, float arrays)\n"
@@ -21,6 +21,9 @@ static void gen_usage(FILE *out)
                  "per material and model, in every dialect the port supports; lut_spacing\n"
                  "grazing or uniform. --glsl-texture writes, as a C header, the packed RGBA8\n"
                  "texture GLSL ES 1.00 reads the LUT models from (no const arrays there).\n"
+                 "--hlsl writes them as HLSL for ports/hlsl/fresnel.hlsl (static const float3,\n"
+                 "float arrays), with float3 fresnel_<scene>_<material>_<model>_rgb(float c).\n"
+                 "Other shading languages: cross-compile the SPIR-V of either (ports/README.md).\n"
                  "The output is written to a temporary file beside OUT.h and renamed over it\n"
                  "(an existing file keeps its mode; a symlink's target is replaced): on any\n"
                  "error OUT.h (and OUT_TEX.h) is left as it was. -o - writes to stdout; a device\n"
@@ -46,15 +49,18 @@ static void gen_usage(FILE *out)
 int cmd_gen(int argc, char **argv)
 {
     const char *manifest = NULL, *out_path = NULL, *dir_option = NULL, *tex_path = NULL;
-    int i, glsl = 0;
-    static const char *const options[] = {"-o", "--glsl", "--glsl-texture", "--data", "--help", NULL};
+    int i, glsl = EMIT_C;
+    static const char *const options[] = {"-o", "--glsl", "--hlsl", "--glsl-texture", "--data", "--help", NULL};
 
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             gen_usage(stdout);
             return 0;
-        } else if (!strcmp(argv[i], "--glsl")) {
-            glsl = 1;
+        } else if (!strcmp(argv[i], "--glsl") || !strcmp(argv[i], "--hlsl")) {
+            int want = argv[i][2] == 'g' ? EMIT_GLSL : EMIT_HLSL;
+            if (glsl != EMIT_C && glsl != want)
+                return cli_error(WHERE, "--glsl and --hlsl: one back end per run (see fresnel gen --help)");
+            glsl = want;
         } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data") || !strcmp(argv[i], "--glsl-texture")) {
             const char *val = cli_option_value(WHERE, argc, argv, &i);
             if (!val)
@@ -75,7 +81,7 @@ int cmd_gen(int argc, char **argv)
     }
     if (!manifest || !out_path)
         return cli_error(WHERE, "usage: fresnel gen SCENE -o OUT.h (see fresnel gen --help)");
-    if (tex_path && !glsl)
+    if (tex_path && glsl != EMIT_GLSL)
         return cli_error(WHERE, "--glsl-texture needs --glsl (see fresnel gen --help)");
     if (tex_path && !strcmp(tex_path, out_path))
         return cli_error(WHERE, "--glsl-texture and -o name the same file '%s'", out_path);

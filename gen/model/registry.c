@@ -506,6 +506,18 @@ const model *model_scene_row(const char *name, lut_spacing spacing)
     return model_find_offered(name, MODEL_SCENE);
 }
 
+const char *model_shader_lacks(const char *name, lut_spacing spacing)
+{
+    const model *row = model_scene_row(name, spacing);
+    if (!row)
+        return "the model is unknown";
+    if (row->offered & MODEL_LUT)
+        return spacing == LUT_GRAZING_PL ? "grazing-pl tables are read by fresnel_lut_pl_u16_q15_fast, which the "
+                                           "shader ports do not have"
+                                         : NULL;
+    return row->glsl ? NULL : "the shader ports have no function for it";
+}
+
 int model_names(unsigned offered, const char **out, int max)
 {
     int i, n = 0;

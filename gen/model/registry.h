@@ -123,9 +123,10 @@ typedef struct model {
     model_eta eta;      /* which eta, kappa its exact or LSK forms read */
     lut_form form;      /* MODEL_LUT rows */
     int uniform;        /* MODEL_LUT rows: 1 nodes uniform in c, 0 in sqrt(c) */
-    /* GLSL return expression (ports/glsl/fresnel.glsl); '@' stands for the
-     * material's identifier prefix and '_'. NULL for LUT rows, whose GLSL
-     * the emitter builds from the form. */
+    /* Shader return expression (ports/glsl/fresnel.glsl and, with the same
+     * names, ports/hlsl/fresnel.hlsl); '@' stands for the material's
+     * identifier prefix and '_'. NULL for LUT rows, whose shader code the
+     * emitters build from the form; NULL in a scene row: no shader form. */
     const char *glsl;
     fresnel_rgb (*rgb_f32)(const model_rgb *q, float c);
     fresnel_rgb_q15 (*rgb_q15)(const model_rgb *q, int32_t c);
@@ -150,6 +151,11 @@ const model *model_find(const char *name);
 /* The scene row for a manifest's model name (a LUT name: the row of its form
  * and spacing); NULL for an unknown name. */
 const model *model_scene_row(const char *name, lut_spacing spacing);
+/* Whether the shader ports (ports/glsl/fresnel.glsl, ports/hlsl/fresnel.hlsl:
+ * the same function names, so one expression per row serves both) express
+ * scene model name with tables spaced `spacing`: NULL, or what they lack,
+ * for the back end's error message. */
+const char *model_shader_lacks(const char *name, lut_spacing spacing);
 /* N for "lutN", "lutN-residual" or "lutN-cubic" (N in lo..hi, no leading
  * zeros), setting *form (if not NULL); 0 for every other string. */
 int model_lut_size(const char *name, int lo, int hi, lut_form *form);

@@ -1,0 +1,91 @@
+/* `fresnel gen --hlsl` (see emit_glsl.h): the scene for
+ * ports/hlsl/fresnel.hlsl. The port has the GLSL port's function and macro
+ * names, so the model expressions, LUT macro calls, literals and
+ * identifier checks are emit_glsl.c's; what differs is the declaration
+ * syntax (static const float3, array initialisers in braces) and that
+ * every table is a static const array (no texture form). Output depends
+ * only on the manifest and the data. */
+#include "4_emit/emit_glsl.h"
+
+#include <stdlib.h>
+
+#include "cli/cli.h"
+
+#define WHERE "fresnel gen"
+
+static void hlsl_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
+{
+    emit_shader_const(f, "static const float3", "float3", prefix, name, v, 3, why);
+}
+
+static void hlsl_float(FILE *f, const char *prefix, const char *name, double v, const char *why)
+{
+    emit_shader_const(f, "static const float", NULL, prefix, name, &v, 1, why);
+}
+
+/* The LUT of one material and model as a static const array; its name part
+ * in name[32], its size and form in *n, *form. */
+static int hlsl_lut(FILE *f, const emit_input *in, int i, int m, const char *prefix, char name[32], int *n,
+                    lut_form *form)
+{
+    lut_spacing spacing = scene_lut_spacing(in->sc);
+    double *t = emit_lut_table(in->sc->models[m], &in->params[i], in->spectra[i], in->g, spacing, n, form, name);
+    int k;
+    if (!t)
+        return cli_error(WHERE, "out of memory");
+    fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
+               " * fitted to the ground truth through %s interpolation. */\n",
+            name, *n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
+            *form == LUT_CUBIC ? "Catmull-Rom" : "linear");
+    fprintf(f, "static const float %s_%s[%d] = {", prefix, name, 3 * *n);
+    for (k = 0; k < 3 * *n; k++) {
+        fputs(k % 6 == 0 ? "\n    " : " ", f);
+        emit_shader_float(f, t[k]);
+        if (k + 1 < 3 * *n)
+            fputc(',', f);
+    }
+    fputs("\n};\n", f);
+    free(t);
+    return 0;
+}
+
+int emit_hlsl(FILE *f, const emit_input *in)
+{
+    const scene *sc = in->sc;
+    lut_spacing spacing = scene_lut_spacing(sc);
+    char guard[96];
+    int i, m;
+    emit_shader_opening(f, in, guard);
+    fprintf(f, " * HLSL for ports/hlsl/fresnel.hlsl: include it first. Each material and model has\n"
+               " * float3 fresnel_%s_<material>_<model>_rgb(float c) (lsk-comp -> lsk_comp), computing\n"
+               " * what the C runtime computes from the C header of the same manifest. Constants and\n"
+               " * LUT tables are static const (binary32); a table could equally live in a cbuffer\n"
+               " * (one float per 16-byte register there, or packed in float4 with the index split).\n"
+               " */\n#ifndef FRESNEL_SCENE_%s_HLSL\n#define FRESNEL_SCENE_%s_HLSL\n",
+            in->name, guard, guard);
+    fprintf(f, "#ifndef FRESNEL_HLSL\n#error \"include ports/hlsl/fresnel.hlsl before this file\"\n#endif\n");
+
+    for (i = 0; i < sc->material_count; i++) {
+        const material_params *p = &in->params[i];
+        char prefix[160];
+        snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
+        fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
+        emit_material_params(f, sc, p, prefix, hlsl_rgb, hlsl_float);
+        for (m = 0; m < sc->model_count; m++) {
+            char id[32], table[32];
+            int n = 0;
+            lut_form form = LUT_PLAIN;
+            emit_shader_model_ident(sc->models[m], id);
+            if (scene_model_lut_size(sc->models[m], NULL) && hlsl_lut(f, in, i, m, prefix, table, &n, &form))
+                return CLI_BAD_INPUT;
+            fprintf(f, "float3 %s_%s_rgb(float c)\n{\n    return ", prefix, id);
+            if (n)
+                emit_shader_lut_array_call(f, prefix, table, n, form, spacing);
+            else
+                emit_shader_model_expr(f, prefix, sc->models[m]);
+            fputs(";\n}\n", f);
+        }
+    }
+    fprintf(f, "\n#endif\n");
+    return 0;
+}
