@@ -336,6 +336,7 @@ typedef struct fresnel_conductor_prep {
 fresnel_conductor_prep fresnel_conductor_prepare(float eta, float kappa);
 float fresnel_conductor_prepared(const fresnel_conductor_prep *p, float c);
 void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *c, float *out, int n);
+void fresnel_conductor_rgb_batch(const fresnel_conductor_prep p[3], const float *c, fresnel_rgb *out, int n);
 
 /* Exact dielectric Fresnel (kappa = 0) from either side, eta = n_transmitted /
  * n_incident:

@@ -10,6 +10,7 @@
  * the ratios and Rs + Rp is one division (fresnel_i_exact_f), and a
  * material may be prepared once for many cosines (fresnel_conductor_prepare). */
 #include "internal.h"
+#include "simd.h"
 
 #if FRESNEL_HAS_FLOAT
 #include <math.h>
@@ -159,37 +160,135 @@ float fresnel_conductor_prepared(const fresnel_conductor_prep *p, float c)
     }
 }
 
-/* One loop per kind, with no branch inside (the selects compile to
- * conditional moves or blends), in blocks of FRESNEL_I_BLOCK with a fixed trip
- * count: the shape gcc's -O2 vectoriser accepts (very-cheap cost model).
- * It does vectorise them when sqrtf need not set errno (-fno-math-errno)
- * and compares may be if-converted (-fno-trapping-math); with the default
- * flags the loops stay scalar. */
-#define FRESNEL_I_BLOCK 8
-#define FRESNEL_I_BATCH_LOOP(kind)                                 \
-    for (i = 0; i + FRESNEL_I_BLOCK <= n; i += FRESNEL_I_BLOCK) {        \
-        int j;                                               \
-        for (j = 0; j < FRESNEL_I_BLOCK; j++) {                    \
-            float cj = fresnel_i_unit(c[i + j]);                   \
-            out[i + j] = FRESNEL_I_PREPARED(&q, cj, kind);         \
-        }                                                    \
-    }                                                        \
-    for (; i < n; i++) {                                     \
-        float ci = fresnel_i_unit(c[i]);                           \
-        out[i] = FRESNEL_I_PREPARED(&q, ci, kind);                 \
+/* The batch: the same operations in the same order on FRESNEL_I_VW lanes
+ * (simd.h), two vectors per step for independent work between the square
+ * roots and the divide; the last n mod VW cosines go through one vector
+ * on a padded copy, so nothing beyond n is read or written. */
+#if FRESNEL_I_VW
+struct fresnel_i_vprep {
+    fresnel_i_vf a0, a0_lo, ek, ek4;
+};
+
+static inline fresnel_i_vf fresnel_i_vexact(const struct fresnel_i_vprep *q, fresnel_i_vf c, int kind)
+{
+    const fresnel_i_vf one = fresnel_i_vset(1.0f);
+    fresnel_i_vf ch, a, m, t, b, x, y, s2, c2y, c2ys2, xs, xp, ns, ds, np, dp, f;
+    c = fresnel_i_vunit(c);
+    ch = fresnel_i_vmul(c, c);
+    a = fresnel_i_vadd(fresnel_i_vadd(q->a0, ch), fresnel_i_vadd(q->a0_lo, fresnel_i_vsquare_lo(c, ch)));
+    if (kind == FRESNEL_I_DIEL) {
+        m = fresnel_i_vabs(a);
+        t = m;
+    } else {
+        m = fresnel_i_vsqrt(fresnel_i_vadd(fresnel_i_vmul(a, a), q->ek4));
+        t = fresnel_i_vmul(fresnel_i_vset(0.5f), fresnel_i_vadd(m, fresnel_i_vabs(a)));
     }
+    b = fresnel_i_vsqrt(t);
+    /* a is neither NaN nor -0: a0 + ch would be -0 only if ch were */
+    x = fresnel_i_vsel_nonneg(a, one, b);
+    y = fresnel_i_vsel_nonneg(a, b, q->ek);
+    s2 = fresnel_i_vmul(fresnel_i_vsub(one, c), fresnel_i_vadd(one, c));
+    c2y = fresnel_i_vmul(fresnel_i_vadd(c, c), y);
+    c2ys2 = fresnel_i_vmul(c2y, s2);
+    xs = fresnel_i_vmul(x, fresnel_i_vadd(m, ch));
+    xp = fresnel_i_vmul(x, fresnel_i_vadd(fresnel_i_vmul(ch, m), fresnel_i_vmul(s2, s2)));
+    ns = fresnel_i_vsub(xs, c2y);
+    ds = fresnel_i_vadd(xs, c2y);
+    np = fresnel_i_vsub(xp, c2ys2);
+    dp = fresnel_i_vadd(xp, c2ys2);
+    if (kind == FRESNEL_I_COND2)
+        f = fresnel_i_vmul(fresnel_i_vmul(fresnel_i_vset(0.5f), fresnel_i_vdiv(ns, ds)),
+                           fresnel_i_vadd(one, fresnel_i_vdiv(np, dp)));
+    else
+        f = fresnel_i_vdiv(fresnel_i_vmul(ns, fresnel_i_vadd(dp, np)), fresnel_i_vmul(ds, fresnel_i_vadd(dp, dp)));
+    return fresnel_i_vunit(f);
+}
+
+#define FRESNEL_I_VBATCH(name, kind)                                                                   \
+    static void name(const fresnel_conductor_prep *p, const float *c, float *out, int n)                \
+    {                                                                                                  \
+        struct fresnel_i_vprep q;                                                                      \
+        int i;                                                                                         \
+        q.a0 = fresnel_i_vset(p->a0);                                                                  \
+        q.a0_lo = fresnel_i_vset(p->a0_lo);                                                            \
+        q.ek = fresnel_i_vset(p->ek);                                                                  \
+        q.ek4 = fresnel_i_vset(p->ek4);                                                                \
+        for (i = 0; i + 2 * FRESNEL_I_VW <= n; i += 2 * FRESNEL_I_VW) {                                \
+            fresnel_i_vf f0 = fresnel_i_vexact(&q, fresnel_i_vload(c + i), kind);                      \
+            fresnel_i_vf f1 = fresnel_i_vexact(&q, fresnel_i_vload(c + i + FRESNEL_I_VW), kind);       \
+            fresnel_i_vstore(out + i, f0);                                                             \
+            fresnel_i_vstore(out + i + FRESNEL_I_VW, f1);                                              \
+        }                                                                                              \
+        for (; i < n; i += FRESNEL_I_VW) {                                                             \
+            float buf[FRESNEL_I_VW];                                                                   \
+            int j, k = n - i < FRESNEL_I_VW ? n - i : FRESNEL_I_VW;                                    \
+            for (j = 0; j < FRESNEL_I_VW; j++)                                                         \
+                buf[j] = j < k ? c[i + j] : 1.0f;                                                      \
+            fresnel_i_vstore(buf, fresnel_i_vexact(&q, fresnel_i_vload(buf), kind));                   \
+            for (j = 0; j < k; j++)                                                                    \
+                out[i + j] = buf[j];                                                                   \
+        }                                                                                              \
+    }
+#else
+/* Portable C: one loop per kind with no branch inside, in blocks of 8 with
+ * a fixed trip count, the shape compilers' vectorisers accept when sqrtf
+ * need not set errno (-fno-math-errno) and compares may be if-converted
+ * (-fno-trapping-math). */
+#define FRESNEL_I_BLOCK 8
+#define FRESNEL_I_VBATCH(name, kind)                                                                   \
+    static void name(const fresnel_conductor_prep *p, const float *c, float *out, int n)                \
+    {                                                                                                  \
+        const fresnel_conductor_prep q = *p;                                                           \
+        int i;                                                                                         \
+        for (i = 0; i + FRESNEL_I_BLOCK <= n; i += FRESNEL_I_BLOCK) {                                  \
+            int j;                                                                                     \
+            for (j = 0; j < FRESNEL_I_BLOCK; j++) {                                                    \
+                float cj = fresnel_i_unit(c[i + j]);                                                   \
+                out[i + j] = FRESNEL_I_PREPARED(&q, cj, kind);                                         \
+            }                                                                                          \
+        }                                                                                              \
+        for (; i < n; i++) {                                                                           \
+            float ci = fresnel_i_unit(c[i]);                                                           \
+            out[i] = FRESNEL_I_PREPARED(&q, ci, kind);                                                 \
+        }                                                                                              \
+    }
+#endif
+
+FRESNEL_I_VBATCH(fresnel_i_batch_diel, FRESNEL_I_DIEL)
+FRESNEL_I_VBATCH(fresnel_i_batch_cond1, FRESNEL_I_COND1)
+FRESNEL_I_VBATCH(fresnel_i_batch_cond2, FRESNEL_I_COND2)
 
 void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restrict c, float *restrict out, int n)
 {
-    const fresnel_conductor_prep q = *p;
     int i;
-    switch (q.kind) {
-    case FRESNEL_I_DIEL: FRESNEL_I_BATCH_LOOP(FRESNEL_I_DIEL) break;
-    case FRESNEL_I_COND1: FRESNEL_I_BATCH_LOOP(FRESNEL_I_COND1) break;
-    case FRESNEL_I_COND2: FRESNEL_I_BATCH_LOOP(FRESNEL_I_COND2) break;
+    switch (p->kind) {
+    case FRESNEL_I_DIEL: fresnel_i_batch_diel(p, c, out, n); break;
+    case FRESNEL_I_COND1: fresnel_i_batch_cond1(p, c, out, n); break;
+    case FRESNEL_I_COND2: fresnel_i_batch_cond2(p, c, out, n); break;
     default:
         for (i = 0; i < n; i++)
             out[i] = 0.0f; /* matched index */
+    }
+}
+
+/* Three channels: each channel's batch over a block of cosines, then the
+ * block interleaved into out. */
+#define FRESNEL_I_RGB_BLOCK 64
+void fresnel_conductor_rgb_batch(const fresnel_conductor_prep p[3], const float *restrict c, fresnel_rgb *restrict out,
+                                 int n)
+{
+    float r[FRESNEL_I_RGB_BLOCK], g[FRESNEL_I_RGB_BLOCK], b[FRESNEL_I_RGB_BLOCK];
+    int i, j, k;
+    for (i = 0; i < n; i += k) {
+        k = n - i < FRESNEL_I_RGB_BLOCK ? n - i : FRESNEL_I_RGB_BLOCK;
+        fresnel_conductor_batch(&p[0], c + i, r, k);
+        fresnel_conductor_batch(&p[1], c + i, g, k);
+        fresnel_conductor_batch(&p[2], c + i, b, k);
+        for (j = 0; j < k; j++) {
+            out[i + j].r = r[j];
+            out[i + j].g = g[j];
+            out[i + j].b = b[j];
+        }
     }
 }
 

@@ -19,6 +19,14 @@
 #include <math.h>
 #include <stdint.h>
 
+/* No contraction into fused multiply-adds: the error-free transformations
+ * below need each product rounded, and the batches (simd.h) give the scalar
+ * functions' results bit for bit. gcc does not contract in ISO C mode
+ * (-std=c99); clang does unless told, and gcc rejects the pragma. */
+#ifdef __clang__
+#pragma STDC FP_CONTRACT OFF
+#endif
+
 /* The error-free squares below rely on the IEEE binary32 layout. */
 typedef char fresnel_i_binary32_check[(FLT_MANT_DIG == 24 && FLT_MAX_EXP == 128) ? 1 : -1];
 
