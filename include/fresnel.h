@@ -320,13 +320,23 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  *   fresnel_conductor_prep p = fresnel_conductor_prepare(eta, kappa);
  *   r = fresnel_conductor_prepared(&p, c);              one cosine
  *   fresnel_conductor_batch(&p, cos_array, out, n);     out[i] for c[i], i < n
+ *   fresnel_conductor_prep rgb[3] = {prepare(eta.r, kappa.r), ..g.., ..b..};
+ *   fresnel_conductor_rgb_batch(rgb, cos_array, rgb_out, n);
+ *                                   rgb_out[i].r, .g, .b for c[i] (rgb[0..2])
  * The same formula, clamps and NaN policy as fresnel_conductor; results
- * within the bound, not bit-identical to fresnel_conductor's. The batch gives
- * fresnel_conductor_prepared's results bit for bit; c and out must not
- * overlap; n <= 0 writes nothing.
+ * within the bound, not bit-identical to fresnel_conductor's. Both batches
+ * give fresnel_conductor_prepared's results bit for bit, in every lane and
+ * for any n, alignment or form (checked on each kernel by
+ * tests/test_batch_simd.sh); c and out must not overlap; n <= 0 writes
+ * nothing, nothing at or past n is read or written.
+ * SIMD, chosen at compile time from the target: AVX-512F 16 lanes (compiled
+ * by the tests, run only on a CPU that has it), AVX/AVX2 8, SSE2 4 (the
+ * x86-64 baseline: an -O2 build without -march gets this one), AArch64 NEON
+ * 4; portable C elsewhere and with FRESNEL_CFG_NO_SIMD (fresnel_config.h).
  * Error <= FRESNEL_BOUND_CONDUCTOR_PREPARED.
- * Cost: prepare ~40 flops; per cosine ~50 flops, div, 2 sqrt (kappa = 0: one
- * sqrt). */
+ * Cost: prepare ~40 flops; per cosine ~45 flops, div, 2 sqrt (kappa = 0: one
+ * sqrt), a vector's worth at a time in the batches; `build/fresnel bench
+ * --targets` times the batch against the Mitsuba-style formula. */
 typedef struct fresnel_conductor_prep {
     float a0, a0_lo; /* eta^2 - kappa^2 - 1 = a0 + a0_lo */
     float ek;        /* eta kappa */
