@@ -1,7 +1,9 @@
 #!/bin/sh
 # tests/test_batch.c (fresnel_conductor_batch and _rgb_batch bit for bit
 # against fresnel_conductor_prepared) on each SIMD kernel of src/f32/simd.h
-# the main build does not select: AVX2 + FMA (x86-64-v3) and AVX-512 where
+# the main build does not select (an x86-64 -O2 build takes its AVX2 kernel
+# at run time on an AVX2 CPU): SSE2 without that choice
+# (FRESNEL_I_SIMD_DISPATCH=0), AVX2 + FMA (x86-64-v3) and AVX-512 where
 # this CPU runs them, AArch64 NEON under qemu-aarch64-static, and the
 # portable C of FRESNEL_CFG_NO_SIMD. The AVX-512 kernel is compiled
 # warning-free by gcc and clang everywhere; it runs only on a CPU that has
@@ -34,6 +36,7 @@ cpu=$(grep -m1 '^flags' /proc/cpuinfo 2>/dev/null)
 has() { case " $cpu " in *" $1 "*) return 0 ;; esac; return 1; }
 case $(uname -m) in
 x86_64)
+    build "x86-64 SSE2, no run-time choice" gcc -O2 -DFRESNEL_I_SIMD_DISPATCH=0 && run "x86-64 SSE2" "$t/tb"
     if has avx2 && has fma; then
         build "x86-64 AVX2+FMA" gcc -O2 -mavx2 -mfma && run "x86-64 AVX2+FMA" "$t/tb"
     else

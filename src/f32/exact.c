@@ -10,7 +10,7 @@
  * the ratios and Rs + Rp is one division (fresnel_i_exact_f), and a
  * material may be prepared once for many cosines (fresnel_conductor_prepare). */
 #include "internal.h"
-#include "simd.h"
+#include "exact_batch.h"
 
 #if FRESNEL_HAS_FLOAT
 #include <math.h>
@@ -57,7 +57,6 @@ static inline struct fresnel_i_root fresnel_i_transmitted(float eta, float kappa
  * Ds Dp <= ~(|n|^2 + 2)^3: normal and finite in binary32 over the whole
  * domain. Smaller eta kappa (FRESNEL_I_COND2) divides twice, kappa = 0 (FRESNEL_I_DIEL)
  * has m = t = |A| (A^2 could underflow), u = B or 0: one square root. */
-enum { FRESNEL_I_MATCHED, FRESNEL_I_DIEL, FRESNEL_I_COND1, FRESNEL_I_COND2 };
 
 static inline float fresnel_i_exact_f(float a, float c, float ch, float ek, float ek4, int kind)
 {
@@ -160,76 +159,7 @@ float fresnel_conductor_prepared(const fresnel_conductor_prep *p, float c)
     }
 }
 
-/* The batch: the same operations in the same order on FRESNEL_I_VW lanes
- * (simd.h), two vectors per step for independent work between the square
- * roots and the divide; the last n mod VW cosines go through one vector
- * on a padded copy, so nothing beyond n is read or written. */
-#if FRESNEL_I_VW
-struct fresnel_i_vprep {
-    fresnel_i_vf a0, a0_lo, ek, ek4;
-};
-
-static inline fresnel_i_vf fresnel_i_vexact(const struct fresnel_i_vprep *q, fresnel_i_vf c, int kind)
-{
-    const fresnel_i_vf one = fresnel_i_vset(1.0f);
-    fresnel_i_vf ch, a, m, t, b, x, y, s2, c2y, c2ys2, xs, xp, ns, ds, np, dp, f;
-    c = fresnel_i_vunit(c);
-    ch = fresnel_i_vmul(c, c);
-    a = fresnel_i_vadd(fresnel_i_vadd(q->a0, ch), fresnel_i_vadd(q->a0_lo, fresnel_i_vsquare_lo(c, ch)));
-    if (kind == FRESNEL_I_DIEL) {
-        m = fresnel_i_vabs(a);
-        t = m;
-    } else {
-        m = fresnel_i_vsqrt(fresnel_i_vadd(fresnel_i_vmul(a, a), q->ek4));
-        t = fresnel_i_vmul(fresnel_i_vset(0.5f), fresnel_i_vadd(m, fresnel_i_vabs(a)));
-    }
-    b = fresnel_i_vsqrt(t);
-    /* a is neither NaN nor -0: a0 + ch would be -0 only if ch were */
-    x = fresnel_i_vsel_nonneg(a, one, b);
-    y = fresnel_i_vsel_nonneg(a, b, q->ek);
-    s2 = fresnel_i_vmul(fresnel_i_vsub(one, c), fresnel_i_vadd(one, c));
-    c2y = fresnel_i_vmul(fresnel_i_vadd(c, c), y);
-    c2ys2 = fresnel_i_vmul(c2y, s2);
-    xs = fresnel_i_vmul(x, fresnel_i_vadd(m, ch));
-    xp = fresnel_i_vmul(x, fresnel_i_vadd(fresnel_i_vmul(ch, m), fresnel_i_vmul(s2, s2)));
-    ns = fresnel_i_vsub(xs, c2y);
-    ds = fresnel_i_vadd(xs, c2y);
-    np = fresnel_i_vsub(xp, c2ys2);
-    dp = fresnel_i_vadd(xp, c2ys2);
-    if (kind == FRESNEL_I_COND2)
-        f = fresnel_i_vmul(fresnel_i_vmul(fresnel_i_vset(0.5f), fresnel_i_vdiv(ns, ds)),
-                           fresnel_i_vadd(one, fresnel_i_vdiv(np, dp)));
-    else
-        f = fresnel_i_vdiv(fresnel_i_vmul(ns, fresnel_i_vadd(dp, np)), fresnel_i_vmul(ds, fresnel_i_vadd(dp, dp)));
-    return fresnel_i_vunit(f);
-}
-
-#define FRESNEL_I_VBATCH(name, kind)                                                                   \
-    static void name(const fresnel_conductor_prep *p, const float *c, float *out, int n)                \
-    {                                                                                                  \
-        struct fresnel_i_vprep q;                                                                      \
-        int i;                                                                                         \
-        q.a0 = fresnel_i_vset(p->a0);                                                                  \
-        q.a0_lo = fresnel_i_vset(p->a0_lo);                                                            \
-        q.ek = fresnel_i_vset(p->ek);                                                                  \
-        q.ek4 = fresnel_i_vset(p->ek4);                                                                \
-        for (i = 0; i + 2 * FRESNEL_I_VW <= n; i += 2 * FRESNEL_I_VW) {                                \
-            fresnel_i_vf f0 = fresnel_i_vexact(&q, fresnel_i_vload(c + i), kind);                      \
-            fresnel_i_vf f1 = fresnel_i_vexact(&q, fresnel_i_vload(c + i + FRESNEL_I_VW), kind);       \
-            fresnel_i_vstore(out + i, f0);                                                             \
-            fresnel_i_vstore(out + i + FRESNEL_I_VW, f1);                                              \
-        }                                                                                              \
-        for (; i < n; i += FRESNEL_I_VW) {                                                             \
-            float buf[FRESNEL_I_VW];                                                                   \
-            int j, k = n - i < FRESNEL_I_VW ? n - i : FRESNEL_I_VW;                                    \
-            for (j = 0; j < FRESNEL_I_VW; j++)                                                         \
-                buf[j] = j < k ? c[i + j] : 1.0f;                                                      \
-            fresnel_i_vstore(buf, fresnel_i_vexact(&q, fresnel_i_vload(buf), kind));                   \
-            for (j = 0; j < k; j++)                                                                    \
-                out[i + j] = buf[j];                                                                   \
-        }                                                                                              \
-    }
-#else
+#if !FRESNEL_I_VW
 /* Portable C: one loop per kind with no branch inside, in blocks of 8 with
  * a fixed trip count, the shape compilers' vectorisers accept when sqrtf
  * need not set errno (-fno-math-errno) and compares may be if-converted
@@ -261,6 +191,13 @@ FRESNEL_I_VBATCH(fresnel_i_batch_cond2, FRESNEL_I_COND2)
 void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restrict c, float *restrict out, int n)
 {
     int i;
+#if FRESNEL_I_AVX_DISPATCH
+    __builtin_cpu_init(); /* returns at once once the runtime's start-up code has run */
+    if (__builtin_cpu_supports("avx2") && p->kind != FRESNEL_I_MATCHED) {
+        fresnel_i_conductor_batch_avx(p, c, out, n);
+        return;
+    }
+#endif
     switch (p->kind) {
     case FRESNEL_I_DIEL: fresnel_i_batch_diel(p, c, out, n); break;
     case FRESNEL_I_COND1: fresnel_i_batch_cond1(p, c, out, n); break;

@@ -3,6 +3,8 @@
  * compiler's target macros, so a kernel is written once and built at the
  * width the target has:
  *   __AVX512F__  16 lanes    __AVX__ 8 lanes    __SSE2__ 4 lanes
+ *   (FRESNEL_I_FORCE_AVX: the AVX2 kernel that exact_avx.c compiles for
+ *   run-time selection in an SSE2 build)
  *   __ARM_NEON on AArch64 (which has vector sqrt and divide) 4 lanes.
  * FRESNEL_CFG_NO_SIMD, or none of these, gives FRESNEL_I_VW 0 and the
  * kernels' scalar loops. Every operation is the IEEE one of the scalar code
@@ -14,6 +16,12 @@
 #define FRESNEL_SIMD_H
 
 #include "internal.h"
+
+/* 0: no run-time choice of kernel (the tests' way to reach the SSE2
+ * kernel on a CPU with AVX; exact_batch.h). */
+#ifndef FRESNEL_I_SIMD_DISPATCH
+#define FRESNEL_I_SIMD_DISPATCH 1
+#endif
 
 #if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD
 
@@ -44,7 +52,7 @@ static inline fresnel_i_vf fresnel_i_vsplit_hi(fresnel_i_vf a)
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm512_fmsub_ps(a, b, c); }
 #endif
 
-#elif defined(__AVX__)
+#elif defined(__AVX__) || defined(FRESNEL_I_FORCE_AVX)
 #include <immintrin.h>
 #define FRESNEL_I_VW 8
 typedef __m256 fresnel_i_vf;
@@ -60,9 +68,12 @@ static inline fresnel_i_vf fresnel_i_vsqrt(fresnel_i_vf a) { return _mm256_sqrt_
 static inline fresnel_i_vf fresnel_i_vabs(fresnel_i_vf a) { return _mm256_andnot_ps(_mm256_set1_ps(-0.0f), a); }
 static inline fresnel_i_vm fresnel_i_vge(fresnel_i_vf a, fresnel_i_vf b) { return _mm256_cmp_ps(a, b, _CMP_GE_OQ); }
 static inline fresnel_i_vf fresnel_i_vsel(fresnel_i_vm m, fresnel_i_vf a, fresnel_i_vf b) { return _mm256_blendv_ps(b, a, m); }
-/* a >= 0 ? p : n for a neither NaN nor -0: blendv reads a's sign bit. */
+#if defined(__AVX2__) || defined(FRESNEL_I_FORCE_AVX)
+/* a >= 0 ? p : n for a neither NaN nor -0: blendv reads a's sign bit
+ * (with AVX alone gcc would test each lane's sign in integer registers). */
 #define FRESNEL_I_VSEL_SIGN
 static inline fresnel_i_vf fresnel_i_vsel_nonneg(fresnel_i_vf a, fresnel_i_vf p, fresnel_i_vf n) { return _mm256_blendv_ps(p, n, a); }
+#endif
 static inline fresnel_i_vf fresnel_i_vmax(fresnel_i_vf a, fresnel_i_vf b) { return _mm256_max_ps(a, b); }
 static inline fresnel_i_vf fresnel_i_vmin(fresnel_i_vf a, fresnel_i_vf b) { return _mm256_min_ps(a, b); }
 static inline fresnel_i_vf fresnel_i_vsplit_hi(fresnel_i_vf a)
