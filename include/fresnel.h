@@ -330,9 +330,10 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  * tests/test_batch_simd.sh); c and out must not overlap; n <= 0 writes
  * nothing, nothing at or past n is read or written.
  * SIMD, chosen at compile time from the target: AVX-512F 16 lanes (compiled
- * by the tests, run only on a CPU that has it), AVX/AVX2 8, SSE2 4 (the
- * x86-64 baseline: an -O2 build without -march gets this one), AArch64 NEON
- * 4; portable C elsewhere and with FRESNEL_CFG_NO_SIMD (fresnel_config.h).
+ * by the tests, run only on a CPU that has it), AVX/AVX2 8, SSE2 4, AArch64
+ * NEON 4; an x86-64 build without AVX (the -O2 default) has the AVX2 kernel
+ * too and takes it where the CPU has AVX2 (gcc, clang); portable C
+ * elsewhere and with FRESNEL_CFG_NO_SIMD (fresnel_config.h).
  * Error <= FRESNEL_BOUND_CONDUCTOR_PREPARED.
  * Cost: prepare ~40 flops; per cosine ~45 flops, div, 2 sqrt (kappa = 0: one
  * sqrt), a vector's worth at a time in the batches; `build/fresnel bench
