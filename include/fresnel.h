@@ -312,7 +312,8 @@ fresnel_rgb fresnel_cook_torrance_rgb(fresnel_rgb f0, float eta, float kappa, fl
  *   Rp = Rs (c^2 m + s^4 - 2cu s^2) / (c^2 m + s^4 + 2cu s^2).
  * kappa = 0 and eta < 1: F = 1 past the critical angle. eta = 1, kappa = 0:
  * F = 0 for every c. Error <= FRESNEL_BOUND_CONDUCTOR, also at critical
- * angles. Cost: ~60 flops, div, 2 sqrt (kappa = 0: one sqrt). */
+ * angles. Cost: ~50 flops (6 of them in binary64 where the target has it
+ * in hardware: x86-64, AArch64), div, 2 sqrt (kappa = 0: one sqrt). */
 float fresnel_conductor(float eta, float kappa, float c);
 fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
 

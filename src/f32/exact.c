@@ -101,11 +101,8 @@ float fresnel_conductor(float eta, float kappa, float c)
         return 0.0f;
     ek = eta * kappa;
     a = fresnel_i_eta2_minus_sin2(eta, c, kappa * kappa);
-    if (kind == FRESNEL_I_DIEL)
-        return fresnel_i_exact_f(a, c, c * c, 0.0f, 0.0f, FRESNEL_I_DIEL);
-    if (kind == FRESNEL_I_COND1)
-        return fresnel_i_exact_f(a, c, c * c, ek, 4.0f * ek * ek, FRESNEL_I_COND1);
-    return fresnel_i_exact_f(a, c, c * c, ek, 4.0f * ek * ek, FRESNEL_I_COND2);
+    /* one body with the form as a run-time value (kappa = 0 gives ek = 0) */
+    return fresnel_i_exact_f(a, c, c * c, ek, 4.0f * ek * ek, kind);
 }
 
 /* x + y = s + err exactly, s = fl(x + y) (Knuth's TwoSum). */
