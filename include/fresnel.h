@@ -323,7 +323,8 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  *   fresnel_conductor_batch(&p, cos_array, out, n);     out[i] for c[i], i < n
  *   fresnel_conductor_prep rgb[3] = {prepare(eta.r, kappa.r), ..g.., ..b..};
  *   fresnel_conductor_rgb_batch(rgb, cos_array, rgb_out, n);
- *                                   rgb_out[i].r, .g, .b for c[i] (rgb[0..2])
+ *               rgb_out[i] for c[i]: one fresnel_rgb per cosine, as
+ *               fresnel_conductor_rgb returns it; channel j from rgb[j]
  * The same formula, clamps and NaN policy as fresnel_conductor; results
  * within the bound, not bit-identical to fresnel_conductor's. Both batches
  * give fresnel_conductor_prepared's results bit for bit, in every lane and
