@@ -52,11 +52,13 @@ static inline struct fresnel_i_root fresnel_i_transmitted(float eta, float kappa
  * denominator, as with sums of squares. m + c^2 >= 2cu always, and m and u
  * carry a rounding or two of their own, since A does (see
  * fresnel_i_eta2_minus_sin2 and fresnel_conductor_prepare).
- * ONE_DIV: F = Ns (Dp + Np) / (2 Ds Dp). For eta kappa >= 2^-30,
- * Ds >= (eta kappa)^1.5, Dp >= sqrt(eta kappa) min(eta kappa, 1/4) and
- * Ds Dp <= ~(|n|^2 + 2)^3: normal and finite in binary32 over the whole
- * domain. Smaller eta kappa (FRESNEL_I_COND2) divides twice, kappa = 0 (FRESNEL_I_DIEL)
- * has m = t = |A| (A^2 could underflow), u = B or 0: one square root. */
+ * With Q = X (c^2 m + s^4), Dp + Np = 2Q, so F = Ns Q / (Ds Dp): Np is never
+ * formed, and F <= 1 by construction (0 <= Q <= Dp, Ns <= Ds, each rounding
+ * monotone). For eta kappa >= 2^-30, Ds >= (eta kappa)^1.5,
+ * Dp >= sqrt(eta kappa) min(eta kappa, 1/4) and Ds Dp <= ~(|n|^2 + 2)^3:
+ * normal and finite in binary32 over the whole domain. Smaller eta kappa
+ * (FRESNEL_I_COND2) divides twice, kappa = 0 (FRESNEL_I_DIEL) has
+ * m = t = |A| (A^2 could underflow), u = B or 0: one square root. */
 
 static inline float fresnel_i_exact_f(float a, float c, float ch, float ek, float ek4, int kind)
 {
@@ -69,12 +71,12 @@ static inline float fresnel_i_exact_f(float a, float c, float ch, float ek, floa
     float s2 = (1.0f - c) * (1.0f + c);
     float c2y = (c + c) * y;
     float xs = x * (m + ch);
-    float xp = x * (ch * m + s2 * s2);
+    float q = x * (ch * m + s2 * s2);
     float ns = xs - c2y, ds = xs + c2y;
-    float np = xp - c2y * s2, dp = xp + c2y * s2;
-    float f = kind == FRESNEL_I_COND2 ? 0.5f * (ns / ds) * (1.0f + np / dp) : (ns * (dp + np)) / (ds * (dp + dp));
-    /* Rounding can take F a few ulp below 0 where Rs or Rp is 0 (eta near 1)
-     * and above 1 where both are 1: clamp. */
+    float dp = q + c2y * s2;
+    float f = kind == FRESNEL_I_COND2 ? (ns / ds) * (q / dp) : (ns * q) / (ds * dp);
+    /* Rounding can take Ns, so F, a few ulp below 0 where Rs is 0 (eta
+     * near 1): clamp (the upper clamp never acts). */
     return fresnel_i_unit(f);
 }
 

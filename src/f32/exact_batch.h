@@ -36,7 +36,7 @@ struct fresnel_i_vprep {
 static inline fresnel_i_vf fresnel_i_vexact(const struct fresnel_i_vprep *q, fresnel_i_vf c, int kind)
 {
     const fresnel_i_vf one = fresnel_i_vset(1.0f);
-    fresnel_i_vf ch, a, m, t, b, x, y, s2, c2y, c2ys2, xs, xp, ns, ds, np, dp, f;
+    fresnel_i_vf ch, a, m, t, b, x, y, s2, c2y, xs, xq, ns, ds, dp, f;
     c = fresnel_i_vunit(c);
     ch = fresnel_i_vmul(c, c);
     a = fresnel_i_vadd(fresnel_i_vadd(q->a0, ch), fresnel_i_vadd(q->a0_lo, fresnel_i_vsquare_lo(c, ch)));
@@ -53,19 +53,17 @@ static inline fresnel_i_vf fresnel_i_vexact(const struct fresnel_i_vprep *q, fre
     y = fresnel_i_vsel_nonneg(a, b, q->ek);
     s2 = fresnel_i_vmul(fresnel_i_vsub(one, c), fresnel_i_vadd(one, c));
     c2y = fresnel_i_vmul(fresnel_i_vadd(c, c), y);
-    c2ys2 = fresnel_i_vmul(c2y, s2);
     xs = fresnel_i_vmul(x, fresnel_i_vadd(m, ch));
-    xp = fresnel_i_vmul(x, fresnel_i_vadd(fresnel_i_vmul(ch, m), fresnel_i_vmul(s2, s2)));
+    xq = fresnel_i_vmul(x, fresnel_i_vadd(fresnel_i_vmul(ch, m), fresnel_i_vmul(s2, s2)));
     ns = fresnel_i_vsub(xs, c2y);
     ds = fresnel_i_vadd(xs, c2y);
-    np = fresnel_i_vsub(xp, c2ys2);
-    dp = fresnel_i_vadd(xp, c2ys2);
+    dp = fresnel_i_vadd(xq, fresnel_i_vmul(c2y, s2));
     if (kind == FRESNEL_I_COND2)
-        f = fresnel_i_vmul(fresnel_i_vmul(fresnel_i_vset(0.5f), fresnel_i_vdiv(ns, ds)),
-                           fresnel_i_vadd(one, fresnel_i_vdiv(np, dp)));
+        f = fresnel_i_vmul(fresnel_i_vdiv(ns, ds), fresnel_i_vdiv(xq, dp));
     else
-        f = fresnel_i_vdiv(fresnel_i_vmul(ns, fresnel_i_vadd(dp, np)), fresnel_i_vmul(ds, fresnel_i_vadd(dp, dp)));
-    return fresnel_i_vunit(f);
+        f = fresnel_i_vdiv(fresnel_i_vmul(ns, xq), fresnel_i_vmul(ds, dp));
+    /* f <= 1 by construction (exact.c): only the lower clamp can act */
+    return fresnel_i_vmax(f, fresnel_i_vset(0.0f));
 }
 
 #define FRESNEL_I_VBATCH(name, kind)                                                                   \
