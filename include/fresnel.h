@@ -312,7 +312,7 @@ fresnel_rgb fresnel_cook_torrance_rgb(fresnel_rgb f0, float eta, float kappa, fl
  *   Rp = Rs (c^2 m + s^4 - 2cu s^2) / (c^2 m + s^4 + 2cu s^2).
  * kappa = 0 and eta < 1: F = 1 past the critical angle. eta = 1, kappa = 0:
  * F = 0 for every c. Error <= FRESNEL_BOUND_CONDUCTOR, also at critical
- * angles. Cost: ~50 flops (6 of them in binary64 where the target has it
+ * angles. Cost: ~45 flops (6 of them in binary64 where the target has it
  * in hardware: x86-64, AArch64), div, 2 sqrt (kappa = 0: one sqrt). */
 float fresnel_conductor(float eta, float kappa, float c);
 fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
@@ -337,7 +337,7 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  * too and takes it where the CPU has AVX2 (gcc, clang); portable C
  * elsewhere and with FRESNEL_CFG_NO_SIMD (fresnel_config.h).
  * Error <= FRESNEL_BOUND_CONDUCTOR_PREPARED.
- * Cost: prepare ~40 flops; per cosine ~45 flops, div, 2 sqrt (kappa = 0: one
+ * Cost: prepare ~40 flops; per cosine ~40 flops, div, 2 sqrt (kappa = 0: one
  * sqrt), a vector's worth at a time in the batches; `build/fresnel bench
  * --targets` times the batch against the Mitsuba-style formula. */
 typedef struct fresnel_conductor_prep {
