@@ -169,7 +169,7 @@ float fresnel_conductor_prepared(const fresnel_conductor_prep *p, float c)
     {                                                                                                  \
         const fresnel_conductor_prep q = *p;                                                           \
         int i;                                                                                         \
-        for (i = 0; i + FRESNEL_I_BLOCK <= n; i += FRESNEL_I_BLOCK) {                                  \
+        for (i = 0; n - i >= FRESNEL_I_BLOCK; i += FRESNEL_I_BLOCK) {                                  \
             int j;                                                                                     \
             for (j = 0; j < FRESNEL_I_BLOCK; j++) {                                                    \
                 float cj = fresnel_i_unit(c[i + j]);                                                   \

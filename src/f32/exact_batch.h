@@ -75,15 +75,17 @@ static inline fresnel_i_vf fresnel_i_vexact(const struct fresnel_i_vprep *q, fre
         q.a0_lo = fresnel_i_vset(p->a0_lo);                                                            \
         q.ek = fresnel_i_vset(p->ek);                                                                  \
         q.ek4 = fresnel_i_vset(p->ek4);                                                                \
-        for (i = 0; i + 2 * FRESNEL_I_VW <= n; i += 2 * FRESNEL_I_VW) {                                \
+        for (i = 0; n - i >= 2 * FRESNEL_I_VW; i += 2 * FRESNEL_I_VW) {                                \
             fresnel_i_vf f0 = fresnel_i_vexact(&q, fresnel_i_vload(c + i), kind);                      \
             fresnel_i_vf f1 = fresnel_i_vexact(&q, fresnel_i_vload(c + i + FRESNEL_I_VW), kind);       \
             fresnel_i_vstore(out + i, f0);                                                             \
             fresnel_i_vstore(out + i + FRESNEL_I_VW, f1);                                              \
         }                                                                                              \
-        for (; i < n; i += FRESNEL_I_VW) {                                                             \
+        for (; n - i >= FRESNEL_I_VW; i += FRESNEL_I_VW)                                               \
+            fresnel_i_vstore(out + i, fresnel_i_vexact(&q, fresnel_i_vload(c + i), kind));             \
+        if (i < n) {                                                                                   \
             float buf[FRESNEL_I_VW];                                                                   \
-            int j, k = n - i < FRESNEL_I_VW ? n - i : FRESNEL_I_VW;                                    \
+            int j, k = n - i;                                                                          \
             for (j = 0; j < FRESNEL_I_VW; j++)                                                         \
                 buf[j] = j < k ? c[i + j] : 1.0f;                                                      \
             fresnel_i_vstore(buf, fresnel_i_vexact(&q, fresnel_i_vload(buf), kind));                   \
