@@ -339,7 +339,7 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  * Error <= FRESNEL_BOUND_CONDUCTOR_PREPARED.
  * Cost: prepare ~40 flops; per cosine ~40 flops, div, 2 sqrt (kappa = 0: one
  * sqrt), a vector's worth at a time in the batches; `build/fresnel bench
- * --targets` times the batch against the Mitsuba-style formula. */
+ * --targets` times the batch against other renderers' forms. */
 typedef struct fresnel_conductor_prep {
     float a0, a0_lo; /* eta^2 - kappa^2 - 1 = a0 + a0_lo */
     float ek;        /* eta kappa */
