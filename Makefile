@@ -18,7 +18,7 @@ DESTDIR ?=
 WARN       := -std=c99 -Wall -Wextra -Wpedantic -Werror
 # The runtime never hands sqrtf a negative argument and sets no errno
 # (fresnel.h), so errno-setting math need not be kept: with it dropped gcc
-# inlines sqrtf and vectorises fresnel_conductor_batch.
+# inlines sqrtf (the batches use SIMD intrinsics, src/f32/simd.h).
 MATH_FLAGS := -fno-math-errno -fno-trapping-math
 CFLAGS_LIB := $(WARN) $(OPT) $(MATH_FLAGS) $(SAN) -Iinclude -MMD -MP
 # Other renderers' algorithms (gen/bench/peers.h), measured against ours by

@@ -312,7 +312,8 @@ fresnel_rgb fresnel_cook_torrance_rgb(fresnel_rgb f0, float eta, float kappa, fl
  *   Rp = Rs (c^2 m + s^4 - 2cu s^2) / (c^2 m + s^4 + 2cu s^2).
  * kappa = 0 and eta < 1: F = 1 past the critical angle. eta = 1, kappa = 0:
  * F = 0 for every c. Error <= FRESNEL_BOUND_CONDUCTOR, also at critical
- * angles. Cost: ~60 flops, div, 2 sqrt (kappa = 0: one sqrt). */
+ * angles. Cost: ~45 flops (6 of them in binary64 where the target has it
+ * in hardware: x86-64, AArch64), div, 2 sqrt (kappa = 0: one sqrt). */
 float fresnel_conductor(float eta, float kappa, float c);
 fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
 
@@ -320,13 +321,25 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  *   fresnel_conductor_prep p = fresnel_conductor_prepare(eta, kappa);
  *   r = fresnel_conductor_prepared(&p, c);              one cosine
  *   fresnel_conductor_batch(&p, cos_array, out, n);     out[i] for c[i], i < n
+ *   fresnel_conductor_prep rgb[3] = {prepare(eta.r, kappa.r), ..g.., ..b..};
+ *   fresnel_conductor_rgb_batch(rgb, cos_array, rgb_out, n);
+ *               rgb_out[i] for c[i]: one fresnel_rgb per cosine, as
+ *               fresnel_conductor_rgb returns it; channel j from rgb[j]
  * The same formula, clamps and NaN policy as fresnel_conductor; results
- * within the bound, not bit-identical to fresnel_conductor's. The batch gives
- * fresnel_conductor_prepared's results bit for bit; c and out must not
- * overlap; n <= 0 writes nothing.
+ * within the bound, not bit-identical to fresnel_conductor's. Both batches
+ * give fresnel_conductor_prepared's results bit for bit, in every lane and
+ * for any n, alignment or form (checked on each kernel by
+ * tests/test_batch_simd.sh); c and out must not overlap; n <= 0 writes
+ * nothing, nothing at or past n is read or written.
+ * SIMD, chosen at compile time from the target: AVX-512F 16 lanes (compiled
+ * by the tests, run only on a CPU that has it), AVX/AVX2 8, SSE2 4, AArch64
+ * NEON 4; an x86-64 build without AVX (the -O2 default) has the AVX2 kernel
+ * too and takes it where the CPU has AVX2 (gcc, clang); portable C
+ * elsewhere and with FRESNEL_CFG_NO_SIMD (fresnel_config.h).
  * Error <= FRESNEL_BOUND_CONDUCTOR_PREPARED.
- * Cost: prepare ~40 flops; per cosine ~50 flops, div, 2 sqrt (kappa = 0: one
- * sqrt). */
+ * Cost: prepare ~40 flops; per cosine ~40 flops, div, 2 sqrt (kappa = 0: one
+ * sqrt), a vector's worth at a time in the batches; `build/fresnel bench
+ * --targets` times the batch against other renderers' forms. */
 typedef struct fresnel_conductor_prep {
     float a0, a0_lo; /* eta^2 - kappa^2 - 1 = a0 + a0_lo */
     float ek;        /* eta kappa */
@@ -336,6 +349,7 @@ typedef struct fresnel_conductor_prep {
 fresnel_conductor_prep fresnel_conductor_prepare(float eta, float kappa);
 float fresnel_conductor_prepared(const fresnel_conductor_prep *p, float c);
 void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *c, float *out, int n);
+void fresnel_conductor_rgb_batch(const fresnel_conductor_prep p[3], const float *c, fresnel_rgb *out, int n);
 
 /* Exact dielectric Fresnel (kappa = 0) from either side, eta = n_transmitted /
  * n_incident:

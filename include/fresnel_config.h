@@ -20,6 +20,10 @@
  *                         x86-64) must say NO_F16 too.
  *   FRESNEL_CFG_NO_FIXED  no fixed-point functions (fresnel_fixed.h,
  *                         src/q15/).
+ *   FRESNEL_CFG_NO_SIMD   the binary32 batches (fresnel_conductor_batch,
+ *                         ..._rgb_batch) in portable C instead of the SSE2,
+ *                         AVX, AVX-512 or AArch64 NEON intrinsics the
+ *                         target macros select; same results.
  *
  * WHY ONE MACRO
  *   A misspelled stb-style switch (-DFRESNEL_NO_FLOT) is silently ignored by
@@ -37,7 +41,8 @@
 #define FRESNEL_CFG_NO_FLOAT 0x1
 #define FRESNEL_CFG_NO_F16 0x2
 #define FRESNEL_CFG_NO_FIXED 0x4
-#define FRESNEL_CFG_KNOWN_FLAGS 0x7
+#define FRESNEL_CFG_NO_SIMD 0x8
+#define FRESNEL_CFG_KNOWN_FLAGS 0xf
 
 #ifndef FRESNEL_CONFIG
 #define FRESNEL_CONFIG 0
@@ -45,7 +50,7 @@
 
 #if defined(FRESNEL_NO_FLOAT) || defined(FRESNEL_NO_F16) || defined(FRESNEL_NO_FIXED) || \
     defined(FRESNEL_NO_FLOATS) || defined(FRESNEL_NO_FIXED_POINT) || defined(FRESNEL_NO_HALF) || \
-    defined(FRESNEL_FIXED_ONLY) || defined(FRESNEL_CFG)
+    defined(FRESNEL_FIXED_ONLY) || defined(FRESNEL_CFG) || defined(FRESNEL_NO_SIMD)
 #error "fresnel: configure with -DFRESNEL_CONFIG='FRESNEL_CFG_NO_FLOAT|...' (see fresnel_config.h)"
 #endif
 
@@ -55,6 +60,7 @@ typedef char fresnel_config_has_unknown_flags_[(((FRESNEL_CONFIG) & ~FRESNEL_CFG
 
 #define FRESNEL_HAS_FLOAT (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_FLOAT) == 0)
 #define FRESNEL_HAS_FIXED (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_FIXED) == 0)
+#define FRESNEL_HAS_SIMD (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_SIMD) == 0)
 /* _Float16 needs the compiler's support as well as the configuration: gcc
  * defines __FLT16_MANT_DIG__ exactly where it accepts _Float16 (x86-64,
  * Arm with -mfp16-format=ieee or an FP16 FPU, AArch64); clang 14 on x86-64

@@ -43,6 +43,7 @@ cross cmd  riscv64-unknown-elf-gcc  gcc-riscv64-unknown-elf
 cross cmd  riscv64-unknown-elf-nm   binutils-riscv64-unknown-elf
 cross cmd  qemu-system-arm          qemu-system-arm
 cross cmd  qemu-riscv32-static      qemu-user-static
+cross cmd  aarch64-linux-gnu-gcc    gcc-aarch64-linux-gnu
 '
 group=${1:-all}
 case $group in

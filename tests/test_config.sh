@@ -44,6 +44,7 @@ for cc in gcc clang; do
     must_fail "misspelled flag FRESNEL_CFG_NO_FLOT" 'FRESNEL_CFG_NO_FLOT' "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOT"
     must_fail "unknown flag bit 0x100" 'fresnel_config_has_unknown_flags_' "-DFRESNEL_CONFIG=0x100"
     must_fail "stb-style FRESNEL_NO_FLOAT" 'configure with -DFRESNEL_CONFIG' "-DFRESNEL_NO_FLOAT"
+    must_fail "stb-style FRESNEL_NO_SIMD" 'configure with -DFRESNEL_CONFIG' "-DFRESNEL_NO_SIMD"
     must_fail "empty FRESNEL_CONFIG" 'error' "-DFRESNEL_CONFIG="
     if $cc $W "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16" -c "$t/use.c" -o "$t/o.o" 2>"$t/err"; then
         echo "PASS $cc: known flags FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16 compile"

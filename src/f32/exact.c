@@ -10,6 +10,7 @@
  * the ratios and Rs + Rp is one division (fresnel_i_exact_f), and a
  * material may be prepared once for many cosines (fresnel_conductor_prepare). */
 #include "internal.h"
+#include "exact_batch.h"
 
 #if FRESNEL_HAS_FLOAT
 #include <math.h>
@@ -51,12 +52,13 @@ static inline struct fresnel_i_root fresnel_i_transmitted(float eta, float kappa
  * denominator, as with sums of squares. m + c^2 >= 2cu always, and m and u
  * carry a rounding or two of their own, since A does (see
  * fresnel_i_eta2_minus_sin2 and fresnel_conductor_prepare).
- * ONE_DIV: F = Ns (Dp + Np) / (2 Ds Dp). For eta kappa >= 2^-30,
- * Ds >= (eta kappa)^1.5, Dp >= sqrt(eta kappa) min(eta kappa, 1/4) and
- * Ds Dp <= ~(|n|^2 + 2)^3: normal and finite in binary32 over the whole
- * domain. Smaller eta kappa (FRESNEL_I_COND2) divides twice, kappa = 0 (FRESNEL_I_DIEL)
- * has m = t = |A| (A^2 could underflow), u = B or 0: one square root. */
-enum { FRESNEL_I_MATCHED, FRESNEL_I_DIEL, FRESNEL_I_COND1, FRESNEL_I_COND2 };
+ * With Q = X (c^2 m + s^4), Dp + Np = 2Q, so F = Ns Q / (Ds Dp): Np is never
+ * formed, and F <= 1 by construction (0 <= Q <= Dp, Ns <= Ds, each rounding
+ * monotone). For eta kappa >= 2^-30, Ds >= (eta kappa)^1.5,
+ * Dp >= sqrt(eta kappa) min(eta kappa, 1/4) and Ds Dp <= ~(|n|^2 + 2)^3:
+ * normal and finite in binary32 over the whole domain. Smaller eta kappa
+ * (FRESNEL_I_COND2) divides twice, kappa = 0 (FRESNEL_I_DIEL) has
+ * m = t = |A| (A^2 could underflow), u = B or 0: one square root. */
 
 static inline float fresnel_i_exact_f(float a, float c, float ch, float ek, float ek4, int kind)
 {
@@ -69,12 +71,12 @@ static inline float fresnel_i_exact_f(float a, float c, float ch, float ek, floa
     float s2 = (1.0f - c) * (1.0f + c);
     float c2y = (c + c) * y;
     float xs = x * (m + ch);
-    float xp = x * (ch * m + s2 * s2);
+    float q = x * (ch * m + s2 * s2);
     float ns = xs - c2y, ds = xs + c2y;
-    float np = xp - c2y * s2, dp = xp + c2y * s2;
-    float f = kind == FRESNEL_I_COND2 ? 0.5f * (ns / ds) * (1.0f + np / dp) : (ns * (dp + np)) / (ds * (dp + dp));
-    /* Rounding can take F a few ulp below 0 where Rs or Rp is 0 (eta near 1)
-     * and above 1 where both are 1: clamp. */
+    float dp = q + c2y * s2;
+    float f = kind == FRESNEL_I_COND2 ? (ns / ds) * (q / dp) : (ns * q) / (ds * dp);
+    /* Rounding can take Ns, so F, a few ulp below 0 where Rs is 0 (eta
+     * near 1): clamp (the upper clamp never acts). */
     return fresnel_i_unit(f);
 }
 
@@ -101,11 +103,8 @@ float fresnel_conductor(float eta, float kappa, float c)
         return 0.0f;
     ek = eta * kappa;
     a = fresnel_i_eta2_minus_sin2(eta, c, kappa * kappa);
-    if (kind == FRESNEL_I_DIEL)
-        return fresnel_i_exact_f(a, c, c * c, 0.0f, 0.0f, FRESNEL_I_DIEL);
-    if (kind == FRESNEL_I_COND1)
-        return fresnel_i_exact_f(a, c, c * c, ek, 4.0f * ek * ek, FRESNEL_I_COND1);
-    return fresnel_i_exact_f(a, c, c * c, ek, 4.0f * ek * ek, FRESNEL_I_COND2);
+    /* one body with the form as a run-time value (kappa = 0 gives ek = 0) */
+    return fresnel_i_exact_f(a, c, c * c, ek, 4.0f * ek * ek, kind);
 }
 
 /* x + y = s + err exactly, s = fl(x + y) (Knuth's TwoSum). */
@@ -159,37 +158,73 @@ float fresnel_conductor_prepared(const fresnel_conductor_prep *p, float c)
     }
 }
 
-/* One loop per kind, with no branch inside (the selects compile to
- * conditional moves or blends), in blocks of FRESNEL_I_BLOCK with a fixed trip
- * count: the shape gcc's -O2 vectoriser accepts (very-cheap cost model).
- * It does vectorise them when sqrtf need not set errno (-fno-math-errno)
- * and compares may be if-converted (-fno-trapping-math); with the default
- * flags the loops stay scalar. */
+#if !FRESNEL_I_VW
+/* Portable C: one loop per kind with no branch inside, in blocks of 8 with
+ * a fixed trip count, the shape compilers' vectorisers accept when sqrtf
+ * need not set errno (-fno-math-errno) and compares may be if-converted
+ * (-fno-trapping-math). */
 #define FRESNEL_I_BLOCK 8
-#define FRESNEL_I_BATCH_LOOP(kind)                                 \
-    for (i = 0; i + FRESNEL_I_BLOCK <= n; i += FRESNEL_I_BLOCK) {        \
-        int j;                                               \
-        for (j = 0; j < FRESNEL_I_BLOCK; j++) {                    \
-            float cj = fresnel_i_unit(c[i + j]);                   \
-            out[i + j] = FRESNEL_I_PREPARED(&q, cj, kind);         \
-        }                                                    \
-    }                                                        \
-    for (; i < n; i++) {                                     \
-        float ci = fresnel_i_unit(c[i]);                           \
-        out[i] = FRESNEL_I_PREPARED(&q, ci, kind);                 \
+#define FRESNEL_I_VBATCH(name, kind)                                                                   \
+    static void name(const fresnel_conductor_prep *p, const float *c, float *out, int n)                \
+    {                                                                                                  \
+        const fresnel_conductor_prep q = *p;                                                           \
+        int i;                                                                                         \
+        for (i = 0; n - i >= FRESNEL_I_BLOCK; i += FRESNEL_I_BLOCK) {                                  \
+            int j;                                                                                     \
+            for (j = 0; j < FRESNEL_I_BLOCK; j++) {                                                    \
+                float cj = fresnel_i_unit(c[i + j]);                                                   \
+                out[i + j] = FRESNEL_I_PREPARED(&q, cj, kind);                                         \
+            }                                                                                          \
+        }                                                                                              \
+        for (; i < n; i++) {                                                                           \
+            float ci = fresnel_i_unit(c[i]);                                                           \
+            out[i] = FRESNEL_I_PREPARED(&q, ci, kind);                                                 \
+        }                                                                                              \
     }
+#endif
+
+FRESNEL_I_VBATCH(fresnel_i_batch_diel, FRESNEL_I_DIEL)
+FRESNEL_I_VBATCH(fresnel_i_batch_cond1, FRESNEL_I_COND1)
+FRESNEL_I_VBATCH(fresnel_i_batch_cond2, FRESNEL_I_COND2)
 
 void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restrict c, float *restrict out, int n)
 {
-    const fresnel_conductor_prep q = *p;
     int i;
-    switch (q.kind) {
-    case FRESNEL_I_DIEL: FRESNEL_I_BATCH_LOOP(FRESNEL_I_DIEL) break;
-    case FRESNEL_I_COND1: FRESNEL_I_BATCH_LOOP(FRESNEL_I_COND1) break;
-    case FRESNEL_I_COND2: FRESNEL_I_BATCH_LOOP(FRESNEL_I_COND2) break;
+#if FRESNEL_I_AVX_DISPATCH
+    __builtin_cpu_init(); /* returns at once once the runtime's start-up code has run */
+    if (__builtin_cpu_supports("avx2") && p->kind != FRESNEL_I_MATCHED) {
+        fresnel_i_conductor_batch_avx(p, c, out, n);
+        return;
+    }
+#endif
+    switch (p->kind) {
+    case FRESNEL_I_DIEL: fresnel_i_batch_diel(p, c, out, n); break;
+    case FRESNEL_I_COND1: fresnel_i_batch_cond1(p, c, out, n); break;
+    case FRESNEL_I_COND2: fresnel_i_batch_cond2(p, c, out, n); break;
     default:
         for (i = 0; i < n; i++)
             out[i] = 0.0f; /* matched index */
+    }
+}
+
+/* Three channels: each channel's batch over a block of cosines, then the
+ * block interleaved into out. */
+#define FRESNEL_I_RGB_BLOCK 64
+void fresnel_conductor_rgb_batch(const fresnel_conductor_prep p[3], const float *restrict c, fresnel_rgb *restrict out,
+                                 int n)
+{
+    float r[FRESNEL_I_RGB_BLOCK], g[FRESNEL_I_RGB_BLOCK], b[FRESNEL_I_RGB_BLOCK];
+    int i, j, k;
+    for (i = 0; i < n; i += k) {
+        k = n - i < FRESNEL_I_RGB_BLOCK ? n - i : FRESNEL_I_RGB_BLOCK;
+        fresnel_conductor_batch(&p[0], c + i, r, k);
+        fresnel_conductor_batch(&p[1], c + i, g, k);
+        fresnel_conductor_batch(&p[2], c + i, b, k);
+        for (j = 0; j < k; j++) {
+            out[i + j].r = r[j];
+            out[i + j].g = g[j];
+            out[i + j].b = b[j];
+        }
     }
 }
 

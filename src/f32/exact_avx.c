@@ -1,0 +1,33 @@
+/* fresnel_conductor_batch's 8-lane kernel for x86-64 builds whose target
+ * has no AVX (exact_batch.h): the same kernel source, compiled for AVX2 by
+ * a target pragma and called only where the CPU has AVX2. */
+#include "fresnel_config.h"
+
+#if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD && defined(__x86_64__) && defined(__SSE2__) && !defined(__AVX__) && \
+    defined(__GNUC__) && (!defined(FRESNEL_I_SIMD_DISPATCH) || FRESNEL_I_SIMD_DISPATCH)
+#define FRESNEL_I_FORCE_AVX 1
+#ifdef __clang__
+#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#else
+#pragma GCC target("avx2")
+#endif
+#include "exact_batch.h"
+
+FRESNEL_I_VBATCH(fresnel_i_batch_avx_diel, FRESNEL_I_DIEL)
+FRESNEL_I_VBATCH(fresnel_i_batch_avx_cond1, FRESNEL_I_COND1)
+FRESNEL_I_VBATCH(fresnel_i_batch_avx_cond2, FRESNEL_I_COND2)
+
+void fresnel_i_conductor_batch_avx(const fresnel_conductor_prep *p, const float *c, float *out, int n)
+{
+    switch (p->kind) {
+    case FRESNEL_I_DIEL: fresnel_i_batch_avx_diel(p, c, out, n); break;
+    case FRESNEL_I_COND1: fresnel_i_batch_avx_cond1(p, c, out, n); break;
+    default: fresnel_i_batch_avx_cond2(p, c, out, n); break; /* the caller handles the matched index */
+    }
+}
+#ifdef __clang__
+#pragma clang attribute pop
+#endif
+#else
+typedef int fresnel_i_exact_avx_disabled; /* ISO C wants a declaration */
+#endif

@@ -1,0 +1,98 @@
+/* The conductor batch kernel shared by exact.c and exact_avx.c (not
+ * public): the forms of fresnel_conductor_prep and, where simd.h has a
+ * vector type, the kernel at its width. */
+#ifndef FRESNEL_EXACT_BATCH_H
+#define FRESNEL_EXACT_BATCH_H
+
+#include "simd.h"
+
+#if FRESNEL_HAS_FLOAT
+/* fresnel_conductor_prep.kind (exact.c) */
+enum { FRESNEL_I_MATCHED, FRESNEL_I_DIEL, FRESNEL_I_COND1, FRESNEL_I_COND2 };
+
+/* x86-64 builds for a target without AVX (the SSE2 baseline) carry the
+ * batch's 8-lane kernel as well (exact_avx.c, compiled for AVX2 by a target
+ * pragma) and take it where the CPU reports AVX2 (__builtin_cpu_supports,
+ * which reads the feature word the compiler's runtime fills in once at
+ * start-up; the library keeps no state of its own). */
+#if FRESNEL_I_SIMD_DISPATCH && FRESNEL_HAS_SIMD && defined(__x86_64__) && defined(__SSE2__) && \
+    !defined(__AVX__) && defined(__GNUC__) && !defined(FRESNEL_I_FORCE_AVX)
+#define FRESNEL_I_AVX_DISPATCH 1
+FRESNEL_I_HIDDEN void fresnel_i_conductor_batch_avx(const fresnel_conductor_prep *p, const float *c, float *out,
+                                                    int n);
+#else
+#define FRESNEL_I_AVX_DISPATCH 0
+#endif
+
+#if FRESNEL_I_VW
+/* The batch: the same operations in the same order on FRESNEL_I_VW lanes
+ * (simd.h), two vectors per step for independent work between the square
+ * roots and the divide; the last n mod VW cosines go through one vector
+ * on a padded copy, so nothing beyond n is read or written. */
+struct fresnel_i_vprep {
+    fresnel_i_vf a0, a0_lo, ek, ek4;
+};
+
+static inline fresnel_i_vf fresnel_i_vexact(const struct fresnel_i_vprep *q, fresnel_i_vf c, int kind)
+{
+    const fresnel_i_vf one = fresnel_i_vset(1.0f);
+    fresnel_i_vf ch, a, m, t, b, x, y, s2, c2y, xs, xq, ns, ds, dp, f;
+    c = fresnel_i_vunit(c);
+    ch = fresnel_i_vmul(c, c);
+    a = fresnel_i_vadd(fresnel_i_vadd(q->a0, ch), fresnel_i_vadd(q->a0_lo, fresnel_i_vsquare_lo(c, ch)));
+    if (kind == FRESNEL_I_DIEL) {
+        m = fresnel_i_vabs(a);
+        t = m;
+    } else {
+        m = fresnel_i_vsqrt(fresnel_i_vadd(fresnel_i_vmul(a, a), q->ek4));
+        t = fresnel_i_vmul(fresnel_i_vset(0.5f), fresnel_i_vadd(m, fresnel_i_vabs(a)));
+    }
+    b = fresnel_i_vsqrt(t);
+    /* a is neither NaN nor -0: a0 + ch would be -0 only if ch were */
+    x = fresnel_i_vsel_nonneg(a, one, b);
+    y = fresnel_i_vsel_nonneg(a, b, q->ek);
+    s2 = fresnel_i_vmul(fresnel_i_vsub(one, c), fresnel_i_vadd(one, c));
+    c2y = fresnel_i_vmul(fresnel_i_vadd(c, c), y);
+    xs = fresnel_i_vmul(x, fresnel_i_vadd(m, ch));
+    xq = fresnel_i_vmul(x, fresnel_i_vadd(fresnel_i_vmul(ch, m), fresnel_i_vmul(s2, s2)));
+    ns = fresnel_i_vsub(xs, c2y);
+    ds = fresnel_i_vadd(xs, c2y);
+    dp = fresnel_i_vadd(xq, fresnel_i_vmul(c2y, s2));
+    if (kind == FRESNEL_I_COND2)
+        f = fresnel_i_vmul(fresnel_i_vdiv(ns, ds), fresnel_i_vdiv(xq, dp));
+    else
+        f = fresnel_i_vdiv(fresnel_i_vmul(ns, xq), fresnel_i_vmul(ds, dp));
+    /* f <= 1 by construction (exact.c): only the lower clamp can act */
+    return fresnel_i_vmax(f, fresnel_i_vset(0.0f));
+}
+
+#define FRESNEL_I_VBATCH(name, kind)                                                                   \
+    static void name(const fresnel_conductor_prep *p, const float *c, float *out, int n)                \
+    {                                                                                                  \
+        struct fresnel_i_vprep q;                                                                      \
+        int i;                                                                                         \
+        q.a0 = fresnel_i_vset(p->a0);                                                                  \
+        q.a0_lo = fresnel_i_vset(p->a0_lo);                                                            \
+        q.ek = fresnel_i_vset(p->ek);                                                                  \
+        q.ek4 = fresnel_i_vset(p->ek4);                                                                \
+        for (i = 0; n - i >= 2 * FRESNEL_I_VW; i += 2 * FRESNEL_I_VW) {                                \
+            fresnel_i_vf f0 = fresnel_i_vexact(&q, fresnel_i_vload(c + i), kind);                      \
+            fresnel_i_vf f1 = fresnel_i_vexact(&q, fresnel_i_vload(c + i + FRESNEL_I_VW), kind);       \
+            fresnel_i_vstore(out + i, f0);                                                             \
+            fresnel_i_vstore(out + i + FRESNEL_I_VW, f1);                                              \
+        }                                                                                              \
+        for (; n - i >= FRESNEL_I_VW; i += FRESNEL_I_VW)                                               \
+            fresnel_i_vstore(out + i, fresnel_i_vexact(&q, fresnel_i_vload(c + i), kind));             \
+        if (i < n) {                                                                                   \
+            float buf[FRESNEL_I_VW];                                                                   \
+            int j, k = n - i;                                                                          \
+            for (j = 0; j < FRESNEL_I_VW; j++)                                                         \
+                buf[j] = j < k ? c[i + j] : 1.0f;                                                      \
+            fresnel_i_vstore(buf, fresnel_i_vexact(&q, fresnel_i_vload(buf), kind));                   \
+            for (j = 0; j < k; j++)                                                                    \
+                out[i + j] = buf[j];                                                                   \
+        }                                                                                              \
+    }
+#endif /* FRESNEL_I_VW */
+#endif /* FRESNEL_HAS_FLOAT */
+#endif
