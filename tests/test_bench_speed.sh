@@ -25,14 +25,14 @@ grep -q '^# opt: -O1$' "$t/speed.txt" && grep -q '^# cflags: .* -O1 -fno-math-er
 [ -z "$missing" ] && echo "PASS bench speed: header names flags, compiler, CPU, vector extension, workload and peers" ||
     echo "FAIL bench speed: header lacks:$missing"
 missing=""
-for r in copy schlick-inline schlick-f32 schlick-q15 conductor-call conductor-prepared conductor-batch mitsuba-call \
-    mitsuba-inline pbrt-call pbrt-inline lut16-cubic-f32 lut32-q15 lut16-cubic-q15 lut16-linear-q15; do
+for r in copy schlick-inline schlick-f32 schlick-q15 conductor-call conductor-prepared conductor-batch \
+    conductor-rgb-batch mitsuba-call mitsuba-inline mitsuba-inline-rgb pbrt-call pbrt-inline lut16-cubic-f32 lut32-q15 lut16-cubic-q15 lut16-linear-q15; do
     awk -v r="$r" '$1 == "row" && $2 == r && NF == 11 { f = 1 } END { exit !f }' "$t/speed.txt" || missing="$missing $r"
 done
 [ -z "$missing" ] && echo "PASS bench speed: every row (floors, library calls and batch, peers as call and inlined, LUTs), 11 fields" ||
     echo "FAIL bench speed: rows missing or malformed:$missing"
 n=$(grep -c '^target ' "$t/speed.txt")
-[ "$n" -ge 6 ] && grep -q '^target batch-vs-mitsuba-inline .*goal -O2 <= 0.5, -O3 -march=native <= 0.8' "$t/speed.txt" &&
+[ "$n" -ge 7 ] && grep -q '^target batch-vs-mitsuba-inline .*goal -O2 <= 0.5, -O3 -march=native <= 0.8' "$t/speed.txt" &&
     echo "PASS bench speed: $n target lines; a flag set without goals names both goals" ||
     echo "FAIL bench speed: $n target lines: $(grep '^target' "$t/speed.txt" | head -2)"
 printf 'materials = cu\nmodels = schlick\n' >"$t/tiny.scene"

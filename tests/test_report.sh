@@ -30,11 +30,12 @@ grep -q '## Reproducing Hoffman' "$t/out/report.md" && grep -q '## Which model f
 # files (the format of gen/bench/speed_targets.h), not a timing.
 speed_file() { # OPT RATIO: every target's ratio RATIO
     printf '# opt: %s\n# compiler: test\n' "$1"
-    for r in schlick-f32 schlick-q15 conductor-call conductor-batch mitsuba-call mitsuba-inline lut16-cubic-f32 \
+    for r in schlick-f32 schlick-q15 conductor-call conductor-batch conductor-rgb-batch mitsuba-call mitsuba-inline \
+        mitsuba-inline-rgb lut16-cubic-f32 \
         lut32-q15 lut16-cubic-q15 lut16-linear-q15; do
         printf 'row %s call 1 1 1 1 1 1 1 1\n' "$r"
     done
-    for id in batch-vs-mitsuba-inline conductor-vs-mitsuba-call lut16-cubic-vs-schlick lut32-q15-vs-schlick-q15 \
+    for id in batch-vs-mitsuba-inline rgb-batch-vs-mitsuba-inline conductor-vs-mitsuba-call lut16-cubic-vs-schlick lut32-q15-vs-schlick-q15 \
         lut16-cubic-q15-vs-schlick-q15 lut16-linear-q15-vs-schlick-q15; do
         printf 'target %s %s %s %s goal text\n' "$id" "$2" "$2" "$2"
     done
@@ -49,9 +50,9 @@ if "$F" report --scene "$t/one.scene" -o "$t/sp" --no-timing --no-instructions -
     both=$(echo "$rows" | grep -c -- '-O2: [0-9.]*x (quartiles [0-9.]*-[0-9.]*) \(pass\|MISS\).*; -O3 -march=native: [0-9.]*x')
     miss=$(echo "$rows" | grep -c 'conductor-batch / mitsuba-inline.*-O3 -march=native: 0.90x (quartiles 0.90-0.90) MISS: conductor-batch takes 0.90x the time of mitsuba-inline, goal 0.8x.*| \*\*MISS\*\* |$')
     pass=$(echo "$rows" | grep 'lut16-linear-q15 / schlick-q15' | grep -c '| \*\*pass\*\* |$')
-    [ "$n" -eq 6 ] && [ "$both" -eq 6 ] && [ "$miss" -eq 1 ] && [ "$pass" -eq 1 ] &&
+    [ "$n" -eq 7 ] && [ "$both" -eq 7 ] && [ "$miss" -eq 1 ] && [ "$pass" -eq 1 ] &&
         grep -q "^## Host speed against other renderers' algorithms" "$t/sp/report.md" &&
-        echo "PASS report: 6 host speed targets, each with its ratio at -O2 and -O3 -march=native and a pass/MISS mark; a miss says what it is" ||
+        echo "PASS report: 7 host speed targets, each with its ratio at -O2 and -O3 -march=native and a pass/MISS mark; a miss says what it is" ||
         echo "FAIL report speed rows: $n rows, $both with both flag sets, miss $miss, pass $pass: $(echo "$rows" | head -2)"
 else
     echo "FAIL report --speed: $(tail -3 "$t/log")"

@@ -19,16 +19,18 @@
     const float eta = x->eta, kappa = x->kappa, f0 = x->f0;                                                  \
     const int32_t f0q = x->f0q;                                                                               \
     int i;                                                                                                    \
-    (void)eta, (void)kappa, (void)f0, (void)f0q, (void)c, (void)cq, (void)out, (void)outq;                   \
+    (void)eta, (void)kappa, (void)f0, (void)f0q, (void)c, (void)cq, (void)out, (void)outq, (void)outrgb;       \
     for (i = 0; i < n; i++)                                                                                   \
         dst[i] = (expr);
 #define LOOP(name, expr)                                                                                      \
-    static void name(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq, int n) \
+    static void name(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,         \
+                     fresnel_rgb *outrgb, int n)                                                              \
     {                                                                                                         \
         LOOP_BODY(out, expr)                                                                                  \
     }
 #define LOOP_Q15(name, expr)                                                                                  \
-    static void name(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq, int n) \
+    static void name(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,         \
+                     fresnel_rgb *outrgb, int n)                                                              \
     {                                                                                                         \
         LOOP_BODY(outq, expr)                                                                                 \
     }
@@ -60,35 +62,58 @@ LOOP_Q15(k_lut16_cubic_q15, fresnel_lut_cubic_u16_q15(x->q16, 16, cq[i]))
 LOOP_Q15(k_lut16_linear_q15, fresnel_lut_linear_u16_q15(x->qlin16, 16, cq[i]))
 LOOP_Q15(k_lut32_q15_fast, fresnel_lut_u16_q15_fast(x->q32, 32, cq[i]))
 
-static void k_conductor_batch(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq, int n)
+static void k_conductor_batch(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
+                              fresnel_rgb *outrgb, int n)
 {
-    (void)cq;
-    (void)outq;
+    (void)cq, (void)outq, (void)outrgb;
     fresnel_conductor_batch(&x->prep, c, out, n);
 }
 
-/* The RGB batch row goes here when the runtime has one (its peer row: the
- * Mitsuba loop over three channels). */
+/* Three channels of one material per cosine: the library's RGB batch, and
+ * the Mitsuba formula inlined in the loop once per channel. */
+static void k_conductor_rgb_batch(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
+                                  fresnel_rgb *outrgb, int n)
+{
+    (void)cq, (void)out, (void)outq;
+    fresnel_conductor_rgb_batch(x->prep3, c, outrgb, n);
+}
+
+static void k_mitsuba_inline_rgb(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
+                                 fresnel_rgb *outrgb, int n)
+{
+    const float er = x->eta3[0], eg = x->eta3[1], eb = x->eta3[2];
+    const float kr = x->kappa3[0], kg = x->kappa3[1], kb = x->kappa3[2];
+    int i;
+    (void)cq, (void)out, (void)outq;
+    for (i = 0; i < n; i++) {
+        outrgb[i].r = peer_mitsuba_conductor(er, kr, c[i]);
+        outrgb[i].g = peer_mitsuba_conductor(eg, kg, c[i]);
+        outrgb[i].b = peer_mitsuba_conductor(eb, kb, c[i]);
+    }
+}
+
 const speed_kernel_def speed_kernels[] = {
-    {"copy", "floor", k_copy, 0},
-    {"schlick-inline", "floor", k_schlick_inline, 0},
-    {"schlick-f32", "call", k_schlick, 0},
-    {"schlick-q15", "call", k_schlick_q15, 1},
-    {"schlick-q15-fast", "inline", k_schlick_q15_fast, 1},
-    {"conductor-call", "call", k_conductor, 0},
-    {"conductor-prepared", "call", k_conductor_prepared, 0},
-    {"conductor-batch", "batch", k_conductor_batch, 0},
-    {"mitsuba-call", "call", k_mitsuba_call, 0},
-    {"mitsuba-inline", "inline", k_mitsuba_inline, 0},
-    {"pbrt-call", "call", k_pbrt_call, 0},
-    {"pbrt-inline", "inline", k_pbrt_inline, 0},
-    {"lut16-cubic-f32", "call", k_lut16_cubic, 0},
-    {"lut32-f32", "call", k_lut32, 0},
-    {"lut16-linear-f32", "call", k_lut16_linear, 0},
-    {"lut32-q15", "call", k_lut32_q15, 1},
-    {"lut16-cubic-q15", "call", k_lut16_cubic_q15, 1},
-    {"lut16-linear-q15", "call", k_lut16_linear_q15, 1},
-    {"lut32-q15-fast", "inline", k_lut32_q15_fast, 1},
+    {"copy", "floor", k_copy, 0, 0},
+    {"schlick-inline", "floor", k_schlick_inline, 0, 0},
+    {"schlick-f32", "call", k_schlick, 0, 0},
+    {"schlick-q15", "call", k_schlick_q15, 1, 0},
+    {"schlick-q15-fast", "inline", k_schlick_q15_fast, 1, 0},
+    {"conductor-call", "call", k_conductor, 0, 0},
+    {"conductor-prepared", "call", k_conductor_prepared, 0, 0},
+    {"conductor-batch", "batch", k_conductor_batch, 0, 0},
+    {"mitsuba-call", "call", k_mitsuba_call, 0, 0},
+    {"mitsuba-inline", "inline", k_mitsuba_inline, 0, 0},
+    {"conductor-rgb-batch", "batch", k_conductor_rgb_batch, 0, 1},
+    {"mitsuba-inline-rgb", "inline", k_mitsuba_inline_rgb, 0, 1},
+    {"pbrt-call", "call", k_pbrt_call, 0, 0},
+    {"pbrt-inline", "inline", k_pbrt_inline, 0, 0},
+    {"lut16-cubic-f32", "call", k_lut16_cubic, 0, 0},
+    {"lut32-f32", "call", k_lut32, 0, 0},
+    {"lut16-linear-f32", "call", k_lut16_linear, 0, 0},
+    {"lut32-q15", "call", k_lut32_q15, 1, 0},
+    {"lut16-cubic-q15", "call", k_lut16_cubic_q15, 1, 0},
+    {"lut16-linear-q15", "call", k_lut16_linear_q15, 1, 0},
+    {"lut32-q15-fast", "inline", k_lut32_q15_fast, 1, 0},
 };
 const int speed_kernel_count = (int)(sizeof speed_kernels / sizeof speed_kernels[0]);
 
@@ -104,6 +129,12 @@ void speed_ctx_init(speed_ctx *x, float eta, float kappa)
     x->f0 = fresnel_conductor(eta, kappa, 1.0f);
     x->f0q = q15(x->f0);
     x->prep = fresnel_conductor_prepare(eta, kappa);
+    for (i = 0; i < 3; i++) { /* copper's channels: red as above, green and blue about 550 and 450 nm */
+        static const float e3[3] = {0.24f, 1.0f, 1.24f}, k3[3] = {3.63f, 2.58f, 2.4f};
+        x->eta3[i] = e3[i];
+        x->kappa3[i] = k3[i];
+        x->prep3[i] = fresnel_conductor_prepare(e3[i], k3[i]);
+    }
     for (i = 0; i < 32; i++) {
         float s = (float)i / 31.0f;
         x->lut32[i] = fresnel_conductor(eta, kappa, s * s);

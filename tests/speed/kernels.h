@@ -13,19 +13,22 @@ typedef struct speed_ctx {
     float eta, kappa, f0;
     int32_t f0q;
     fresnel_conductor_prep prep;
+    float eta3[3], kappa3[3]; /* the three channels of the RGB rows */
+    fresnel_conductor_prep prep3[3];
     float lut16[16], lut32[32], lin16[16];
     uint16_t q16[16], q32[32], qlin16[16];
 } speed_ctx;
 
-/* c: binary32 cosines, cq: the same as Q1.15 codes; out (binary32) or outq
- * (Q1.15) receives the results. */
+/* c: binary32 cosines, cq: the same as Q1.15 codes; out (binary32), outq
+ * (Q1.15) or outrgb (three channels per cosine) receives the results. */
 typedef void (*speed_kernel)(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
-                             int n);
+                             fresnel_rgb *outrgb, int n);
 
 typedef struct speed_kernel_def {
     const char *name, *form; /* form: floor, call, inline or batch */
     speed_kernel fn;
     int q15;                 /* writes outq instead of out */
+    int rgb;                 /* writes outrgb: three channels per cosine */
 } speed_kernel_def;
 extern const speed_kernel_def speed_kernels[];
 extern const int speed_kernel_count;

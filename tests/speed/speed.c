@@ -33,6 +33,7 @@
 #define MAX_ROUNDS 1001
 
 static float cos_f[N], out_f[N];
+static fresnel_rgb out_rgb[N];
 static int32_t cos_q[N], out_q[N];
 static volatile uint32_t sink;
 
@@ -67,7 +68,7 @@ static double sample(const speed_ctx *x, int k, int reps)
     double t0 = now_ns(), t;
     int r;
     for (r = 0; r < reps; r++)
-        d->fn(x, cos_f, cos_q, out_f, out_q, N);
+        d->fn(x, cos_f, cos_q, out_f, out_q, out_rgb, N);
     t = (now_ns() - t0) / ((double)reps * N);
     return t;
 }
@@ -78,7 +79,17 @@ static int check_outputs(int k)
     uint32_t sum = 0;
     int i;
     for (i = 0; i < N; i++) {
-        if (speed_kernels[k].q15) {
+        if (speed_kernels[k].rgb) {
+            const float v[3] = {out_rgb[i].r, out_rgb[i].g, out_rgb[i].b};
+            int j;
+            for (j = 0; j < 3; j++) {
+                uint32_t bits;
+                if (!(v[j] >= 0.0f && v[j] <= 1.0f))
+                    return -1;
+                memcpy(&bits, &v[j], sizeof bits);
+                sum += bits;
+            }
+        } else if (speed_kernels[k].q15) {
             if (out_q[i] < 0 || out_q[i] > 32768)
                 return -1;
             sum += (uint32_t)out_q[i];
@@ -210,6 +221,7 @@ int main(int argc, char **argv)
            "# peers: mitsuba-* and pbrt-* are this project's binary32 transcriptions (gen/bench/peers.h) of "
            "Mitsuba 3's fresnel_conductor (include/mitsuba/render/fresnel.h) and pbrt-v4's FrComplex "
            "(src/pbrt/util/scattering.h), no code of theirs\n"
+           "# rows *-rgb: three channels of one material per cosine (copper), ns per cosine\n"
            "# forms: call = an out-of-line function per cosine; inline = a header's static function inlined into "
            "the array loop; batch = the library's array function; floor = copy loop and minimal inline Schlick\n"
            "#\n# row NAME FORM  ns per evaluation: min q1 median q3 max  time / schlick-f32 in the same round: "
