@@ -123,7 +123,7 @@ FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_rsqrt_q44[194];
 
 /* sqrt(c) in Q30 for c in Q15, [0, 2^15]: floor(sqrt(c 2^45)), the value
  * of the digit-by-digit root (fresnel_isqrt_u32's method) carried to 30
- * bits, here from two tables and a fixed sequence of steps: 8 multiplies,
+ * bits, here from two tables and a fixed sequence of steps: 7 multiplies,
  * no loop (tests/test_fixed_math.c compares it with the definition for
  * every c).
  *
