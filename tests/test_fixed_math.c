@@ -227,16 +227,16 @@ static void check_sqrt_q30(void)
     for (k = 0; k < 194; k++) {
         /* g = ceil(2^44 / sqrt(c_k 2^15)), c_k 2^15 = D 2^22 with D = 64 + k: the least g with
          * g^2 >= n = ceil(2^66 / D), n from 2^63 / D in 64-bit integers */
-        uint64_t d = 64u + k, g = fresnel_i_rsqrt_q44[k], r = ((1ull << 63) % d) * 8u;
+        uint64_t d = 64u + k, g = fresnel_i_rsqrt_chord_q15[k], r = ((1ull << 63) % d) * 8u;
         uint64_t n = ((1ull << 63) / d) * 8u + r / d + (r % d != 0);
         bad += !(g * g >= n && (g - 1) * (g - 1) < n);
     }
     for (k = 0; k < 98; k++)
-        bad += fresnel_i_sqrt_s[k] != isqrt64((uint64_t)(8192u + 256u * k) << 47);
+        bad += fresnel_i_sqrt_chord_q15[k] != isqrt64((uint64_t)(8192u + 256u * k) << 47);
     CHECK("sqrt_q30 tables equal their definitions", bad == 0, "%u entries differ", bad);
     bad = 0;
     for (c = 8192; c <= 32768u; c++) {
-        const uint32_t *t = fresnel_i_rsqrt_q44 + ((c >> 7) - 64u);
+        const uint32_t *t = fresnel_i_rsqrt_chord_q15 + ((c >> 7) - 64u);
         uint32_t g = t[0] - (((t[0] - t[1]) * (c & 127u)) >> 7);
         double rel = g * sqrt((double)c * 32768.0) / 0x1p44 - 1.0;
         bad += rel < 0.0;

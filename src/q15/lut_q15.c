@@ -63,12 +63,12 @@ static fresnel_i_pos fresnel_i_position(uint32_t x, int n)
 }
 
 /* The tables of fresnel_i_sqrt_q30 (math_q15.h), here with their only
- * user: fresnel_i_sqrt_s[k] = floor(sqrt(c_k 2^15) 2^16) at c_k = 2^13 +
- * 256 k, k = 0..97 (python: math.isqrt((8192 + 256*k) << 47)), and
- * fresnel_i_rsqrt_q44[k] = ceil(2^44 / sqrt(c_k 2^15)) at c_k = 2^13 +
- * 128 k, k = 0..193 (python: the least g with g*g*c_k*2**15 >= 2**88);
- * tests/test_fixed_math.c recomputes every entry. */
-const uint32_t fresnel_i_sqrt_s[98] = {
+ * user: fresnel_i_sqrt_chord_q15[k] = floor(sqrt(c_k 2^15) 2^16) at
+ * c_k = 2^13 + 256 k, k = 0..97 (python: math.isqrt((8192 + 256*k) << 47)),
+ * and fresnel_i_rsqrt_chord_q15[k] = ceil(2^44 / sqrt(c_k 2^15)) at
+ * c_k = 2^13 + 128 k, k = 0..193 (python: the least g with
+ * g*g*c_k*2**15 >= 2**88); tests/test_fixed_math.c recomputes every entry. */
+const uint32_t fresnel_i_sqrt_chord_q15[98] = {
     1073741824u, 1090389976u, 1106787738u, 1122946078u, 1138875187u, 1154584552u,
     1170083025u, 1185378877u, 1200479854u, 1215393219u, 1230125796u, 1244684004u,
     1259073893u, 1273301168u, 1287371221u, 1301289153u, 1315059792u, 1328687718u,
@@ -87,7 +87,7 @@ const uint32_t fresnel_i_sqrt_s[98] = {
     2096547933u, 2105122807u, 2113662894u, 2122168614u, 2130640378u, 2139078591u,
     2147483648u, 2155855935u,
 };
-const uint32_t fresnel_i_rsqrt_q44[194] = {
+const uint32_t fresnel_i_rsqrt_chord_q15[194] = {
     1073741824u, 1065450258u, 1057347857u, 1049427537u, 1041682578u, 1034106604u,
     1026693558u, 1019437682u, 1012333500u, 1005375799u, 998559614u, 991880210u,
     985333075u, 978913898u, 972618567u, 966443148u, 960383884u, 954437177u,

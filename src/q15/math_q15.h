@@ -118,8 +118,8 @@ static inline fresnel_qf fresnel_i_qf_scale(fresnel_qf a, int32_t k)
 }
 
 /* The tables of fresnel_i_sqrt_q30 (defined in lut_q15.c, its user). */
-FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_sqrt_s[98];
-FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_rsqrt_q44[194];
+FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_sqrt_chord_q15[98];
+FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_rsqrt_chord_q15[194];
 
 /* sqrt(c) in Q30 for c in Q15, [0, 2^15]: floor(sqrt(c 2^45)), the value
  * of the digit-by-digit root (fresnel_isqrt_u32's method) carried to 30
@@ -133,16 +133,16 @@ FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_rsqrt_q44[194];
  * in [2^28, 2^30], R = y 2^15 + z for y = floor(s) in [2^14, 2^15] and
  * z = floor(2^15 u), u = s - y in [0, 1).
  *
- * y: the chord of fresnel_i_sqrt_s (s in units of 2^-16 at every 256th
- * c') over c''s segment is below s (sqrt is concave, the table and the
+ * y: the chord of fresnel_i_sqrt_chord_q15 (s in units of 2^-16 at every
+ * 256th c') over c''s segment is below s (sqrt is concave, the table and the
  * interpolation floored) by less than 0.51: the chord's sag, 256^2 / 8
  * times |d^2 sqrt(x 2^15) / dx^2| <= 2^-14, is at most 1/2. Its integer
  * part yh is y or y - 1, and X - yh^2 > 2 yh exactly when it is y - 1;
  * then y = yh + 1 and rem = X - y^2 = X - yh^2 - 2 yh - 1, in [0, 2y].
  * R: s[1] - s[0] < 2^24, times d <= 255 < 2^32; the chord <= 2^31.
  *
- * g, about 2^44 / s: the chord of fresnel_i_rsqrt_q44 (ceil(2^44 / s) at
- * every 128th c'). 1/sqrt is convex, the table rounded up and the
+ * g, about 2^44 / s: the chord of fresnel_i_rsqrt_chord_q15 (ceil(2^44 / s)
+ * at every 128th c'). 1/sqrt is convex, the table rounded up and the
  * interpolation's step down, so g >= 2^44 / s, and g is at most 2^-15.4
  * relative above it (the chord's gap, (3/32)(128 / 2^13)^2; measured for
  * every c' by tests/test_fixed_math.c).
@@ -180,9 +180,9 @@ static inline uint32_t fresnel_i_sqrt_q30(uint32_t c)
             m += 1;
         }
     }
-    s = fresnel_i_sqrt_s + ((c >> 8) - 32u);
+    s = fresnel_i_sqrt_chord_q15 + ((c >> 8) - 32u);
     y = (s[0] + (((s[1] - s[0]) * (c & 255u)) >> 8)) >> 16;
-    t = fresnel_i_rsqrt_q44 + ((c >> 7) - 64u);
+    t = fresnel_i_rsqrt_chord_q15 + ((c >> 7) - 64u);
     g = t[0] - (((t[0] - t[1]) * (c & 127u)) >> 7);
     x = c << 15;
     rem = x - y * y;
