@@ -3,9 +3,10 @@
  *
  * The position: uniform in c, exact; uniform in sqrt(c), sqrt(c) (n-1) with
  * sqrt(c) the exact floor in Q30 (fresnel_i_sqrt_q30: two small tables and
- * two integer tests, no loop), rounded to a 15-bit fraction of a segment. _u8 nodes are decoded
- * to Q15 first (+-0.5 LSB); residual frac 14 (s16) and 6 (s8) hold a
- * residual of 1, the largest the generator's residual nodes reach.
+ * two integer tests, no loop), rounded to a 15-bit fraction of a segment.
+ * _u8 nodes are decoded to Q15 first (+-0.5 LSB); residual frac 14 (s16)
+ * and 6 (s8) hold a residual of 1, the largest the generator's residual
+ * nodes reach.
  *
  * The bound: the final rounding, 0.5 LSB, plus the position's error times
  * the table's steepest node-to-node change: half a position step, 2^-16 of

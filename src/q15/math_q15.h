@@ -198,7 +198,9 @@ static inline uint32_t fresnel_i_sqrt_q30(uint32_t c)
     w -= 2u * y;
     b += 2u * z + 1u;
     pass += w >= ((b + 32767u) >> 15) + (1u << 18);
-    return ((y << 15) + z + pass - 1u) >> m;
+    z = z + pass - 1u;
+    FRESNEL_I_RANGE("sqrt_q30 low bits", z, 0, 32767);
+    return ((y << 15) + z) >> m;
 }
 
 /* The power function's tables (math_q15.c), exposed for their test. */
