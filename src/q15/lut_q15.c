@@ -136,10 +136,12 @@ static uint32_t fresnel_i_linear_w(int32_t c) { return fresnel_i_q15_arg(c) << 1
 
 /* Interpolate two values v0, v1 <= 2^16 - 1 with a 15-bit fraction: the
  * result is scaled by 2^15 (Q30 for Q15 values). R: v0 2^15 < 2^31,
- * |v1 - v0| t < 2^31; the sum is a convex combination in [0, 2^31). */
+ * |v1 - v0| t < 2^31; the sum is a convex combination in [0, 2^31), so the
+ * uint32 arithmetic, modulo 2^32 where v1 < v0, gives it exactly (and no
+ * branch on the direction of the segment). */
 static uint32_t fresnel_i_lerp_q30(uint32_t v0, uint32_t v1, uint32_t t)
 {
-    return v1 >= v0 ? (v0 << 15) + (v1 - v0) * t : (v0 << 15) - (v0 - v1) * t;
+    return (v0 << 15) + (v1 - v0) * t;
 }
 
 /* round(v / 255) for v <= 255 2^15 without a division: (n 257) >> 16 with
