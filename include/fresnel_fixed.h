@@ -293,8 +293,8 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_ior_prep_q15 *m, int32_t c);
  * Cost: uniform in c, 3 mul, no division; uniform in sqrt(c), 7 mul more:
  * the exact square root from two const tables (1168 bytes, shared by every
  * form), no loop; the _residual forms add Schlick's 8 mul. On a Cortex-M0
- * with a 64-node table (`make cross-count`): 190 instructions per call
- * (_u16), 99 uniform in c. */
+ * with a 64-node table (`make cross-count`): 187 instructions per call
+ * (_u16), 97 uniform in c. */
 fresnel_q15 fresnel_lut_u16_q15(const uint16_t *table, int n, int32_t c);
 fresnel_q15 fresnel_lut_linear_u16_q15(const uint16_t *table, int n, int32_t c);
 fresnel_q15 fresnel_lut_u8_q15(const uint8_t *table, int n, int32_t c);
