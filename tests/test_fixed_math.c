@@ -205,6 +205,54 @@ static void check_pow(void)
     CHECK("pow: every x code, p in [0.001, 1000]: relative error < 2^-21", worst < 0x1p-21, "%.3g", worst);
 }
 
+/* floor(sqrt(v)) for v < 2^62, in 64-bit integers. */
+static uint64_t isqrt64(uint64_t v)
+{
+    uint64_t r = (uint64_t)sqrt((double)v);
+    while (r * r > v)
+        r--;
+    while ((r + 1) * (r + 1) <= v)
+        r++;
+    return r;
+}
+
+/* fresnel_i_sqrt_q30 (the LUTs' sqrt(c) in Q30): its tables against their
+ * definitions, the table's chord against 2^44 / sqrt(c 2^15) (never below,
+ * at most 2^-15.4 above: the root's comment counts on both) for every
+ * normalised c, and the root against floor(sqrt(c 2^45)) for every c. */
+static void check_sqrt_q30(void)
+{
+    uint32_t c, k, bad = 0, first = 0;
+    double worst = 0.0;
+    for (k = 0; k < 194; k++) {
+        /* g = ceil(2^44 / sqrt(c_k 2^15)), c_k 2^15 = D 2^22 with D = 64 + k: the least g with
+         * g^2 >= n = ceil(2^66 / D), n from 2^63 / D in 64-bit integers */
+        uint64_t d = 64u + k, g = fresnel_i_rsqrt_chord_q15[k], r = ((1ull << 63) % d) * 8u;
+        uint64_t n = ((1ull << 63) / d) * 8u + r / d + (r % d != 0);
+        bad += !(g * g >= n && (g - 1) * (g - 1) < n);
+    }
+    for (k = 0; k < 98; k++)
+        bad += fresnel_i_sqrt_chord_q15[k] != isqrt64((uint64_t)(8192u + 256u * k) << 47);
+    CHECK("sqrt_q30 tables equal their definitions", bad == 0, "%u entries differ", bad);
+    bad = 0;
+    for (c = 8192; c <= 32768u; c++) {
+        const uint32_t *t = fresnel_i_rsqrt_chord_q15 + ((c >> 7) - 64u);
+        uint32_t g = t[0] - (((t[0] - t[1]) * (c & 127u)) >> 7);
+        double rel = g * sqrt((double)c * 32768.0) / 0x1p44 - 1.0;
+        bad += rel < 0.0;
+        if (rel > worst)
+            worst = rel;
+    }
+    NOTE("sqrt_q30: the table's chord is up to 2^%.2f above 2^44 / sqrt(c 2^15)", log2(worst));
+    CHECK("sqrt_q30: chord never below, at most 2^-15.4 above", bad == 0 && worst <= 0x1.8p-16,
+          "%u below, worst 2^%.2f", bad, log2(worst));
+    bad = 0;
+    for (c = 0; c <= 32768u; c++)
+        if (fresnel_i_sqrt_q30(c) != isqrt64((uint64_t)c << 45) && bad++ == 0)
+            first = c;
+    CHECK("sqrt_q30: floor(sqrt(c 2^45)) for every c in [0, 2^15]", bad == 0, "%u wrong, first c = %u", bad, first);
+}
+
 int main(void)
 {
     check_isqrt();
@@ -212,5 +260,6 @@ int main(void)
     check_recip();
     check_qf();
     check_pow();
+    check_sqrt_q30();
     return harness_exit();
 }

@@ -61,24 +61,27 @@ static float fresnel_i_interp(const float *table, int n, float x, int curve)
 /* Catmull-Rom through the four nodes around x, the outer ones clamped to the
  * table's ends, as a Hermite cubic on node differences (lut_f16.c explains
  * why differences): F = p1 + t (m1 + t (3d - 2 m1 - m2 + t (m1 + m2 - 2d))),
- * d = p2 - p1, m1 = (p2 - p0)/2, m2 = (p3 - p1)/2. */
+ * d = p2 - p1, m1 = (p2 - p0)/2, m2 = (p3 - p1)/2. The outer nodes are
+ * picked by index arithmetic, p0 = table[i - (i > 0)] and
+ * p3 = table[i + 1 + (i < n - 2)], not by branches on the data (the last
+ * segment takes an eighth of uniformly spread cosines on a 16-node table). */
 static float fresnel_i_cubic(const float *table, int n, float x)
 {
     float pos, t, p0, p1, p2, p3, d, m1, m2;
-    int i;
+    int i, last;
     n = fresnel_i_lut_n(n);
     if (n < 2)
         return n == 1 ? fresnel_i_lut_clamp(table[0], fresnel_i_max1(table[0], 0.0f)) : 0.0f;
-    pos = x * (float)(n - 1);
+    last = n - 1;
+    pos = x * (float)last;
     i = (int)pos;
-    if (i > n - 2)
-        i = n - 2;
+    i = i < last ? i : last - 1; /* x = 1 lands on the last segment's end */
     t = pos - (float)i;
+    p0 = table[i - (i > 0)];
+    p3 = table[i + 1 + (i < last - 1)];
     table += i;
     p1 = table[0];
     p2 = table[1];
-    p0 = i > 0 ? table[-1] : p1;
-    p3 = i < n - 2 ? table[2] : p2;
     d = p2 - p1;
     m1 = 0.5f * (p2 - p0);
     m2 = 0.5f * (p3 - p1);

@@ -2,10 +2,11 @@
  * linear interpolation at a position in Q15 node units, no division.
  *
  * The position: uniform in c, exact; uniform in sqrt(c), sqrt(c) (n-1) with
- * sqrt(c) the exact floor in Q30 (fresnel_isqrt_u32 on c 2^15, then 15 more
- * digits), rounded to a 15-bit fraction of a segment. _u8 nodes are decoded
- * to Q15 first (+-0.5 LSB); residual frac 14 (s16) and 6 (s8) hold a
- * residual of 1, the largest the generator's residual nodes reach.
+ * sqrt(c) the exact floor in Q30 (fresnel_i_sqrt_q30: two small tables and
+ * two integer tests, no loop), rounded to a 15-bit fraction of a segment.
+ * _u8 nodes are decoded to Q15 first (+-0.5 LSB); residual frac 14 (s16)
+ * and 6 (s8) hold a residual of 1, the largest the generator's residual
+ * nodes reach.
  *
  * The bound: the final rounding, 0.5 LSB, plus the position's error times
  * the table's steepest node-to-node change: half a position step, 2^-16 of
@@ -62,47 +63,85 @@ static fresnel_i_pos fresnel_i_position(uint32_t x, int n)
     return p;
 }
 
+/* The tables of fresnel_i_sqrt_q30 (math_q15.h), here with their only
+ * user: fresnel_i_sqrt_chord_q15[k] = floor(sqrt(c_k 2^15) 2^16) at
+ * c_k = 2^13 + 256 k, k = 0..97 (python: math.isqrt((8192 + 256*k) << 47)),
+ * and fresnel_i_rsqrt_chord_q15[k] = ceil(2^44 / sqrt(c_k 2^15)) at
+ * c_k = 2^13 + 128 k, k = 0..193 (python: the least g with
+ * g*g*c_k*2**15 >= 2**88); tests/test_fixed_math.c recomputes every entry. */
+const uint32_t fresnel_i_sqrt_chord_q15[98] = {
+    1073741824u, 1090389976u, 1106787738u, 1122946078u, 1138875187u, 1154584552u,
+    1170083025u, 1185378877u, 1200479854u, 1215393219u, 1230125796u, 1244684004u,
+    1259073893u, 1273301168u, 1287371221u, 1301289153u, 1315059792u, 1328687718u,
+    1342177280u, 1355532606u, 1368757628u, 1381856085u, 1394831545u, 1407687407u,
+    1420426919u, 1433053184u, 1445569170u, 1457977717u, 1470281544u, 1482483260u,
+    1494585365u, 1506590260u, 1518500249u, 1530317550u, 1542044293u, 1553682528u,
+    1565234230u, 1576701301u, 1588085574u, 1599388817u, 1610612736u, 1621758977u,
+    1632829133u, 1643824740u, 1654747283u, 1665598201u, 1676378885u, 1687090680u,
+    1697734891u, 1708312781u, 1718825574u, 1729274458u, 1739660584u, 1749985070u,
+    1760249000u, 1770453427u, 1780599375u, 1790687838u, 1800719781u, 1810696144u,
+    1820617841u, 1830485761u, 1840300768u, 1850063706u, 1859775393u, 1869436629u,
+    1879048192u, 1888610839u, 1898125312u, 1907592330u, 1917012596u, 1926386797u,
+    1935715601u, 1944999662u, 1954239617u, 1963436090u, 1972589688u, 1981701005u,
+    1990770622u, 1999799107u, 2008787013u, 2017734884u, 2026643249u, 2035512627u,
+    2044343526u, 2053136442u, 2061891861u, 2070610259u, 2079292101u, 2087937843u,
+    2096547933u, 2105122807u, 2113662894u, 2122168614u, 2130640378u, 2139078591u,
+    2147483648u, 2155855935u,
+};
+const uint32_t fresnel_i_rsqrt_chord_q15[194] = {
+    1073741824u, 1065450258u, 1057347857u, 1049427537u, 1041682578u, 1034106604u,
+    1026693558u, 1019437682u, 1012333500u, 1005375799u, 998559614u, 991880210u,
+    985333075u, 978913898u, 972618567u, 966443148u, 960383884u, 954437177u,
+    948599586u, 942867814u, 937238702u, 931709222u, 926276469u, 920937655u,
+    915690105u, 910531246u, 905458609u, 900469819u, 895562590u, 890734724u,
+    885984105u, 881308694u, 876706529u, 872175715u, 867714429u, 863320910u,
+    858993460u, 854730439u, 850530264u, 846391406u, 842312387u, 838291780u,
+    834328203u, 830420321u, 826566842u, 822766515u, 819018128u, 815320511u,
+    811672526u, 808073073u, 804521087u, 801015531u, 797555405u, 794139734u,
+    790767576u, 787438014u, 784150158u, 780903145u, 777696137u, 774528319u,
+    771398899u, 768307107u, 765252196u, 762233438u, 759250125u, 756301570u,
+    753387102u, 750506070u, 747657840u, 744841793u, 742057328u, 739303859u,
+    736580815u, 733887640u, 731223793u, 728588743u, 725981977u, 723402992u,
+    720851298u, 718326417u, 715827883u, 713355241u, 710908046u, 708485865u,
+    706088274u, 703714862u, 701365223u, 699038964u, 696735699u, 694455052u,
+    692196656u, 689960150u, 687745184u, 685551414u, 683378504u, 681226125u,
+    679093957u, 676981685u, 674889000u, 672815604u, 670761200u, 668725502u,
+    666708225u, 664709096u, 662727842u, 660764200u, 658817909u, 656888717u,
+    654976373u, 653080634u, 651201261u, 649338021u, 647490683u, 645659022u,
+    643842819u, 642041856u, 640255923u, 638484810u, 636728315u, 634986237u,
+    633258380u, 631544552u, 629844564u, 628158230u, 626485369u, 624825802u,
+    623179354u, 621545854u, 619925132u, 618317022u, 616721363u, 615137993u,
+    613566757u, 612007500u, 610460070u, 608924319u, 607400100u, 605887271u,
+    604385689u, 602895217u, 601415717u, 599947056u, 598489103u, 597041727u,
+    595604801u, 594178201u, 592761802u, 591355485u, 589959130u, 588572621u,
+    587195841u, 585828677u, 584471019u, 583122757u, 581783782u, 580453989u,
+    579133273u, 577821531u, 576518662u, 575224567u, 573939147u, 572662307u,
+    571393950u, 570133984u, 568882316u, 567638856u, 566403514u, 565176203u,
+    563956835u, 562745326u, 561541592u, 560345549u, 559157115u, 557976212u,
+    556802759u, 555636679u, 554477894u, 553326329u, 552181910u, 551044562u,
+    549914212u, 548790791u, 547674227u, 546564450u, 545461393u, 544364987u,
+    543275166u, 542191864u, 541115017u, 540044561u, 538980433u, 537922571u,
+    536870912u, 535825399u,
+};
+
 /* sqrt(c) in Q30 (fresnel_lut_*: nodes uniform in sqrt(c), as lut.c): with
- * c the Q15 code, the exact floor(sqrt(c 2^45)). fresnel_isqrt_u32 gives
- * the first 15 bits, the root r of c 2^15, and the remainder c 2^15 - r^2;
- * the other 15 bits continue the same digit-by-digit method with zero digit
- * pairs: r -> 2r + 1 when (2r + 1)^2 <= 4 (r^2 + rem), i.e. 4 rem >= 4r + 1,
- * i.e. rem > r, leaving 4 rem - 4r - 1 = 4 (rem - r - 1) + 3. Fifteen bits
- * would not do: the position sqrt(c) (n-1) must keep 15 fraction bits for
- * 1024 nodes, and the floor costs at most (n-1) 2^-30 of a node (2^-20 for
- * n <= 1024).
- * R: c 2^15 <= 2^30, so r <= 2^15 and r^2 <= 2^30; rem <= 2r always (the
- * remainder of a floor root) and r <= 2^30 at the end, so r <= 2^29 before
- * the last step: 4 rem <= 4r <= 2^31 where rem <= r, and
- * 4 (rem - r - 1) + 3 < 4r where rem > r. */
-static uint32_t fresnel_i_sqrt_w(int32_t c)
-{
-    uint32_t x = fresnel_i_q15_arg(c) << 15, r = fresnel_isqrt_u32(x), rem = x - r * r;
-    int k;
-    FRESNEL_I_RANGE("lut sqrt remainder", rem, 0, 2 * r);
-    for (k = 0; k < 15; k++) {
-        if (rem > r) {
-            rem = ((rem - r - 1u) << 2) + 3u;
-            r = (r << 1) + 1u;
-        } else {
-            rem <<= 2;
-            r <<= 1;
-        }
-    }
-    FRESNEL_I_RANGE("lut sqrt(c) in Q30", r, 0, FRESNEL_I_ONE_Q30);
-    FRESNEL_I_RANGE("lut sqrt final remainder", rem, 0, 2u * r);
-    return r;
-}
+ * c the Q15 code, the exact floor(sqrt(c 2^45)) (fresnel_i_sqrt_q30).
+ * Fifteen bits would not do: the position sqrt(c) (n-1) must keep 15
+ * fraction bits for 1024 nodes, and the floor costs at most (n-1) 2^-30 of
+ * a node (2^-20 for n <= 1024). */
+static uint32_t fresnel_i_sqrt_w(int32_t c) { return fresnel_i_sqrt_q30(fresnel_i_q15_arg(c)); }
 
 /* c in Q30 for linear spacing. */
 static uint32_t fresnel_i_linear_w(int32_t c) { return fresnel_i_q15_arg(c) << 15; }
 
 /* Interpolate two values v0, v1 <= 2^16 - 1 with a 15-bit fraction: the
  * result is scaled by 2^15 (Q30 for Q15 values). R: v0 2^15 < 2^31,
- * |v1 - v0| t < 2^31; the sum is a convex combination in [0, 2^31). */
+ * |v1 - v0| t < 2^31; the sum is a convex combination in [0, 2^31), so the
+ * uint32 arithmetic, modulo 2^32 where v1 < v0, gives it exactly (and no
+ * branch on the direction of the segment). */
 static uint32_t fresnel_i_lerp_q30(uint32_t v0, uint32_t v1, uint32_t t)
 {
-    return v1 >= v0 ? (v0 << 15) + (v1 - v0) * t : (v0 << 15) - (v0 - v1) * t;
+    return (v0 << 15) + (v1 - v0) * t;
 }
 
 /* round(v / 255) for v <= 255 2^15 without a division: (n 257) >> 16 with

@@ -117,6 +117,92 @@ static inline fresnel_qf fresnel_i_qf_scale(fresnel_qf a, int32_t k)
     return a;
 }
 
+/* The tables of fresnel_i_sqrt_q30 (defined in lut_q15.c, its user). */
+FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_sqrt_chord_q15[98];
+FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_rsqrt_chord_q15[194];
+
+/* sqrt(c) in Q30 for c in Q15, [0, 2^15]: floor(sqrt(c 2^45)), the value
+ * of the digit-by-digit root (fresnel_isqrt_u32's method) carried to 30
+ * bits, here from two tables and a fixed sequence of steps: 7 multiplies,
+ * no loop (tests/test_fixed_math.c compares it with the definition for
+ * every c).
+ *
+ * Normalise: c' = c 4^m in [2^13, 2^15] (m <= 7: shifts by 8, 4 and 2
+ * bits); the result is floor(R / 2^m) for R = floor(sqrt(c' 2^45)), as
+ * floor(floor(v) / 2^m) = floor(v / 2^m). With s = sqrt(X), X = c' 2^15
+ * in [2^28, 2^30], R = y 2^15 + z for y = floor(s) in [2^14, 2^15] and
+ * z = floor(2^15 u), u = s - y in [0, 1).
+ *
+ * y: the chord of fresnel_i_sqrt_chord_q15 (s in units of 2^-16 at every
+ * 256th c') over c''s segment is below s (sqrt is concave, the table and the
+ * interpolation floored) by less than 0.51: the chord's sag, 256^2 / 8
+ * times |d^2 sqrt(x 2^15) / dx^2| <= 2^-14, is at most 1/2. Its integer
+ * part yh is y or y - 1, and X - yh^2 > 2 yh exactly when it is y - 1;
+ * then y = yh + 1 and rem = X - y^2 = X - yh^2 - 2 yh - 1, in [0, 2y].
+ * R: s[1] - s[0] < 2^24, times d <= 255 < 2^32; the chord <= 2^31.
+ *
+ * g, about 2^44 / s: the chord of fresnel_i_rsqrt_chord_q15 (ceil(2^44 / s)
+ * at every 128th c'). 1/sqrt is convex, the table rounded up and the
+ * interpolation's step down, so g >= 2^44 / s, and g is at most 2^-15.4
+ * relative above it (the chord's gap, (3/32)(128 / 2^13)^2; measured for
+ * every c' by tests/test_fixed_math.c).
+ * R: t[0] - t[1] < 2^23, times d <= 127 < 2^30; g in [2^29, 2^30].
+ *
+ * z: u = rem / (2y + u), so 2^15 rem / (2s) = 2^15 (u - u^2 / (2s)) is in
+ * (2^15 u - 1, 2^15 u] (2s >= 2^15), and g's excess adds at most
+ * 2^15 2^-15.4 = 0.76: z0 = floor(rem g / 2^30) is z - 1, z or z + 1.
+ * rem g from 15-bit halves of g: R: rem < 2^16, g >> 15 <= 2^15,
+ * g & 0x7fff < 2^15, each product < 2^31.
+ * A candidate w is at most z when (y 2^15 + w)^2 <= X 2^30, i.e.
+ * w^2 + 2 y w 2^15 <= rem 2^30: with G = rem 2^15 - 2 y w, when
+ * G >= ceil(w^2 / 2^15). Tested at w = z0 and z0 + 1: z = z0 - 1 + the
+ * number that pass. R: rem 2^15 < 2^31, 2 y w <= 2^31 + 2^16, w^2 < 2^31;
+ * for w in [z - 1, z + 2], |G| < 2^18, held as G + 2^18 in (0, 2^19) in
+ * uint32. */
+static inline uint32_t fresnel_i_sqrt_q30(uint32_t c)
+{
+    const uint32_t *s, *t;
+    uint32_t m = 0, y, x, rem, big, g, z, w, b, pass;
+    FRESNEL_I_RANGE("sqrt_q30 c", c, 0, FRESNEL_I_ONE_Q15);
+    if (c == 0)
+        return 0;
+    if (c < (1u << 13)) {
+        if (c < (1u << 7)) {
+            c <<= 8;
+            m = 4;
+        }
+        if (c < (1u << 11)) {
+            c <<= 4;
+            m += 2;
+        }
+        if (c < (1u << 13)) {
+            c <<= 2;
+            m += 1;
+        }
+    }
+    s = fresnel_i_sqrt_chord_q15 + ((c >> 8) - 32u);
+    y = (s[0] + (((s[1] - s[0]) * (c & 255u)) >> 8)) >> 16;
+    t = fresnel_i_rsqrt_chord_q15 + ((c >> 7) - 64u);
+    g = t[0] - (((t[0] - t[1]) * (c & 127u)) >> 7);
+    x = c << 15;
+    rem = x - y * y;
+    big = rem > 2u * y;
+    rem -= big ? 2u * y + 1u : 0u;
+    y += big;
+    FRESNEL_I_RANGE("sqrt_q30 y", y, 1u << 14, 1u << 15);
+    FRESNEL_I_RANGE("sqrt_q30 rem", rem, 0, 2u * y);
+    z = (rem * (g >> 15) + ((rem * (g & 0x7fffu)) >> 15)) >> 15;
+    w = (rem << 15) + (1u << 18) - 2u * y * z;
+    b = z * z;
+    pass = w >= ((b + 32767u) >> 15) + (1u << 18);
+    w -= 2u * y;
+    b += 2u * z + 1u;
+    pass += w >= ((b + 32767u) >> 15) + (1u << 18);
+    z = z + pass - 1u;
+    FRESNEL_I_RANGE("sqrt_q30 low bits", z, 0, 32767);
+    return ((y << 15) + z) >> m;
+}
+
 /* The power function's tables (math_q15.c), exposed for their test. */
 FRESNEL_I_HIDDEN extern const uint16_t fresnel_i_log2_r[64];
 FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_log2_t[64];
