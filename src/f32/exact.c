@@ -209,10 +209,9 @@ void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restr
 
 #if FRESNEL_I_VW
 /* The fused kernels write fresnel_rgb as 3n floats. */
-typedef char fresnel_i_rgb_rows[(sizeof(fresnel_rgb) == 3 * sizeof(float) && offsetof(fresnel_rgb, g) == sizeof(float) &&
-                                 offsetof(fresnel_rgb, b) == 2 * sizeof(float))
-                                    ? 1
-                                    : -1];
+typedef char fresnel_i_rgb_rows[(sizeof(fresnel_rgb) == 3 * sizeof(float) &&
+                                 offsetof(fresnel_rgb, g) == sizeof(float) &&
+                                 offsetof(fresnel_rgb, b) == 2 * sizeof(float)) ? 1 : -1];
 FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_diel, FRESNEL_I_DIEL)
 FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_cond1, FRESNEL_I_COND1)
 FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_cond2, FRESNEL_I_COND2)

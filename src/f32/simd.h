@@ -83,7 +83,10 @@ static inline fresnel_i_vf fresnel_i_vsplit_hi(fresnel_i_vf a)
 {
     return _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32((int)0xfffff000u)));
 }
-static inline __m256 fresnel_i_vhi256(fresnel_i_vf a) { return _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(a), 1)); }
+static inline __m256 fresnel_i_vhi256(fresnel_i_vf a)
+{
+    return _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(a), 1));
+}
 static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, fresnel_i_vf b)
 {
     fresnel_i_store3_256(p, _mm512_castps512_ps256(r), _mm512_castps512_ps256(g), _mm512_castps512_ps256(b));
@@ -127,7 +130,8 @@ static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, f
     fresnel_i_store3_256(p, r, g, b);
 #else
     fresnel_i_store3_128(p, _mm256_castps256_ps128(r), _mm256_castps256_ps128(g), _mm256_castps256_ps128(b));
-    fresnel_i_store3_128(p + 12, _mm256_extractf128_ps(r, 1), _mm256_extractf128_ps(g, 1), _mm256_extractf128_ps(b, 1));
+    fresnel_i_store3_128(p + 12, _mm256_extractf128_ps(r, 1), _mm256_extractf128_ps(g, 1),
+                         _mm256_extractf128_ps(b, 1));
 #endif
 }
 #ifdef FP_FAST_FMAF
@@ -159,7 +163,10 @@ static inline fresnel_i_vf fresnel_i_vsplit_hi(fresnel_i_vf a)
 {
     return _mm_and_ps(a, _mm_castsi128_ps(_mm_set1_epi32((int)0xfffff000u)));
 }
-static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, fresnel_i_vf b) { fresnel_i_store3_128(p, r, g, b); }
+static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, fresnel_i_vf b)
+{
+    fresnel_i_store3_128(p, r, g, b);
+}
 #ifdef FP_FAST_FMAF
 #include <immintrin.h>
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm_fmsub_ps(a, b, c); }
