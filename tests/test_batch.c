@@ -4,9 +4,12 @@
  * subnormal c; eta, kappa out of range; each form: matched index,
  * dielectric, conductor, tiny eta kappa), at every length 0..3 vectors and
  * every offset 0..3, each call on a copy of exactly n floats (ASan finds a
- * read past n) with guards after out (a write past n). Built for the host
- * (every pass) and for AArch64 NEON under qemu (tests/test_batch_cross.sh).
- * Needs only the library and libm. */
+ * read past n) with guards after out (a write past n). The RGB batch with
+ * each grid material in all three channels and with its two neighbours
+ * (mostly one form: the one-pass kernel), and with triples of one form and
+ * of mixed forms at every length and offset. Built for the host (every
+ * pass) and for each SIMD kernel, AArch64 NEON under qemu included
+ * (tests/test_batch_simd.sh). Needs only the library and libm. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
