@@ -337,9 +337,19 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  * too and takes it where the CPU has AVX2 (gcc, clang); portable C
  * elsewhere and with FRESNEL_CFG_NO_SIMD (fresnel_config.h).
  * Error <= FRESNEL_BOUND_CONDUCTOR_PREPARED.
+ * rgb_batch, three channels of one form (the forms: kappa = 0, eta != 1;
+ * eta kappa >= 2^-30; 0 < eta kappa < 2^-30), so three conductors or three
+ * dielectrics in practice, with SIMD: each vector of cosines is loaded
+ * once, its clamp, c^2 (exact split), sin^2 and 2c terms are shared by the
+ * channels, and the rows are written by vector shuffles;
+ * other mixes, and portable C, go channel by channel over blocks of 64
+ * cosines (768 bytes of stack), then interleave.
  * Cost: prepare ~40 flops; per cosine ~40 flops, div, 2 sqrt (kappa = 0: one
- * sqrt), a vector's worth at a time in the batches; `build/fresnel bench
- * --targets` times the batch against other renderers' forms. */
+ * sqrt), a vector's worth at a time in the batches, and in rgb_batch ~10 of
+ * the 40 once for the three channels; `build/fresnel bench --targets` times
+ * the batch against other renderers' forms, `make bench` (rows
+ * conductor-batch, conductor-rgb-batch) both batches against Mitsuba's
+ * formula inlined. */
 typedef struct fresnel_conductor_prep {
     float a0, a0_lo; /* eta^2 - kappa^2 - 1 = a0 + a0_lo */
     float ek;        /* eta kappa */

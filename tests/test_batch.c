@@ -4,9 +4,12 @@
  * subnormal c; eta, kappa out of range; each form: matched index,
  * dielectric, conductor, tiny eta kappa), at every length 0..3 vectors and
  * every offset 0..3, each call on a copy of exactly n floats (ASan finds a
- * read past n) with guards after out (a write past n). Built for the host
- * (every pass) and for AArch64 NEON under qemu (tests/test_batch_cross.sh).
- * Needs only the library and libm. */
+ * read past n) with guards after out (a write past n). The RGB batch with
+ * each grid material in all three channels and with its two neighbours
+ * (mostly one form: the one-pass kernel), and with triples of one form and
+ * of mixed forms at every length and offset. Built for the host (every
+ * pass) and for each SIMD kernel, AArch64 NEON under qemu included
+ * (tests/test_batch_simd.sh). Needs only the library and libm. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -112,8 +115,11 @@ int main(void)
                                       1e30f, -1.0f, -0.0f, 0.0f, NAN, INFINITY, -INFINITY, 0.15f, 1.5f, 0.6666667f};
     static const float kappa_extra[] = {0.0f, -0.0f, 1e-19f, FRESNEL_KAPPA_TINY, 1e-12f, FRESNEL_KAPPA_MAX, 1e30f,
                                         -1.0f, NAN, INFINITY, -INFINITY, 3.5f};
+    static float want3[3][MAX_C];
+    static fresnel_rgb got3[MAX_C];
     float etas[64], kappas[64], want[MAX_C], got[MAX_C];
-    fresnel_conductor_prep rgb[3];
+    fresnel_conductor_prep rgb[3], hist[3];
+    long grid_rgb_differ = 0;
     int ne, nk, ei, ki, i, off, len, mats = 0, out_range = 0;
     make_cosines();
     ne = make_values(etas, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX, 33, eta_extra, (int)(sizeof eta_extra / sizeof *eta_extra));
@@ -134,6 +140,21 @@ int main(void)
                     differ_total++;
                 }
             }
+            /* three channels: this material in each, and it with the two before it (mostly one form) */
+            hist[0] = ki >= 2 ? hist[1] : p;
+            hist[1] = ki >= 1 ? hist[2] : p;
+            hist[2] = p;
+            memcpy(want3[0], ki >= 2 ? want3[1] : want, sizeof want);
+            memcpy(want3[1], ki >= 1 ? want3[2] : want, sizeof want);
+            memcpy(want3[2], want, sizeof want);
+            rgb[0] = rgb[1] = rgb[2] = p;
+            fresnel_conductor_rgb_batch(rgb, cs, got3, ncs);
+            for (i = 0; i < ncs; i++)
+                grid_rgb_differ += !same(got3[i].r, want[i]) + !same(got3[i].g, want[i]) + !same(got3[i].b, want[i]);
+            fresnel_conductor_rgb_batch(hist, cs, got3, ncs);
+            for (i = 0; i < ncs; i++)
+                grid_rgb_differ += !same(got3[i].r, want3[0][i]) + !same(got3[i].g, want3[1][i]) +
+                                   !same(got3[i].b, want3[2][i]);
             if ((ei * nk + ki) % 23 == 0) { /* every length and offset on a sample of materials */
                 for (off = 0; off < 4; off++)
                     for (len = 0; len <= MAX_LEN; len++)
@@ -148,6 +169,10 @@ int main(void)
     CHECK("batch: results in [0, 1] for every input", out_range == 0, "%d outside", out_range);
     CHECK("batch: nothing written at or beyond n", guard_bad == 0, "%ld guards overwritten", guard_bad);
 
+    CHECK("batch: fresnel_conductor_rgb_batch gives each channel's fresnel_conductor_prepared bit for bit "
+          "(every grid material in all three channels, and with the two materials before it)",
+          grid_rgb_differ == 0, "%ld differ", grid_rgb_differ);
+
     /* three channels of different forms: conductor, dielectric, tiny eta kappa; and a matched channel */
     for (i = 0; i < 2; i++) {
         rgb[0] = fresnel_conductor_prepare(0.15f, 3.5f);
@@ -158,8 +183,23 @@ int main(void)
                 check_rgb(rgb, off + len, len);
         check_rgb(rgb, 1, ncs - 1);
     }
+    /* three channels of one form: conductors (copper), dielectrics with a critical angle, tiny eta kappa,
+     * matched index */
+    for (i = 0; i < 4; i++) {
+        static const float mats3[4][3][2] = {{{0.27f, 3.4f}, {0.68f, 2.6f}, {1.22f, 2.3f}},
+                                             {{0.6666667f, 0.0f}, {1.5f, 0.0f}, {0.75f, 0.0f}},
+                                             {{FRESNEL_ETA_MIN, 1e-18f}, {1.0f, 1e-20f}, {0.5f, 1e-19f}},
+                                             {{1.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 0.0f}}};
+        int ch;
+        for (ch = 0; ch < 3; ch++)
+            rgb[ch] = fresnel_conductor_prepare(mats3[i][ch][0], mats3[i][ch][1]);
+        for (off = 0; off < 4; off++)
+            for (len = 0; len <= 3 * MAX_LEN; len++)
+                check_rgb(rgb, off + len, len);
+        check_rgb(rgb, 1, ncs - 1);
+    }
     CHECK("batch: fresnel_conductor_rgb_batch gives each channel's fresnel_conductor_prepared bit for bit "
-          "(lengths 0..201, offsets 0..3, mixed forms)",
+          "(lengths 0..201, offsets 0..3, three channels of one form and of mixed forms)",
           rgb_differ == 0, "%ld differ", rgb_differ);
     CHECK("batch: rgb_batch writes nothing at or beyond n", rgb_guard_bad == 0, "%ld overwritten", rgb_guard_bad);
     NOTE("batch: %d materials x %d cosines, %ld short calls", mats, ncs, n_calls);

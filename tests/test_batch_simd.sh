@@ -3,9 +3,9 @@
 # against fresnel_conductor_prepared) on each SIMD kernel of src/f32/simd.h
 # the main build does not select (an x86-64 -O2 build takes its AVX2 kernel
 # at run time on an AVX2 CPU): SSE2 without that choice
-# (FRESNEL_I_SIMD_DISPATCH=0), AVX2 + FMA (x86-64-v3) and AVX-512 where
-# this CPU runs them, AArch64 NEON under qemu-aarch64-static, and the
-# portable C of FRESNEL_CFG_NO_SIMD. The AVX-512 kernel is compiled
+# (FRESNEL_I_SIMD_DISPATCH=0), AVX2 + FMA (x86-64-v3), AVX without AVX2
+# (its own RGB row shuffles) and AVX-512 where this CPU runs them, AArch64
+# NEON under qemu-aarch64-static, and the portable C of FRESNEL_CFG_NO_SIMD. The AVX-512 kernel is compiled
 # warning-free by gcc and clang everywhere; it runs only on a CPU that has
 # AVX-512F (qemu-user has none).
 [ "$BUILD" = build ] || exit 0 # one pass: these builds are independent of the pass's flags
@@ -41,6 +41,11 @@ x86_64)
         build "x86-64 AVX2+FMA" gcc -O2 -mavx2 -mfma && run "x86-64 AVX2+FMA" "$t/tb"
     else
         echo "NOTE batch: this CPU has no AVX2+FMA; that kernel was not run"
+    fi
+    if has avx; then
+        build "x86-64 AVX without AVX2" gcc -O2 -mavx && run "x86-64 AVX without AVX2" "$t/tb"
+    else
+        echo "NOTE batch: this CPU has no AVX; that kernel was not run"
     fi
     for cc in gcc clang; do
         if $cc $W -O2 -mavx512f -mfma -c src/f32/exact.c -o "$t/x.o" 2>"$t/err"; then

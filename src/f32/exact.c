@@ -207,14 +207,45 @@ void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restr
     }
 }
 
-/* Three channels: each channel's batch over a block of cosines, then the
- * block interleaved into out. */
+#if FRESNEL_I_VW
+/* The fused kernels write fresnel_rgb as 3n floats. */
+typedef char fresnel_i_rgb_rows[(sizeof(fresnel_rgb) == 3 * sizeof(float) &&
+                                 offsetof(fresnel_rgb, g) == sizeof(float) &&
+                                 offsetof(fresnel_rgb, b) == 2 * sizeof(float)) ? 1 : -1];
+FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_diel, FRESNEL_I_DIEL)
+FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_cond1, FRESNEL_I_COND1)
+FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_cond2, FRESNEL_I_COND2)
+#endif
+
+/* Three channels of one form (the usual case: a metal, a dielectric): one
+ * pass, each cosine's terms shared by the channels and the rows written by
+ * vector shuffles (exact_batch.h). Otherwise, and in portable C, each
+ * channel's batch over a block of cosines, then the block interleaved into
+ * out. */
 #define FRESNEL_I_RGB_BLOCK 64
 void fresnel_conductor_rgb_batch(const fresnel_conductor_prep p[3], const float *restrict c, fresnel_rgb *restrict out,
                                  int n)
 {
     float r[FRESNEL_I_RGB_BLOCK], g[FRESNEL_I_RGB_BLOCK], b[FRESNEL_I_RGB_BLOCK];
     int i, j, k;
+#if FRESNEL_I_VW
+    const int kind = p[0].kind;
+    if (kind != FRESNEL_I_MATCHED && p[1].kind == kind && p[2].kind == kind) {
+        float *o = (float *)out; /* rows of three floats: fresnel_i_rgb_rows */
+#if FRESNEL_I_AVX_DISPATCH
+        __builtin_cpu_init();
+        if (__builtin_cpu_supports("avx2")) {
+            fresnel_i_conductor_rgb_batch_avx(p, c, o, n);
+            return;
+        }
+#endif
+        switch (kind) {
+        case FRESNEL_I_DIEL: fresnel_i_rgb_batch_diel(p, c, o, n); return;
+        case FRESNEL_I_COND1: fresnel_i_rgb_batch_cond1(p, c, o, n); return;
+        default: fresnel_i_rgb_batch_cond2(p, c, o, n); return;
+        }
+    }
+#endif
     for (i = 0; i < n; i += k) {
         k = n - i < FRESNEL_I_RGB_BLOCK ? n - i : FRESNEL_I_RGB_BLOCK;
         fresnel_conductor_batch(&p[0], c + i, r, k);

@@ -25,6 +25,19 @@ void fresnel_i_conductor_batch_avx(const fresnel_conductor_prep *p, const float 
     default: fresnel_i_batch_avx_cond2(p, c, out, n); break; /* the caller handles the matched index */
     }
 }
+
+FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_avx_diel, FRESNEL_I_DIEL)
+FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_avx_cond1, FRESNEL_I_COND1)
+FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_avx_cond2, FRESNEL_I_COND2)
+
+void fresnel_i_conductor_rgb_batch_avx(const fresnel_conductor_prep p[3], const float *c, float *out, int n)
+{
+    switch (p[0].kind) {
+    case FRESNEL_I_DIEL: fresnel_i_rgb_batch_avx_diel(p, c, out, n); break;
+    case FRESNEL_I_COND1: fresnel_i_rgb_batch_avx_cond1(p, c, out, n); break;
+    default: fresnel_i_rgb_batch_avx_cond2(p, c, out, n); break; /* the caller handles the matched index */
+    }
+}
 #ifdef __clang__
 #pragma clang attribute pop
 #endif

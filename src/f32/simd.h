@@ -11,7 +11,9 @@
  * (sqrt and divide correctly rounded, no contraction), so a lane gives the
  * scalar function's result bit for bit; fresnel_i_vfms (a b - c, one
  * rounding) only where the scalar
- * code uses fmaf (FP_FAST_FMAF). */
+ * code uses fmaf (FP_FAST_FMAF). fresnel_i_vstore3 writes three vectors as
+ * rows of three floats (fresnel_rgb): shuffles (SSE2, AVX), lane
+ * permutations and blends (AVX2, AVX-512 by halves), vst3q (NEON). */
 #ifndef FRESNEL_SIMD_H
 #define FRESNEL_SIMD_H
 
@@ -21,6 +23,39 @@
  * kernel on a CPU with AVX; exact_batch.h). */
 #ifndef FRESNEL_I_SIMD_DISPATCH
 #define FRESNEL_I_SIMD_DISPATCH 1
+#endif
+
+#if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD && defined(__SSE2__)
+#include <emmintrin.h>
+/* p[3i], p[3i+1], p[3i+2] = r[i], g[i], b[i] for 4 lanes: rows of three
+ * (fresnel_rgb) from three vectors, by shuffles. */
+static inline void fresnel_i_store3_128(float *p, __m128 r, __m128 g, __m128 b)
+{
+    __m128 rg = _mm_unpacklo_ps(r, g);                             /* r0 g0 r1 g1 */
+    __m128 gb = _mm_unpacklo_ps(g, b);                             /* g0 b0 g1 b1 */
+    __m128 rg_hi = _mm_unpackhi_ps(r, g);                          /* r2 g2 r3 g3 */
+    __m128 gb_hi = _mm_unpackhi_ps(g, b);                          /* g2 b2 g3 b3 */
+    __m128 br = _mm_shuffle_ps(b, r, _MM_SHUFFLE(1, 1, 0, 0));     /* b0 b0 r1 r1 */
+    __m128 br_hi = _mm_shuffle_ps(b, r, _MM_SHUFFLE(3, 3, 2, 2));  /* b2 b2 r3 r3 */
+    _mm_storeu_ps(p, _mm_shuffle_ps(rg, br, _MM_SHUFFLE(2, 0, 1, 0)));         /* r0 g0 b0 r1 */
+    _mm_storeu_ps(p + 4, _mm_shuffle_ps(gb, rg_hi, _MM_SHUFFLE(1, 0, 3, 2)));  /* g1 b1 r2 g2 */
+    _mm_storeu_ps(p + 8, _mm_shuffle_ps(br_hi, gb_hi, _MM_SHUFFLE(3, 2, 2, 0))); /* b2 r3 g3 b3 */
+}
+#endif
+#if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD && (defined(__AVX2__) || defined(FRESNEL_I_FORCE_AVX))
+#include <immintrin.h>
+/* The same for 8 lanes: each vector's lanes permuted to the positions they
+ * take in the three output rows of 8 floats (lane i goes to float 3i + k),
+ * then each row blended from the three. */
+static inline void fresnel_i_store3_256(float *p, __m256 r, __m256 g, __m256 b)
+{
+    __m256 rp = _mm256_permutevar8x32_ps(r, _mm256_setr_epi32(0, 3, 6, 1, 4, 7, 2, 5));
+    __m256 gp = _mm256_permutevar8x32_ps(g, _mm256_setr_epi32(5, 0, 3, 6, 1, 4, 7, 2));
+    __m256 bp = _mm256_permutevar8x32_ps(b, _mm256_setr_epi32(2, 5, 0, 3, 6, 1, 4, 7));
+    _mm256_storeu_ps(p, _mm256_blend_ps(_mm256_blend_ps(rp, gp, 0x92), bp, 0x24));      /* r g b r g b r g */
+    _mm256_storeu_ps(p + 8, _mm256_blend_ps(_mm256_blend_ps(rp, gp, 0x24), bp, 0x49));  /* b r g b r g b r */
+    _mm256_storeu_ps(p + 16, _mm256_blend_ps(_mm256_blend_ps(rp, gp, 0x49), bp, 0x92)); /* g b r g b r g b */
+}
 #endif
 
 #if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD
@@ -47,6 +82,15 @@ static inline fresnel_i_vf fresnel_i_vmin(fresnel_i_vf a, fresnel_i_vf b) { retu
 static inline fresnel_i_vf fresnel_i_vsplit_hi(fresnel_i_vf a)
 {
     return _mm512_castsi512_ps(_mm512_and_si512(_mm512_castps_si512(a), _mm512_set1_epi32((int)0xfffff000u)));
+}
+static inline __m256 fresnel_i_vhi256(fresnel_i_vf a)
+{
+    return _mm256_castpd_ps(_mm512_extractf64x4_pd(_mm512_castps_pd(a), 1));
+}
+static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, fresnel_i_vf b)
+{
+    fresnel_i_store3_256(p, _mm512_castps512_ps256(r), _mm512_castps512_ps256(g), _mm512_castps512_ps256(b));
+    fresnel_i_store3_256(p + 24, fresnel_i_vhi256(r), fresnel_i_vhi256(g), fresnel_i_vhi256(b));
 }
 #ifdef FP_FAST_FMAF
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm512_fmsub_ps(a, b, c); }
@@ -80,6 +124,16 @@ static inline fresnel_i_vf fresnel_i_vsplit_hi(fresnel_i_vf a)
 {
     return _mm256_and_ps(a, _mm256_castsi256_ps(_mm256_set1_epi32((int)0xfffff000u)));
 }
+static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, fresnel_i_vf b)
+{
+#if defined(__AVX2__) || defined(FRESNEL_I_FORCE_AVX)
+    fresnel_i_store3_256(p, r, g, b);
+#else
+    fresnel_i_store3_128(p, _mm256_castps256_ps128(r), _mm256_castps256_ps128(g), _mm256_castps256_ps128(b));
+    fresnel_i_store3_128(p + 12, _mm256_extractf128_ps(r, 1), _mm256_extractf128_ps(g, 1),
+                         _mm256_extractf128_ps(b, 1));
+#endif
+}
 #ifdef FP_FAST_FMAF
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm256_fmsub_ps(a, b, c); }
 #endif
@@ -109,6 +163,10 @@ static inline fresnel_i_vf fresnel_i_vsplit_hi(fresnel_i_vf a)
 {
     return _mm_and_ps(a, _mm_castsi128_ps(_mm_set1_epi32((int)0xfffff000u)));
 }
+static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, fresnel_i_vf b)
+{
+    fresnel_i_store3_128(p, r, g, b);
+}
 #ifdef FP_FAST_FMAF
 #include <immintrin.h>
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm_fmsub_ps(a, b, c); }
@@ -136,6 +194,14 @@ static inline fresnel_i_vf fresnel_i_vmin(fresnel_i_vf a, fresnel_i_vf b) { retu
 static inline fresnel_i_vf fresnel_i_vsplit_hi(fresnel_i_vf a)
 {
     return vreinterpretq_f32_u32(vandq_u32(vreinterpretq_u32_f32(a), vdupq_n_u32(0xfffff000u)));
+}
+static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, fresnel_i_vf b)
+{
+    float32x4x3_t v;
+    v.val[0] = r;
+    v.val[1] = g;
+    v.val[2] = b;
+    vst3q_f32(p, v);
 }
 #ifdef FP_FAST_FMAF
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return vnegq_f32(vfmsq_f32(c, a, b)); }
