@@ -49,6 +49,7 @@
 #define FRESNEL_BOUND_LUT_Q15_FAST_1024 2.8    /* n <= 1024 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST 3.4      /* n <= 64 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge */
+#define FRESNEL_BOUND_CONDUCTOR_Q15_FAST 3.6     /* over its documented domain */
 
 /* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
  * truncated, so that the errors straddle zero with one constant (every
@@ -252,6 +253,196 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *tabl
     t = pos & 32767u;
     v = table + (pos >> 15);
     return (fresnel_q15)((v[0] * 32768 + (v[1] - v[0]) * (int32_t)t) >> 15);
+}
+
+/* ------------------------------------------------ exact conductor, fast path */
+
+/* Prepared constants of fresnel_conductor_q15_fast, made on the host from
+ * double eta, kappa (fixed_conductor_fast in gen/3_encode/fixed_params.c
+ * is the reference of this layout):
+ *   D = eta^2 - kappa^2 - 1 (eta^2 in two doubles); shift = the smallest
+ *   s in [0, 8] such that a0 + [0, 2^(30-s)] fits int32, where
+ *   a0 = round(D 2^(30-s)) and a0_lo = round((D 2^(30-s) - a0) 2^16), in
+ *   [-2^15, 2^15] (A = a0 + c^2 >> s, read in two words where it is small:
+ *   a dielectric's critical angle);
+ *   2 eta kappa = b 2^-b_e, b in [2^15, 2^16) rounded; b = 0, b_e = 255
+ *   for kappa = 0.
+ * The domain of the fast path (FRESNEL_CONDUCTOR_*_Q15_FAST): eta in
+ * [0.03, 8], kappa in [0, 16], eta >= 0.07 where kappa < 0.1 (a dielectric
+ * of a smaller relative index is steeper at its critical angle than the
+ * 16-bit mantissas resolve), and |eta^2 - kappa^2 - 1 + 2i eta kappa| >=
+ * 0.001 (near the matched index the reflectance is a ratio of two tiny
+ * numbers); eta = 1, kappa = 0 itself gives 0 at every c. Every material of
+ * data/ at 380-780 nm lies inside it. */
+#define FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST 0.03
+#define FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST 8.0
+#define FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST 16.0
+#define FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST 0.07 /* for kappa < 0.1 */
+#define FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST 0.001
+typedef struct fresnel_conductor_prep_q15 {
+    int32_t a0, a0_lo, shift;
+    int32_t b, b_e;
+} fresnel_conductor_prep_q15;
+
+/* round(2^13 sqrt(j)) and round(2^20 / j) for j = 16..64 and 16..32 (0 below
+ * 16: the index is the operand's top bits as they are). */
+static const uint32_t fresnel_i_fast_sq[65] = {0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 32768u, 33776u, 34756u, 35708u, 36636u, 37540u, 38424u, 39287u, 40132u, 40960u, 41771u, 42567u, 43348u, 44115u, 44869u, 45611u, 46341u, 47059u, 47767u, 48465u, 49152u, 49830u, 50499u, 51159u, 51811u, 52454u, 53090u, 53719u, 54340u, 54954u, 55561u, 56162u, 56756u, 57344u, 57926u, 58503u, 59073u, 59639u, 60199u, 60753u, 61303u, 61848u, 62388u, 62924u, 63455u, 63982u, 64504u, 65022u, 65536u};
+static const uint32_t fresnel_i_fast_rc[33] = {0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 65536u, 61681u, 58254u, 55188u, 52429u, 49932u, 47663u, 45590u, 43691u, 41943u, 40330u, 38836u, 37449u, 36158u, 34953u, 33825u, 32768u};
+
+/* sqrt(x) for x in [2^30, 2^32), in [2^15, 2^16): the chord of the table's
+ * segment, then one Newton step with the chord's rise as 2^26 / (2 sqrt x). */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt32(uint32_t x)
+{
+    const uint32_t *t = fresnel_i_fast_sq + (x >> 26);
+    uint32_t dh = t[1] - t[0];
+    uint32_t s = t[0] + ((dh * ((x >> 10) & 0xffffu)) >> 16);
+    int32_t r = (int32_t)(x - s * s);
+    return (uint32_t)((int32_t)s + ((r * (int32_t)dh + (1 << 25)) >> 26));
+}
+
+/* 2^31 / d for d in [2^15, 2^16): the chord, then one Newton step. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_recip16(uint32_t d)
+{
+    const uint32_t *t = fresnel_i_fast_rc + (d >> 11);
+    uint32_t y = t[0] - (((t[0] - t[1]) * (d & 2047u)) >> 11);
+    int32_t e = (int32_t)(0x80000000u - d * y);
+    return (uint32_t)((int32_t)y + (((e >> 7) * (int32_t)y) >> 24));
+}
+
+/* The number of leading zeros of x > 0 (Cortex-M0 has no CLZ). */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_lz(uint32_t x)
+{
+    uint32_t n = 0;
+    if (!(x >> 16)) {
+        x <<= 16;
+        n = 16;
+    }
+    if (!(x >> 24)) {
+        x <<= 8;
+        n += 8;
+    }
+    if (!(x >> 28)) {
+        x <<= 4;
+        n += 4;
+    }
+    if (!(x >> 30)) {
+        x <<= 2;
+        n += 2;
+    }
+    return n + (1u ^ (x >> 31));
+}
+
+/* x c / 2^15 for x < 2^32, c <= 2^16 with x c / 2^15 < 2^32, from 15-bit halves. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_mul15(uint32_t x, uint32_t c)
+{
+    return (x >> 15) * c + (((x & 32767u) * c) >> 15);
+}
+
+/* x 2^d for d of either sign (0 when d <= -32). */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
+{
+    return d >= 0 ? x << d : (d > -32 ? x >> -d : 0u);
+}
+
+/* The exact unpolarised reflectance of eta + i kappa (fresnel_conductor,
+ * the form of src/f32/exact.c) with m prepared by fixed_conductor_fast, for
+ * c in [0, one] (PRECONDITIONS; any c outside is undefined):
+ *   A = eta^2 - kappa^2 - s^2, m = sqrt(A^2 + (2 eta kappa)^2),
+ *   B = sqrt((m + |A|)/2), u = B (A >= 0) or eta kappa / B (A < 0),
+ *   Rs = (G - H)/(G + H), P = (G2 - H s^2)/(G2 + H s^2),
+ *   G = m + c^2, G2 = c^2 m + s^4, H = 2 c u, s^2 = 1 - c^2,
+ *   F = Rs (1 + P)/2 = Ns (Dp + Np) / (2 Ds Dp),
+ * in block floating point with 16-bit mantissas: the two square roots and
+ * the three reciprocals (u, and one for F) by a table chord and one Newton
+ * step, normalisations by compares (no CLZ on Cortex-M0), every product
+ * 32 x 32 -> 32. c = 0 gives one (0 for the matched index).
+ * Error <= FRESNEL_BOUND_CONDUCTOR_Q15_FAST LSB over the domain above
+ * (tests/test_fixed_fast.c); results in [0, one].
+ * Cost: about 30 mul; on Cortex-M0 -Os about 340 instructions, 864 bytes
+ * of code and 392 of tables, 8x fewer instructions than
+ * fresnel_conductor_q15 (`make cross-count`, ports/README.md). */
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conductor_prep_q15 *p, int32_t c_in)
+{
+    uint32_t c = (uint32_t)c_in, c2, aa, a16, ak, bk, x, s, mk, bm, um, he, me, c2e, g, ds, ns, dp, np, n;
+    int32_t ah, a, ea, eb, k, e, sh, eb2, eu;
+    int neg;
+    if (c == 0)
+        return (fresnel_q15)((p->a0 | p->a0_lo | p->b) ? 32768 : 0);
+    c2 = c * c;
+    /* A = a0 + c^2, in two words where it is small */
+    ah = p->a0 + (int32_t)(c2 >> p->shift);
+    if ((uint32_t)(ah + 32767) <= 65534u) {
+        a = (int32_t)((uint32_t)ah << 16) + p->a0_lo;
+        ea = 46 - p->shift;
+    } else {
+        a = ah;
+        ea = 30 - p->shift;
+    }
+    neg = a < 0;
+    aa = neg ? 0u - (uint32_t)a : (uint32_t)a;
+    if (aa) {
+        n = fresnel_i_fast_lz(aa);
+        aa <<= n;
+        a16 = (aa >> 16) + ((aa >> 15) & 1u);
+        a16 -= a16 >> 16;
+        ea += (int32_t)n - 16;
+    } else {
+        a16 = 0;
+        ea = 255;
+    }
+    /* |A| and b at the scale of the larger: m = sqrt(ak^2 + bk^2) 2^-k */
+    bm = (uint32_t)p->b;
+    eb = p->b_e;
+    k = ea < eb ? ea : eb;
+    ak = ea - k < 16 ? a16 >> (ea - k) : 0u;
+    bk = eb - k < 16 ? bm >> (eb - k) : 0u;
+    x = ((ak * ak) >> 1) + ((bk * bk) >> 1);
+    if (x == 0)
+        return 32768; /* A = b = 0: at the critical angle */
+    sh = x < 0x40000000u;
+    s = fresnel_i_fast_sqrt32(x << (2 * sh));
+    mk = (s * 46341u + (1u << (14 + sh))) >> (15 + sh); /* sqrt(2 x), < 2^16.5 */
+    /* B = sqrt((m + |A|)/2) = s 2^-eb2; u = B for A >= 0, (b/2)/B for A < 0 */
+    x = mk + ak;
+    e = 15 - (x >= 0x10000u) - (x >= 0x20000u);
+    e += (k + 1 + e) & 1;
+    s = fresnel_i_fast_sqrt32(x << e);
+    eb2 = (k + 1 + e) >> 1;
+    if (!neg) {
+        um = s;
+        eu = eb2;
+    } else {
+        um = (bm * fresnel_i_fast_recip16(s)) >> 16;
+        eu = 16 + eb - eb2;
+    }
+    /* the scale 2^-e of the denominators: m < 2^29.5, c^2 <= 2^30 */
+    e = k + 13 < 30 ? k + 13 : 30;
+    me = fresnel_i_fast_shift(mk, e - k);
+    c2e = c2 >> (30 - e);
+    he = fresnel_i_fast_shift(c * um, e - 14 - eu); /* H = 2 c u */
+    g = me + c2e;
+    ds = g + he;
+    ns = g > he ? g - he : 0u;
+    n = fresnel_i_fast_lz(ds);
+    ds = (ds << n) >> 16;
+    ns = (ns << n) >> 16;
+    /* G2 = c^2 m + s^4 and H s^2 = H (1 - c)(1 + c) */
+    x = fresnel_i_fast_mul15(fresnel_i_fast_mul15(32768u * 32768u - c2, 32768u + c), 32768u - c); /* s^4 in Q30 */
+    g = fresnel_i_fast_mul15(fresnel_i_fast_mul15(me, c), c) + (x >> (30 - e));
+    he = fresnel_i_fast_mul15(fresnel_i_fast_mul15(he, 32768u - c), 32768u + c);
+    dp = g + he;
+    np = g > he ? g - he : 0u;
+    n = fresnel_i_fast_lz(dp);
+    dp = (dp << n) >> 16;
+    np = (np << n) >> 16;
+    /* F = Rs (1 + P)/2 = Ns (Dp + Np) / (2 Ds Dp), one reciprocal */
+    x = ds * dp;
+    np = ns * ((dp + np) >> 1);
+    n = x < 0x80000000u;
+    x = (x << n) >> 16;
+    np = (np << n) >> 16;
+    x = ((np * fresnel_i_fast_recip16(x)) >> 1) + 16384u;
+    return (fresnel_q15)(x >> 30 ? 32768u : x >> 15);
 }
 
 #endif /* FRESNEL_HAS_FIXED: fast paths */
