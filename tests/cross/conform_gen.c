@@ -51,9 +51,9 @@ int main(void)
         printf("}, .lsk = {%uu, {%uu, %d}, %d},", (unsigned)mf.lsk.f0, (unsigned)mf.lsk.a.m, (int)mf.lsk.a.e,
                (int)mf.lsk.alpha);
         fixed_conductor_fast(mat[k].eta, mat[k].kappa, &cf);
-        printf(" .eta = %d, .kappa = %d, .f82_a = %d, .cfast = {%d, %d, %d, %d, %d}},\n", (int)fixed_q16(mat[k].eta),
-               (int)fixed_q16(mat[k].kappa), (int)fixed_f82_a_q12(mf.f0, mf.f82), (int)cf.a0, (int)cf.a0_lo,
-               (int)cf.shift, (int)cf.b, (int)cf.b_e);
+        printf(" .eta = %d, .kappa = %d, .f82_a = %d, .cfast = {%d, %d, %d, %d, %d, %d, %d, %uu}},\n",
+               (int)fixed_q16(mat[k].eta), (int)fixed_q16(mat[k].kappa), (int)fixed_f82_a_q12(mf.f0, mf.f82), (int)cf.a0,
+               (int)cf.a0_lo, (int)cf.shift, (int)cf.b1, (int)cf.b2, (int)cf.bm, (int)cf.be, (unsigned)cf.span);
         if (!strcmp(mat[k].name, "cu 550")) {
             bench = k;
             bench_mp = mp;
