@@ -25,7 +25,9 @@
  *   LUTs: any c (c <= 0 reads as 0, c > one as one) and any n (n <= 0 gives
  *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
  *   as that many nodes; with n a compile-time constant these tests fold
- *   away). The table must hold min(n, that maximum) entries.
+ *   away). The table must hold min(n, that maximum) entries. The exact
+ *   conductor: c in [0, one], and constants made by fixed_conductor_fast
+ *   from an eta, kappa inside its domain (FRESNEL_CONDUCTOR_*_Q15_FAST).
  * RESULTS are in [0, FRESNEL_ONE_Q15] for every input that meets them; a
  * LUT's in [0, max(FRESNEL_ONE_Q15, its largest entry)].
  * ERROR BOUNDS (LSB of Q15, FRESNEL_BOUND_*_Q15_FAST) bound
