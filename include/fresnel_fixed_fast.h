@@ -262,13 +262,15 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *tabl
 /* Prepared constants of fresnel_conductor_q15_fast, made on the host from
  * double eta, kappa (fixed_conductor_fast in gen/3_encode/fixed_params.c
  * is the reference of this layout):
- *   D = eta^2 - kappa^2 - 1 (eta^2 in two doubles); shift = the smallest
- *   s in [0, 8] such that a0 + [0, 2^(30-s)] fits int32, where
- *   a0 = round(D 2^(30-s)) and a0_lo = round((D 2^(30-s) - a0) 2^16), in
- *   [-2^15, 2^15] (A = a0 + c^2 >> s, read in two words where it is small:
- *   a dielectric's critical angle);
- *   2 eta kappa = b 2^-b_e, b in [2^15, 2^16) rounded; b = 0, b_e = 255
- *   for kappa = 0.
+ *   D = eta^2 - kappa^2 - 1 (eta^2 in two doubles), b = 2 eta kappa;
+ *   shift = the smallest s such that a0 + [0, 2^(30-s)] fits int32 and
+ *   b 2^(30-s) < 2^31, where a0 = round(D 2^(30-s)) and
+ *   a0_lo = round((D 2^(30-s) - a0) 2^16), in [-2^15, 2^15];
+ *   b1 = round(b 2^(30-s)); where b1 < 2^15, b2 = round(b 2^(46-s)) and
+ *   span = 65534 (A = a0 + c^2 >> s is read in two words, A 2^16 + a0_lo
+ *   against b2, where |A| < 2^15 too: a dielectric's critical angle), else
+ *   b2 = 0 and span = 0; b = bm 2^-be with bm in [2^15, 2^16) rounded
+ *   (bm = 0, be = 255 for kappa = 0).
  * The domain of the fast path (FRESNEL_CONDUCTOR_*_Q15_FAST): eta in
  * [0.03, 8], kappa in [0, 16], eta >= 0.07 where kappa < 0.1 (a dielectric
  * of a smaller relative index is steeper at its critical angle than the
@@ -376,7 +378,7 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
 }
 
 /* The exact unpolarised reflectance of eta + i kappa (fresnel_conductor,
- * the form of src/f32/exact.c) with m prepared by fixed_conductor_fast, for
+ * the form of src/f32/exact.c) with p prepared by fixed_conductor_fast, for
  * c in [0, one] (PRECONDITIONS; any c outside is undefined):
  *   A = eta^2 - kappa^2 - s^2, s^2 = 1 - c^2, b = 2 eta kappa,
  *   m = sqrt(A^2 + b^2), B = sqrt((m + |A|)/2),
@@ -406,7 +408,7 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conduct
     /* A = a0 + c^2 and b = 2 eta kappa at one scale, in two words where
      * both are small; m = sqrt(ak^2 + bk^2) 2^-k */
     ah = p->a0 + (int32_t)(c2 >> p->shift);
-    if ((uint32_t)(ah + 32767) <= p->span) {
+    if ((uint32_t)ah + 32767u <= p->span) {
         a = (int32_t)((uint32_t)ah << 16) + p->a0_lo;
         bk = (uint32_t)p->b2;
         k = 30 - p->shift;
