@@ -434,7 +434,7 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conduct
         mk = fresnel_i_fast_sqrt32(x); /* m = mk 2^-k, mk < 2^16.5 */
     /* B = sqrt((m + |A|)/2) = s 2^-eb2; u = B for A >= 0, (b/2)/B for A < 0 */
     x = mk + ak;
-    e = 15 - (x >= 0x10000u) - (x >= 0x20000u);
+    e = 15 - (int32_t)((x >> 16) != 0) - (int32_t)((x >> 17) != 0);
     e += (k + 1 + e) & 1;
     s = fresnel_i_fast_sqrt32(x << e);
     eb2 = (k + 1 + e) >> 1;
@@ -472,9 +472,9 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conduct
     /* F = Rs (1 + P)/2 = Ns (Dp + Np) / (2 Ds Dp), one reciprocal */
     x = ds * dp;
     np = ns * ((dp + np) >> 1);
-    n = x < 0x80000000u;
-    x = (x << n) >> 16;
-    np = (np << n) >> 16;
+    n = 15u + (x >> 31);
+    x >>= n;
+    np >>= n;
     x = ((np * fresnel_i_fast_recip16(x)) >> 1) + 16384u;
     return (fresnel_q15)(x >> 30 ? 32768u : x >> 15);
 }
