@@ -396,7 +396,7 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
  * (tests/test_fixed_fast.c); results in [0, one].
  * Cost: about 21 mul; on Cortex-M0 -Os under 300 instructions (`make
  * cross-count`, ports/README.md: about a tenth of fresnel_conductor_q15's),
- * 808 bytes of code and 1544 bytes of tables. */
+ * 796 bytes of code and 1544 bytes of tables. */
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conductor_prep_q15 *p, int32_t c_in)
 {
     uint32_t c = (uint32_t)c_in, c2, ak, bk, x, s, mk, um, he, me, c2e, g, ds, ns, dp, np, n;
