@@ -25,7 +25,9 @@
  *   LUTs: any c (c <= 0 reads as 0, c > one as one) and any n (n <= 0 gives
  *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
  *   as that many nodes; with n a compile-time constant these tests fold
- *   away). The table must hold min(n, that maximum) entries.
+ *   away). The table must hold min(n, that maximum) entries. The exact
+ *   conductor: c in [0, one], and constants made by fixed_conductor_fast
+ *   from an eta, kappa inside its domain (FRESNEL_CONDUCTOR_*_Q15_FAST).
  * RESULTS are in [0, FRESNEL_ONE_Q15] for every input that meets them; a
  * LUT's in [0, max(FRESNEL_ONE_Q15, its largest entry)].
  * ERROR BOUNDS (LSB of Q15, FRESNEL_BOUND_*_Q15_FAST) bound
@@ -49,6 +51,7 @@
 #define FRESNEL_BOUND_LUT_Q15_FAST_1024 2.8    /* n <= 1024 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST 3.4      /* n <= 64 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge */
+#define FRESNEL_BOUND_CONDUCTOR_Q15_FAST 3.6     /* over its documented domain */
 
 /* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
  * truncated, so that the errors straddle zero with one constant (every
@@ -252,6 +255,228 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *tabl
     t = pos & 32767u;
     v = table + (pos >> 15);
     return (fresnel_q15)((v[0] * 32768 + (v[1] - v[0]) * (int32_t)t) >> 15);
+}
+
+/* ------------------------------------------------ exact conductor, fast path */
+
+/* Prepared constants of fresnel_conductor_q15_fast, made on the host from
+ * double eta, kappa (fixed_conductor_fast in gen/3_encode/fixed_params.c
+ * is the reference of this layout):
+ *   D = eta^2 - kappa^2 - 1 (eta^2 in two doubles), b = 2 eta kappa;
+ *   shift = the smallest s such that a0 + [0, 2^(30-s)] fits int32 and
+ *   b 2^(30-s) < 2^31, where a0 = round(D 2^(30-s)) and
+ *   a0_lo = round((D 2^(30-s) - a0) 2^16), in [-2^15, 2^15];
+ *   b1 = round(b 2^(30-s)); where b1 < 2^15, b2 = round(b 2^(46-s)) and
+ *   span = 65534 (A = a0 + c^2 >> s is read in two words, A 2^16 + a0_lo
+ *   against b2, where |A| < 2^15 too: a dielectric's critical angle), else
+ *   b2 = 0 and span = 0; b = bm 2^-be with bm in [2^15, 2^16) rounded
+ *   (bm = 0, be = 255 for kappa = 0).
+ * The domain of the fast path (FRESNEL_CONDUCTOR_*_Q15_FAST): eta in
+ * [0.03, 8], kappa in [0, 16], eta >= 0.07 where kappa < 0.1 (a dielectric
+ * of a smaller relative index is steeper at its critical angle than the
+ * 16-bit mantissas resolve), and |eta^2 - kappa^2 - 1 + 2i eta kappa| >=
+ * 0.001 (near the matched index the reflectance is a ratio of two tiny
+ * numbers); eta = 1, kappa = 0 itself gives 0 at every c. Every material of
+ * data/ at 380-780 nm lies inside it. */
+#define FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST 0.03
+#define FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST 8.0
+#define FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST 16.0
+#define FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST 0.07 /* for kappa < 0.1 */
+#define FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST 0.001
+typedef struct fresnel_conductor_prep_q15 {
+    int32_t a0, a0_lo, shift;
+    int32_t b1, b2, bm, be;
+    uint32_t span;
+} fresnel_conductor_prep_q15;
+
+/* round(2^12 sqrt(j)) for j = 64..256, and round(2^23 / j) for j = 128..256. */
+static const uint32_t fresnel_i_fast_sq[193] = {
+    32768u, 33023u, 33276u, 33527u, 33776u, 34024u, 34270u, 34514u, 34756u, 34996u, 35235u, 35472u,
+    35708u, 35942u, 36175u, 36406u, 36636u, 36864u, 37091u, 37316u, 37540u, 37763u, 37985u, 38205u,
+    38424u, 38642u, 38858u, 39073u, 39287u, 39500u, 39712u, 39923u, 40132u, 40341u, 40548u, 40755u,
+    40960u, 41164u, 41368u, 41570u, 41771u, 41972u, 42171u, 42369u, 42567u, 42763u, 42959u, 43154u,
+    43348u, 43541u, 43733u, 43925u, 44115u, 44305u, 44494u, 44682u, 44869u, 45056u, 45242u, 45427u,
+    45611u, 45795u, 45977u, 46160u, 46341u, 46522u, 46702u, 46881u, 47059u, 47237u, 47415u, 47591u,
+    47767u, 47942u, 48117u, 48291u, 48465u, 48637u, 48809u, 48981u, 49152u, 49322u, 49492u, 49661u,
+    49830u, 49998u, 50166u, 50332u, 50499u, 50665u, 50830u, 50995u, 51159u, 51323u, 51486u, 51649u,
+    51811u, 51972u, 52134u, 52294u, 52454u, 52614u, 52773u, 52932u, 53090u, 53248u, 53405u, 53562u,
+    53719u, 53874u, 54030u, 54185u, 54340u, 54494u, 54647u, 54801u, 54954u, 55106u, 55258u, 55410u,
+    55561u, 55712u, 55862u, 56012u, 56162u, 56311u, 56459u, 56608u, 56756u, 56903u, 57051u, 57198u,
+    57344u, 57490u, 57636u, 57781u, 57926u, 58071u, 58215u, 58359u, 58503u, 58646u, 58789u, 58931u,
+    59073u, 59215u, 59357u, 59498u, 59639u, 59779u, 59919u, 60059u, 60199u, 60338u, 60477u, 60615u,
+    60753u, 60891u, 61029u, 61166u, 61303u, 61440u, 61576u, 61712u, 61848u, 61984u, 62119u, 62254u,
+    62388u, 62523u, 62657u, 62790u, 62924u, 63057u, 63190u, 63323u, 63455u, 63587u, 63719u, 63850u,
+    63982u, 64113u, 64243u, 64374u, 64504u, 64634u, 64763u, 64893u, 65022u, 65151u, 65279u, 65408u,
+    65536u};
+static const uint32_t fresnel_i_fast_rc[129] = {
+    65536u, 65028u, 64528u, 64035u, 63550u, 63072u, 62602u, 62138u, 61681u, 61231u, 60787u, 60350u,
+    59919u, 59494u, 59075u, 58662u, 58254u, 57852u, 57456u, 57065u, 56680u, 56299u, 55924u, 55554u,
+    55188u, 54828u, 54471u, 54120u, 53773u, 53431u, 53092u, 52759u, 52429u, 52103u, 51782u, 51464u,
+    51150u, 50840u, 50534u, 50231u, 49932u, 49637u, 49345u, 49056u, 48771u, 48489u, 48210u, 47935u,
+    47663u, 47393u, 47127u, 46864u, 46603u, 46346u, 46091u, 45839u, 45590u, 45344u, 45100u, 44859u,
+    44620u, 44384u, 44151u, 43919u, 43691u, 43464u, 43240u, 43019u, 42799u, 42582u, 42367u, 42154u,
+    41943u, 41734u, 41528u, 41323u, 41121u, 40920u, 40721u, 40525u, 40330u, 40137u, 39946u, 39756u,
+    39569u, 39383u, 39199u, 39017u, 38836u, 38657u, 38480u, 38304u, 38130u, 37958u, 37787u, 37617u,
+    37449u, 37283u, 37118u, 36954u, 36792u, 36631u, 36472u, 36314u, 36158u, 36003u, 35849u, 35696u,
+    35545u, 35395u, 35246u, 35099u, 34953u, 34808u, 34664u, 34521u, 34380u, 34239u, 34100u, 33962u,
+    33825u, 33689u, 33554u, 33421u, 33288u, 33157u, 33026u, 32897u, 32768u};
+
+/* sqrt(x) for x in [2^30, 2^32), in [2^15, 2^16): the chord of one of 192
+ * segments (relative error below 2^-16.9), rounded. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt32(uint32_t x)
+{
+    const uint32_t *t = fresnel_i_fast_sq + ((x >> 24) - 64u);
+    return t[0] + (((t[1] - t[0]) * ((x >> 8) & 0xffffu) + 32768u) >> 16);
+}
+
+/* 2^31 / d for d in [2^15, 2^16): the chord of one of 128 segments
+ * (relative error below 2^-16), rounded. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_recip16(uint32_t d)
+{
+    const uint32_t *t = fresnel_i_fast_rc + ((d >> 8) - 128u);
+    return t[0] - (((t[0] - t[1]) * (d & 255u) + 128u) >> 8);
+}
+
+/* The number of leading zeros of x > 0 (Cortex-M0 has no CLZ): a byte
+ * table, the top nonzero byte first (one compare for x >= 2^24). */
+static const uint8_t fresnel_i_fast_clz8[256] = {
+    8u, 7u, 6u, 6u, 5u, 5u, 5u, 5u, 4u, 4u, 4u, 4u, 4u, 4u, 4u, 4u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u, 3u,
+    2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u, 2u,
+    1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u,
+    1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u, 1u,
+    0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u,
+    0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u,
+    0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u,
+    0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u};
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_lz(uint32_t x)
+{
+    if (x >> 24)
+        return fresnel_i_fast_clz8[x >> 24];
+    if (x >> 16)
+        return 8u + fresnel_i_fast_clz8[x >> 16];
+    if (x >> 8)
+        return 16u + fresnel_i_fast_clz8[x >> 8];
+    return 24u + fresnel_i_fast_clz8[x];
+}
+
+/* x c / 2^15 for x < 2^32, c <= 2^16 with x c / 2^15 < 2^32, from 15-bit halves. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_mul15(uint32_t x, uint32_t c)
+{
+    return (x >> 15) * c + (((x & 32767u) * c) >> 15);
+}
+
+/* x y / 2^16 for y < 2^16, from 16-bit halves. */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_mul16(uint32_t x, uint32_t y)
+{
+    return (x >> 16) * y + (((x & 0xffffu) * y) >> 16);
+}
+
+/* x 2^d for d of either sign (0 when d <= -32). */
+FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
+{
+    return d >= 0 ? x << d : (d > -32 ? x >> -d : 0u);
+}
+
+/* The exact unpolarised reflectance of eta + i kappa (fresnel_conductor,
+ * the form of src/f32/exact.c) with p prepared by fixed_conductor_fast, for
+ * c in [0, one] (PRECONDITIONS; any c outside is undefined):
+ *   A = eta^2 - kappa^2 - s^2, s^2 = 1 - c^2, b = 2 eta kappa,
+ *   m = sqrt(A^2 + b^2), B = sqrt((m + |A|)/2),
+ *   u = B for A >= 0; for A < 0, u = (b/2)/B, folded into the ratios
+ *   (H and H s^2 taken with u B = b/2, G and G2 times B),
+ *   Rs = (G - H)/(G + H), P = (G2 - H s^2)/(G2 + H s^2),
+ *   G = m + c^2, G2 = c^2 m + s^4, H = 2 c u,
+ *   F = Rs (1 + P)/2 = Ns (Dp + Np) / (2 Ds Dp),
+ * in block floating point with 16-bit mantissas: the two square roots and
+ * the one reciprocal are table chords (192 and 128 segments, relative error
+ * below 2^-16), normalisations a byte table of leading zeros (Cortex-M0 has
+ * no CLZ), every product 32 x 32 -> 32. c = 0 gives one (0 for the matched
+ * index).
+ * Error <= FRESNEL_BOUND_CONDUCTOR_Q15_FAST LSB over the domain above
+ * (tests/test_fixed_fast.c); results in [0, one].
+ * Cost: about 21 mul; on Cortex-M0 -Os under 300 instructions (`make
+ * cross-count`, ports/README.md: about a tenth of fresnel_conductor_q15's),
+ * 796 bytes of code and 1544 bytes of tables. */
+FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conductor_prep_q15 *p, int32_t c_in)
+{
+    uint32_t c = (uint32_t)c_in, c2, ak, bk, x, s, mk, um, he, me, c2e, g, ds, ns, dp, np, n;
+    int32_t ah, a, k, e, eb2, eu;
+    int neg;
+    if (c == 0)
+        return (fresnel_q15)((p->a0 | p->a0_lo | p->b1) ? 32768 : 0);
+    c2 = c * c;
+    /* A = a0 + c^2 and b = 2 eta kappa at one scale, in two words where
+     * both are small; m = sqrt(ak^2 + bk^2) 2^-k */
+    ah = p->a0 + (int32_t)(c2 >> p->shift);
+    if ((uint32_t)ah + 32767u <= p->span) {
+        a = (int32_t)((uint32_t)ah << 16) + p->a0_lo;
+        bk = (uint32_t)p->b2;
+        k = 30 - p->shift;
+    } else {
+        a = ah;
+        bk = (uint32_t)p->b1;
+        k = 14 - p->shift;
+    }
+    neg = a < 0;
+    ak = neg ? 0u - (uint32_t)a : (uint32_t)a;
+    x = ak > bk ? ak : bk;
+    if (x == 0)
+        return 32768; /* A = b = 0: at the critical angle */
+    n = fresnel_i_fast_lz(x);
+    ak = (ak << n) >> 16;
+    bk = (bk << n) >> 16;
+    k += (int32_t)n;
+    s = ak * ak;
+    x = s + bk * bk; /* in [2^30, 2^33): the carry out of 32 bits is bit 32 */
+    if (x < s)
+        mk = fresnel_i_fast_sqrt32((x >> 2) | 0x40000000u) << 1;
+    else
+        mk = fresnel_i_fast_sqrt32(x); /* m = mk 2^-k, mk < 2^16.5 */
+    /* B = sqrt((m + |A|)/2) = s 2^-eb2; u = B for A >= 0, (b/2)/B for A < 0 */
+    x = mk + ak;
+    e = 15 - (int32_t)((x >> 16) != 0) - (int32_t)((x >> 17) != 0);
+    e += (k + 1 + e) & 1;
+    s = fresnel_i_fast_sqrt32(x << e);
+    eb2 = (k + 1 + e) >> 1;
+    if (!neg) {
+        um = s;
+        eu = eb2;
+    } else { /* u B = eta kappa: H B = 2 c eta kappa, at the scale of G B 2^(eb2-16) */
+        um = (uint32_t)p->bm;
+        eu = p->be + 17 - eb2;
+    }
+    /* the scale 2^-e of the denominators: m < 2^29.5, c^2 <= 2^30 */
+    e = k + 13 < 30 ? k + 13 : 30;
+    me = fresnel_i_fast_shift(mk, e - k);
+    c2e = c2 >> (30 - e);
+    he = fresnel_i_fast_shift(c * um, e - 14 - eu); /* H = 2 c u */
+    g = me + c2e;
+    if (neg)
+        g = fresnel_i_fast_mul16(g, s);
+    ds = g + he;
+    ns = g > he ? g - he : 0u;
+    n = fresnel_i_fast_lz(ds);
+    ds = (ds << n) >> 16;
+    ns = (ns << n) >> 16;
+    /* G2 = c^2 m + s^4 and H s^2 = H (1 - c)(1 + c) */
+    x = fresnel_i_fast_mul15(fresnel_i_fast_mul15(32768u * 32768u - c2, 32768u + c), 32768u - c); /* s^4 in Q30 */
+    g = fresnel_i_fast_shift(((mk * c) >> 15) * c, e - k - 15) + (x >> (30 - e)); /* mk c^2 < 2^32 */
+    if (neg)
+        g = fresnel_i_fast_mul16(g, s);
+    he = fresnel_i_fast_mul15(fresnel_i_fast_mul15(he, 32768u - c), 32768u + c);
+    dp = g + he;
+    np = g > he ? g - he : 0u;
+    n = fresnel_i_fast_lz(dp);
+    dp = (dp << n) >> 16;
+    np = (np << n) >> 16;
+    /* F = Rs (1 + P)/2 = Ns (Dp + Np) / (2 Ds Dp), one reciprocal */
+    x = ds * dp;
+    np = ns * ((dp + np) >> 1);
+    n = 15u + (x >> 31);
+    x >>= n;
+    np >>= n;
+    x = ((np * fresnel_i_fast_recip16(x)) >> 1) + 16384u;
+    return (fresnel_q15)(x >> 30 ? 32768u : x >> 15);
 }
 
 #endif /* FRESNEL_HAS_FIXED: fast paths */

@@ -8,7 +8,8 @@
 #   cross.sh check                     toolchains and emulators present?
 #   cross.sh nm                        fixed-point-only Cortex-M0 build: symbol checks
 #   cross.sh conform TARGET STRIDE     conformance run vs the host, bit for bit
-#   cross.sh count TARGET              instructions per call (qemu trace)
+#   cross.sh count TARGET              instructions per call (qemu trace); on
+#                                      m0 also cycles (1- and 32-cycle MULS)
 #   cross.sh size                      .text/.rodata per model, type and target
 #
 # TARGET is m0 (qemu -M microbit, Cortex-M0), m4f (qemu -M mps2-an386,
@@ -160,7 +161,7 @@ cmd_nm() {
     fi
 }
 
-cmd_count() { # target [float]: name<TAB>mean<TAB>min<TAB>max on stdout
+cmd_count() { # target [float]: name<TAB>mean<TAB>min<TAB>max on stdout (m0: + cycles, ports/count.sh)
     t=$1
     if [ "${2:-}" = float ]; then
         # binary32 and binary16 runtimes with newlib's libm (Cortex-M only)
@@ -175,8 +176,11 @@ cmd_count() { # target [float]: name<TAB>mean<TAB>min<TAB>max on stdout
     rv32) $RUN -singlestep -d exec,nochain -D "$OUT/$t/trace.log" "$OUT/$t/bench_1.elf" >"$OUT/$t/bench.txt" ;;
     *) $RUN "$OUT/$t/bench_1.elf" -singlestep -d exec,nochain -D "$OUT/$t/trace.log" >"$OUT/$t/bench.txt" ;;
     esac
-    sh ports/count.sh "$NMT" "$OUT/$t/bench_1.elf" "$OUT/$t/trace.log" "$OUT/$t/bench.txt"
-    rm -f "$OUT/$t/trace.log" "$OUT/$t/trace.log.names"
+    # cycles from the Cortex-M0's timings: on the m0 build only
+    od=""
+    [ "$t" = m0 ] && od=arm-none-eabi-objdump
+    sh ports/count.sh "$NMT" "$OUT/$t/bench_1.elf" "$OUT/$t/trace.log" "$OUT/$t/bench.txt" $od
+    rm -f "$OUT/$t/trace.log" "$OUT/$t/trace.log.names" "$OUT/$t/trace.log.isa"
 }
 
 # The runtime of one type compiled once per target into an archive, so

@@ -38,6 +38,7 @@ all   file /usr/share/vulkan/icd.d/lvp_icd.x86_64.json mesa-vulkan-drivers
 all   cmd  chromium                 chromium
 cross cmd  arm-none-eabi-gcc        gcc-arm-none-eabi
 cross cmd  arm-none-eabi-nm         binutils-arm-none-eabi
+cross cmd  arm-none-eabi-objdump    binutils-arm-none-eabi
 cross dir  /usr/lib/arm-none-eabi/newlib libnewlib-arm-none-eabi
 cross cmd  riscv64-unknown-elf-gcc  gcc-riscv64-unknown-elf
 cross cmd  riscv64-unknown-elf-nm   binutils-riscv64-unknown-elf

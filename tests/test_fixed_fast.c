@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "1_spectral/spectral.h"
 #include "fixed_materials.h"
 #include "3_encode/fixed_params.h"
 #include "3_encode/encode.h"
@@ -217,6 +218,92 @@ static void check_lut_pl(const test_material *mat, int nmat)
                 bad);
 }
 
+/* fresnel_conductor_q15_fast over its documented domain: eta on a
+ * geometric grid (ratio 1.06) from FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST to
+ * FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST, kappa at 0, 1e-8 .. 1e-3 and 24
+ * values up to FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST, every pair in the
+ * domain (kappa >= 0.1 below FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST,
+ * |eta^2 - kappa^2 - 1 + 2i eta kappa| >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST); every
+ * material of data/ at every 10 nm from 380 to 780 nm; and the test
+ * materials inside the domain. Every cos code, against ref_conductor at the
+ * double eta, kappa the constants were made from. */
+static int conductor_in_domain(double eta, double kappa)
+{
+    return eta >= FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST && eta <= FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST && kappa >= 0.0 &&
+           (kappa >= 0.1 || eta >= FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST) &&
+           kappa <= FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST &&
+           hypot(eta * eta - kappa * kappa - 1.0, 2.0 * eta * kappa) >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST;
+}
+
+static void conductor_curve(worst *w, long *bad, long *n, double eta, double kappa, const char *what)
+{
+    fresnel_conductor_prep_q15 p;
+    char where[96];
+    int32_t c;
+    fixed_conductor_fast(eta, kappa, &p);
+    snprintf(where, sizeof where, "%.40s eta %.6g kappa %.6g", what, eta, kappa);
+    for (c = 0; c <= ONE; c++) {
+        int32_t got = fresnel_conductor_q15_fast(&p, c);
+        *bad += got < 0 || got > ONE;
+        note_worst(w, fabs(got / 32768.0 - ref_conductor(eta, kappa, c / 32768.0)) * 32768.0, where, c);
+    }
+    ++*n;
+}
+
+static void check_conductor(const test_material *mat, int nmat)
+{
+    static const double kappas[] = {0.0, 1e-8, 1e-6, 1e-4, 1e-3, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7,
+                                    1.0, 1.5, 2.0, 3.0, 4.0, 5.0, 6.0, 8.0, 10.0, 12.0, 14.0, 16.0};
+    static material_info info[128];
+    static spectrum sp;
+    worst grid, data;
+    long bad = 0, ngrid = 0, ndata = 0;
+    double eta;
+    int i, j, nid;
+    memset(&grid, 0, sizeof grid);
+    memset(&data, 0, sizeof data);
+    for (eta = FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST;; eta *= 1.06) {
+        if (eta > FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST)
+            eta = FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST;
+        for (j = 0; j < (int)(sizeof kappas / sizeof kappas[0]); j++)
+            if (conductor_in_domain(eta, kappas[j]))
+                conductor_curve(&grid, &bad, &ngrid, eta, kappas[j], "grid");
+        if (eta == FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST)
+            break;
+    }
+    for (i = 0; i < nmat; i++)
+        if (conductor_in_domain(mat[i].eta, mat[i].kappa))
+            conductor_curve(&grid, &bad, &ngrid, mat[i].eta, mat[i].kappa, mat[i].name);
+    nid = material_list(data_dir(NULL), info, (int)(sizeof info / sizeof info[0]));
+    for (i = 0; i < nid; i++) {
+        int wl;
+        if (spectrum_load(data_dir(NULL), info[i].id, &sp))
+            continue;
+        for (wl = 380; wl <= 780; wl += 10) {
+            int at = (int)((wl - SPEC_LO_NM) / SPEC_STEP_NM + 0.5);
+            char what[48];
+            snprintf(what, sizeof what, "%.31s %d nm", info[i].id, wl);
+            if (conductor_in_domain(sp.n[at], sp.k[at]))
+                conductor_curve(&data, &bad, &ndata, sp.n[at], sp.k[at], what);
+        }
+    }
+    printf("NOTE fixed fast exact conductor: %ld grid and test materials, %ld data/ materials x wavelengths, every cos code\n",
+           ngrid, ndata);
+    CHECK("fixed fast exact conductor: every material of data/ loads", nid >= 10 && ndata >= 10 * 41,
+          "%d materials, %ld curves", nid, ndata);
+    check_bound("exact conductor, domain grid", &grid, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+    check_bound("exact conductor, data/ 380-780 nm", &data, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+    {
+        fresnel_conductor_prep_q15 p;
+        fixed_conductor_fast(1.0, 0.0, &p);
+        CHECK("fixed fast exact conductor: the matched index reflects 0 at every c, c = 0 included",
+              fresnel_conductor_q15_fast(&p, 0) == 0 && fresnel_conductor_q15_fast(&p, 1) == 0 &&
+                  fresnel_conductor_q15_fast(&p, ONE) == 0,
+              "%d %d %d", fresnel_conductor_q15_fast(&p, 0), fresnel_conductor_q15_fast(&p, 1),
+              fresnel_conductor_q15_fast(&p, ONE));
+    }
+}
+
 static void check_schlick_rgb(void)
 {
     int32_t c, ok = 1;
@@ -243,5 +330,6 @@ int main(void)
     check_lut(mat, nmat);
     check_schlick_rgb();
     check_lut_pl(mat, nmat);
+    check_conductor(mat, nmat);
     return harness_exit();
 }

@@ -76,6 +76,47 @@ void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out)
     out->inv_eta2 = fixed_qf(1.0 / (eta * eta));
 }
 
+void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *out)
+{
+    double eh, el, d, x, hi = 0.0, b;
+    int s, k;
+    eta = eta_dom(eta);
+    kappa = kappa_dom(kappa);
+    eh = eta * eta;
+    el = fma(eta, eta, -eh);
+    d = ((eh - 1.0) + el) - kappa * kappa;
+    b = 2.0 * eta * kappa;
+    /* the smallest shift whose rounded a0 keeps a0 + [0, 2^(30-s)] in int32,
+     * and b 2^(30-s) too */
+    for (s = 0; s < 30; s++) {
+        hi = floor(d * ldexp(1.0, 30 - s) + 0.5);
+        if (hi >= -2147483647.0 && hi + ldexp(1.0, 30 - s) <= 2147483647.0 && b * ldexp(1.0, 30 - s) < 2147483647.0)
+            break;
+    }
+    x = d * ldexp(1.0, 30 - s);
+    hi = floor(x + 0.5);
+    out->shift = s;
+    out->a0 = (int32_t)hi;
+    out->a0_lo = (int32_t)floor((x - hi) * 65536.0 + 0.5);
+    out->b1 = (int32_t)floor(b * ldexp(1.0, 30 - s) + 0.5);
+    x = floor(b * ldexp(1.0, 46 - s) + 0.5);
+    out->b2 = out->b1 < 32768 ? (int32_t)x : 0;
+    out->span = out->b1 < 32768 ? 65534u : 0u; /* the two-word A only where b is small too */
+    if (b > 0.0) {
+        double f = frexp(b, &k); /* [0.5, 1) */
+        double m = floor(f * 65536.0 + 0.5);
+        if (m >= 65536.0) {
+            m = 32768.0;
+            k++;
+        }
+        out->bm = (int32_t)m;
+        out->be = 16 - k;
+    } else {
+        out->bm = 0;
+        out->be = 255;
+    }
+}
+
 void fixed_nk(double n, double k, fresnel_nk_prep_q15 *out)
 {
     n = eta_dom(n);

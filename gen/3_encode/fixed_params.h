@@ -6,12 +6,15 @@
 #define FRESNEL_FIXED_PARAMS_H
 
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 
 fresnel_qf fixed_qf(double x);          /* x >= 0; 0 for x <= 0 or NaN */
 int32_t fixed_q15(double x);            /* round(x 32768), x clamped to [0, 65535/32768] (Q15 headroom) */
 fresnel_q16 fixed_q16(double x);        /* round(x 65536), clamped to int32 */
 /* eta, kappa relative to the incident medium, clamped like fresnel.h. */
 void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out);
+/* fresnel_conductor_q15_fast's constants (fresnel_fixed_fast.h layout). */
+void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *out);
 void fixed_nk(double n, double k, fresnel_nk_prep_q15 *out);
 void fixed_lsk(double n, double k, double a, double alpha, fresnel_lsk_prep_q15 *out);
 double fixed_qf_value(fresnel_qf x);    /* m 2^e */

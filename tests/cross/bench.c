@@ -3,13 +3,15 @@
  * program calls port_mark, whose address the trace parser looks for; the
  * instructions between two marks are one call plus the loop around it,
  * which the first row (a function that returns its argument) measures and
- * the parser subtracts. 33 cosines, 0 to 1 in steps of 1/32, for copper at
- * 550 nm; the LUTs use their 64-node gold table. The program prints the
- * row names in order. */
+ * the parser subtracts. Each row runs over the materials and cosine sets of
+ * conform.h (conform_bench_materials x conform_bench_cos: copper,
+ * aluminium and BK7 at 550 nm; 17 cosines uniform in c, uniform in the
+ * angle and near grazing incidence); the LUTs use their 64-node gold table
+ * whatever the material. The program prints the number of calls per row
+ * after BENCH, then the row names in order. */
 #include "fixed_models.h"
 #include "port.h"
 
-#define BENCH_CODES 33
 
 volatile uint32_t bench_sink;
 
@@ -19,16 +21,19 @@ static fresnel_q15 e_none(const conform_material *m, int32_t c)
     return (fresnel_q15)c;
 }
 
-static void run(const char *name, fixed_eval fn, const conform_material *m)
+static void run(const char *name, fixed_eval fn)
 {
-    int k;
+    int i, j, k;
+    uint32_t calls = 0;
     port_puts(name);
     port_puts("\n");
-    for (k = 0; k < BENCH_CODES; k++) {
-        port_mark((uint32_t)k);
-        bench_sink += fn(m, k * 1024);
-    }
-    port_mark(BENCH_CODES);
+    for (i = 0; i < CONFORM_BENCH_MATERIALS; i++)
+        for (j = 0; j < CONFORM_BENCH_SETS; j++)
+            for (k = 0; k < CONFORM_BENCH_CODES; k++) {
+                port_mark(calls++);
+                bench_sink += fn(&conform_materials[conform_bench_materials[i]], conform_bench_cos[j][k]);
+            }
+    port_mark(calls);
 }
 
 /* The run-time preparation, one call per "code" as well. */
@@ -49,14 +54,15 @@ static fresnel_q15 e_gulbrandsen_nk(const conform_material *m, int32_t c)
 
 int main(void)
 {
-    const conform_material *m = &conform_materials[conform_bench_material];
     int i;
-    port_puts("BENCH\n");
-    run("(loop)", e_none, m);
+    port_puts("BENCH ");
+    port_put_dec(CONFORM_BENCH_MATERIALS * CONFORM_BENCH_SETS * CONFORM_BENCH_CODES);
+    port_puts("\n");
+    run("(loop)", e_none);
     for (i = 0; i < FIXED_MODEL_COUNT; i++)
-        run(fixed_models[i].name, fixed_models[i].fn, m);
-    run("fresnel_ior_prepare_q15", e_ior_prepare, m);
-    run("fresnel_gulbrandsen_nk_q15", e_gulbrandsen_nk, m);
+        run(fixed_models[i].name, fixed_models[i].fn);
+    run("fresnel_ior_prepare_q15", e_ior_prepare);
+    run("fresnel_gulbrandsen_nk_q15", e_gulbrandsen_nk);
     port_puts("END\n");
     return 0;
 }

@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "fresnel_fixed.h"
+#include "fresnel_fixed_fast.h"
 
 typedef struct conform_material {
     int32_t f0, f82, f90, r, g; /* Q15 codes */
@@ -17,11 +18,22 @@ typedef struct conform_material {
     fresnel_lsk_prep_q15 lsk;
     fresnel_q16 eta, kappa; /* Q16.16, for the run-time *_prepare functions */
     int32_t f82_a;          /* fresnel_f82_q15_fast's a_q12 */
+    fresnel_conductor_prep_q15 cfast; /* fresnel_conductor_q15_fast's constants */
 } conform_material;
 
 extern const conform_material conform_materials[];
 extern const int conform_material_count;
 extern const int conform_bench_material; /* index of copper at 550 nm */
+/* The instruction and cycle counts' materials (copper, aluminium -- a high
+ * kappa -- and BK7 -- kappa ~ 0 -- at 550 nm) and cosine sets (Q15 codes:
+ * uniform in c, uniform in the angle, near grazing incidence). */
+#define CONFORM_BENCH_MATERIALS 3
+#define CONFORM_BENCH_SETS 3
+#define CONFORM_BENCH_CODES 17
+extern const int conform_bench_materials[CONFORM_BENCH_MATERIALS];
+extern const char *const conform_bench_material_names[CONFORM_BENCH_MATERIALS];
+extern const int32_t conform_bench_cos[CONFORM_BENCH_SETS][CONFORM_BENCH_CODES];
+extern const char *const conform_bench_set_names[CONFORM_BENCH_SETS];
 /* copper at 550 nm for the binary32 and binary16 benchmarks: eta, kappa,
  * F0, F82, LSK a, alpha, Gulbrandsen r, g */
 extern const float conform_bench_float[8];

@@ -5,6 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
+#include "cross/conform.h"
 #include "fixed_materials.h"
 #include "3_encode/fixed_params.h"
 #include "model/registry.h"
@@ -33,6 +34,7 @@ int main(void)
     for (k = 0; k < n; k++) {
         model_params mp;
         model_fixed mf;
+        fresnel_conductor_prep_q15 cf;
         model_derive(mat[k].eta, mat[k].kappa, 1.0, 1.0, 5.0, &mp);
         model_params_round_fixed(&mp);
         model_fixed_from_params(&mp, &mf);
@@ -48,14 +50,42 @@ int main(void)
         qf("nk2", mf.gnk.nk2);
         printf("}, .lsk = {%uu, {%uu, %d}, %d},", (unsigned)mf.lsk.f0, (unsigned)mf.lsk.a.m, (int)mf.lsk.a.e,
                (int)mf.lsk.alpha);
-        printf(" .eta = %d, .kappa = %d, .f82_a = %d},\n", (int)fixed_q16(mat[k].eta), (int)fixed_q16(mat[k].kappa),
-               (int)fixed_f82_a_q12(mf.f0, mf.f82));
+        fixed_conductor_fast(mat[k].eta, mat[k].kappa, &cf);
+        printf(" .eta = %d, .kappa = %d, .f82_a = %d, .cfast = {%d, %d, %d, %d, %d, %d, %d, %uu}},\n",
+               (int)fixed_q16(mat[k].eta), (int)fixed_q16(mat[k].kappa), (int)fixed_f82_a_q12(mf.f0, mf.f82), (int)cf.a0,
+               (int)cf.a0_lo, (int)cf.shift, (int)cf.b1, (int)cf.b2, (int)cf.bm, (int)cf.be, (unsigned)cf.span);
         if (!strcmp(mat[k].name, "cu 550")) {
             bench = k;
             bench_mp = mp;
         }
     }
     printf("};\nconst int conform_material_count = %d;\nconst int conform_bench_material = %d;\n\n", n, bench);
+    {
+        static const char *const names[CONFORM_BENCH_MATERIALS] = {"cu 550", "al 550", "bk7 550"};
+        int b, j;
+        printf("const int conform_bench_materials[CONFORM_BENCH_MATERIALS] = {");
+        for (b = 0; b < CONFORM_BENCH_MATERIALS; b++) {
+            for (j = 0; j < n && strcmp(mat[j].name, names[b]); j++)
+                ;
+            if (j == n)
+                return 1;
+            printf("%d, ", j);
+        }
+        printf("};\nconst char *const conform_bench_material_names[CONFORM_BENCH_MATERIALS] = {\"cu 550\", \"al 550\", "
+               "\"bk7 550\"};\n");
+        printf("const char *const conform_bench_set_names[CONFORM_BENCH_SETS] = {\"uniform in c\", \"uniform in angle\", "
+               "\"near grazing (c <= 1/32)\"};\n");
+        printf("const int32_t conform_bench_cos[CONFORM_BENCH_SETS][CONFORM_BENCH_CODES] = {{");
+        for (j = 0; j < CONFORM_BENCH_CODES; j++) /* c = j/16 */
+            printf("%d, ", j * 2048);
+        printf("}, {");
+        for (j = 0; j < CONFORM_BENCH_CODES; j++) /* theta = j 90/16 degrees */
+            printf("%d, ", (int)floor(32768.0 * cos(j * 3.14159265358979323846 / 32.0) + 0.5));
+        printf("}, {");
+        for (j = 0; j < CONFORM_BENCH_CODES; j++) /* c = j/512 */
+            printf("%d, ", j * 64);
+        printf("}};\n\n");
+    }
     printf("const float conform_bench_float[8] = {%.9gf, %.9gf, %.9gf, %.9gf, %.9gf, %.9gf, %.9gf, %.9gf};\n\n",
            bench_mp.eta, bench_mp.kappa, bench_mp.f0, bench_mp.f82, bench_mp.a, bench_mp.alpha, bench_mp.r, bench_mp.g);
     /* gold at 550 nm */

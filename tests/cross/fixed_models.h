@@ -98,6 +98,12 @@ static fresnel_q15 e_lut_u16_pl_fast(const conform_material *m, int32_t c)
     (void)m;
     return fresnel_lut_pl_u16_q15_fast(conform_lut_u16[0], CONFORM_LUT_N, c);
 }
+/* every test material, also outside the fast path's documented domain: the
+ * targets must give the host's results bit for bit all the same */
+static fresnel_q15 e_conductor_fast(const conform_material *m, int32_t c)
+{
+    return fresnel_conductor_q15_fast(&m->cfast, c);
+}
 typedef struct fixed_model {
     const char *name;
     fixed_eval fn;
@@ -130,6 +136,7 @@ static const fixed_model fixed_models[] = {
     {"f82 fast", e_f82_fast, 1},
     {"lut u16 fast", e_lut_u16_fast, 0},
     {"lut u16 pl fast", e_lut_u16_pl_fast, 0},
+    {"exact-conductor fast", e_conductor_fast, 1},
 };
 #define FIXED_MODEL_COUNT ((int)(sizeof fixed_models / sizeof fixed_models[0]))
 
