@@ -29,7 +29,6 @@
 #include "1_spectral/spectral.h"
 
 typedef enum gamut_policy { GAMUT_MAP, GAMUT_CLIP, GAMUT_KEEP } gamut_policy;
-extern const char *const gamut_policy_names[]; /* "map", "clip", "keep", NULL */
 /* Node angles of the map policy: theta_k = k 90 / (GAMUT_NODES - 1) degrees. */
 #define GAMUT_NODES 181
 

@@ -21,8 +21,6 @@
 #include "1_spectral/colour_difference.h"
 #include "2_derive/derive.h"
 
-const char *const gamut_policy_names[] = {"map", "clip", "keep", NULL};
-
 static const double deg = 3.14159265358979323846 / 180.0;
 
 static double de_to(const lab_space *ls, const double target_lab[3], const double rgb[3])

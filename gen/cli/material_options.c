@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "cli/cli.h"
+#include "scene/scene.h"
 
 const char material_options_help[] =
     "  --material ID   material id (fresnel materials lists them); this or --nk is required\n"

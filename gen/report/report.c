@@ -15,6 +15,7 @@
 #include "model/reference.h"
 #include "model/registry.h"
 #include "report/report.h"
+#include "scene/scene.h"
 
 #define WHERE "fresnel report"
 #define hoffman report_hoffman

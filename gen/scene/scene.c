@@ -17,6 +17,7 @@
 const char *const scene_type_names[] = {"f32", "q15", NULL};
 const char *const scene_lut_spacing_names[] = {"uniform", "grazing", "grazing-pl", NULL};
 const char *const scene_f_avg_names[] = {"no", "yes", NULL};
+const char *const gamut_policy_names[] = {"map", "clip", "keep", NULL};
 
 enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
                  KEY_LUT_SPACING, KEY_NAME, KEY_GAMUT, KEY_F_AVG, KEY_COUNT };

@@ -101,6 +101,7 @@
 extern const char *const scene_type_names[];
 extern const char *const scene_lut_spacing_names[];
 extern const char *const scene_f_avg_names[]; /* "no", "yes" */
+extern const char *const gamut_policy_names[]; /* "map", "clip", "keep", NULL: in gamut_policy's order */
 
 typedef struct scene {
     /* Line of the file where each key was set; 0 where the default applies. */
