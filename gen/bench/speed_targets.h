@@ -24,6 +24,7 @@ typedef struct speed_target {
     const char *id, *num, *den;
     const char *what; /* what is compared, for the report's row */
     double goal[SPEED_FLAGSETS];
+    const char *tried; /* for a miss: what was tried, and where the time goes (NULL: nothing to say) */
 } speed_target;
 extern const speed_target speed_targets[];
 extern const int speed_target_count;

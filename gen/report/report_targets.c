@@ -231,7 +231,7 @@ static void host_speed_targets(const report_run *r, FILE *f)
     n = bench_target_errors(rows, BENCH_TARGET_ROWS);
     for (t = 0; t < speed_target_count; t++) {
         const speed_target *g = &speed_targets[t];
-        char goal[96], text[1024] = "", what[256];
+        char goal[96], text[2048] = "", what[256];
         int measured = 0, missed = 0;
         double en = row_error(rows, n, g->num), ed = row_error(rows, n, g->den);
         snprintf(goal, sizeof goal, "<= %gx at %s, <= %gx at %s (one process, median over interleaved rounds)",
@@ -266,6 +266,10 @@ static void host_speed_targets(const report_run *r, FILE *f)
                 snprintf(text + len, sizeof text - len, "; %s: %.2fx (no goal at this flag set)", r->speed[i]->opt,
                          q->med);
         }
+        if (missed && g->tried) {
+            size_t len = strlen(text);
+            snprintf(text + len, sizeof text - len, "; tried: %s", g->tried);
+        }
         if (!isnan(en) && !isnan(ed)) {
             size_t len = strlen(text);
             snprintf(text + len, sizeof text - len, "; largest error %s %.1e, %s %.1e (fresnel bench --targets)",
@@ -278,10 +282,11 @@ static void host_speed_targets(const report_run *r, FILE *f)
 
 /* ---- Cortex-M0 (make cross-count, make size output) */
 
-/* Mean instructions of row `name` in the "== m0 fixed point" section: the
- * row is the name, spaces, then the instructions' mean, min and max (and
- * the cycles' after them). NaN when absent. */
-double report_m0_count(const char *path, const char *name)
+/* Column col of row `name` in the "== m0 fixed point" section: the row is
+ * the name, spaces, then the instructions' mean, min and max (columns 0-2)
+ * and the cycles' with a 1-cycle (3-5) and a 32-cycle multiplier (6-8).
+ * NaN when absent. */
+static double m0_column(const char *path, const char *name, int col)
 {
     FILE *in = fopen(path, "r");
     char line[512];
@@ -294,15 +299,24 @@ double report_m0_count(const char *path, const char *name)
         if (!strncmp(line, "== ", 3))
             in_m0 = !strncmp(line, "== m0 fixed point", 17);
         else if (in_m0 && !strncmp(line, name, len) && line[len] == ' ') {
-            char *end;
-            double x = strtod(line + len, &end);
-            if (end != line + len)
-                v = x;
+            char *p = line + len, *end;
+            double x = NAN;
+            int k;
+            for (k = 0; k <= col; k++, p = end) {
+                x = strtod(p, &end);
+                if (end == p) {
+                    x = NAN;
+                    break;
+                }
+            }
+            v = x;
         }
     }
     fclose(in);
     return v;
 }
+
+double report_m0_count(const char *path, const char *name) { return m0_column(path, name, 0); }
 
 /* The numbers after ".text " and ".rodata " on the line starting with
  * prefix; -1 when absent. */
@@ -361,6 +375,18 @@ static void m0_targets(const report_run *r, FILE *f)
         else
             target(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (library function %.0f)",
                    fast, lib);
+    }
+    { /* the exact conductor's fast path: its worst call, its cycles and its bound as well */
+        const char *row = counts[4].row;
+        double mx = m0_column(r->cross_path, row, 2);
+        if (!isnan(mx))
+            target(f, "Cortex-M0 fixed point, exact conductor fast path: the slowest call, cycles, error",
+                   "<= 300 instructions at <= 4 LSB", mx <= 300 && FRESNEL_BOUND_CONDUCTOR_Q15_FAST <= 4 ? PASS : MISS,
+                   "%.0f instructions at most; cycles mean %.0f (max %.0f) with a 1-cycle multiplier, %.0f (max %.0f) "
+                   "with a 32-cycle one; error <= %.1f LSB (FRESNEL_BOUND_CONDUCTOR_Q15_FAST, tests/test_fixed_fast.c)",
+                   mx, m0_column(r->cross_path, row, 3), m0_column(r->cross_path, row, 5),
+                   m0_column(r->cross_path, row, 6), m0_column(r->cross_path, row, 8),
+                   FRESNEL_BOUND_CONDUCTOR_Q15_FAST);
     }
     size_line(r->size_path, "schlick-only fixed scene:", &t, &ro, &mt, &mr);
     if (t >= 0)
