@@ -136,6 +136,15 @@ typedef struct fresnel_ior_prep_q15 {
     fresnel_qf b, n4, t1_inv, inv_eta2;
 } fresnel_ior_prep_q15;
 
+/* fresnel_conductor_q15_fast's constants (fresnel_fixed_fast.h, beside the
+ * function, gives each field's value; `fresnel gen` emits them as
+ * <prefix>_ior_fast_q15). */
+typedef struct fresnel_conductor_prep_q15 {
+    int32_t a0, a0_lo, shift;
+    int32_t b1, b2, bm, be;
+    uint32_t span;
+} fresnel_conductor_prep_q15;
+
 typedef struct fresnel_nk_prep_q15 {
     fresnel_qf n, nk2;
 } fresnel_nk_prep_q15;

@@ -27,7 +27,8 @@
  *   as that many nodes; with n a compile-time constant these tests fold
  *   away). The table must hold min(n, that maximum) entries. The exact
  *   conductor: c in [0, one], and constants made by fixed_conductor_fast
- *   from an eta, kappa inside its domain (FRESNEL_CONDUCTOR_*_Q15_FAST).
+ *   (`fresnel gen` emits them as <prefix>_ior_fast_q15) from an eta, kappa
+ *   inside its domain (FRESNEL_CONDUCTOR_*_Q15_FAST).
  * RESULTS are in [0, FRESNEL_ONE_Q15] for every input that meets them; a
  * LUT's in [0, max(FRESNEL_ONE_Q15, its largest entry)].
  * ERROR BOUNDS (LSB of Q15, FRESNEL_BOUND_*_Q15_FAST) bound
@@ -259,9 +260,12 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *tabl
 
 /* ------------------------------------------------ exact conductor, fast path */
 
-/* Prepared constants of fresnel_conductor_q15_fast, made on the host from
- * double eta, kappa (fixed_conductor_fast in gen/3_encode/fixed_params.c
- * is the reference of this layout):
+/* Prepared constants of fresnel_conductor_q15_fast (the struct is in
+ * fresnel_fixed.h), made on the host from double eta, kappa:
+ * fixed_conductor_fast in gen/3_encode/fixed_params.c is the reference of
+ * this layout, and `fresnel gen` emits <prefix>_ior_fast_q15[3] for a scene
+ * with the exact model in q15 whose three channels lie in the domain below
+ * (else a comment names the channel outside it):
  *   D = eta^2 - kappa^2 - 1 (eta^2 in two doubles), b = 2 eta kappa;
  *   shift = the smallest s such that a0 + [0, 2^(30-s)] fits int32 and
  *   b 2^(30-s) < 2^31, where a0 = round(D 2^(30-s)) and
@@ -283,11 +287,8 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *tabl
 #define FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST 16.0
 #define FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST 0.07 /* for kappa < 0.1 */
 #define FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST 0.001
-typedef struct fresnel_conductor_prep_q15 {
-    int32_t a0, a0_lo, shift;
-    int32_t b1, b2, bm, be;
-    uint32_t span;
-} fresnel_conductor_prep_q15;
+/* fresnel_conductor_prep_q15 is declared in fresnel_fixed.h, so that a
+ * generated header can hold its constants without this header. */
 
 /* round(2^12 sqrt(j)) for j = 64..256, and round(2^23 / j) for j = 128..256. */
 static const uint32_t fresnel_i_fast_sq[193] = {

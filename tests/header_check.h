@@ -12,6 +12,11 @@
  *                         |a0_lo| <= 2^29, each qf {0, 0} or m in [2^30, 2^31)
  *   fresnel_nk_prep_q15        qf n, nk2
  *   fresnel_lsk_prep_q15       f0 in [0, 2^30], qf a, alpha in [0, FRESNEL_ALPHA_MAX_Q16]
+ *   fresnel_conductor_prep_q15 a0, a0_lo, shift, b1, b2, bm, be, span
+ *                         (fresnel_fixed_fast.h): shift in [0, 30], a0 +
+ *                         2^(30 - shift) in int32, |a0_lo| <= 2^15, b1, b2
+ *                         in [0, 2^31), bm 0 (be 255) or in [2^15, 2^16),
+ *                         span 0 or 65534
  *   enum NAME_frac        a residual table's fraction bits, [14, 30]
  * and each initialiser has exactly as many values as its type and length
  * need. Any other declared type is an error, so a new emitted type must be
@@ -64,7 +69,8 @@ static inline int hc_fields(const char *type, int *is_float)
         int fields, is_float;
     } t[] = {{"float", 1, 1},   {"fresnel_rgb", 3, 1},      {"fresnel_rgb_q15", 3, 0},
              {"uint16_t", 1, 0}, {"int16_t", 1, 0},          {"int32_t", 1, 0},
-             {"fresnel_ior_prep_q15", 11, 0}, {"fresnel_nk_prep_q15", 4, 0}, {"fresnel_lsk_prep_q15", 4, 0}};
+             {"fresnel_ior_prep_q15", 11, 0}, {"fresnel_nk_prep_q15", 4, 0}, {"fresnel_lsk_prep_q15", 4, 0},
+             {"fresnel_conductor_prep_q15", 8, 0}};
     size_t i;
     for (i = 0; i < sizeof t / sizeof t[0]; i++)
         if (!strcmp(t[i].type, type)) {
@@ -112,6 +118,20 @@ static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
             hc_fail(h, "%s %s: a0_lo %.17g not in [-2^29, 2^29]", t, d->name, v[1]);
         for (i = 3; i < 11; i += 2)
             hc_qf(h, d, v + i);
+    } else if (!strcmp(t, "fresnel_conductor_prep_q15")) {
+        if (!hc_in(v[2], 0.0, 30.0))
+            hc_fail(h, "%s %s: shift %.17g not in [0, 30]", t, d->name, v[2]);
+        else if (!hc_in(v[0] + ldexp(1.0, 30 - (int)v[2]), -2147483648.0, 2147483647.0) ||
+                 !hc_in(v[0], -2147483648.0, 2147483647.0))
+            hc_fail(h, "%s %s: a0 %.17g + 2^(30 - shift) not an int32_t", t, d->name, v[0]);
+        if (!hc_in(v[1], -32768.0, 32768.0))
+            hc_fail(h, "%s %s: a0_lo %.17g not in [-2^15, 2^15]", t, d->name, v[1]);
+        if (!hc_in(v[3], 0.0, 2147483647.0) || !hc_in(v[4], 0.0, 2147483647.0))
+            hc_fail(h, "%s %s: b1 %.17g or b2 %.17g not in [0, 2^31)", t, d->name, v[3], v[4]);
+        if (v[5] == 0.0 ? v[6] != 255.0 : !hc_in(v[5], 32768.0, 65535.0) || !hc_in(v[6], -64.0, 254.0))
+            hc_fail(h, "%s %s: bm %.17g, be %.17g: expected 0, 255 or bm in [2^15, 2^16)", t, d->name, v[5], v[6]);
+        if (v[7] != 0.0 && v[7] != 65534.0)
+            hc_fail(h, "%s %s: span %.17g not 0 or 65534", t, d->name, v[7]);
     } else if (!strcmp(t, "fresnel_nk_prep_q15")) {
         hc_qf(h, d, v);
         hc_qf(h, d, v + 2);

@@ -227,13 +227,7 @@ static void check_lut_pl(const test_material *mat, int nmat)
  * material of data/ at every 10 nm from 380 to 780 nm; and the test
  * materials inside the domain. Every cos code, against ref_conductor at the
  * double eta, kappa the constants were made from. */
-static int conductor_in_domain(double eta, double kappa)
-{
-    return eta >= FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST && eta <= FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST && kappa >= 0.0 &&
-           (kappa >= 0.1 || eta >= FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST) &&
-           kappa <= FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST &&
-           hypot(eta * eta - kappa * kappa - 1.0, 2.0 * eta * kappa) >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST;
-}
+#define conductor_in_domain fixed_conductor_fast_in_domain
 
 static void conductor_curve(worst *w, long *bad, long *n, double eta, double kappa, const char *what)
 {

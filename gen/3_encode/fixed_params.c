@@ -117,6 +117,14 @@ void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *
     }
 }
 
+int fixed_conductor_fast_in_domain(double eta, double kappa)
+{
+    return eta >= FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST && eta <= FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST && kappa >= 0.0 &&
+           (kappa >= 0.1 || eta >= FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST) &&
+           kappa <= FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST &&
+           hypot(eta * eta - kappa * kappa - 1.0, 2.0 * eta * kappa) >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST;
+}
+
 void fixed_nk(double n, double k, fresnel_nk_prep_q15 *out)
 {
     n = eta_dom(n);

@@ -15,6 +15,9 @@ fresnel_q16 fixed_q16(double x);        /* round(x 65536), clamped to int32 */
 void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out);
 /* fresnel_conductor_q15_fast's constants (fresnel_fixed_fast.h layout). */
 void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *out);
+/* 1 where eta, kappa lie in fresnel_conductor_q15_fast's documented domain
+ * (FRESNEL_CONDUCTOR_*_Q15_FAST), where its bound holds; else 0. */
+int fixed_conductor_fast_in_domain(double eta, double kappa);
 void fixed_nk(double n, double k, fresnel_nk_prep_q15 *out);
 void fixed_lsk(double n, double k, double a, double alpha, fresnel_lsk_prep_q15 *out);
 double fixed_qf_value(fresnel_qf x);    /* m 2^e */

@@ -122,6 +122,34 @@ static void emit_ior3(fx_out *o, const char *prefix, const char *name, const dou
     }
 }
 
+/* The fitted eta, kappa for the inline fast path, where every channel lies
+ * in its domain (its bound holds only there); else a comment says which
+ * channel does not. */
+static void emit_ior_fast3(fx_out *o, const char *prefix, const double *eta, const double *kappa)
+{
+    static const char *const channel[3] = {"red", "green", "blue"};
+    char id[160];
+    int ch;
+    snprintf(id, sizeof id, "%s_ior_fast_q15", prefix);
+    for (ch = 0; ch < 3; ch++)
+        if (!fixed_conductor_fast_in_domain(eta[ch], kappa[ch])) {
+            fprintf(o->f, "/* no %s: the %s channel's eta %.6g, kappa %.6g lie outside\n * fresnel_conductor_q15_fast's "
+                          "domain (fresnel_fixed_fast.h) */\n",
+                    id, channel[ch], eta[ch], kappa[ch]);
+            return;
+        }
+    fprintf(o->f, "/* the same eta, kappa for fresnel_conductor_q15_fast (fresnel_fixed_fast.h), one\n"
+                  " * channel per call; fields a0, a0_lo, shift, b1, b2, bm, be, span */\n"
+                  "static const fresnel_conductor_prep_q15 %s[3] FRESNEL_GEN_UNUSED = {\n",
+            id);
+    for (ch = 0; ch < 3; ch++) {
+        fresnel_conductor_prep_q15 q;
+        fixed_conductor_fast(eta[ch], kappa[ch], &q);
+        fprintf(o->f, "    {%ld, %ld, %ld, %ld, %ld, %ld, %ld, %lu}%s\n", (long)q.a0, (long)q.a0_lo, (long)q.shift,
+                (long)q.b1, (long)q.b2, (long)q.bm, (long)q.be, (unsigned long)q.span, ch < 2 ? "," : "\n};");
+    }
+}
+
 static void emit_nk3(fx_out *o, const char *prefix, const material_params *p)
 {
     char id[160];
@@ -270,8 +298,10 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
         emit_lsk3(&o, prefix, "lsk", p, 0);
     if (q15_reads & MQ_LSK_COMP)
         emit_lsk3(&o, prefix, "lsk_comp", p, 1);
-    if (q15_reads & MQ_IOR)
+    if (q15_reads & MQ_IOR) {
         emit_ior3(&o, prefix, "ior", p->eta_fit, p->kappa_fit, "eta, kappa fitted to the ground truth");
+        emit_ior_fast3(&o, prefix, p->eta_fit, p->kappa_fit);
+    }
     if (q15_reads & MQ_IOR_GAUSS)
         emit_ior3(&o, prefix, "ior_gaussian", p->eta_gauss, p->kappa_gauss, "Metzgar's Gaussian-window eta', kappa'");
     if (q15_reads & MQ_IOR_POINT)

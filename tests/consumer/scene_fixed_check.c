@@ -73,6 +73,21 @@ int main(void)
                                            fresnel_fx_cu_lut16_residual_frac, c),
           fresnel_lut_residual_rgb(fresnel_fx_cu_f0, fresnel_fx_cu_lut16_residual, 16, cf), lsb2);
     {
+        /* the exact conductor's inline fast path on the emitted constants:
+         * within its bound, plus 1 LSB for binary32's constants and rounding */
+        const double tol = (FRESNEL_BOUND_CONDUCTOR_Q15_FAST + 1.0) / 32768.0;
+        MODEL("au exact fast",
+              ((fresnel_rgb_q15){fresnel_conductor_q15_fast(&fresnel_fx_au_ior_fast_q15[0], c),
+                                 fresnel_conductor_q15_fast(&fresnel_fx_au_ior_fast_q15[1], c),
+                                 fresnel_conductor_q15_fast(&fresnel_fx_au_ior_fast_q15[2], c)}),
+              fresnel_conductor_rgb(fresnel_fx_au_eta, fresnel_fx_au_kappa, cf), tol);
+        MODEL("cu exact fast",
+              ((fresnel_rgb_q15){fresnel_conductor_q15_fast(&fresnel_fx_cu_ior_fast_q15[0], c),
+                                 fresnel_conductor_q15_fast(&fresnel_fx_cu_ior_fast_q15[1], c),
+                                 fresnel_conductor_q15_fast(&fresnel_fx_cu_ior_fast_q15[2], c)}),
+              fresnel_conductor_rgb(fresnel_fx_cu_eta, fresnel_fx_cu_kappa, cf), tol);
+    }
+    {
         /* the inline fast path with the emitted a: within its bound plus Q15 rounding of the parameters */
         const double lsb8 = 8.0 / 32768.0;
         MODEL("cu f82 fast",
