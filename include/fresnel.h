@@ -100,6 +100,11 @@
  *   with #error where the compiler says it is on (__FAST_MATH__,
  *   __FINITE_MATH_ONLY__); a vendoring user with such a global flag compiles
  *   src/f32/\*.c with -fno-fast-math (gcc, clang) or without it.
+ *   Nor with clang's -ffp-contract=fast, which disregards the pragma by which
+ *   src/f32/internal.h keeps a * b + c from being fused (the batches then
+ *   differ from fresnel_conductor_prepared in the last bit); every other
+ *   mode is fine: gcc's GNU modes and its -ffp-contract=fast are overridden
+ *   there, clang's default (on) honours the pragma.
  *
  * REFERENCES
  *   [Sch94]  C. Schlick, An inexpensive BRDF model for physically-based rendering, 1994.
@@ -328,8 +333,9 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  * The same formula, clamps and NaN policy as fresnel_conductor; results
  * within the bound, not bit-identical to fresnel_conductor's. Both batches
  * give fresnel_conductor_prepared's results bit for bit, in every lane and
- * for any n, alignment or form (checked on each kernel by
- * tests/test_batch_simd.sh); c and out must not overlap; n <= 0 writes
+ * for any n, alignment or form (checked on each kernel, built by gcc and
+ * clang in ISO C and the GNU modes, by tests/test_batch_simd.sh; see THREAD
+ * SAFETY for the one flag that breaks it); c and out must not overlap; n <= 0 writes
  * nothing, nothing at or past n is read or written.
  * SIMD, chosen at compile time from the target: AVX-512F 16 lanes (compiled
  * by the tests, run only on a CPU that has it), AVX/AVX2 8, SSE2 4, AArch64
