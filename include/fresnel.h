@@ -100,6 +100,11 @@
  *   with #error where the compiler says it is on (__FAST_MATH__,
  *   __FINITE_MATH_ONLY__); a vendoring user with such a global flag compiles
  *   src/f32/\*.c with -fno-fast-math (gcc, clang) or without it.
+ *   Nor with clang's -ffp-contract=fast, which disregards the pragma by which
+ *   src/f32/internal.h keeps a * b + c from being fused (the batches then
+ *   differ from fresnel_conductor_prepared in the last bit); every other
+ *   mode is fine: gcc's GNU modes and its -ffp-contract=fast are overridden
+ *   there, clang's default (on) honours the pragma.
  *
  * REFERENCES
  *   [Sch94]  C. Schlick, An inexpensive BRDF model for physically-based rendering, 1994.
@@ -157,7 +162,7 @@ extern "C" {
 #define FRESNEL_BOUND_SCHLICK_AVG      2e-7f
 #define FRESNEL_BOUND_SCHLICK_GEN_AVG  3e-7f
 #define FRESNEL_BOUND_F82_AVG          2e-7f
-#define FRESNEL_BOUND_LUT_AVG          3e-7f /* fresnel_lut_*_avg */
+#define FRESNEL_BOUND_LUT_AVG          6.2e-8f /* fresnel_lut_*_avg: half an ulp below 2, plus 2.04 2^-30 */
 
 /* Three channels of one quantity (reflectance, eta or kappa). */
 typedef struct fresnel_rgb {
@@ -328,8 +333,9 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  * The same formula, clamps and NaN policy as fresnel_conductor; results
  * within the bound, not bit-identical to fresnel_conductor's. Both batches
  * give fresnel_conductor_prepared's results bit for bit, in every lane and
- * for any n, alignment or form (checked on each kernel by
- * tests/test_batch_simd.sh); c and out must not overlap; n <= 0 writes
+ * for any n, alignment or form (checked on each kernel, built by gcc and
+ * clang in ISO C and the GNU modes, by tests/test_batch_simd.sh; see THREAD
+ * SAFETY for the one flag that breaks it); c and out must not overlap; n <= 0 writes
  * nothing, nothing at or past n is read or written.
  * SIMD, chosen at compile time from the target: AVX-512F 16 lanes (compiled
  * by the tests, run only on a CPU that has it), AVX/AVX2 8, SSE2 4, AArch64
@@ -421,10 +427,13 @@ fresnel_rgb fresnel_lut_cubic_rgb(const float *table, int n, float c);
  *   fresnel_lut_linear_avg   w_0 = h^2/3, w_i = 2h x_i, w_N = h - h^2/3
  * (the weights sum to 1). Equal to the average of the clamped curve
  * wherever the interpolant stays inside [0, max(1, nodes)], which fitted
- * tables do. n as fresnel_lut; result in [0, max(1, largest node)].
- * Error <= FRESNEL_BOUND_LUT_AVG against the interpolant's integral in
- * double, every n (nodes up to 2). Cost: about 14 flops per node (a
- * compensated sum) and one division; a material's average is made once. */
+ * tables do. n as fresnel_lut; result in [0, max(1, largest node)]; a
+ * NaN node gives 0. The sum is exact (integer weights over one integer
+ * denominator, multi-word integers, nodes read to 2^-30 of the largest):
+ * error <= FRESNEL_BOUND_LUT_AVG against the interpolant's integral held
+ * to that range, every n and every table with nodes up to 2. Cost per
+ * node: about 24 16x16-bit integer multiplies; then one 32-step division
+ * (a material's average is made once). */
 float fresnel_lut_avg(const float *table, int n);
 float fresnel_lut_cubic_avg(const float *table, int n);
 float fresnel_lut_linear_avg(const float *table, int n);

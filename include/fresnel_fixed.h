@@ -121,7 +121,7 @@ typedef struct fresnel_rgb_q15 {
 #define FRESNEL_BOUND_LUT_Q15 1.01 /* nodes uniform in sqrt(c); 0.501 uniform in c */
 #define FRESNEL_BOUND_LUT_CUBIC_Q15 2.2 /* on any table with nodes in [0, one] */
 #define FRESNEL_BOUND_LUT_CUBIC_Q15_HEADROOM 4.8 /* on any table (nodes up to 65535) */
-#define FRESNEL_BOUND_LUT_AVG_Q15 0.51 /* fresnel_lut_*_avg_u16_q15 */
+#define FRESNEL_BOUND_LUT_AVG_Q15 0.501 /* fresnel_lut_*_avg_u16_q15: rounded to nearest */
 
 #if FRESNEL_HAS_FIXED
 
@@ -341,12 +341,14 @@ fresnel_rgb_q15 fresnel_lut_cubic_u16_q15_rgb(const uint16_t *table, int n, int3
 
 /* fresnel_lut_avg, fresnel_lut_cubic_avg, fresnel_lut_linear_avg (fresnel.h):
  * the exact F_avg of a uint16_t table's interpolant, its nodes' weighted
- * sum, with the weights made in Q31 from integer h and x_i (no division
- * instruction, no int64). n as fresnel_lut_u16_q15; result in
- * [0, max(one, largest node)]. Error <= FRESNEL_BOUND_LUT_AVG_Q15 LSB
- * against the interpolant's integral in double at the table's values, every n.
- * Cost per node: 2 fresnel_udiv_frac_u32 (32 steps each) and about 8
- * 32x32 multiplies (a material's average is made once, not per pixel). */
+ * sum: integer weights over one integer denominator, summed exactly in
+ * multi-word integers and divided once (no division instruction, no
+ * int64), so the result is the integral rounded to the nearest code. n as
+ * fresnel_lut_u16_q15; result in [0, max(one, largest node)]. Error <=
+ * FRESNEL_BOUND_LUT_AVG_Q15 LSB against the interpolant's integral in
+ * double at the table's values, held to that range, every n and table.
+ * Cost per node: about 20 16x16-bit multiplies; then one 32-step division
+ * (a material's average is made once, not per pixel). */
 fresnel_q15 fresnel_lut_avg_u16_q15(const uint16_t *table, int n);
 fresnel_q15 fresnel_lut_cubic_avg_u16_q15(const uint16_t *table, int n);
 fresnel_q15 fresnel_lut_linear_avg_u16_q15(const uint16_t *table, int n);

@@ -17,7 +17,9 @@
  * inline, so a firmware that uses one of them links no library code for it.
  *
  * PRECONDITIONS (outside them the behaviour is undefined):
- *   f0 in [0, FRESNEL_ONE_Q15]; LUT entries any uint16_t (above
+ *   f0 in [0, FRESNEL_ONE_Q15] (`fresnel gen` emits F0 at most one under
+ *   every gamut policy; gamut = keep's F0 above 1 is held to one, which is
+ *   also how fresnel_fixed.h's functions read it); LUT entries any uint16_t (above
  *   FRESNEL_ONE_Q15: out-of-gamut headroom, as fresnel_fixed.h's tables);
  *   Schlick and F82: c <= FRESNEL_C_MAX_Q15_FAST (one + 2435; any c < 0 is
  *   read as 0, c in [one, one + 2435] gives F0, the value at one), F82's

@@ -17,7 +17,9 @@
 # To add a tool: one line below, "GROUP KIND PROBE PACKAGE". KIND is cmd (a
 # command on PATH), file or dir (a path that must exist), or link
 # (COMPILER:FLAGS links an empty program: clang's sanitizer runtime is only
-# a recommended package of clang, and `make CC=clang test` needs it). GROUP
+# a recommended package of clang, and `make CC=clang test` needs it; so is
+# the AArch64 C library of gcc-aarch64-linux-gnu, which
+# tests/test_batch_simd.sh links with gcc and clang). GROUP
 # cross rows are also what `make cross-deps` checks.
 table='
 all   cmd  make                     make
@@ -45,6 +47,7 @@ cross cmd  riscv64-unknown-elf-nm   binutils-riscv64-unknown-elf
 cross cmd  qemu-system-arm          qemu-system-arm
 cross cmd  qemu-riscv32-static      qemu-user-static
 cross cmd  aarch64-linux-gnu-gcc    gcc-aarch64-linux-gnu
+cross link aarch64-linux-gnu-gcc:-static libc6-dev-arm64-cross
 '
 group=${1:-all}
 case $group in

@@ -104,28 +104,62 @@ static double next01(void)
     return (lcg >> 8) / 16777216.0;
 }
 
+/* The n of the worst-case search: every n to 300, then pairs (odd and even
+ * N) about 8% apart up to FRESNEL_LUT_N_MAX, which is the last. */
+static int search_sizes(int *out)
+{
+    int k = 0, m;
+    for (m = 1; m <= 300; m++)
+        out[k++] = m;
+    for (m = 300 + 24; m < FRESNEL_LUT_N_MAX; m += m / 12) {
+        out[k++] = m;
+        out[k++] = m + 1;
+    }
+    out[k++] = FRESNEL_LUT_N_MAX - 1;
+    out[k++] = FRESNEL_LUT_N_MAX;
+    return k;
+}
+
+/* Node i of table kind `kind` (nodes in [0, 2 - 2^-15]): random in [0, 1],
+ * random up to the top, a Fresnel shape, alternating extremes (both
+ * phases), random extremes, constants 1 and top, a step at a random node,
+ * and nodes just off the extremes. */
+#define TABLE_KINDS 11
+static double table_node(int kind, int n, int i, int pick)
+{
+    const double top = 65535.0 / 32768.0;
+    double x = n > 1 ? (double)i / (n - 1) : 1.0, c = x * x;
+    switch (kind) {
+    case 0: return next01();
+    case 1: return top * next01();
+    case 2: return 0.9 + 0.1 * pow(1 - c, 5) - 0.3 * c * pow(1 - c, 6);
+    case 3: return i % 2 ? top : 0.0;
+    case 4: return i % 2 ? 0.0 : top;
+    case 5: return next01() < 0.5 ? 0.0 : top;
+    case 6: return 1.0;
+    case 7: return top;
+    case 8: return i < pick ? 0.0 : top;
+    case 9: return i < pick ? top : 0.0;
+    default: return next01() < 0.5 ? 1.0 / 32768.0 : top - 1.0 / 32768.0;
+    }
+}
+
 static void check_lut_averages(void)
 {
-    static const int sizes[] = {1, 2, 3, 4, 5, 6, 8, 16, 17, 33, 64, 256, 1024, 4096, 32768};
     static double t[32768], tq[32768];
     static float tf[32768];
     static uint16_t q[32768];
+    static int sizes[600];
     double worst_f32 = 0.0, worst_q15 = 0.0;
-    int si, kind, form, i, ok_range = 1, ok_const = 1;
-    for (si = 0; si < (int)(sizeof sizes / sizeof sizes[0]); si++)
-        for (kind = 0; kind < 5; kind++) {
-            int n = sizes[si];
+    int worst_f32_n = 0, worst_q15_n = 0, worst_f32_kind = 0, worst_q15_kind = 0, ns = search_sizes(sizes), si;
+    int n, kind, form, i, ok_range = 1, ok_const = 1;
+    for (si = 0; si < ns; si++) {
+        n = sizes[si];
+        for (kind = 0; kind < TABLE_KINDS; kind++) {
+            int pick = (int)(next01() * n);
             for (i = 0; i < n; i++) {
-                double x = n > 1 ? (double)i / (n - 1) : 1.0, c = x * x;
-                switch (kind) {
-                case 0: t[i] = next01(); break;                       /* [0, 1] */
-                case 1: t[i] = 2.0 * next01() * 65535.0 / 65536.0; break; /* headroom */
-                case 2: t[i] = 0.9 + 0.1 * pow(1 - c, 5) - 0.3 * c * pow(1 - c, 6); break;
-                case 3: t[i] = i % 2 ? 65535.0 / 32768.0 : 0.0; break;
-                default: t[i] = 1.0; break;
-                }
-                tf[i] = (float)t[i];
-                q[i] = (uint16_t)floor(t[i] * 32768.0 + 0.5);
+                tf[i] = (float)table_node(kind, n, i, pick);
+                q[i] = (uint16_t)floor(tf[i] * 32768.0 + 0.5);
                 tq[i] = q[i] / 32768.0;
                 t[i] = tf[i];
             }
@@ -134,26 +168,73 @@ static void check_lut_averages(void)
                 float v = form == 0 ? fresnel_lut_avg(tf, n) : (form == 1 ? fresnel_lut_cubic_avg(tf, n) : fresnel_lut_linear_avg(tf, n));
                 fresnel_q15 r = form == 0 ? fresnel_lut_avg_u16_q15(q, n)
                                           : (form == 1 ? fresnel_lut_cubic_avg_u16_q15(q, n) : fresnel_lut_linear_avg_u16_q15(q, n));
-                double eq = fabs(r - 32768.0 * refq);
+                double eq, ef;
                 for (i = 0; i < n; i++) {
                     top = fmax(top, t[i]);
                     tqtop = fmax(tqtop, tq[i]);
                 }
+                /* the results are held to [0, max(1, largest node)]: a cubic's negative end weight can take
+                 * the integral below 0 */
+                eq = fabs(r - 32768.0 * fmin(fmax(refq, 0.0), tqtop));
+                ef = fabs(v - fmin(fmax(ref, 0.0), top));
                 ok_range &= v >= 0.0f && v <= top && r <= 32768.0 * tqtop;
-                if (kind == 4)
+                if (kind == 6)
                     ok_const &= fabs(v - 1.0) <= 4e-7 && (r >= 32767 && r <= 32769);
-                worst_f32 = fmax(worst_f32, fabs(v - ref));
-                worst_q15 = fmax(worst_q15, eq);
+                if (ef > worst_f32) {
+                    worst_f32 = ef;
+                    worst_f32_n = n;
+                    worst_f32_kind = kind;
+                }
+                if (eq > worst_q15) {
+                    worst_q15 = eq;
+                    worst_q15_n = n;
+                    worst_q15_kind = kind;
+                }
             }
         }
-    NOTE("LUT averages against the interpolant's integral, n 1 to 32768: binary32 %.3g, Q15 %.4f LSB", worst_f32,
-         worst_q15);
+    }
+    NOTE("LUT averages against the interpolant's integral, %d values of n from 1 to %d, %d table kinds: binary32 "
+         "%.3g (n %d, kind %d), Q15 %.4f LSB (n %d, kind %d)",
+         ns, FRESNEL_LUT_N_MAX, TABLE_KINDS, worst_f32, worst_f32_n, worst_f32_kind, worst_q15, worst_q15_n,
+         worst_q15_kind);
     CHECK("fresnel_lut_*_avg within FRESNEL_BOUND_LUT_AVG of the interpolant's integral",
-          worst_f32 <= FRESNEL_BOUND_LUT_AVG, "%.3g", worst_f32);
+          worst_f32 <= FRESNEL_BOUND_LUT_AVG, "%.3g at n %d, table kind %d", worst_f32, worst_f32_n, worst_f32_kind);
     CHECK("fresnel_lut_*_avg_u16_q15 within FRESNEL_BOUND_LUT_AVG_Q15 LSB", worst_q15 <= FRESNEL_BOUND_LUT_AVG_Q15,
-          "%.4f", worst_q15);
+          "%.4f at n %d, table kind %d", worst_q15, worst_q15_n, worst_q15_kind);
     CHECK("LUT averages in [0, max(1, largest node)]; a constant table of 1 averages to 1", ok_range && ok_const,
           "range %d, constant %d", ok_range, ok_const);
+    {
+        /* binary32 nodes outside [0, 2]: negative ones (against the integral held to [0, top]), large
+         * ones (relative error), infinite ones (FLT_MAX: a finite result), a NaN (0) */
+        static const float odd[4] = {-1.5f, 1e30f, INFINITY, NAN};
+        double worst_neg = 0.0, worst_big = 0.0;
+        int ok_inf = 1, ok_nan = 1, o;
+        for (o = 0; o < 4; o++)
+            for (n = 2; n <= 70; n++)
+                for (form = 0; form < 3; form++) {
+                    float v;
+                    double ref, top = 1.0;
+                    for (i = 0; i < n; i++) {
+                        tf[i] = (i * 7) % 3 == 0 ? odd[o] : (float)next01();
+                        t[i] = tf[i];
+                        top = fmax(top, t[i]);
+                    }
+                    v = form == 0 ? fresnel_lut_avg(tf, n) : (form == 1 ? fresnel_lut_cubic_avg(tf, n) : fresnel_lut_linear_avg(tf, n));
+                    ref = o < 2 ? fmin(fmax(lut_avg_ref(t, n, form), 0.0), top) : 0.0;
+                    if (o == 0)
+                        worst_neg = fmax(worst_neg, fabs(v - ref));
+                    else if (o == 1)
+                        worst_big = fmax(worst_big, ref > 0.0 ? fabs(v - ref) / ref : v);
+                    else if (o == 2)
+                        ok_inf &= isfinite(v) && v >= 0.0f;
+                    else
+                        ok_nan &= v == 0.0f;
+                }
+        CHECK("fresnel_lut_*_avg on nodes outside [0, 2]: negative nodes within FRESNEL_BOUND_LUT_AVG, nodes of 1e30 "
+              "within 2^-23 relative, infinite nodes give a finite result, a NaN node 0",
+              worst_neg <= FRESNEL_BOUND_LUT_AVG && worst_big <= 0x1p-23 && ok_inf && ok_nan,
+              "negative %.3g, large %.3g relative, infinite %d, NaN %d", worst_neg, worst_big, ok_inf, ok_nan);
+    }
     {
         /* RGB forms are the scalar ones per channel; n <= 0 gives 0. */
         int ok = 1;
@@ -226,7 +307,15 @@ int main(void)
                 v = fresnel_schlick_gen_avg((float)f0, (float)f90, pf);
                 worst = fmax(worst, fabs(v - clampd(schlick_gen_avg_exact(f0, f90, p))));
             }
-    CHECK("fresnel_schlick_gen_avg within FRESNEL_BOUND_SCHLICK_GEN_AVG (F0, F90 every 1/64, p over its range)",
+    for (i = 0; i < 1000000; i++) { /* and random F0, F90, log p */
+        float pf = (float)(FRESNEL_P_MIN * pow(FRESNEL_P_MAX / FRESNEL_P_MIN, next01()));
+        f0 = (double)(float)next01();
+        f90 = (double)(float)next01();
+        v = fresnel_schlick_gen_avg((float)f0, (float)f90, pf);
+        worst = fmax(worst, fabs(v - clampd(schlick_gen_avg_exact(f0, f90, (double)pf))));
+    }
+    CHECK("fresnel_schlick_gen_avg within FRESNEL_BOUND_SCHLICK_GEN_AVG (F0, F90 every 1/64, p over its range; 1e6 "
+          "random)",
           worst <= FRESNEL_BOUND_SCHLICK_GEN_AVG, "%.3g", worst);
     NOTE("fresnel_schlick_gen_avg: max error %.3g", worst);
     worst = 0.0;
@@ -237,7 +326,13 @@ int main(void)
             v = fresnel_f82_avg((float)f0, (float)f82);
             worst = fmax(worst, fabs(v - clampd(f82_avg_exact(f0, f82))));
         }
-    CHECK("fresnel_f82_avg within FRESNEL_BOUND_F82_AVG (F0, F82 every 1/512)", worst <= FRESNEL_BOUND_F82_AVG, "%.3g",
+    for (i = 0; i < 1000000; i++) { /* and random F0, F82 */
+        f0 = (double)(float)next01();
+        f82 = (double)(float)next01();
+        v = fresnel_f82_avg((float)f0, (float)f82);
+        worst = fmax(worst, fabs(v - clampd(f82_avg_exact(f0, f82))));
+    }
+    CHECK("fresnel_f82_avg within FRESNEL_BOUND_F82_AVG (F0, F82 every 1/512; 1e6 random)", worst <= FRESNEL_BOUND_F82_AVG, "%.3g",
           worst);
     NOTE("fresnel_f82_avg: max error %.3g", worst);
     {

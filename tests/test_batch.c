@@ -8,8 +8,9 @@
  * each grid material in all three channels and with its two neighbours
  * (mostly one form: the one-pass kernel), and with triples of one form and
  * of mixed forms at every length and offset. Built for the host (every
- * pass) and for each SIMD kernel, AArch64 NEON under qemu included
- * (tests/test_batch_simd.sh). Needs only the library and libm. */
+ * pass) and for each SIMD kernel, AArch64 NEON under qemu included, by gcc
+ * and clang in ISO C and the GNU modes (tests/test_batch_simd.sh). Needs
+ * only the library and libm. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>

@@ -268,8 +268,21 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
     o.f = f;
     o.in = in;
     o.bad = 0;
-    if (reads & MP_F0)
-        emit_q15_rgb(&o, prefix, "f0", p->f0, 65535, "F0");
+    if (reads & MP_F0) {
+        /* At most one: gamut = keep can put F0 above 1, which every Q1.15
+         * function reads as one and the fast paths (fresnel_fixed_fast.h,
+         * preconditions instead of clamps) do not take. */
+        double f0[3];
+        int ch, held = 0;
+        for (ch = 0; ch < 3; ch++) {
+            f0[ch] = p->f0[ch] > 1.0 ? 1.0 : p->f0[ch];
+            held |= p->f0[ch] > 1.0;
+        }
+        emit_q15_rgb(&o, prefix, "f0", f0, 32768,
+                     held ? "F0, held to one where the gamut policy keeps it above (every Q1.15 function reads it\n"
+                            " * so, and the fast paths of fresnel_fixed_fast.h take f0 only up to one)"
+                          : "F0");
+    }
     if (sc->f_avg)
         emit_q15_rgb(&o, prefix, "f_avg", p->f_avg, 65535, "F_avg = 2 int F(mu) mu dmu of the ground truth");
     if (reads & MP_F82) {

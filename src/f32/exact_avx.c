@@ -9,6 +9,7 @@
 #ifdef __clang__
 #pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
 #else
+#pragma GCC push_options
 #pragma GCC target("avx2")
 #endif
 #include "exact_batch.h"
@@ -40,6 +41,8 @@ void fresnel_i_conductor_rgb_batch_avx(const fresnel_conductor_prep p[3], const 
 }
 #ifdef __clang__
 #pragma clang attribute pop
+#else
+#pragma GCC pop_options
 #endif
 #else
 typedef int fresnel_i_exact_avx_disabled; /* ISO C wants a declaration */

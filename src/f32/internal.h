@@ -21,9 +21,16 @@
 
 /* No contraction into fused multiply-adds: the error-free transformations
  * below need each product rounded, and the batches (simd.h) give the scalar
- * functions' results bit for bit. gcc does not contract in ISO C mode
- * (-std=c99); clang does unless told, and gcc rejects the pragma. */
-#ifdef __clang__
+ * functions' results bit for bit. gcc contracts in its GNU modes (the
+ * default, and CMake's) and under -ffp-contract=fast, and ignores the ISO
+ * pragma: its optimize pragma turns contraction off for every function
+ * defined after it, whatever the command line says. Other compilers take
+ * the ISO pragma; clang disregards it under -ffp-contract=fast (fresnel.h
+ * THREAD SAFETY). Both last, as the ISO pragma does, to the end of the
+ * translation unit. */
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")
+#else
 #pragma STDC FP_CONTRACT OFF
 #endif
 

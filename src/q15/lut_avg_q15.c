@@ -1,122 +1,194 @@
 /* Hemispherical averages of uint16_t lookup tables (fresnel_fixed.h): the
  * weighted node sums of src/f32/lut_avg.c (whose header comment derives
- * the weights) in integers.
+ * the weights), exact, in integers.
  *
- * Each weight is made in Q31 from h = 1/(n-1) and x_i = i/(n-1), both the
- * floor from fresnel_udiv_frac_u32, by rounded products
- * (fresnel_i_mul_q31); polynomials in h whose terms have both signs are
- * summed as a positive and a negative part, each scaled into [0, 1). A
- * weight is within a few units of 2^-31; over n nodes of value below 2 that
- * is at most about n 2^-28 of the result, n 2^-13 LSB, and much less as the
- * roundings cancel (the bound in the header is measured for n <= 1024). The sum of node x weight, 16 x 31 bits, is accumulated
- * exactly in two words: the high 15 bits of each weight times the node in
- * units of 2^-30, the low 16 bits in units of 2^-46 with their carries. */
+ * With N = n - 1 every weight is c_i / D: an integer polynomial c_i in i
+ * (interior nodes) or N (end nodes) over one integer D for the table
+ * (fresnel_i_avg_forms). So the average in Q15 codes is the ratio of two
+ * integers, sum_i c_i table[i] / D, of at most 88 and 68 bits, summed
+ * exactly in multi-word integers and divided once: the result is the
+ * interpolant's integral rounded to the nearest code (halves up), for
+ * every n and every table. The cubic's negative terms are summed apart. */
 #include "internal.h"
 
 #if FRESNEL_HAS_FIXED
 
 #define FRESNEL_I_AVG_N_MAX 32768
 
-/* round(a b / 2^31) (halves up) for a, b <= 2^31, exactly: rounded, so
- * that the weights' errors do not all lean one way. R: ah, bh <= 2^15, so
- * ah bh <= 2^30 and ah bl + al bh <= 2^32 - 2^17 - 2; with lo >> 16 < 2^16
- * and the half, 2^14, mid stays below 2^32. */
-static uint32_t fresnel_i_mul_q31(uint32_t a, uint32_t b)
+/* A non-negative integer in 16-bit limbs held in uint32_t, least
+ * significant first (a limb times a 16-bit factor plus a 16-bit carry fits
+ * 32 bits): 128 bits, as the sums and D 2^32 in the division need
+ * (|c_i| < 2^57 times a node below 2^31 times n <= 2^15; D <= 210 N^4
+ * < 2^68). */
+#define FRESNEL_I_LIMBS 8
+typedef struct fresnel_i_big {
+    uint32_t d[FRESNEL_I_LIMBS];
+} fresnel_i_big;
+
+static void fresnel_i_big_set(fresnel_i_big *x, uint32_t v)
 {
-    uint32_t ah = a >> 16, al = a & 0xffffu, bh = b >> 16, bl = b & 0xffffu;
-    uint32_t mid = ah * bl + al * bh + ((al * bl) >> 16) + (1u << 14);
-    return ((ah * bh) << 1) + (mid >> 15);
+    int k;
+    x->d[0] = v & 0xffffu;
+    x->d[1] = v >> 16;
+    for (k = 2; k < FRESNEL_I_LIMBS; k++)
+        x->d[k] = 0;
 }
 
-/* Constants below are round(v 2^31), v in the comment beside each. */
-/* The weight of node i (Q31 magnitude, *negative set for a negative one)
- * of an n-node table, 2 <= n <= FRESNEL_I_AVG_N_MAX; form 0 linear in
- * sqrt(c), 1 Catmull-Rom in sqrt(c), 2 linear in c. Ranges: every weight
- * is below 1; the scaled polynomial parts are in [0, 1]. */
-static uint32_t fresnel_i_avg_weight_q31(int form, int n, int i, int *negative)
+/* x = x m + a for m, a < 2^16, over the low len limbs of x (the result
+ * must fit them). R: limb m + carry <= (2^16-1)^2 + 2^16-1 < 2^32. */
+static void fresnel_i_big_mul_add(fresnel_i_big *x, uint32_t m, uint32_t a, int len)
 {
-    uint32_t last = (uint32_t)n - 1u, h = fresnel_udiv_frac_u32(1u, last, 31);
-    uint32_t x = fresnel_udiv_frac_u32((uint32_t)i, last, 31);
-    uint32_t h2 = fresnel_i_mul_q31(h, h), h3 = fresnel_i_mul_q31(h2, h), h4 = fresnel_i_mul_q31(h2, h2);
-    uint32_t x3 = fresnel_i_mul_q31(fresnel_i_mul_q31(x, x), x), pos, neg;
-    *negative = 0;
-    if (form == 2) { /* uniform in c: h^2/3, 2h c_i, h - h^2/3 */
-        if (i == 0)
-            return fresnel_i_mul_q31(h2, 715827883u /* 1 / 3 */);
-        if ((uint32_t)i == last)
-            return h - fresnel_i_mul_q31(h2, 715827883u /* 1 / 3 */);
-        return fresnel_i_mul_q31(h, x) << 1;
+    uint32_t carry = a, p;
+    int k;
+    for (k = 0; k < len; k++) {
+        p = x->d[k] * m + carry;
+        x->d[k] = p & 0xffffu;
+        carry = p >> 16;
     }
-    if (form == 0) { /* linear in sqrt(c) */
-        if (i == 0)
-            return fresnel_i_mul_q31(h4, 429496730u /* 0.2 */);
-        if ((uint32_t)i == last) { /* 4h (1/2 + h^2/4 - h/2 - h^3/20) */
-            pos = (1u << 30) + (h2 >> 2);
-            neg = (h >> 1) + fresnel_i_mul_q31(h3, 107374182u /* 0.05 */);
-            return fresnel_i_mul_q31(h, pos - neg) << 2;
+}
+
+/* acc = acc + x m 2^(16 s) for m < 2^16 and x in its low len limbs.
+ * R: as above, plus a limb of acc. */
+static void fresnel_i_big_add_mul(fresnel_i_big *acc, const fresnel_i_big *x, uint32_t m, int s, int len)
+{
+    uint32_t carry = 0, p;
+    int k;
+    for (k = s; k < FRESNEL_I_LIMBS && (k < s + len || carry); k++) {
+        p = acc->d[k] + (k < s + len ? x->d[k - s] * m : 0u) + carry;
+        acc->d[k] = p & 0xffffu;
+        carry = p >> 16;
+    }
+}
+
+static int fresnel_i_big_ge(const fresnel_i_big *a, const fresnel_i_big *b)
+{
+    int k;
+    for (k = FRESNEL_I_LIMBS - 1; k >= 0; k--)
+        if (a->d[k] != b->d[k])
+            return a->d[k] > b->d[k];
+    return 1;
+}
+
+/* a = a - b for a >= b */
+static void fresnel_i_big_sub(fresnel_i_big *a, const fresnel_i_big *b)
+{
+    uint32_t borrow = 0, p;
+    int k;
+    for (k = 0; k < FRESNEL_I_LIMBS; k++) {
+        p = a->d[k] + 0x10000u - b->d[k] - borrow;
+        a->d[k] = p & 0xffffu;
+        borrow = 1u - (p >> 16);
+    }
+}
+
+/* floor(a / b) for b > 0, a < b 2^32, by shift and subtract: b 2^32 (two
+ * limbs up) halved 32 times. a is left as the remainder. */
+static uint32_t fresnel_i_big_div(fresnel_i_big *a, const fresnel_i_big *b)
+{
+    fresnel_i_big s;
+    uint32_t q = 0;
+    int i, k;
+    s.d[0] = s.d[1] = 0;
+    for (k = 2; k < FRESNEL_I_LIMBS; k++)
+        s.d[k] = b->d[k - 2];
+    for (i = 0; i < 32; i++) {
+        for (k = 0; k < FRESNEL_I_LIMBS; k++) /* s = s / 2 */
+            s.d[k] = (s.d[k] >> 1) | (k + 1 < FRESNEL_I_LIMBS ? (s.d[k + 1] & 1u) << 15 : 0u);
+        q <<= 1;
+        if (fresnel_i_big_ge(a, &s)) {
+            fresnel_i_big_sub(a, &s);
+            q |= 1u;
         }
-        return (fresnel_i_mul_q31(x3, h) << 2) + (fresnel_i_mul_q31(h3, x) << 1);
     }
-    if (n == 2) {
-        static const uint32_t w2[2] = {368140054u /* 6 / 35 */, 1779343594u /* 29 / 35 */};
-        return w2[i];
-    }
-    if (n == 3) {
-        static const uint32_t w3[3] = {42182715u /* 11 / 560 */, 850045611u /* 19 / 48 */,
-                                       1339620752u /* 131 / 210 */};
-        *negative = i == 0;
-        return w3[i];
-    }
-    if (i == 0) { /* -4h^4 11/140 */
-        *negative = 1;
-        return fresnel_i_mul_q31(h4, 674923432u /* 11 / 35 */);
-    }
-    if ((uint32_t)i == last) { /* 4h (11/24 + 11h^3/140 - 3h/10 - h^2/40) */
-        pos = 984263339u /* 11 / 24 */ + fresnel_i_mul_q31(h3, 168730858u /* 11 / 140 */);
-        neg = fresnel_i_mul_q31(h, 644245094u /* 0.3 */) + fresnel_i_mul_q31(h2, 53687091u /* 1 / 40 */);
-        return fresnel_i_mul_q31(h, pos - neg) << 2;
-    }
-    if ((uint32_t)i == last - 1u) { /* 16h (25/96 + 121h^2/160 - 59h/80 - 209h^3/840), N >= 3 */
-        pos = 559240533u /* 25 / 96 */ + fresnel_i_mul_q31(h2, 1624034509u /* 121 / 160 */);
-        neg = fresnel_i_mul_q31(h, 1583769190u /* 59 / 80 */) + fresnel_i_mul_q31(h3, 534314384u /* 209 / 840 */);
-        return fresnel_i_mul_q31(h, pos - neg) << 4;
-    }
-    if (i == 1) /* 4h^4 209/210 */
-        return fresnel_i_mul_q31(h4, 534314384u /* 209 / 840 */) << 4;
-    return fresnel_i_mul_q31(x3, h) << 2;
+    return q;
 }
 
-/* Two-word accumulator of node x weight: hi in 2^-30, lo in 2^-46. */
-typedef struct fresnel_i_acc {
-    uint32_t hi, lo;
-} fresnel_i_acc;
+/* The weights of one interpolant, c_i / D with D = den N^deg and
+ *   c_i = sum_j coef[j] v^j  (v = i for interior nodes, v = N at the ends):
+ * form 0, linear in sqrt(c): D = 5 N^4, c_0 = 1, c_i = 20 i^3 + 10 i,
+ *   c_N = 10 N^3 - 10 N^2 + 5 N - 1;
+ * form 1, Catmull-Rom in sqrt(c), N >= 3: D = 210 N^4, c_0 = -66,
+ *   c_1 = 836, c_i = 840 i^3, c_(N-1) = 875 N^3 - 2478 N^2 + 2541 N - 836,
+ *   c_N = 385 N^3 - 252 N^2 - 21 N + 66 (n = 2, 3 below);
+ * form 2, linear in c: D = 3 N^2, c_0 = 1, c_i = 6 i, c_N = 3 N - 1. */
+typedef struct fresnel_i_avg_form {
+    uint16_t den, deg;
+    int16_t interior[4], first[4], last[4];
+    int cubic; /* nodes 1 and N-1 have weights of their own */
+    int16_t second[4], next_to_last[4];
+} fresnel_i_avg_form;
+static const fresnel_i_avg_form fresnel_i_avg_forms[3] = {
+    {5, 4, {0, 10, 0, 20}, {1, 0, 0, 0}, {-1, 5, -10, 10}, 0, {0, 0, 0, 0}, {0, 0, 0, 0}},
+    {210, 4, {0, 0, 0, 840}, {-66, 0, 0, 0}, {66, -21, -252, 385}, 1, {836, 0, 0, 0}, {-836, 2541, -2478, 875}},
+    {3, 2, {0, 6, 0, 0}, {1, 0, 0, 0}, {-1, 3, 0, 0}, 0, {0, 0, 0, 0}, {0, 0, 0, 0}},
+};
+/* The cubic for n = 2 (D = 35) and n = 3 (D = 1680). */
+static const int16_t fresnel_i_avg_cubic_small[2][3] = {{6, 29, 0}, {-33, 665, 1048}};
 
-static void fresnel_i_acc_add(fresnel_i_acc *a, uint32_t v, uint32_t w)
+/* plus += (the positive terms of c at v) t, minus += (the negative ones) t,
+ * each part by Horner (coefficients below 2^16, v < 2^15, so each part is
+ * below 2^57: four limbs), t < 2^32 in two 16-bit halves. */
+static void fresnel_i_avg_add(fresnel_i_big *plus, fresnel_i_big *minus, const int16_t coef[4], uint32_t v,
+                              uint32_t t)
 {
-    uint32_t lo = v * (w & 0xffffu);
-    a->hi += v * (w >> 16);
-    a->lo += lo;
-    if (a->lo < lo)
-        a->hi += 1u << 16; /* 2^32 units of 2^-46 */
+    fresnel_i_big x;
+    int sign, j;
+    for (sign = 1; sign >= -1; sign -= 2) {
+        if (coef[0] * sign <= 0 && coef[1] * sign <= 0 && coef[2] * sign <= 0 && coef[3] * sign <= 0)
+            continue;
+        fresnel_i_big_set(&x, 0);
+        for (j = 3; j >= 0; j--)
+            fresnel_i_big_mul_add(&x, v, coef[j] * sign > 0 ? (uint32_t)(coef[j] * sign) : 0u, 4);
+        fresnel_i_big_add_mul(sign > 0 ? plus : minus, &x, t & 0xffffu, 0, 4);
+        if (t >> 16)
+            fresnel_i_big_add_mul(sign > 0 ? plus : minus, &x, t >> 16, 1, 4);
+    }
 }
 
 static fresnel_q15 fresnel_i_avg_u16(const uint16_t *table, int n, int form)
 {
-    fresnel_i_acc plus = {0u, 0u}, minus = {0u, 0u};
-    uint32_t top = FRESNEL_I_ONE_Q15, s, m, r;
-    int i, negative;
+    const fresnel_i_avg_form *f = &fresnel_i_avg_forms[form];
+    fresnel_i_big plus, minus, d;
+    uint32_t top = FRESNEL_I_ONE_Q15, last = (uint32_t)n - 1u, r;
+    int i;
     if (n <= 1)
         return n == 1 ? table[0] : 0;
-    for (i = 0; i < n; i++) {
-        uint32_t w = fresnel_i_avg_weight_q31(form, n, i, &negative);
-        fresnel_i_acc_add(negative ? &minus : &plus, table[i], w);
-        top = table[i] > top ? table[i] : top;
+    fresnel_i_big_set(&plus, 0);
+    fresnel_i_big_set(&minus, 0);
+    if (f->cubic && n <= 3) {
+        fresnel_i_big_set(&d, n == 2 ? 35u : 1680u);
+        for (i = 0; i < n; i++) {
+            const int16_t c[4] = {fresnel_i_avg_cubic_small[n - 2][i], 0, 0, 0};
+            fresnel_i_avg_add(&plus, &minus, c, 0u, table[i]);
+        }
+    } else {
+        fresnel_i_big_set(&d, f->den);
+        for (i = 0; i < f->deg; i++)
+            fresnel_i_big_mul_add(&d, last, 0u, FRESNEL_I_LIMBS);
+        for (i = 0; i < n; i++) {
+            const int16_t *c = f->interior;
+            uint32_t v = (uint32_t)i;
+            if (i == 0)
+                c = f->first;
+            else if ((uint32_t)i == last)
+                c = f->last, v = last;
+            else if (f->cubic && (uint32_t)i == last - 1u)
+                c = f->next_to_last, v = last;
+            else if (f->cubic && i == 1)
+                c = f->second;
+            fresnel_i_avg_add(&plus, &minus, c, v, table[i]);
+        }
     }
-    s = plus.hi + (plus.lo >> 16);
-    m = minus.hi + (minus.lo >> 16);
-    if (m >= s)
+    for (i = 0; i < n; i++)
+        top = table[i] > top ? table[i] : top;
+    if (fresnel_i_big_ge(&minus, &plus))
         return 0;
-    r = (s - m + (1u << 14)) >> 15;
+    fresnel_i_big_sub(&plus, &minus);
+    /* (plus - minus) / D is below 2^16, the largest code: rounded to the
+     * nearest (halves up) from floor(2 (plus - minus) / D) */
+    fresnel_i_big_set(&minus, 0);
+    fresnel_i_big_add_mul(&minus, &plus, 2u, 0, FRESNEL_I_LIMBS);
+    r = (fresnel_i_big_div(&minus, &d) + 1u) >> 1;
     return (fresnel_q15)(r < top ? r : top);
 }
 
