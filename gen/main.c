@@ -73,7 +73,7 @@ int main(int argc, char **argv)
             snprintf(where, sizeof where, "fresnel %s", commands[i].name);
             if (cli_finish_stdout(where) && status == 0)
                 status = CLI_FAILURE;
-            return status;
+            return cli_exit_status(status);
         }
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
         names[i] = commands[i].name;

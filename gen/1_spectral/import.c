@@ -140,29 +140,29 @@ int nk_import(const char *path, nk_format format, nk_table *t, nk_file_info *inf
     memset(info, 0, sizeof *info);
     memset(t, 0, sizeof *t);
     memset(&k_file, 0, sizeof k_file);
-    if (text_read(path, &file))
-        return CLI_BAD_INPUT;
-    if (format == NK_FORMAT_AUTO && detect(&file, &format)) {
+    if ((status = text_read(path, &file)))
+        return status;
+    if (format == NK_FORMAT_AUTO && (status = detect(&file, &format))) {
         text_free(&file);
-        return CLI_BAD_INPUT;
+        return status;
     }
     info->format = nk_format_names[format];
     snprintf(info->file, sizeof info->file, "%s", base_name(path));
     if (format == NK_FORMAT_SPD) {
-        if (spd_pair(path, eta_path, k_path, sizeof eta_path)) {
+        if ((status = spd_pair(path, eta_path, k_path, sizeof eta_path))) {
             text_free(&file);
-            return CLI_BAD_INPUT;
+            return status;
         }
         if (strcmp(eta_path, path)) { /* given the k file: read n first */
             k_file = file;
             k_file.path = path;
-            if (text_read(eta_path, &file)) {
+            if ((status = text_read(eta_path, &file))) {
                 text_free(&k_file);
-                return CLI_BAD_INPUT;
+                return status;
             }
-        } else if (k_path[0] && text_read(k_path, &k_file)) {
+        } else if (k_path[0] && (status = text_read(k_path, &k_file))) {
             text_free(&file);
-            return CLI_BAD_INPUT;
+            return status;
         }
         if (k_file.data)
             snprintf(info->file, sizeof info->file, "%.120s + %.120s", base_name(file.path), base_name(k_file.path));
@@ -207,8 +207,8 @@ int material_load(const char *dir, const material_source *m, material_info *info
     if (!m->path || !*m->path)
         return material_lookup(dir, m->id, info, "material") || spectrum_load(dir, m->id, s) ? CLI_BAD_INPUT : 0;
     memset(info, 0, sizeof *info);
-    if (nk_import(m->path, m->format, &t, &info->file))
-        return CLI_BAD_INPUT;
+    if ((status = nk_import(m->path, m->format, &t, &info->file)))
+        return status;
     status = spectrum_from_table(m->path, &t, s);
     nk_table_free(&t);
     if (status)

@@ -77,10 +77,10 @@ int cmd_import(int argc, char **argv)
     }
     if (!in || !out_path)
         return cli_error(WHERE, "expected FILE and -o OUT.csv (fresnel import --help)");
-    if (cli_out_is_input(out_path, in))
-        return cli_error(WHERE, "-o %s is the input file; expected a different output", out_path);
-    if (nk_import(in, format, &t, &info))
-        return CLI_BAD_INPUT;
+    /* The output may be none of the files read, the implicit half of a .spd
+     * pair included: cli_out_open refuses them. */
+    if ((status = nk_import(in, format, &t, &info)))
+        return status;
     /* The pipeline's coverage rule, so a file that misses the visible is
      * refused here too, and one that covers part of it warned about. */
     if (!(s = malloc(sizeof *s))) {

@@ -377,14 +377,16 @@ static int copy_file(FILE *f, const char *path)
 {
     char buf[4096];
     size_t n;
-    FILE *in = fopen(path, "rb");
-    if (!in)
-        return cli_error(path, "cannot read: %s", strerror(errno)), CLI_FAILURE;
+    FILE *in;
+    int status;
+    if ((status = cli_open_input(path, &in)))
+        return status;
     while ((n = fread(buf, 1, sizeof buf, in)) > 0)
         fwrite(buf, 1, n, f);
     if (ferror(in)) {
+        int err = errno;
         fclose(in);
-        return cli_error(path, "cannot read"), CLI_FAILURE;
+        return cli_read_failure(path, err);
     }
     fclose(in);
     return 0;
