@@ -12,6 +12,7 @@
  * rules; all of them end in the same per-row checks (nk_check_row) and the
  * same coverage rule (spectrum_from_table), so a user's file is held to the
  * data pack's standard. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,25 +29,28 @@ static const char *base_name(const char *path)
     return slash ? slash + 1 : path;
 }
 
-/* How many whitespace/';'/','-separated words of s are numbers, or -1 if
- * some word is not one. */
-static int count_numbers(const char *s)
+/* How many whitespace/';'/','-separated words of s are numbers (stored in
+ * v, up to 4), or -1 if some word is not one. A '#' ends the words (.spd
+ * comments follow the values). */
+static int count_numbers(const char *s, double v[4])
 {
     int count = 0;
-    while (*s) {
+    while (*s && *s != '#') {
         char word[64];
         size_t len;
-        double v;
+        double x;
         s += strspn(s, " \t;,\r");
-        len = strcspn(s, " \t;,\r");
+        len = strcspn(s, " \t;,\r#");
         if (len == 0)
-            break;
+            continue;
         if (len >= sizeof word)
             return -1;
         memcpy(word, s, len);
         word[len] = '\0';
-        if (cli_parse_double(word, &v))
+        if (cli_parse_double(word, &x))
             return -1;
+        if (count < 4)
+            v[count] = x;
         count++;
         s += len;
     }
@@ -56,7 +60,8 @@ static int count_numbers(const char *s)
 static int detect(const text_file *t, nk_format *format)
 {
     const char *p = (const char *)t->data + cli_skip_bom((const char *)t->data);
-    int line = 1, comments = 0;
+    int line = 1, comments = 0, count;
+    double v[4];
     while (*p) {
         char buf[256];
         size_t len = strcspn(p, "\n"), skip;
@@ -81,9 +86,13 @@ static int detect(const text_file *t, nk_format *format)
             *format = NK_FORMAT_RII_CSV;
         else if (skip > 0 && s[skip] == ':')
             *format = NK_FORMAT_RII_YAML;
-        else if (count_numbers(s) == 4 && !comments)
+        /* A SOPRA header is four numbers, a unit code (a digit) first and a
+         * whole number of intervals last; .spd pairs may run several to a
+         * line, so four numbers that are not such a header are pairs. */
+        else if ((count = count_numbers(s, v)) == 4 && !comments && v[0] >= 0.0 && v[0] <= 9.0 &&
+                 v[0] == floor(v[0]) && v[3] >= 1.0 && v[3] == floor(v[3]))
             *format = NK_FORMAT_SOPRA;
-        else if (count_numbers(s) == 2)
+        else if (count >= 2 && strcspn(s, ",;") >= strcspn(s, "#")) /* .spd: blanks between values */
             *format = NK_FORMAT_SPD;
         else
             return text_error(t, line,
