@@ -75,8 +75,7 @@ int text_read(const char *path, text_file *t)
     for (i = 0; i < t->size; i++) {
         const char *bad = t->data[i] == '\0' ? "expected text, found a NUL byte"
                         : t->data[i] == '\r' && i + 1 < t->size && t->data[i + 1] != '\n'
-                            ? "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line ends: "
-                              "convert them, e.g. tr '\\r' '\\n')"
+                            ? "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line ends)"
                             : NULL;
         if (t->data[i] == '\n')
             line++;

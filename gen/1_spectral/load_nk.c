@@ -57,8 +57,7 @@ static int read_line(csv_reader *r, char **line)
             if (ch == '\0')
                 csv_error(r, "expected text, found a NUL byte");
             else if (len > 0 && r->buf[len - 1] == '\r')
-                csv_error(r, "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line ends: "
-                             "convert them, e.g. tr '\\r' '\\n')");
+                csv_error(r, "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line ends)");
             else
                 csv_error(r, "expected a line of at most %d bytes", CSV_MAX_LINE);
             return -1;

@@ -421,8 +421,7 @@ int scene_load(const char *path, scene *out)
         }
         if ((cr = strchr(text, '\r')) != NULL && strcmp(cr, "\r\n") && strcmp(cr, "\r")) {
             /* classic Mac OS line ends: the whole file would read as line 1 */
-            rc = report(path, line, "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line "
-                                    "ends: convert them, e.g. tr '\\r' '\\n')");
+            rc = report(path, line, "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line ends)");
             break;
         }
         if (line == 1 && len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
