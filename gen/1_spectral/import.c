@@ -5,8 +5,11 @@
  *   wavelength_nm,n,k          the data pack's CSV (load_nk.c), nm
  *   wl,n / wl,k / wl,n,k       refractiveindex.info CSV export (load_rii_csv.c), um
  *   KEY: (upper-case key)      refractiveindex.info database YAML (load_rii_yaml.c), um
- *   four numbers, no comment   SOPRA .nk header (load_sopra.c), eV, um or nm
- *   two numbers                .spd pairs (load_spd.c), nm
+ *   four numbers, no comment,  SOPRA .nk header (load_sopra.c), eV, um or nm
+ *     a unit digit first and
+ *     whole intervals last
+ *   other blank-separated      .spd pairs, one or more to a line (load_spd.c), nm
+ *     numbers
  *
  * --format NAME skips the guess. Each reader's opening comment states its
  * rules; all of them end in the same per-row checks (nk_check_row) and the
