@@ -93,13 +93,19 @@ uninstall() {
             esac
         done
         printf '%s\n' "$entries" | sed -n 's/^d //p' | grep '^\.' | sort | while IFS= read -r up; do
-            case $up in
-            . | ./.. | ./../.. | ./../../.. | ./../../../.. | ./../../../../.. | ./../../../../../..) ;;
-            *)
+            # "." then "/.." any number of times, nothing else; each step
+            # shortens rest, so this ends
+            rest=${up#.}
+            while :; do
+                case $rest in
+                /..*) rest=${rest#/..} ;;
+                *) break ;;
+                esac
+            done
+            if [ -n "$rest" ]; then
                 refuse "d $up" "expected '.' or './..' repeated (PREFIX and the levels above it)"
                 continue
-                ;;
-            esac
+            fi
             levels=$(printf '%s' "$up" | tr -cd / | wc -c)
             if [ "$levels" -gt "$depth" ]; then
                 refuse "d $up" "above ${destdir:-/}"

@@ -33,7 +33,7 @@ for line in "f ../../../victim" "f $t/a/victim" "f share/../../../../victim" "d 
     run "$t/a"
     if [ "$rc" -eq 1 ] && [ -f "$t/a/victim" ] && [ ! -e "$t/a/root$P/share/fresnel/x.txt" ] &&
         grep -q "refusing manifest line" "$t/a/err"; then
-        pass "'$(echo "$line" | sed "s|$t/||")' refused, exit 1, the installed file removed, the file outside kept ($(head -1 "$t/a/err" | sed "s|$t/||g"))"
+        pass "'$(echo "$line" | sed "s|$t|\$t|")' refused, exit 1, the installed file removed, the file outside kept ($(head -1 "$t/a/err" | sed "s|$t/||g"))"
     else fail "'$line': exit $rc, victim $([ -f "$t/a/victim" ] && echo kept || echo REMOVED), $(cat "$t/a/err")"; fi
 done
 
