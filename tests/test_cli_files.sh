@@ -175,6 +175,12 @@ mkdir -p "$t/rep2"; mkdir "$t/rep2/report.md"
 "$F" eval --model exact --type f32 <"$t" >"$t/out" 2>"$t/err"; rc=$?
 [ $rc -eq 1 ] && grep -q '<stdin>' "$t/err" && pass "eval </dir: exit 1 naming <stdin> ($(cat "$t/err"))" ||
     fail "eval </dir: exit $rc $(cat "$t/err")"
+for opt in --speed --cross --size; do
+    "$F" report --scene "$t/s.scene" -o "$t/rd" --no-timing --no-instructions $opt "$t" >/dev/null 2>"$t/err"; rc=$?
+    [ $rc -eq 1 ] && grep -q "$t: cannot read: Is a directory" "$t/err" && [ ! -e "$t/rd" ] &&
+        pass "report $opt DIR (a directory as input, a read error): exit 1, nothing written" ||
+        fail "report $opt DIR: exit $rc $(cat "$t/err")"
+done
 "$F" gen "$t" -o "$t/x.h" 2>"$t/err"; rc=$?
 [ $rc -eq 1 ] && grep -q "$t" "$t/err" && [ ! -e "$t/x.h" ] && pass "gen DIR (a directory as manifest, a read error): exit 1, no output" ||
     fail "gen DIR: exit $rc $(cat "$t/err")"

@@ -85,17 +85,11 @@ static int all_finite(const double *v, int n)
     return 1;
 }
 
-int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, const char **what)
+int speed_file_read(FILE *in, const char *path, speed_file *f, char *where, int wherelen, const char **what)
 {
-    FILE *in = fopen(path, "r");
     char line[512];
     int ln = 0, has_opt = 0;
     memset(f, 0, sizeof *f);
-    if (!in) {
-        snprintf(where, (size_t)wherelen, "%s", path);
-        *what = "cannot open (expected the output of `make bench`)";
-        return -1;
-    }
     while (fgets(line, sizeof line, in)) {
         char name[SPEED_NAME], form[16], tail;
         const char *bad = NULL;
@@ -146,11 +140,11 @@ int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, 
         if (bad) {
             snprintf(where, (size_t)wherelen, "%s:%d", path, ln);
             *what = bad;
-            fclose(in);
             return -1;
         }
     }
-    fclose(in);
+    if (ferror(in))
+        return 1;
     if (!has_opt) {
         snprintf(where, (size_t)wherelen, "%s", path);
         *what = "expected an '# opt: FLAGS' line (the output of `make bench`)";

@@ -550,6 +550,8 @@ int report_write(const report_options *o)
         speed_file *sf = malloc(sizeof *sf);
         char where[1100];
         const char *what;
+        FILE *in;
+        int got, err;
         if (!sf) {
             status = cli_oom(WHERE);
             break;
@@ -557,8 +559,13 @@ int report_write(const report_options *o)
         r.speed[i] = sf;
         r.speed_paths[i] = o->speed_paths[i];
         r.speed_count = i + 1;
-        if (speed_file_read(o->speed_paths[i], sf, where, (int)sizeof where, &what)) {
-            status = cli_error(where, "%s", what);
+        if ((status = cli_open_input(o->speed_paths[i], &in)))
+            break;
+        got = speed_file_read(in, o->speed_paths[i], sf, where, (int)sizeof where, &what);
+        err = errno;
+        fclose(in);
+        if (got) {
+            status = got > 0 ? cli_read_failure(o->speed_paths[i], err) : cli_error(where, "%s", what);
             break;
         }
     }
