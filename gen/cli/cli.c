@@ -264,7 +264,10 @@ static int input_count, input_cap;
 
 static const char *file_kind(mode_t mode)
 {
-    return S_ISCHR(mode) ? "a character device" : S_ISBLK(mode) ? "a block device" : S_ISSOCK(mode) ? "a socket" : "not a regular file";
+    return S_ISCHR(mode)    ? "a character device"
+           : S_ISBLK(mode)  ? "a block device"
+           : S_ISSOCK(mode) ? "a socket"
+                            : "not a regular file";
 }
 
 int cli_open_input(const char *path, FILE **f)

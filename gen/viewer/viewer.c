@@ -53,7 +53,8 @@ static void put_json_string(FILE *f, const char *s)
             fprintf(f, "\\%c", c);
         else if (c < 0x20 || c == 0x7f || c == '<' || c == '>' || c == '&')
             fprintf(f, "\\u%04x", c);
-        else if (c == 0xe2 && (unsigned char)s[1] == 0x80 && ((unsigned char)s[2] == 0xa8 || (unsigned char)s[2] == 0xa9)) {
+        else if (c == 0xe2 && (unsigned char)s[1] == 0x80 &&
+                 ((unsigned char)s[2] == 0xa8 || (unsigned char)s[2] == 0xa9)) {
             fprintf(f, "\\u%04x", 0x2000 + ((unsigned char)s[2] - 0x80));
             s += 2;
         } else
