@@ -46,22 +46,6 @@ static double callgrind_instructions(const char *scene_path, const char *materia
     return collected / count;
 }
 
-FILE *report_out_open(report_run *r, const char *name, int *status)
-{
-    char path[CLI_PATH_MAX];
-    if ((size_t)snprintf(path, sizeof path, "%s/%s", r->out_dir, name) >= sizeof path) {
-        *status = cli_error(r->out_dir, "path too long");
-        return NULL;
-    }
-    if (r->out_count == r->out_cap) {
-        *status = cli_error(path, "expected at most %d output files", r->out_cap);
-        return NULL;
-    }
-    if ((*status = cli_out_open(&r->out[r->out_count], path)))
-        return NULL;
-    return r->out[r->out_count++].f;
-}
-
 /* Commits the run's outputs together (status 0) or removes them all. */
 static int finish_outputs(report_run *r, int status)
 {
