@@ -38,8 +38,8 @@ static void usage(FILE *out)
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(out, "  %-12s %s\n", commands[i].name, commands[i].summary);
     fprintf(out, "  %-12s %s\n", "version", "print the version (also --version)");
-    fprintf(out, "\nOutput options take '-' for stdout. Exit status: 0 success, 1 a read or\n"
-                 "write failure, 2 bad input or usage, 3 out of memory.\n");
+    fprintf(out, "\nOptions naming an output file take '-' for stdout. Exit status: 0 success,\n"
+                 "1 a read or write failure, 2 bad input or usage, 3 out of memory.\n");
 }
 
 int main(int argc, char **argv)
@@ -73,7 +73,7 @@ int main(int argc, char **argv)
             snprintf(where, sizeof where, "fresnel %s", commands[i].name);
             if (cli_finish_stdout(where) && status == 0)
                 status = CLI_FAILURE;
-            return status;
+            return cli_exit_status(status);
         }
     for (i = 0; i < sizeof commands / sizeof commands[0]; i++)
         names[i] = commands[i].name;

@@ -28,34 +28,104 @@ root=$destdir$prefix
 manifest_rel=share/fresnel/install_manifest.txt
 manifest=$root/$manifest_rel
 
+# inside REL: REL is a relative path that stays inside DESTDIR/PREFIX (no
+# empty, "." or ".." part), so "f ../../x" or "d /etc" in a tampered
+# manifest is refused
+inside() {
+    case $1 in
+    "" | /* | . | ./* | .. | ../* | */. | */.. | *//* | */./* | */../*) return 1 ;;
+    esac
+    return 0
+}
+
 uninstall() {
     if [ ! -f "$manifest" ]; then
         echo "uninstall: no $manifest (nothing installed by make install under this DESTDIR and PREFIX)" >&2
         exit 1
     fi
     entries=$(cat "$manifest") || exit 1
+    # the physical DESTDIR/PREFIX: a listed file whose directory resolves
+    # elsewhere (through a symbolic link) is refused too
+    root_real=$(cd "$root" && pwd -P) || exit 1
+    # levels above PREFIX that an install may have created: up to DESTDIR
+    # itself, and never / (without DESTDIR)
+    depth=$(printf '%s\n' "$prefix" | tr -s / '\n' | grep -c .)
+    [ -n "$destdir" ] || depth=$((depth - 1))
+    refused=$(mktemp) || exit 1
+    trap 'rm -f "$refused"' EXIT
+    refuse() {
+        echo "uninstall: refusing manifest line '$1': $2" >&2
+        echo x >>"$refused"
+    }
     # files first; then the directories inside PREFIX, deepest first; then
-    # PREFIX itself (".") and the levels above it ("..", "../..") that the
-    # install created, innermost first; each directory only if empty
+    # PREFIX itself (".") and the levels above it ("./..", "./../..") that
+    # the install created, innermost first; each directory only if empty
+    printf '%s\n' "$entries" | while IFS= read -r line; do
+        case $line in
+        "f "* | "d "*) ;;
+        "") ;;
+        *) refuse "$line" "expected 'f PATH' or 'd PATH'" ;;
+        esac
+    done
     printf '%s\n' "$entries" | sed -n 's/^f //p' | while IFS= read -r f; do
-        rm -f "$root/$f"
+        if ! inside "$f"; then
+            refuse "f $f" "not a path inside $root"
+            continue
+        fi
+        dir=$(cd "$root/$(dirname "$f")" 2>/dev/null && pwd -P) || continue # already gone
+        case $dir/ in
+        "$root_real"/*) rm -f "$dir/$(basename "$f")" ;;
+        *) refuse "f $f" "its directory is $dir, outside $root" ;;
+        esac
     done
     {
-        printf '%s\n' "$entries" | sed -n 's/^d //p' | grep -v '^\.' | awk '{ print length($0) "\t" $0 }' |
-            sort -rn | cut -f2- | awk -v r="$root" '{ print r "/" $0 }'
-        printf '%s\n' "$entries" | sed -n 's/^d //p' | grep '^\.' | awk '{ print length($0) "\t" $0 }' |
-            sort -n | cut -f2- | while IFS= read -r up; do
+        printf '%s\n' "$entries" | sed -n 's/^d //p' | grep -v '^\.' | while IFS= read -r d; do
+            if inside "$d"; then
+                printf '%s\t%s\n' "${#d}" "$d"
+            else
+                refuse "d $d" "not a path inside $root"
+            fi
+        done | sort -rn | cut -f2- | while IFS= read -r d; do
+            dir=$(cd "$root/$d" 2>/dev/null && pwd -P) || continue
+            case $dir/ in
+            "$root_real"/?*) echo "$dir" ;;
+            *) refuse "d $d" "it is $dir, outside $root" ;;
+            esac
+        done
+        printf '%s\n' "$entries" | sed -n 's/^d //p' | grep '^\.' | sort | while IFS= read -r up; do
+            # "." then "/.." any number of times, nothing else; each step
+            # shortens rest, so this ends
+            rest=${up#.}
+            while :; do
+                case $rest in
+                /..*) rest=${rest#/..} ;;
+                *) break ;;
+                esac
+            done
+            if [ -n "$rest" ]; then
+                refuse "d $up" "expected '.' or './..' repeated (PREFIX and the levels above it)"
+                continue
+            fi
+            levels=$(printf '%s' "$up" | tr -cd / | wc -c)
+            if [ "$levels" -gt "$depth" ]; then
+                refuse "d $up" "above ${destdir:-/}"
+                continue
+            fi
             d=$root
-            up=${up#.}
-            while [ -n "$up" ]; do
+            i=0
+            while [ "$i" -lt "$levels" ]; do
                 d=$(dirname "$d")
-                up=${up#/..}
+                i=$((i + 1))
             done
             echo "$d"
         done
     } | while IFS= read -r d; do
         rmdir "$d" 2>/dev/null || [ ! -d "$d" ] || echo "uninstall: kept $d (not empty)"
     done
+    if [ -s "$refused" ]; then
+        echo "uninstall: $(wc -l <"$refused" | tr -d ' ') manifest line(s) refused; nothing outside $root was removed" >&2
+        exit 1
+    fi
     return 0
 }
 

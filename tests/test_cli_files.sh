@@ -78,7 +78,7 @@ printf 'keep\n' >"$t/ro.h"; chmod 444 "$t/ro.h"
 # The manifest itself, directly or through a link, is refused.
 cp "$t/s.scene" "$t/keep.scene"
 "$F" gen "$t/s.scene" -o "$t/s.scene" 2>"$t/err"; rc=$?
-[ $rc -eq 2 ] && cmp -s "$t/s.scene" "$t/keep.scene" && grep -q manifest "$t/err" &&
+[ $rc -eq 2 ] && cmp -s "$t/s.scene" "$t/keep.scene" && grep -q 'an input of this command' "$t/err" &&
     pass "gen -o MANIFEST: exit 2, manifest untouched" || fail "gen -o MANIFEST: exit $rc $(cat "$t/err")"
 ln -s s.scene "$t/scene-link"
 "$F" gen "$t/s.scene" -o "$t/scene-link" 2>"$t/err"; rc=$?
@@ -105,6 +105,43 @@ printf 'old\n' >"$t/lim.h"
 [ $rc -eq 1 ] && [ "$(cat "$t/lim.h")" = old ] && no_temps "$t" && grep -q 'lim.h' "$t/err" &&
     pass "ulimit -f: exit 1, output as it was, no temporary ($(head -1 "$t/err"))" ||
     fail "ulimit -f: exit $rc, $(head -c 40 "$t/lim.h"), temps: $(find "$t" -name '.*.??????') $(cat "$t/err")"
+
+# Several outputs of one command commit together or not at all: gen's -o and
+# --glsl-texture (the header over a size limit the texture fits, or a full
+# device), report -o DIR's report.md and plots (one plot unwritable).
+printf 'materials = au cu al ag\nmodels = schlick f82 lsk gulbrandsen lut8\n' >"$t/tex.scene"
+echo keep >"$t/g.glsl"; echo keep >"$t/t.h"
+# 8 blocks: 4096 bytes (POSIX's 512-byte blocks) or 8192 (bash's 1024)
+(ulimit -f 8; "$F" gen "$t/tex.scene" --glsl -o "$t/g.glsl" --glsl-texture "$t/t.h") 2>"$t/err"; rc=$?
+"$F" gen "$t/tex.scene" --glsl -o "$t/g0.glsl" --glsl-texture "$t/t0.h" 2>/dev/null
+[ $rc -eq 1 ] && [ "$(cat "$t/g.glsl")" = keep ] && [ "$(cat "$t/t.h")" = keep ] && no_temps "$t" &&
+    [ "$(wc -c <"$t/g0.glsl")" -gt 8192 ] && [ "$(wc -c <"$t/t0.h")" -lt 4096 ] &&
+    pass "gen --glsl -o OUT --glsl-texture TEX, OUT over ulimit -f: exit 1, both as they were ($(head -1 "$t/err" | sed "s|$t/||"))" ||
+    fail "gen --glsl-texture under ulimit -f: exit $rc, OUT '$(head -c 20 "$t/g.glsl")', TEX '$(head -c 20 "$t/t.h")' $(cat "$t/err")"
+"$F" gen "$t/tex.scene" --glsl -o /dev/full --glsl-texture "$t/t2.h" 2>"$t/err"; rc=$?
+[ $rc -eq 1 ] && [ ! -e "$t/t2.h" ] && no_temps "$t" &&
+    pass "gen --glsl -o /dev/full --glsl-texture TEX: exit 1, TEX not created" || fail "gen -o /dev/full --glsl-texture: exit $rc, $(ls "$t/t2.h" 2>&1) $(cat "$t/err")"
+"$F" report --scene "$t/s.scene" -o "$t/rep3" --no-timing --no-instructions >/dev/null 2>"$t/err" && cp "$t/rep3/report.md" "$t/rep3.md"
+rm "$t/rep3/curves/cu.svg"; mkdir "$t/rep3/curves/cu.svg"; echo old >"$t/rep3/report.md"
+"$F" report --scene "$t/s.scene" -o "$t/rep3" --no-timing --no-instructions >/dev/null 2>"$t/err"; rc=$?
+[ $rc -eq 1 ] && [ "$(cat "$t/rep3/report.md")" = old ] && no_temps "$t/rep3" &&
+    pass "report -o DIR with one plot unwritable: exit 1, report.md as it was, no temporary" ||
+    fail "report -o DIR, one plot unwritable: exit $rc, report.md '$(head -c 30 "$t/rep3/report.md")' $(cat "$t/err")"
+"$F" report --scene "$t/s.scene" -o "$t/new/rep" --no-timing --no-instructions >/dev/null 2>"$t/err"; rc=$?
+[ $rc -ne 0 ] && [ ! -e "$t/new" ] && pass "report -o DIR under a missing directory: exit $rc, nothing created" ||
+    fail "report -o missing/DIR: exit $rc"
+"$F" report --scene "$t/s.scene" -o "$t/rep5" --no-timing --no-instructions --cross "$t/missing" >/dev/null 2>"$t/err"; rc=$?
+[ $rc -eq 2 ] && [ ! -e "$t/rep5" ] && pass "report -o DIR with a missing --cross file: exit 2, DIR not left behind" ||
+    fail "report with a missing --cross: exit $rc, $(ls -R "$t/rep5" 2>&1 | head -3) $(cat "$t/err")"
+(cd "$t" && "$F" report --scene s.scene -o - --no-timing --no-instructions >/dev/null 2>err); rc=$?
+[ $rc -eq 2 ] && [ ! -e "$t/-" ] && grep -q 'expected a directory' "$t/err" &&
+    pass "report -o -: exit 2, no directory named '-' ($(cat "$t/err"))" || fail "report -o -: exit $rc, $(ls -d "$t/-" 2>&1) $(cat "$t/err")"
+# report reads --cross after opening report.md: that file is still not replaced
+"$F" report --scene "$t/s.scene" -o "$t/rep6" --no-timing --no-instructions >/dev/null 2>&1
+echo "== m0 fixed point" >"$t/rep6/report.md"; cp "$t/rep6/report.md" "$t/cross.keep"
+"$F" report --scene "$t/s.scene" -o "$t/rep6" --no-timing --no-instructions --cross "$t/rep6/report.md" >/dev/null 2>"$t/err"; rc=$?
+[ $rc -eq 2 ] && cmp -s "$t/rep6/report.md" "$t/cross.keep" && no_temps "$t/rep6" &&
+    pass "report -o DIR --cross DIR/report.md: exit 2, the input untouched" || fail "report over its --cross file: exit $rc $(cat "$t/err")"
 
 # Every command checks its stdout.
 full() { # name, args...
@@ -138,6 +175,12 @@ mkdir -p "$t/rep2"; mkdir "$t/rep2/report.md"
 "$F" eval --model exact --type f32 <"$t" >"$t/out" 2>"$t/err"; rc=$?
 [ $rc -eq 1 ] && grep -q '<stdin>' "$t/err" && pass "eval </dir: exit 1 naming <stdin> ($(cat "$t/err"))" ||
     fail "eval </dir: exit $rc $(cat "$t/err")"
+for opt in --speed --cross --size; do
+    "$F" report --scene "$t/s.scene" -o "$t/rd" --no-timing --no-instructions $opt "$t" >/dev/null 2>"$t/err"; rc=$?
+    [ $rc -eq 1 ] && grep -q "$t: cannot read: Is a directory" "$t/err" && [ ! -e "$t/rd" ] &&
+        pass "report $opt DIR (a directory as input, a read error): exit 1, nothing written" ||
+        fail "report $opt DIR: exit $rc $(cat "$t/err")"
+done
 "$F" gen "$t" -o "$t/x.h" 2>"$t/err"; rc=$?
 [ $rc -eq 1 ] && grep -q "$t" "$t/err" && [ ! -e "$t/x.h" ] && pass "gen DIR (a directory as manifest, a read error): exit 1, no output" ||
     fail "gen DIR: exit $rc $(cat "$t/err")"

@@ -258,6 +258,121 @@ expect "a format that does not match the file (--format sopra on YAML)" "$au" ':
 rc=$?
 [ "$rc" -eq 2 ] && grep -q "none.yml: cannot open" "$t/err" && pass "a missing file: exit 2, named" || fail "missing file: rc $rc"
 "$F" import "$au" -o "$au" 2>"$t/err"
-[ $? -eq 2 ] && grep -q "is the input file" "$t/err" && pass "import refuses to overwrite its input" || fail "import over its input"
+[ $? -eq 2 ] && grep -q "is an input of this command" "$t/err" && pass "import refuses to overwrite its input" || fail "import over its input"
 "$F" import "$au" --format yaml -o "$t/x.csv" 2>"$t/err"
 grep -q "unknown format 'yaml'" "$t/err" && pass "an unknown --format is named ($(head -1 "$t/err" | cut -c1-80))" || fail "unknown --format: $(head -1 "$t/err")"
+
+# ---- converted values: a finite number in the file can overflow in nm
+printf 'wl,n\n0.4,1.5\n1e306,1.6\n' >"$t/huge.csv"
+expect "CSV export: a wavelength of 1e306 um (inf nm)" "$t/huge.csv" ':3: the wavelength converts to inf nm, expected a finite number of nm'
+printf '1 1e-320 3 2\n1.5 0\n1.5 0\n1.5 0\n' >"$t/tiny.nk"
+expect "SOPRA: an energy of 1e-320 eV (inf nm)" "$t/tiny.nk" ':2: the wavelength converts to inf nm'
+printf 'DATA:\n  - type: tabulated nk\n    data: |\n        0.4 1.5 0\n        1e306 1.6 0\n' >"$t/huge.yml"
+expect "YAML: a wavelength of 1e306 um (inf nm)" "$t/huge.yml" ':5: the wavelength converts to inf nm'
+for route in "params --nk $t/huge.csv" "curve --nk $t/huge.csv --samples 3"; do
+    "$F" $route >/dev/null 2>"$t/err"
+    rc=$?
+    [ "$rc" -eq 2 ] && grep -q 'huge.csv:3: the wavelength converts to inf nm' "$t/err" &&
+        pass "${route%% *} --nk refuses the file import refuses" || fail "${route%% *} --nk huge.csv: exit $rc $(head -1 "$t/err")"
+done
+printf 'material h = huge.csv\nmodels = schlick\n' >"$t/huge.scene"
+"$F" gen "$t/huge.scene" -o "$t/huge.h" 2>"$t/err"
+rc=$?
+[ "$rc" -eq 2 ] && [ ! -e "$t/huge.h" ] && grep -q 'huge.csv:3: the wavelength converts to inf nm' "$t/err" &&
+    pass "gen refuses a manifest's file with an infinite wavelength" || fail "gen huge.csv: exit $rc $(head -1 "$t/err")"
+# SOPRA's unit and intervals are range-checked as numbers (an int conversion
+# of 1e300 is undefined behaviour, which the sanitizer pass would report)
+printf '1e300 1.4 3.6 2\n1 0\n1 0\n1 0\n' >"$s"
+expect "SOPRA: a unit code of 1e300" "$s" ':1: expected unit code 1 \(eV\), 2 \(um\) or 4 \(nm\), got 1e\+300' --format sopra
+printf '1 1.4 3.6 1e300\n1 0\n1 0\n1 0\n' >"$s"
+expect "SOPRA: 1e300 intervals" "$s" ':1: expected a whole number of intervals in 1..100000, got 1e\+300'
+printf '1 1.4 3.6 -1e300\n1 0\n' >"$s"
+expect "SOPRA: -1e300 intervals" "$s" ':1: expected a whole number of intervals in 1..100000, got -1e\+300' --format sopra
+
+# ---- .spd: several pairs to a line, a comment after the first pair
+awk '/^[0-9]/ { printf "%s %s ", $1, $2; if (++n % 3 == 0) print ""; next } { print }' "$I/Au.eta.spd" >"$t/spd/multi.eta.spd"
+awk '/^[0-9]/ { printf "%s %s ", $1, $2; if (++n % 2 == 0) print ""; next } { print }' "$I/Au.k.spd" >"$t/spd/multi.k.spd"
+accept ".spd with three pairs to a line (told as spd)" "$t/spd/multi.eta.spd" "$I/Au.eta.spd"
+grep -v '^#' "$I/Au.eta.spd" | sed '1s/$/ # first pair/' >"$t/spd/c.eta.spd"
+cp "$I/Au.k.spd" "$t/spd/c.k.spd"
+accept ".spd whose first line ends in a comment" "$t/spd/c.eta.spd" "$I/Au.eta.spd"
+printf '400,1.5,0.1\n500,1.5,0.1\n' >"$e"
+expect "data rows without their header (not taken for .spd)" "$e" ":1: cannot tell the format from '400,1.5,0.1'"
+
+# ---- classic Mac OS line ends (CR alone): named, at the first one
+tr '\n' '\r' <"$I/Au.eta.spd" >"$t/spd/cr.eta.spd"
+expect ".spd with CR-only line ends" "$t/spd/cr.eta.spd" ':1: expected lines ending in LF or CR LF, found a CR alone'
+tr '\n' '\r' <"$I/Au-Johnson.reference.csv" >"$t/cr.csv"
+expect "the data pack's CSV with CR-only line ends" "$t/cr.csv" ':1: expected lines ending in LF or CR LF, found a CR alone' --format csv
+tr '\n' '\r' <"$au" >"$t/cr.yml"
+expect "YAML with CR-only line ends" "$t/cr.yml" ':1: expected lines ending in LF or CR LF, found a CR alone'
+
+# ---- no output replaces a file the command reads, the implicit half of a .spd pair included
+cp "$I/Au.eta.spd" "$I/Au.k.spd" "$t/spd/"
+for pair in Au.k.spd:Au.eta.spd Au.eta.spd:Au.k.spd Au.k.spd:Au.k.spd; do
+    in=${pair%%:*} out=${pair##*:}
+    "$F" import "$t/spd/$in" -o "$t/spd/$out" 2>"$t/err"
+    rc=$?
+    if [ "$rc" -eq 2 ] && cmp -s "$t/spd/$out" "$I/$out" && grep -q "spd/$out: is .*an input of this command" "$t/err"; then
+        pass "import $in -o $out: refused, exit 2, $out untouched"
+    else fail "import $in -o $out: exit $rc, $(cmp "$t/spd/$out" "$I/$out" 2>&1) $(head -1 "$t/err")"; fi
+done
+printf 'material tin = nk/TiN.yml\nmodels = schlick\n' >"$t/project/self.scene"
+cp "$t/project/nk/TiN.yml" "$t/tin.keep"
+"$F" gen "$t/project/self.scene" -o "$t/project/nk/TiN.yml" 2>"$t/err"
+rc=$?
+[ "$rc" -eq 2 ] && cmp -s "$t/project/nk/TiN.yml" "$t/tin.keep" && grep -q 'an input of this command' "$t/err" &&
+    pass "gen -o a material file of its manifest: refused, exit 2, untouched" || fail "gen -o material file: exit $rc $(head -1 "$t/err")"
+cp data/materials.csv "$t/data/materials.keep" 2>/dev/null
+cp "$t/data/materials.csv" "$t/data/materials.keep"
+"$F" gen "$t/project/coat.scene" --data "$t/data" -o "$t/data/materials.csv" 2>"$t/err"
+rc=$?
+[ "$rc" -eq 2 ] && cmp -s "$t/data/materials.csv" "$t/data/materials.keep" &&
+    pass "gen -o a data-pack file it read: refused, exit 2, untouched" || fail "gen -o materials.csv: exit $rc $(head -1 "$t/err")"
+
+# ---- a directory or an I/O error as the input is a read failure (exit 1),
+# the same for every route; a FIFO never blocks; a device is refused
+mkdir -p "$t/project/dir.yml"
+printf 'material d = dir.yml\nmodels = schlick\n' >"$t/project/dir.scene"
+printf 'material d = /proc/self/mem\nmodels = schlick\n' >"$t/project/mem.scene"
+for route in "import $t/project/dir.yml -o $t/o.csv" "params --nk $t/project/dir.yml" "gen $t/project/dir.scene -o $t/o.h" \
+    "gen $t/project -o $t/o.h" "import /proc/self/mem -o $t/o.csv" "params --nk /proc/self/mem" "gen $t/project/mem.scene -o $t/o.h"; do
+    "$F" $route >/dev/null 2>"$t/err"
+    rc=$?
+    [ "$rc" -eq 1 ] && grep -q 'cannot read: \(Is a directory\|Input/output error\)' "$t/err" && [ ! -e "$t/o.csv" ] && [ ! -e "$t/o.h" ] &&
+        pass "fresnel $(echo "$route" | sed "s|$t/||g"): exit 1 ($(head -1 "$t/err" | sed "s|$t/||"))" ||
+        fail "fresnel $(echo "$route" | sed "s|$t/||g"): exit $rc $(head -1 "$t/err")"
+done
+mkfifo "$t/project/fifo.yml"
+printf 'material f = fifo.yml\nmodels = schlick\n' >"$t/project/fifo.scene"
+for route in "gen $t/project/fifo.scene -o $t/o.h" "import $t/project/fifo.yml -o $t/o.csv" "gen $t/project/fifo.yml -o $t/o.h"; do
+    timeout 20 "$F" $route >/dev/null 2>"$t/err"
+    rc=$?
+    [ "$rc" -eq 2 ] && grep -q 'fifo.yml' "$t/err" && [ ! -e "$t/o.h" ] &&
+        pass "a FIFO with no writer does not block: fresnel ${route%% *} exits 2 ($(head -1 "$t/err" | sed "s|$t/||"))" ||
+        fail "FIFO: fresnel $(echo "$route" | sed "s|$t/||g"): exit $rc (124: blocked) $(head -1 "$t/err")"
+done
+if cat "$au" | "$F" import /dev/stdin -o "$t/o.csv" 2>"$t/err" && [ -s "$t/o.csv" ]; then pass "import /dev/stdin reads a pipe"
+else fail "import /dev/stdin from a pipe: $(head -1 "$t/err")"; fi
+rm -f "$t/o.csv"
+"$F" import /dev/zero -o "$t/o.csv" 2>"$t/err"
+rc=$?
+[ "$rc" -eq 2 ] && grep -q 'expected a regular file or a pipe, got a character device' "$t/err" &&
+    pass "a device as input: exit 2 ($(head -1 "$t/err"))" || fail "import /dev/zero: exit $rc $(head -1 "$t/err")"
+
+# ---- out of memory is exit 3 on every route: a 15 MB file (read whole)
+# under a 25 MB address-space limit
+# (a sanitizer build reserves more address space than that at startup: skipped)
+if ! (ulimit -v 25000; "$F" --version) >/dev/null 2>&1; then
+    echo "NOTE this build does not start under ulimit -v 25000 (sanitizers?): out-of-memory status not tested"
+else
+    { cat "$au"; head -c 15000000 /dev/zero | tr '\0' '#' | fold -w 1000 | sed 's/^/# /'; } >"$t/project/big.yml"
+    printf 'material b = big.yml\nmodels = schlick\n' >"$t/project/big.scene"
+    for route in "import $t/project/big.yml -o $t/o.csv" "params --nk $t/project/big.yml" "gen $t/project/big.scene -o $t/o.h"; do
+        (ulimit -v 25000; "$F" $route) >/dev/null 2>"$t/err"
+        rc=$?
+        [ "$rc" -eq 3 ] && grep -q 'out of memory' "$t/err" && [ ! -e "$t/o.h" ] && [ ! -e "$t/o.csv" ] &&
+            pass "out of memory: fresnel ${route%% *} exits 3 ($(head -1 "$t/err" | sed "s|$t/||"))" ||
+            fail "out of memory: fresnel $(echo "$route" | sed "s|$t/||g"): exit $rc $(head -1 "$t/err")"
+    done
+fi

@@ -63,6 +63,15 @@ grep -q '^| Host speed against .* | not measured |$' "$t/sp0/report.md" &&
     echo "FAIL report without --speed: $(grep 'Host speed' "$t/sp0/report.md" | head -2)"
 { speed_file -O2 0.25 | head -4; echo 'row conductor-batch call 1 2'; } >"$t/bad.txt"
 "$F" report --scene "$t/one.scene" -o "$t/sp2" --no-timing --speed "$t/bad.txt" >/dev/null 2>"$t/err"
-[ $? -eq 2 ] && [ ! -e "$t/sp2/report.md" ] && grep -q "bad.txt:5: expected row NAME FORM then 8 numbers" "$t/err" &&
+[ $? -eq 2 ] && [ ! -e "$t/sp2/report.md" ] && grep -q "bad.txt:5: expected row NAME FORM then 8 finite numbers" "$t/err" &&
     echo "PASS report: a malformed --speed file is an error at file:line (exit 2), nothing written" ||
     echo "FAIL report bad --speed: $(cat "$t/err")"
+# sscanf reads "inf" and "nan" as numbers: they are refused like any other malformed value
+for bad in 'row conductor-batch call 1 2 3 4 inf 1 1 1' 'row conductor-batch call 1 2 3 4 5 1 nan 1' 'target conductor-batch inf 1 1'; do
+    { speed_file -O2 0.25 | head -4; echo "$bad"; } >"$t/inf.txt"
+    "$F" report --scene "$t/one.scene" -o "$t/sp3" --no-timing --no-instructions --speed "$t/inf.txt" >/dev/null 2>"$t/err"
+    rc=$?
+    [ $rc -eq 2 ] && [ ! -e "$t/sp3/report.md" ] && grep -q "inf.txt:5: expected .*finite" "$t/err" &&
+        echo "PASS report: --speed line '$bad' is refused at file:line (exit 2)" ||
+        echo "FAIL report --speed '$bad': exit $rc $(cat "$t/err")"
+done

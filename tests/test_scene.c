@@ -337,6 +337,8 @@ static void test_errors(void)
     expect_error("scene error: empty file at line 1", "", 1, "'materials");
     expect_error("scene error: only comments", "# nothing\n# here\n", 2, "'materials");
     expect_error_len("scene error: NUL byte", with_nul, sizeof with_nul - 1, 2, "NUL");
+    expect_error("scene error: CR-only line ends (classic Mac OS), named at the first",
+                 "materials = au\rmodels = f82\r", 1, "found a CR alone");
     expect_error("scene error: BOM only on line 1", "materials = gold\n\xEF\xBB\xBFmodels = f82\n",
                  2, "key");
 }
@@ -348,7 +350,7 @@ static void test_unreadable(void)
     int rc;
     snprintf(path, sizeof path, "%s/does-not-exist.scene", tmp_dir);
     rc = load_capturing(path, &s);
-    snprintf(prefix, sizeof prefix, "%s: cannot read: ", path);
+    snprintf(prefix, sizeof prefix, "%s: cannot open: ", path);
     CHECK("scene error: missing file", rc == CLI_BAD_INPUT &&
                                            strncmp(last_message, prefix, strlen(prefix)) == 0,
           "rc %d, got '%s'", rc, last_message);

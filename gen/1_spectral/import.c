@@ -5,13 +5,17 @@
  *   wavelength_nm,n,k          the data pack's CSV (load_nk.c), nm
  *   wl,n / wl,k / wl,n,k       refractiveindex.info CSV export (load_rii_csv.c), um
  *   KEY: (upper-case key)      refractiveindex.info database YAML (load_rii_yaml.c), um
- *   four numbers, no comment   SOPRA .nk header (load_sopra.c), eV, um or nm
- *   two numbers                .spd pairs (load_spd.c), nm
+ *   four numbers, no comment,  SOPRA .nk header (load_sopra.c), eV, um or nm
+ *     a unit digit first and
+ *     whole intervals last
+ *   other blank-separated      .spd pairs, one or more to a line (load_spd.c), nm
+ *     numbers
  *
  * --format NAME skips the guess. Each reader's opening comment states its
  * rules; all of them end in the same per-row checks (nk_check_row) and the
  * same coverage rule (spectrum_from_table), so a user's file is held to the
  * data pack's standard. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,25 +32,28 @@ static const char *base_name(const char *path)
     return slash ? slash + 1 : path;
 }
 
-/* How many whitespace/';'/','-separated words of s are numbers, or -1 if
- * some word is not one. */
-static int count_numbers(const char *s)
+/* How many whitespace/';'/','-separated words of s are numbers (stored in
+ * v, up to 4), or -1 if some word is not one. A '#' ends the words (.spd
+ * comments follow the values). */
+static int count_numbers(const char *s, double v[4])
 {
     int count = 0;
-    while (*s) {
+    while (*s && *s != '#') {
         char word[64];
         size_t len;
-        double v;
+        double x;
         s += strspn(s, " \t;,\r");
-        len = strcspn(s, " \t;,\r");
+        len = strcspn(s, " \t;,\r#");
         if (len == 0)
-            break;
+            continue;
         if (len >= sizeof word)
             return -1;
         memcpy(word, s, len);
         word[len] = '\0';
-        if (cli_parse_double(word, &v))
+        if (cli_parse_double(word, &x))
             return -1;
+        if (count < 4)
+            v[count] = x;
         count++;
         s += len;
     }
@@ -56,7 +63,8 @@ static int count_numbers(const char *s)
 static int detect(const text_file *t, nk_format *format)
 {
     const char *p = (const char *)t->data + cli_skip_bom((const char *)t->data);
-    int line = 1, comments = 0;
+    int line = 1, comments = 0, count;
+    double v[4];
     while (*p) {
         char buf[256];
         size_t len = strcspn(p, "\n"), skip;
@@ -81,9 +89,13 @@ static int detect(const text_file *t, nk_format *format)
             *format = NK_FORMAT_RII_CSV;
         else if (skip > 0 && s[skip] == ':')
             *format = NK_FORMAT_RII_YAML;
-        else if (count_numbers(s) == 4 && !comments)
+        /* A SOPRA header is four numbers, a unit code (a digit) first and a
+         * whole number of intervals last; .spd pairs may run several to a
+         * line, so four numbers that are not such a header are pairs. */
+        else if ((count = count_numbers(s, v)) == 4 && !comments && v[0] >= 0.0 && v[0] <= 9.0 &&
+                 v[0] == floor(v[0]) && v[3] >= 1.0 && v[3] == floor(v[3]))
             *format = NK_FORMAT_SOPRA;
-        else if (count_numbers(s) == 2)
+        else if (count >= 2 && strcspn(s, ",;") >= strcspn(s, "#")) /* .spd: blanks between values */
             *format = NK_FORMAT_SPD;
         else
             return text_error(t, line,
@@ -140,29 +152,29 @@ int nk_import(const char *path, nk_format format, nk_table *t, nk_file_info *inf
     memset(info, 0, sizeof *info);
     memset(t, 0, sizeof *t);
     memset(&k_file, 0, sizeof k_file);
-    if (text_read(path, &file))
-        return CLI_BAD_INPUT;
-    if (format == NK_FORMAT_AUTO && detect(&file, &format)) {
+    if ((status = text_read(path, &file)))
+        return status;
+    if (format == NK_FORMAT_AUTO && (status = detect(&file, &format))) {
         text_free(&file);
-        return CLI_BAD_INPUT;
+        return status;
     }
     info->format = nk_format_names[format];
     snprintf(info->file, sizeof info->file, "%s", base_name(path));
     if (format == NK_FORMAT_SPD) {
-        if (spd_pair(path, eta_path, k_path, sizeof eta_path)) {
+        if ((status = spd_pair(path, eta_path, k_path, sizeof eta_path))) {
             text_free(&file);
-            return CLI_BAD_INPUT;
+            return status;
         }
         if (strcmp(eta_path, path)) { /* given the k file: read n first */
             k_file = file;
             k_file.path = path;
-            if (text_read(eta_path, &file)) {
+            if ((status = text_read(eta_path, &file))) {
                 text_free(&k_file);
-                return CLI_BAD_INPUT;
+                return status;
             }
-        } else if (k_path[0] && text_read(k_path, &k_file)) {
+        } else if (k_path[0] && (status = text_read(k_path, &k_file))) {
             text_free(&file);
-            return CLI_BAD_INPUT;
+            return status;
         }
         if (k_file.data)
             snprintf(info->file, sizeof info->file, "%.120s + %.120s", base_name(file.path), base_name(k_file.path));
@@ -207,8 +219,8 @@ int material_load(const char *dir, const material_source *m, material_info *info
     if (!m->path || !*m->path)
         return material_lookup(dir, m->id, info, "material") || spectrum_load(dir, m->id, s) ? CLI_BAD_INPUT : 0;
     memset(info, 0, sizeof *info);
-    if (nk_import(m->path, m->format, &t, &info->file))
-        return CLI_BAD_INPUT;
+    if ((status = nk_import(m->path, m->format, &t, &info->file)))
+        return status;
     status = spectrum_from_table(m->path, &t, s);
     nk_table_free(&t);
     if (status)

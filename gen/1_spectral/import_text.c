@@ -36,10 +36,11 @@ int text_read(const char *path, text_file *t)
     FILE *f;
     size_t cap = 0, i;
     int line = 1;
+    int status;
     memset(t, 0, sizeof *t);
     t->path = path;
-    if (!(f = fopen(path, "rb")))
-        return cli_error(path, "cannot open: %s", strerror(errno));
+    if ((status = cli_open_input(path, &f)))
+        return status;
     for (;;) {
         size_t got;
         if (t->size == cap) {
@@ -68,14 +69,18 @@ int text_read(const char *path, text_file *t)
         int err = errno;
         fclose(f);
         text_free(t);
-        return cli_error(path, "read error: %s", strerror(err ? err : EIO));
+        return cli_read_failure(path, err);
     }
     fclose(f);
     for (i = 0; i < t->size; i++) {
+        const char *bad = t->data[i] == '\0' ? "expected text, found a NUL byte"
+                        : t->data[i] == '\r' && i + 1 < t->size && t->data[i + 1] != '\n'
+                            ? "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line ends)"
+                            : NULL;
         if (t->data[i] == '\n')
             line++;
-        else if (t->data[i] == '\0') {
-            text_error(t, line, "expected text, found a NUL byte");
+        else if (bad) {
+            text_error(t, line, "%s", bad);
             text_free(t);
             return CLI_BAD_INPUT;
         }
@@ -152,6 +157,12 @@ double nm_from_um(double um)
 
 int column_push(const text_file *t, nk_column *c, double wl, double v, int line)
 {
+    /* Every reader converts its wavelengths to nm (um x 1000, 1239.84 / eV): a
+     * finite number in the file can overflow there. */
+    if (!isfinite(wl))
+        return text_error(t, line, "the wavelength converts to %g nm, expected a finite number of nm", wl);
+    if (!isfinite(v))
+        return text_error(t, line, "the value converts to %g, expected a finite number", v);
     if (c->rows > 0 && !(wl > c->wl[c->rows - 1]))
         return text_error(t, line, "wavelength %.10g nm not greater than the previous row's %.10g nm "
                                    "(rows must be in increasing wavelength, each once)",

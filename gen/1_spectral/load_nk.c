@@ -44,17 +44,20 @@ static int read_line(csv_reader *r, char **line)
     if (!r->buf) {
         r->buf = malloc(CSV_MAX_LINE + 1);
         if (!r->buf) {
-            r->line++;
-            csv_error(r, "out of memory");
+            cli_oom(r->path);
             return -1;
         }
         r->cap = CSV_MAX_LINE + 1;
     }
     while ((ch = getc(r->f)) != EOF && ch != '\n') {
-        if (ch == '\0' || len == CSV_MAX_LINE) {
+        /* A CR is a line end only before LF; alone, the file has classic
+         * Mac OS line ends and would read as one long line. */
+        if (ch == '\0' || len == CSV_MAX_LINE || (len > 0 && r->buf[len - 1] == '\r')) {
             r->line++;
             if (ch == '\0')
                 csv_error(r, "expected text, found a NUL byte");
+            else if (len > 0 && r->buf[len - 1] == '\r')
+                csv_error(r, "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line ends)");
             else
                 csv_error(r, "expected a line of at most %d bytes", CSV_MAX_LINE);
             return -1;
@@ -63,8 +66,9 @@ static int read_line(csv_reader *r, char **line)
     }
     if (ch == EOF) {
         if (ferror(r->f)) {
-            r->line++;
-            csv_error(r, "read error: %s", strerror(errno));
+            char where[1100];
+            snprintf(where, sizeof where, "%s:%d", r->path, r->line + 1);
+            cli_read_failure(where, errno);
             return -1;
         }
         if (len == 0)
@@ -87,9 +91,8 @@ int csv_open(csv_reader *r, const char *path, const char *header)
     r->line = 0;
     r->buf = NULL;
     r->cap = 0;
-    r->f = fopen(path, "rb");
-    if (!r->f)
-        return cli_error(path, "cannot open: %s", strerror(errno));
+    if ((got = cli_open_input(path, &r->f)))
+        return got;
     got = read_line(r, &line);
     if (got < 0) {
         csv_close(r);
@@ -213,8 +216,8 @@ int nk_check_row(const char *path, int line, double wl, double n, double k)
 {
     char where[1100];
     snprintf(where, sizeof where, "%s:%d", path, line);
-    if (!(wl > 0.0))
-        return cli_error(where, "wavelength %.10g not positive", wl);
+    if (!(wl > 0.0) || !isfinite(wl))
+        return cli_error(where, "wavelength %.10g nm, expected a finite positive number", wl);
     /* n <= 0 has no physical passive medium behind it and would make eta/n1
      * meaningless; k < 0 would be a gain medium. */
     if (!(n > 0.0))
@@ -273,7 +276,7 @@ int load_nk(const char *path, nk_table *t)
             goto fail;
         }
         if (t->rows == capacity && grow(t, &capacity)) {
-            csv_error(&r, "out of memory");
+            cli_oom(path);
             goto fail;
         }
         t->wl[t->rows] = wl;

@@ -10,6 +10,7 @@
  * is refused rather than guessed. Values may be separated by blanks, tabs or
  * ';' and need not be one pair per line. A pair count other than intervals +
  * 1, an odd count of values and an unknown code are errors. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -36,15 +37,16 @@ int load_sopra(text_file *t, nk_table *out)
         return CLI_BAD_INPUT;
     if (got != 4)
         return text_error(t, 1, "expected the SOPRA header 'unit start end intervals' (4 numbers), got %d numbers", got);
-    unit = (int)head[0];
-    intervals = (int)head[3];
-    if ((double)unit != head[0] || unit < 1 || unit > 4)
+    /* Range first: converting a double outside int's range is undefined. */
+    if (!(head[0] >= 1.0 && head[0] <= 4.0) || head[0] != floor(head[0]))
         return text_error(t, 1, "expected unit code 1 (eV), 2 (um) or 4 (nm), got %.10g", head[0]);
+    unit = (int)head[0];
     if (unit == 3)
         return text_error(t, 1, "unit code 3 is read as cm^-1 by some programs and as a length by others: "
                                 "expected 1 (eV), 2 (um) or 4 (nm); convert the file");
-    if ((double)intervals != head[3] || intervals < 1 || intervals > 100000)
+    if (!(head[3] >= 1.0 && head[3] <= 100000.0) || head[3] != floor(head[3]))
         return text_error(t, 1, "expected a whole number of intervals in 1..100000, got %.10g", head[3]);
+    intervals = (int)head[3];
     if (!(head[1] > 0.0) || !(head[2] > head[1]))
         return text_error(t, 1, "expected 0 < start < end, got start %.10g, end %.10g", head[1], head[2]);
     unit_name = unit == 1 ? "eV" : unit == 2 ? "um" : "nm";

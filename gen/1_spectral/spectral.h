@@ -62,7 +62,7 @@ typedef struct csv_reader {
     char *buf;
     size_t cap;
 } csv_reader;
-/* Open path and require its first line to be exactly `header`; 0 or CLI_BAD_INPUT. */
+/* Open path (cli_open_input) and require its first line to be exactly `header`; 0 or a status after a message. */
 int csv_open(csv_reader *r, const char *path, const char *header);
 /* Next data row, its line ending removed: 1 (row set), 0 at the end, or -1 after a message. */
 int csv_next_row(csv_reader *r, char **row);

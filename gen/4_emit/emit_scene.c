@@ -89,7 +89,9 @@ int emit_scene(const char *manifest, const char *out_path, const char *tex_path,
 {
     emit_loaded l;
     int status;
-    cli_outfile out, tex;
+    cli_outfile out, tex, *both[2];
+    both[0] = &out;
+    both[1] = &tex;
     if ((status = emit_load(manifest, dir_option, glsl, &l)))
         return status;
     if ((status = cli_out_open(&out, out_path)))
@@ -101,17 +103,11 @@ int emit_scene(const char *manifest, const char *out_path, const char *tex_path,
     status = glsl == EMIT_HLSL ? emit_hlsl(out.f, &l.in)
            : glsl         ? emit_glsl(out.f, tex_path ? tex.f : NULL, &l.in)
                           : emit_header(out.f, &l.in);
-    if (status) {
-        cli_out_abort(&out);
-        if (tex_path)
-            cli_out_abort(&tex);
-        goto done;
-    }
-    if (tex_path && (status = cli_out_commit(&tex))) {
-        cli_out_abort(&out);
-        goto done;
-    }
-    status = cli_out_commit(&out);
+    /* The header and its texture are one output: both or neither. */
+    if (status)
+        cli_out_abort_all(both, tex_path ? 2 : 1);
+    else
+        status = cli_out_commit_all(both, tex_path ? 2 : 1);
 done:
     emit_loaded_free(&l);
     return status;

@@ -1,6 +1,7 @@
 /* The host speed targets and the `make bench` file (see speed_targets.h). */
 #include "bench/speed_targets.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -74,17 +75,21 @@ static void text_value(char *dst, size_t size, const char *v)
     dst[n] = '\0';
 }
 
-int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, const char **what)
+/* sscanf's %lf reads "inf" and "nan" too. */
+static int all_finite(const double *v, int n)
 {
-    FILE *in = fopen(path, "r");
+    int i;
+    for (i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return 0;
+    return 1;
+}
+
+int speed_file_read(FILE *in, const char *path, speed_file *f, char *where, int wherelen, const char **what)
+{
     char line[512];
     int ln = 0, has_opt = 0;
     memset(f, 0, sizeof *f);
-    if (!in) {
-        snprintf(where, (size_t)wherelen, "%s", path);
-        *what = "cannot open (expected the output of `make bench`)";
-        return -1;
-    }
     while (fgets(line, sizeof line, in)) {
         char name[SPEED_NAME], form[16], tail;
         const char *bad = NULL;
@@ -110,8 +115,9 @@ int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, 
                 bad = "at most 48 rows";
             else if (sscanf(line, "row %39s %15s %lf %lf %lf %lf %lf %lf %lf %lf %c", name, form, &r->ns[0], &r->ns[1],
                             &r->ns[2], &r->ns[3], &r->ns[4], &r->x[0], &r->x[1], &r->x[2], &tail) != 10 ||
+                     !all_finite(r->ns, 5) || !all_finite(r->x, 3) ||
                      !(r->ns[0] > 0.0 && r->ns[0] <= r->ns[2] && r->ns[2] <= r->ns[4] && r->x[0] > 0.0))
-                bad = "expected row NAME FORM then 8 numbers: ns min q1 median q3 max (0 < min <= median <= max), "
+                bad = "expected row NAME FORM then 8 finite numbers: ns min q1 median q3 max (0 < min <= median <= max), "
                       "ratio median q1 q3 (> 0)";
             else {
                 strcpy(r->name, name);
@@ -122,8 +128,9 @@ int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, 
             speed_ratio *t = &f->targets[f->n_targets];
             if (f->n_targets == SPEED_MAX_ROWS)
                 bad = "at most 48 targets";
-            else if (sscanf(line, "target %39s %lf %lf %lf", name, &t->med, &t->q1, &t->q3) != 4 || !(t->med > 0.0))
-                bad = "expected target ID then its ratio: median q1 q3 (median > 0)";
+            else if (sscanf(line, "target %39s %lf %lf %lf", name, &t->med, &t->q1, &t->q3) != 4 || !isfinite(t->med) ||
+                     !isfinite(t->q1) || !isfinite(t->q3) || !(t->med > 0.0))
+                bad = "expected target ID then its ratio, finite: median q1 q3 (median > 0)";
             else {
                 strcpy(t->id, name);
                 f->n_targets++;
@@ -133,11 +140,11 @@ int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, 
         if (bad) {
             snprintf(where, (size_t)wherelen, "%s:%d", path, ln);
             *what = bad;
-            fclose(in);
             return -1;
         }
     }
-    fclose(in);
+    if (ferror(in))
+        return 1;
     if (!has_opt) {
         snprintf(where, (size_t)wherelen, "%s", path);
         *what = "expected an '# opt: FLAGS' line (the output of `make bench`)";

@@ -13,6 +13,8 @@
  *       same round: median and quartiles), then free text (goal and mark)
  * Other lines starting with '#' and blank lines are comments. */
 #ifndef FRESNEL_BENCH_SPEED_TARGETS_H
+#include <stdio.h>
+
 #define FRESNEL_BENCH_SPEED_TARGETS_H
 
 #define SPEED_FLAGSETS 2 /* the target's flag sets: "-O2" and "-O3 -march=native" */
@@ -51,10 +53,11 @@ typedef struct speed_file {
     speed_ratio targets[SPEED_MAX_ROWS];
 } speed_file;
 
-/* Reads a file in the format above: 0, or -1 with where = "path:line" (or
- * "path"; wherelen bytes) and *what = what was expected there. An
- * "# opt:" line is required. */
-int speed_file_read(const char *path, speed_file *f, char *where, int wherelen, const char **what);
+/* Reads a file in the format above from in (opened by the caller; path
+ * names it): 0, or -1 with where = "path:line" (or "path"; wherelen bytes)
+ * and *what = what was expected there, or 1 after a read error (errno
+ * set). An "# opt:" line is required. */
+int speed_file_read(FILE *in, const char *path, speed_file *f, char *where, int wherelen, const char **what);
 /* The target with this id in f, or NULL. */
 const speed_ratio *speed_file_target(const speed_file *f, const char *id);
 const speed_row *speed_file_row(const speed_file *f, const char *name);

@@ -67,10 +67,33 @@ int cli_error(const char *where, const char *fmt, ...)
     return CLI_BAD_INPUT;
 }
 
+/* The worst class of failure reported so far (cli_exit_status): the
+ * statuses pass through many callers, some of which only know "it failed". */
+static int failure_class;
+
+static void note_failure(int status)
+{
+    if (status == CLI_NO_MEMORY || (status == CLI_FAILURE && failure_class != CLI_NO_MEMORY))
+        failure_class = status;
+}
+
+int cli_exit_status(int status)
+{
+    return status && failure_class ? failure_class : status;
+}
+
 int cli_oom(const char *where)
 {
     cli_error(where, "out of memory");
+    note_failure(CLI_NO_MEMORY);
     return CLI_NO_MEMORY;
+}
+
+int cli_read_failure(const char *where, int err)
+{
+    cli_error(where, "cannot read: %s", strerror(err ? err : EIO));
+    note_failure(CLI_FAILURE);
+    return CLI_FAILURE;
 }
 
 int cli_parse_double(const char *s, double *out)
@@ -228,6 +251,95 @@ size_t cli_skip_bom(const char *s)
     return !strncmp(s, "\xEF\xBB\xBF", 3) ? 3 : 0;
 }
 
+/* ---- input files ----------------------------------------------------------- */
+
+/* Every file opened as input, so that no output replaces one. */
+typedef struct input_file {
+    dev_t dev;
+    ino_t ino;
+    char *path;
+} input_file;
+static input_file *inputs;
+static int input_count, input_cap;
+
+static const char *file_kind(mode_t mode)
+{
+    return S_ISCHR(mode)    ? "a character device"
+           : S_ISBLK(mode)  ? "a block device"
+           : S_ISSOCK(mode) ? "a socket"
+                            : "not a regular file";
+}
+
+int cli_open_input(const char *path, FILE **f)
+{
+    struct stat st;
+    int fd, flags, i;
+    *f = NULL;
+    /* O_NONBLOCK: opening a FIFO would otherwise wait for a writer, for
+     * ever if none comes. Reads block again below. */
+    if ((fd = open(path, O_RDONLY | O_NOCTTY | O_NONBLOCK)) < 0)
+        return cli_error(path, "cannot open: %s", strerror(errno));
+    if (fstat(fd, &st) != 0) {
+        int err = errno;
+        close(fd);
+        return cli_read_failure(path, err);
+    }
+    if (S_ISDIR(st.st_mode)) {
+        close(fd);
+        return cli_read_failure(path, EISDIR);
+    }
+    if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode)) {
+        close(fd);
+        return cli_error(path, "expected a regular file or a pipe, got %s", file_kind(st.st_mode));
+    }
+    if ((flags = fcntl(fd, F_GETFL)) == -1 || fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) == -1) {
+        int err = errno;
+        close(fd);
+        return cli_read_failure(path, err);
+    }
+    for (i = 0; i < input_count && (inputs[i].dev != st.st_dev || inputs[i].ino != st.st_ino); i++)
+        ;
+    if (i == input_count) {
+        if (input_count == input_cap) {
+            int cap = input_cap ? 2 * input_cap : 16;
+            input_file *grown = realloc(inputs, (size_t)cap * sizeof *grown);
+            if (!grown) {
+                close(fd);
+                return cli_oom(path);
+            }
+            inputs = grown;
+            input_cap = cap;
+        }
+        if (!(inputs[i].path = malloc(strlen(path) + 1))) {
+            close(fd);
+            return cli_oom(path);
+        }
+        strcpy(inputs[i].path, path);
+        inputs[i].dev = st.st_dev;
+        inputs[i].ino = st.st_ino;
+        input_count++;
+    }
+    if (!(*f = fdopen(fd, "rb"))) {
+        int err = errno;
+        close(fd);
+        return err == ENOMEM ? cli_oom(path) : cli_read_failure(path, err);
+    }
+    return 0;
+}
+
+/* The input that path (through links) is, or NULL. */
+static const char *input_at(const char *path)
+{
+    struct stat st;
+    int i;
+    if (stat(path, &st) != 0)
+        return NULL;
+    for (i = 0; i < input_count; i++)
+        if (inputs[i].dev == st.st_dev && inputs[i].ino == st.st_ino)
+            return inputs[i].path;
+    return NULL;
+}
+
 /* ---- standard streams ---------------------------------------------------- */
 
 int cli_check_input(const char *where, FILE *f, const char *name)
@@ -235,6 +347,7 @@ int cli_check_input(const char *where, FILE *f, const char *name)
     if (!ferror(f))
         return 0;
     cli_error(where, "reading %s: %s", name, errno ? strerror(errno) : "read error");
+    note_failure(CLI_FAILURE);
     return CLI_FAILURE;
 }
 
@@ -256,7 +369,6 @@ int cli_finish_stdout(const char *where)
 /* Temporary files that exist right now, for the signal handler: it may only
  * call async-signal-safe functions, so the paths live in static buffers and
  * a slot is published (used = 1) only after its path is complete. */
-#define CLI_TMP_SLOTS 8
 static char tmp_paths[CLI_TMP_SLOTS][CLI_PATH_MAX + 32];
 static volatile sig_atomic_t tmp_used[CLI_TMP_SLOTS];
 static int handlers_installed;
@@ -315,7 +427,19 @@ static void release_slot(cli_outfile *o)
 static int out_fail(cli_outfile *o, const char *what, int err)
 {
     cli_error(o->shown, "%s: %s", what, strerror(err));
+    note_failure(CLI_FAILURE);
     return CLI_FAILURE;
+}
+
+/* CLI_BAD_INPUT after a message when o's target is one of the inputs. */
+static int refuse_input(const cli_outfile *o, const char *target)
+{
+    const char *in = input_at(target);
+    if (!in)
+        return 0;
+    if (!strcmp(in, o->shown))
+        return cli_error(o->shown, "is an input of this command; expected a different output");
+    return cli_error(o->shown, "is %s, an input of this command; expected a different output", in);
 }
 
 /* Follows a chain of symbolic links from path to the file they finally name
@@ -391,6 +515,8 @@ int cli_out_open(cli_outfile *o, const char *path)
         return out_fail(o, "cannot write", errno);
     if (exists && S_ISDIR(st.st_mode))
         return out_fail(o, "cannot write", EISDIR);
+    if (exists && refuse_input(o, via_proc ? path : o->path))
+        return CLI_BAD_INPUT;
     if (exists && (via_proc || !S_ISREG(st.st_mode))) {
         /* A device, FIFO or socket is written in place: renaming a file over
          * /dev/null would replace the device node. */
@@ -460,27 +586,74 @@ int cli_out_open(cli_outfile *o, const char *path)
     return 0;
 }
 
-int cli_out_commit(cli_outfile *o)
+/* Flushes and closes o: 0, or CLI_FAILURE after a message with o's
+ * temporary removed. A temporary that succeeded stays for out_rename. */
+static int out_close(cli_outfile *o)
 {
     int err = 0;
     errno = 0;
     if (fflush(o->f) != 0 || ferror(o->f))
         err = errno ? errno : EIO;
-    if (o->kind == CLI_OUT_STDOUT) {
-        o->f = NULL;
-        return err ? out_fail(o, "write error", err) : 0;
-    }
-    if (fclose(o->f) != 0 && !err)
+    if (o->kind != CLI_OUT_STDOUT && fclose(o->f) != 0 && !err)
         err = errno ? errno : EIO;
     o->f = NULL;
-    if (o->kind == CLI_OUT_DIRECT)
-        return err ? out_fail(o, "write error", err) : 0;
-    if (!err && rename(tmp_paths[o->slot], o->path) != 0)
-        err = errno;
-    if (err)
+    if (err && o->kind == CLI_OUT_ATOMIC) {
         unlink(tmp_paths[o->slot]);
+        release_slot(o);
+    }
+    return err ? out_fail(o, "write error", err) : 0;
+}
+
+/* Renames a closed temporary over its target. */
+static int out_rename(cli_outfile *o)
+{
+    int err = 0;
+    if (o->kind != CLI_OUT_ATOMIC)
+        return 0;
+    if (rename(tmp_paths[o->slot], o->path) != 0) {
+        err = errno;
+        unlink(tmp_paths[o->slot]);
+    }
     release_slot(o);
     return err ? out_fail(o, "write error", err) : 0;
+}
+
+/* Removes a closed temporary. */
+static void out_discard(cli_outfile *o)
+{
+    if (o->kind == CLI_OUT_ATOMIC && o->slot >= 0) {
+        unlink(tmp_paths[o->slot]);
+        release_slot(o);
+    }
+}
+
+int cli_out_commit(cli_outfile *o)
+{
+    cli_outfile *one[1];
+    one[0] = o;
+    return cli_out_commit_all(one, 1);
+}
+
+int cli_out_commit_all(cli_outfile *const *o, int n)
+{
+    int i, status = 0;
+    for (i = 0; i < n; i++) {
+        int s = o[i]->f ? out_close(o[i]) : 0;
+        if (s && !status)
+            status = s;
+    }
+    /* An input read after the output was opened (report's --cross) is
+     * still not replaced. */
+    for (i = 0; i < n && !status; i++)
+        if (o[i]->kind == CLI_OUT_ATOMIC && o[i]->slot >= 0)
+            status = refuse_input(o[i], o[i]->path);
+    for (i = 0; i < n; i++) {
+        if (status)
+            out_discard(o[i]); /* after a failure, the rest are discarded */
+        else
+            status = out_rename(o[i]);
+    }
+    return status;
 }
 
 void cli_out_abort(cli_outfile *o)
@@ -488,10 +661,14 @@ void cli_out_abort(cli_outfile *o)
     if (o->f && o->kind != CLI_OUT_STDOUT)
         fclose(o->f);
     o->f = NULL;
-    if (o->kind == CLI_OUT_ATOMIC && o->slot >= 0) {
-        unlink(tmp_paths[o->slot]);
-        release_slot(o);
-    }
+    out_discard(o);
+}
+
+void cli_out_abort_all(cli_outfile *const *o, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        cli_out_abort(o[i]);
 }
 
 int cli_out_is_input(const char *out, const char *in)

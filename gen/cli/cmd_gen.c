@@ -83,11 +83,9 @@ int cmd_gen(int argc, char **argv)
         return cli_error(WHERE, "usage: fresnel gen SCENE -o OUT.h (see fresnel gen --help)");
     if (tex_path && glsl != EMIT_GLSL)
         return cli_error(WHERE, "--glsl-texture needs --glsl (see fresnel gen --help)");
-    if (tex_path && !strcmp(tex_path, out_path))
-        return cli_error(WHERE, "--glsl-texture and -o name the same file '%s'", out_path);
-    if (cli_out_is_input(out_path, manifest))
-        return cli_error(WHERE, "'%s' is the scene manifest itself; refusing to overwrite it", out_path);
-    if (tex_path && (cli_out_is_input(tex_path, manifest) || cli_out_is_input(tex_path, out_path)))
-        return cli_error(WHERE, "'%s' is the scene manifest or the -o file; refusing to overwrite it", tex_path);
+    /* Neither may be a file the run reads (the manifest, a material's file,
+     * the data pack): cli_out_open refuses those. */
+    if (tex_path && (!strcmp(tex_path, out_path) || cli_out_is_input(tex_path, out_path)))
+        return cli_error(WHERE, "--glsl-texture and -o name the same file '%s'", tex_path);
     return emit_scene(manifest, out_path, tex_path, dir_option, glsl);
 }

@@ -17,7 +17,8 @@ static void import_usage(void)
            "Converts a user's n,k file into the data pack's CSV (header wavelength_nm,n,k):\n"
            "the file's own rows with wavelengths in nm, nothing resampled; a dispersion\n"
            "formula is evaluated every 0.1 nm of 360-830 nm inside its wavelength_range.\n"
-           "OUT ('-' for stdout) is written whole or not at all. To add the material to a\n"
+           "OUT ('-' for stdout) is written whole or not at all, and is none of the files\n"
+           "read (FILE, the other half of a .spd pair). To add the material to a\n"
            "data directory, put OUT there as <id>.csv and add a line id,name,dataset,kind to\n"
            "its materials.csv (data/README.md). --nk FILE (params, curve, bench) and\n"
            "'material ID = FILE' in a manifest read the same formats without converting.\n"
@@ -77,10 +78,10 @@ int cmd_import(int argc, char **argv)
     }
     if (!in || !out_path)
         return cli_error(WHERE, "expected FILE and -o OUT.csv (fresnel import --help)");
-    if (cli_out_is_input(out_path, in))
-        return cli_error(WHERE, "-o %s is the input file; expected a different output", out_path);
-    if (nk_import(in, format, &t, &info))
-        return CLI_BAD_INPUT;
+    /* The output may be none of the files read, the implicit half of a .spd
+     * pair included: cli_out_open refuses them. */
+    if ((status = nk_import(in, format, &t, &info)))
+        return status;
     /* The pipeline's coverage rule, so a file that misses the visible is
      * refused here too, and one that covers part of it warned about. */
     if (!(s = malloc(sizeof *s))) {

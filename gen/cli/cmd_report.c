@@ -73,5 +73,7 @@ int cmd_report(int argc, char **argv)
                 o.data_dir = v;
         }
     }
+    if (!strcmp(o.out_dir, "-"))
+        return cli_error(WHERE, "-o -: the report is several files (report.md and its plots); expected a directory");
     return report_write(&o);
 }

@@ -15,17 +15,17 @@ int cmd_viewer(int argc, char **argv)
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fresnel viewer SCENE -o DIR [--cross FILE] [--data DIR]\n\n"
-                   "Writes DIR/index.html: one self-contained page (JavaScript, GLSL and the scene's\n"
-                   "constants inline; no network access) that renders the scene's materials as a\n"
-                   "sphere over a plate, lit by a sky and three lights, with GGX (Smith G2) or\n"
-                   "normalised Blinn-Phong, each model of the scene beside (or split with, or\n"
-                   "differenced against) the spectral reference; with the model's CIEDE2000 figures\n"
-                   "and a plot of its curves. WebGL 2; output in sRGB or, where the browser has one,\n"
-                   "a Display-P3 drawing buffer. The models run the GLSL port (ports/glsl/fresnel.glsl)\n"
-                   "on the constants `fresnel gen --glsl` emits. `make viewer` writes the default\n"
-                   "scene's to build/viewer/. Beside each model: its CIEDE2000 figures, its time per\n"
-                   "call on this host and, with --cross FILE (the output of `make cross-count`), its\n"
-                   "instructions on the Cortex-M0.\n");
+                   "Writes DIR/index.html (-o -: to stdout): one self-contained page (JavaScript,\n"
+                   "GLSL and the scene's constants inline; no network access) that renders the\n"
+                   "scene's materials as a sphere over a plate, lit by a sky and three lights, with\n"
+                   "GGX (Smith G2) or normalised Blinn-Phong, each model of the scene beside (or\n"
+                   "split with, or differenced against) the spectral reference; with the model's\n"
+                   "CIEDE2000 figures and a plot of its curves. WebGL 2; output in sRGB or, where\n"
+                   "the browser has one, a Display-P3 drawing buffer. The models run the GLSL port\n"
+                   "(ports/glsl/fresnel.glsl) on the constants `fresnel gen --glsl` emits. `make\n"
+                   "viewer` writes the default scene's to build/viewer/. Beside each model: its\n"
+                   "CIEDE2000 figures, its time per call on this host and, with --cross FILE (the\n"
+                   "output of `make cross-count`), its instructions on the Cortex-M0.\n");
             return 0;
         }
         if (argv[i][0] == '-' && argv[i][1]) {

@@ -46,16 +46,27 @@ static double callgrind_instructions(const char *scene_path, const char *materia
     return collected / count;
 }
 
-static int open_out(cli_outfile *o, const char *dir, const char *name)
+/* Commits the run's outputs together (status 0) or removes them all. */
+static int finish_outputs(report_run *r, int status)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    return cli_out_open(o, path);
-}
-
-static int commit_out(cli_outfile *o)
-{
-    return cli_out_commit(o);
+    cli_outfile **all = r->out_count ? malloc((size_t)r->out_count * sizeof *all) : NULL;
+    int i;
+    if (r->out_count && !all) {
+        for (i = 0; i < r->out_count; i++)
+            cli_out_abort(&r->out[i]);
+        return status ? status : cli_oom(WHERE);
+    }
+    for (i = 0; i < r->out_count; i++)
+        all[i] = &r->out[i];
+    if (status)
+        cli_out_abort_all(all, r->out_count);
+    else
+        status = cli_out_commit_all(all, r->out_count);
+    free(all);
+    free(r->out);
+    r->out = NULL;
+    r->out_count = 0;
+    return status;
 }
 
 /* Materials whose colour leaves the space's gamut: what each policy costs
@@ -377,14 +388,16 @@ static int copy_file(FILE *f, const char *path)
 {
     char buf[4096];
     size_t n;
-    FILE *in = fopen(path, "rb");
-    if (!in)
-        return cli_error(path, "cannot read: %s", strerror(errno)), CLI_FAILURE;
+    FILE *in;
+    int status;
+    if ((status = cli_open_input(path, &in)))
+        return status;
     while ((n = fread(buf, 1, sizeof buf, in)) > 0)
         fwrite(buf, 1, n, f);
     if (ferror(in)) {
+        int err = errno;
         fclose(in);
-        return cli_error(path, "cannot read"), CLI_FAILURE;
+        return cli_read_failure(path, err);
     }
     fclose(in);
     return 0;
@@ -510,8 +523,9 @@ int report_write(const report_options *o)
     const char *scene_path = o->scene_path;
     int timing = o->timing, instructions = o->instructions, i, m, t, status = 0;
     double (*sig_de)[REPORT_SIGMAS] = NULL, (*sig_err)[REPORT_SIGMAS] = NULL;
-    cli_outfile out;
-    char path[1024];
+    FILE *f;
+    char curves[CLI_PATH_MAX];
+    int made_dir = 0, made_curves = 0;
     memset(&r, 0, sizeof r);
     r.out_dir = o->out_dir;
     r.cross_path = o->cross_path;
@@ -520,6 +534,8 @@ int report_write(const report_options *o)
         speed_file *sf = malloc(sizeof *sf);
         char where[1100];
         const char *what;
+        FILE *in;
+        int got, err;
         if (!sf) {
             status = cli_oom(WHERE);
             break;
@@ -527,8 +543,13 @@ int report_write(const report_options *o)
         r.speed[i] = sf;
         r.speed_paths[i] = o->speed_paths[i];
         r.speed_count = i + 1;
-        if (speed_file_read(o->speed_paths[i], sf, where, (int)sizeof where, &what)) {
-            status = cli_error(where, "%s", what);
+        if ((status = cli_open_input(o->speed_paths[i], &in)))
+            break;
+        got = speed_file_read(in, o->speed_paths[i], sf, where, (int)sizeof where, &what);
+        err = errno;
+        fclose(in);
+        if (got) {
+            status = got > 0 ? cli_read_failure(o->speed_paths[i], err) : cli_error(where, "%s", what);
             break;
         }
     }
@@ -611,33 +632,53 @@ int report_write(const report_options *o)
     if ((status = compute_hoffman(&r)))
         goto done;
 
-    mkdir(r.out_dir, 0777);
-    snprintf(path, sizeof path, "%s/curves", r.out_dir);
-    mkdir(path, 0777);
-    if ((status = open_out(&out, r.out_dir, "report.md")))
+    /* Every file is committed at the end, together; on failure the
+     * directories this run created go too. */
+    r.out_cap = r.sc.material_count + 3;
+    if (!(r.out = calloc((size_t)r.out_cap, sizeof *r.out))) {
+        status = cli_oom(WHERE);
         goto done;
-    fprintf(out.f, "# Fresnel models: error against run time\n\nWritten by `build/fresnel report --scene %s` "
+    }
+    if ((made_dir = mkdir(r.out_dir, 0777) == 0) == 0 && errno != EEXIST) {
+        status = cli_error(r.out_dir, "cannot create the directory: %s", strerror(errno));
+        goto done;
+    }
+    if ((size_t)snprintf(curves, sizeof curves, "%s/curves", r.out_dir) >= sizeof curves) {
+        status = cli_error(r.out_dir, "path too long");
+        goto done;
+    }
+    if ((made_curves = mkdir(curves, 0777) == 0) == 0 && errno != EEXIST) {
+        status = cli_error(curves, "cannot create the directory: %s", strerror(errno));
+        goto done;
+    }
+    if (!(f = report_out_open(&r, "report.md", &status)))
+        goto done;
+    fprintf(f, "# Fresnel models: error against run time\n\nWritten by `build/fresnel report --scene %s` "
                    "(`make report`). Colour space %s, Gaussian window sigma %g nm, incident medium n1 %g; "
                    "ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs, under the gamut policy `%s` "
                    "(\"Colours outside the gamut\" below).\n\n",
             scene_path, r.sc.space, r.sc.sigma, r.sc.n1, gamut_policy_names[r.g->gamut]);
-    report_targets(&r, out.f);
-    write_accuracy_tables(&r, out.f);
-    write_sigma(&r, out.f, sig_de, sig_err);
-    write_approaches(&r, out.f);
-    write_hoffman(&r, out.f);
-    write_budget(&r, out.f);
-    if ((status = write_cross(&r, out.f)) || (status = write_speed(&r, out.f))) {
-        cli_out_abort(&out);
-        goto done;
-    }
-    if ((status = commit_out(&out)))
+    report_targets(&r, f);
+    write_accuracy_tables(&r, f);
+    write_sigma(&r, f, sig_de, sig_err);
+    write_approaches(&r, f);
+    write_hoffman(&r, f);
+    write_budget(&r, f);
+    if ((status = write_cross(&r, f)) || (status = write_speed(&r, f)))
         goto done;
     if ((status = report_plots(&r, (const double(*)[REPORT_SIGMAS])sig_de)))
+        goto done;
+    if ((status = finish_outputs(&r, 0)))
         goto done;
     printf("fresnel report: wrote %s/report.md, %s/pareto.svg, %s/sigma.svg, %s/curves/*.svg\n", r.out_dir, r.out_dir,
            r.out_dir, r.out_dir);
 done:
+    if (r.out)
+        status = finish_outputs(&r, status);
+    if (status && made_curves)
+        rmdir(curves);
+    if (status && made_dir)
+        rmdir(r.out_dir);
     if (r.mats)
         for (i = 0; i < r.sc.material_count; i++) {
             for (m = 0; m < r.sc.model_count; m++) {

@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 
+#include "cli/cli.h"
 #include "1_spectral/colour_difference.h"
 #include "2_derive/derive.h"
 #include "scene/scene.h"
@@ -79,7 +80,14 @@ typedef struct report_run {
     const struct speed_file *speed[REPORT_MAX_SPEED];
     int speed_count;
     int timing;                            /* 0: --no-timing */
+    /* The files written so far, all committed together at the end:
+     * report.md, pareto.svg, sigma.svg, one per material. */
+    cli_outfile *out;
+    int out_count, out_cap;
 } report_run;
+/* Opens DIR/name as the run's next output: its stream, or NULL after a
+ * message (*status set). */
+FILE *report_out_open(report_run *r, const char *name, int *status);
 
 /* Hoffman's table [Hof20]: his 14 metals with our ids and his RMS CIEDE2000
  * columns (ACEScg). */
@@ -103,7 +111,8 @@ void report_metal_summary(report_run *r, int model, int type, double *mean, doub
 #define REPORT_SIGMAS 4
 extern const double report_sigmas[REPORT_SIGMAS]; /* 0, 12, 25, 50 nm */
 
-/* pareto.svg, sigma.svg, curves/<material>.svg (report_plots.c). */
+/* pareto.svg, sigma.svg, curves/<material>.svg (report_plots.c), opened
+ * with report_out_open: 0 or a status. */
 int report_plots(report_run *r, const double (*sigma_de)[REPORT_SIGMAS]);
 
 /* Ground truth and the clamp's cost for one material. */

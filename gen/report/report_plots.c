@@ -11,30 +11,23 @@
 
 static const char *const channel_colour[3] = {"#c0392b", "#27ae60", "#2e5fd8"};
 
-static int begin_file(cli_outfile *o, const char *dir, const char *name)
+static int end_file(svg_doc *d)
 {
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", dir, name);
-    return cli_out_open(o, path);
-}
-
-static int end_file(cli_outfile *o, svg_doc *d)
-{
-    svg_end(d); /* a write error stays in the stream's error flag, which commit checks */
-    return cli_out_commit(o);
+    svg_end(d); /* a write error stays in the stream's error flag, which the commit checks */
+    return 0;
 }
 
 static int write_pareto(report_run *r)
 {
-    cli_outfile o;
+    FILE *f;
     svg_doc d;
     svg_panel p;
     svg_axis xa = {0.1, 1000.0, SVG_LOG10, 0.0, "ns per RGB evaluation (this host)", NULL};
     svg_axis ya = {1e-4, 100.0, SVG_LOG10, 0.0, "mean CIEDE2000 over the metals (log)", NULL};
     int n = r->sc.model_count * report_type_count, k, j, front[256], nf = 0, measured = 0;
-    if ((k = begin_file(&o, r->out_dir, "pareto.svg")))
+    if (!(f = report_out_open(r, "pareto.svg", &k)))
         return k;
-    svg_begin(&d, o.f, 900, 620, "Fresnel models: error against run time");
+    svg_begin(&d, f, 900, 620, "Fresnel models: error against run time");
     if (svg_panel_begin(&p, &d, 0, 0, 900, 620, &xa, &ya, "Error against run time; Pareto front in black") == 0) {
         for (k = 0; k < n && k < 256; k++) {
             double mean, worst, mj, wj;
@@ -79,21 +72,21 @@ static int write_pareto(report_run *r)
         if (!measured)
             svg_text(&d, 450, 300, 16, SVG_MIDDLE, "black", "timings not measured (--no-timing)");
     }
-    return end_file(&o, &d);
+    return end_file(&d);
 }
 
 static int write_sigma(report_run *r, const double (*de)[REPORT_SIGMAS])
 {
-    cli_outfile o;
+    FILE *f;
     svg_doc d;
     svg_panel p;
     svg_legend l;
     svg_axis xa = {0.0, 50.0, SVG_LINEAR, 12.5, "Gaussian window sigma (nm); 0 = point sampling", NULL};
     svg_axis ya = {1e-3, 30.0, SVG_LOG10, 0.0, "mean CIEDE2000 against the ground truth", NULL};
     int i, k;
-    if (begin_file(&o, r->out_dir, "sigma.svg"))
-        return CLI_FAILURE;
-    svg_begin(&d, o.f, 900, 560, "Exact Fresnel on Gaussian-window eta', kappa'");
+    if (!(f = report_out_open(r, "sigma.svg", &k)))
+        return k;
+    svg_begin(&d, f, 900, 560, "Exact Fresnel on Gaussian-window eta', kappa'");
     if (svg_panel_begin(&p, &d, 0, 0, 700, 560, &xa, &ya, "Metzgar's window width against error") == 0) {
         svg_legend_begin(&l, &d, 710, 40);
         for (i = 0; i < r->sc.material_count; i++) {
@@ -112,7 +105,7 @@ static int write_sigma(report_run *r, const double (*de)[REPORT_SIGMAS])
             svg_legend_entry(&l, &s, SVG_CIRCLE, NULL, r->mats[i].p.info.id);
         }
     }
-    return end_file(&o, &d);
+    return end_file(&d);
 }
 
 /* One material: a row per model with the full range, a zoom on 70-90
@@ -123,18 +116,18 @@ static int write_sigma(report_run *r, const double (*de)[REPORT_SIGMAS])
 static int write_curves(report_run *r, int mi)
 {
     report_material *rm = &r->mats[mi];
-    cli_outfile o;
+    FILE *f;
     svg_doc d;
     char name[128], title[256];
     const double row_h = 230.0;
     double th[CURVE_N], gt[CURVE_N][3], zt[ZOOM_N], zgt[ZOOM_N][3];
-    int m, a, ch;
+    int m, a, ch, status;
     snprintf(name, sizeof name, "curves/%s.svg", rm->p.info.id);
-    if (begin_file(&o, r->out_dir, name))
-        return CLI_FAILURE;
+    if (!(f = report_out_open(r, name, &status)))
+        return status;
     snprintf(title, sizeof title, "%s (%s) in %s: ground truth (dashed) and each model (solid)", rm->p.info.name,
              rm->p.info.id, r->sc.space);
-    svg_begin(&d, o.f, 960, 40 + row_h * r->sc.model_count, title);
+    svg_begin(&d, f, 960, 40 + row_h * r->sc.model_count, title);
     svg_text(&d, 10, 24, 16, SVG_START, "black", title);
     for (a = 0; a < CURVE_N; a++) {
         th[a] = a * 0.5;
@@ -213,16 +206,16 @@ static int write_curves(report_run *r, int mi)
         svg_strip(&d, 735, y0 + 138, 215, 14, (const double(*)[3])(zgt + 100), ZOOM_N - 100);
         svg_strip(&d, 735, y0 + 154, 215, 14, (const double(*)[3])(zv + 100), ZOOM_N - 100);
     }
-    return end_file(&o, &d);
+    return end_file(&d);
 }
 
 int report_plots(report_run *r, const double (*sigma_de)[REPORT_SIGMAS])
 {
-    int i;
-    if (write_pareto(r) || write_sigma(r, sigma_de))
-        return CLI_BAD_INPUT;
+    int i, status;
+    if ((status = write_pareto(r)) || (status = write_sigma(r, sigma_de)))
+        return status;
     for (i = 0; i < r->sc.material_count; i++)
-        if (write_curves(r, i))
-            return CLI_BAD_INPUT;
+        if ((status = write_curves(r, i)))
+            return status;
     return 0;
 }

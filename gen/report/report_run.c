@@ -1,6 +1,8 @@
 /* The report's data: the run's cells and summaries that the tables and
- * plots read, and the published figures they are compared with. */
+ * plots read, the published figures they are compared with, and the files
+ * the run writes. */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "report/report.h"
@@ -51,3 +53,19 @@ void report_metal_summary(report_run *r, int model, int type, double *mean, doub
 }
 
 const double report_sigmas[REPORT_SIGMAS] = {0.0, 12.0, 25.0, 50.0};
+
+FILE *report_out_open(report_run *r, const char *name, int *status)
+{
+    char path[CLI_PATH_MAX];
+    if ((size_t)snprintf(path, sizeof path, "%s/%s", r->out_dir, name) >= sizeof path) {
+        *status = cli_error(r->out_dir, "path too long");
+        return NULL;
+    }
+    if (r->out_count == r->out_cap) {
+        *status = cli_error(path, "expected at most %d output files", r->out_cap);
+        return NULL;
+    }
+    if ((*status = cli_out_open(&r->out[r->out_count], path)))
+        return NULL;
+    return r->out[r->out_count++].f;
+}

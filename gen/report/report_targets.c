@@ -309,7 +309,7 @@ static double m0_column(const char *path, const char *name, int col)
                     break;
                 }
             }
-            v = x;
+            v = isfinite(x) ? x : NAN; /* strtod reads "inf" too */
         }
     }
     fclose(in);

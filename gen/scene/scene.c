@@ -402,11 +402,10 @@ int scene_load(const char *path, scene *out)
     ssize_t len;
     int line = 0, rc = 0, read_errno, errors = 0;
     set_defaults(out);
-    f = fopen(path, "rb");
-    if (f == NULL)
-        return report(path, 0, "cannot read: %s", strerror(errno));
+    if ((rc = cli_open_input(path, &f)))
+        return rc;
     for (;;) {
-        char *text, *hash;
+        char *text, *hash, *cr;
         errno = 0;
         len = getline(&buf, &cap, f);
         read_errno = errno;
@@ -419,6 +418,11 @@ int scene_load(const char *path, scene *out)
             if (++errors == SCENE_MAX_ERRORS)
                 break;
             continue;
+        }
+        if ((cr = strchr(text, '\r')) != NULL && strcmp(cr, "\r\n") && strcmp(cr, "\r")) {
+            /* classic Mac OS line ends: the whole file would read as line 1 */
+            rc = report(path, line, "expected lines ending in LF or CR LF, found a CR alone (classic Mac OS line ends)");
+            break;
         }
         if (line == 1 && len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
             text += 3;
@@ -439,10 +443,9 @@ int scene_load(const char *path, scene *out)
         }
     }
     free(buf);
-    if (rc == 0 && ferror(f)) {
-        fclose(f);
-        report(path, 0, "cannot read: %s", strerror(read_errno ? read_errno : EIO));
-        return CLI_FAILURE; /* the file failed, not its content */
+    if (rc == 0 && (ferror(f) || read_errno == ENOMEM)) {
+        fclose(f); /* the file failed, not its content */
+        return read_errno == ENOMEM ? cli_oom(path) : cli_read_failure(path, read_errno);
     }
     fclose(f);
     if (rc != 0)

@@ -14,7 +14,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli/cli.h"
 #include "4_emit/emit.h"
@@ -34,6 +36,59 @@ extern const unsigned char viewer_glsl_port[]; /* ports/glsl/fresnel.glsl */
 static double viewer_cos(int k)
 {
     return k == VIEWER_ANGLES - 1 ? 0.0 : cos(90.0 * k / (VIEWER_ANGLES - 1) * (3.14159265358979323846 / 180.0));
+}
+
+/* ---- text into the page, escaped for where it lands ---- */
+
+/* A JSON string inside the page's <script>: quotes, backslashes and control
+ * characters escaped as JSON requires; '<', '>' and '&' as \u escapes so
+ * that no "</script>" or "<!--" can end or bend the element; U+2028 and
+ * U+2029 (line terminators in older JavaScript) escaped too. */
+static void put_json_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        unsigned char c = (unsigned char)*s;
+        if (c == '"' || c == '\\')
+            fprintf(f, "\\%c", c);
+        else if (c < 0x20 || c == 0x7f || c == '<' || c == '>' || c == '&')
+            fprintf(f, "\\u%04x", c);
+        else if (c == 0xe2 && (unsigned char)s[1] == 0x80 &&
+                 ((unsigned char)s[2] == 0xa8 || (unsigned char)s[2] == 0xa9)) {
+            fprintf(f, "\\u%04x", 0x2000 + ((unsigned char)s[2] - 0x80));
+            s += 2;
+        } else
+            fputc(c, f);
+    }
+    fputc('"', f);
+}
+
+/* Text in an HTML element (the title and heading). */
+static void put_html_text(FILE *f, const char *s)
+{
+    for (; *s; s++)
+        switch (*s) {
+        case '&': fputs("&amp;", f); break;
+        case '<': fputs("&lt;", f); break;
+        case '>': fputs("&gt;", f); break;
+        case '"': fputs("&quot;", f); break;
+        case '\'': fputs("&#39;", f); break;
+        default: fputc(*s, f);
+        }
+}
+
+/* GLSL inside a <script type="x-shader/..."> element, which has no escape:
+ * "<!--", "<script" and "</script" (any case) would end the element or
+ * swallow the rest of the page, so a space follows their '<'. They can
+ * only occur in the GLSL's comments (names of files and materials). */
+static void put_script_text(FILE *f, const char *s)
+{
+    for (; *s; s++) {
+        fputc(*s, f);
+        if (*s == '<' && (!strncmp(s + 1, "!--", 3) || !strncasecmp(s + 1, "script", 6) ||
+                          !strncasecmp(s + 1, "/script", 7)))
+            fputc(' ', f);
+    }
 }
 
 static void model_ident(const char *model, char *out, size_t size)
@@ -109,12 +164,13 @@ static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_p
             m0 = report_m0_count(cross_path, sm.def->cross_row);
         scene_model_free(&sm);
     }
-    fprintf(f, "\"");
+    char cost[512] = "";
+    size_t used = 0;
     if (!isnan(ns))
-        fprintf(f, "%.1f ns per RGB call here (binary32, %s)", ns, bench_compiler());
-    if (!isnan(m0))
-        fprintf(f, "; %.0f instructions per channel on the Cortex-M0 (Q15)", m0);
-    fprintf(f, "\"");
+        used = (size_t)snprintf(cost, sizeof cost, "%.1f ns per RGB call here (binary32, %s)", ns, bench_compiler());
+    if (!isnan(m0) && used < sizeof cost)
+        snprintf(cost + used, sizeof cost - used, "; %.0f instructions per channel on the Cortex-M0 (Q15)", m0);
+    put_json_string(f, cost);
 }
 
 /* The packed LUT texture (GLSL ES 1.00's tables, emit_glsl.c) as JSON:
@@ -148,18 +204,25 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
     lab_space ls;
     int i, m, k;
     lab_space_init(&ls, &g->cs);
-    fprintf(f, "{\"scene\":\"%s\",\"space\":\"%s\",\"gamut\":\"%s\",\"refN\":%d,\n\"materials\":[", l->name, sc->space,
-            sc->gamut, VIEWER_REF_NODES);
+    fputs("{\"scene\":", f);
+    put_json_string(f, l->name);
+    fputs(",\"space\":", f);
+    put_json_string(f, sc->space);
+    fputs(",\"gamut\":", f);
+    put_json_string(f, sc->gamut);
+    fprintf(f, ",\"refN\":%d,\n\"materials\":[", VIEWER_REF_NODES);
     for (i = 0; i < sc->material_count; i++) {
-        const char *name = l->params[i].info.name;
-        fprintf(f, "%s{\"id\":\"%s\",\"name\":\"", i ? "," : "", sc->materials[i]);
-        for (; *name; name++) /* names are printable text; keep JSON's two specials out */
-            fputc(*name == '"' || *name == '\\' ? '\'' : *name, f);
-        fprintf(f, "\"}");
+        fprintf(f, "%s{\"id\":", i ? "," : "");
+        put_json_string(f, sc->materials[i]);
+        fputs(",\"name\":", f);
+        put_json_string(f, l->params[i].info.name);
+        fputs("}", f);
     }
     fprintf(f, "],\n\"models\":[");
-    for (m = 0; m < sc->model_count; m++)
-        fprintf(f, "%s\"%s\"", m ? "," : "", sc->models[m]);
+    for (m = 0; m < sc->model_count; m++) {
+        fputs(m ? "," : "", f);
+        put_json_string(f, sc->models[m]);
+    }
     fprintf(f, "],\n\"theta\":[");
     for (k = 0; k < VIEWER_ANGLES; k++)
         fprintf(f, "%s%.6g", k ? "," : "", 90.0 * k / (VIEWER_ANGLES - 1));
@@ -271,12 +334,15 @@ static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene, con
         }
         fwrite(p, 1, (size_t)(slot - p), f);
         len = (size_t)(end - slot - 2);
-        if (len == 5 && !strncmp(slot + 2, "TITLE", len))
-            fprintf(f, "Fresnel viewer: scene %s, %s, gamut %s", l->name, l->sc->space, l->sc->gamut);
-        else if (len == 9 && !strncmp(slot + 2, "GLSL_PORT", len))
-            fputs((const char *)viewer_glsl_port, f);
+        if (len == 5 && !strncmp(slot + 2, "TITLE", len)) {
+            char title[256];
+            snprintf(title, sizeof title, "Fresnel viewer: scene %s, %s, gamut %s", l->name, l->sc->space,
+                     l->sc->gamut);
+            put_html_text(f, title);
+        } else if (len == 9 && !strncmp(slot + 2, "GLSL_PORT", len))
+            put_script_text(f, (const char *)viewer_glsl_port);
         else if (len == 10 && !strncmp(slot + 2, "GLSL_SCENE", len))
-            fputs(glsl_scene, f);
+            put_script_text(f, glsl_scene);
         else if (len == 11 && !strncmp(slot + 2, "GLSL_SELECT", len))
             write_select(f, l);
         else if (len == 4 && !strncmp(slot + 2, "DATA", len))
@@ -297,7 +363,7 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
     char *glsl = NULL, *tex = NULL, path[CLI_PATH_MAX];
     size_t glsl_len = 0, tex_len = 0;
     FILE *mem, *tex_mem;
-    int status, m;
+    int status, m, made_dir = 0;
     if ((status = emit_load(manifest, dir_option, 1, &l)))
         return status;
     if (!(mem = open_memstream(&glsl, &glsl_len)) || !(tex_mem = open_memstream(&tex, &tex_len))) {
@@ -313,11 +379,14 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
         status = cli_oom(WHERE);
     if (status)
         goto done;
-    if (mkdir(out_dir, 0777) && errno != EEXIST) {
+    /* -o - is the page itself on stdout; otherwise DIR/index.html, and a
+     * DIR this run created goes again if the page fails. */
+    if (!strcmp(out_dir, "-"))
+        strcpy(path, "-");
+    else if ((made_dir = mkdir(out_dir, 0777) == 0) == 0 && errno != EEXIST) {
         status = cli_error(out_dir, "cannot create the directory: %s", strerror(errno));
         goto done;
-    }
-    if (snprintf(path, sizeof path, "%s/index.html", out_dir) >= (int)sizeof path) {
+    } else if (snprintf(path, sizeof path, "%s/index.html", out_dir) >= (int)sizeof path) {
         status = cli_error(out_dir, "path too long");
         goto done;
     }
@@ -329,8 +398,10 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
     }
     status = cli_out_commit(&out);
     if (!status)
-        fprintf(stderr, "%s: wrote %s\n", WHERE, path);
+        fprintf(stderr, "%s: wrote %s\n", WHERE, out.shown);
 done:
+    if (status && made_dir)
+        rmdir(out_dir);
     free(glsl);
     free(tex);
     emit_loaded_free(&l);
