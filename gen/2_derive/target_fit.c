@@ -16,8 +16,7 @@
 #include "model/reference.h"
 
 /* Steps are fractions of each number's range: from 1/64 down to 1e-6,
- * finer than a 16-bit texture resolves; a tenth of that moves the mean
- * CIEDE2000 of the data pack's metals by less than 1e-4. */
+ * finer than a 16-bit texture resolves. */
 #define STEP_START (1.0 / 64.0)
 #define STEP_MIN 1e-6
 
