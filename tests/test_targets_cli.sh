@@ -1,7 +1,8 @@
 #!/bin/sh
 # `fresnel params --for TARGET`: the rows each renderer's metal takes, the
 # table of every target, and bad input (exit 2, the valid targets named, no
-# output).
+# output); the `targets` scene key: the same parameters in the header's
+# comments, in C, GLSL and HLSL.
 F="$BUILD/fresnel"
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
@@ -60,4 +61,20 @@ if "$F" params --material cu --for all >"$t/out" 2>"$t/err" &&
     echo "PASS params --for all: one row per target, fitted mean <= naive mean"
 else
     echo "FAIL params --for all: $(cat "$t/err") $(tr '\n' '|' <"$t/out")"
+fi
+
+# The scene key: each material's comment holds what params --for prints.
+printf 'materials = cu\nmodels = schlick\ntargets = blender gltf\ntypes = q15\n' >"$t/t.scene"
+"$F" params --material cu --for blender >"$t/blender" 2>&1
+if "$F" gen "$t/t.scene" -o "$t/t.h" 2>"$t/err" && "$F" gen "$t/t.scene" --glsl -o "$t/t.glsl" 2>>"$t/err" &&
+    "$F" gen "$t/t.scene" --hlsl -o "$t/t.hlsl" 2>>"$t/err" &&
+    h=$(awk '$2 == "blender" && $3 == "base_color" { print $4, $5, $6 }' "$t/t.h") &&
+    p=$(awk -F, '$1 == "base_color" { printf "%.6f %.6f %.6f", $2, $3, $4 }' "$t/blender") &&
+    [ -n "$h" ] && [ "$h" = "$p" ] && grep -q '^ \*   gltf         baseColorFactor ' "$t/t.h" &&
+    grep -q '^ \*   blender      base_color ' "$t/t.glsl" && grep -q '^ \*   blender      base_color ' "$t/t.hlsl" &&
+    printf '#include "t.h"\nint main(void) { return 0; }\n' >"$t/main.c" &&
+    ${CC:-cc} -std=c99 -Wall -Wextra -Werror -Iinclude -I"$t" -c "$t/main.c" -o "$t/main.o" 2>>"$t/err"; then
+    echo "PASS gen targets key: the header's comment holds params --for's values ($h), in C, GLSL and HLSL; compiles"
+else
+    echo "FAIL gen targets key: header '$h', params '$p': $(cat "$t/err")"
 fi
