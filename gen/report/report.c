@@ -625,6 +625,7 @@ int report_write(const report_options *o)
     write_accuracy_tables(&r, out.f);
     write_sigma(&r, out.f, sig_de, sig_err);
     write_approaches(&r, out.f);
+    report_renderers(&r, out.f);
     write_hoffman(&r, out.f);
     write_budget(&r, out.f);
     if ((status = write_cross(&r, out.f)) || (status = write_speed(&r, out.f))) {

@@ -103,6 +103,9 @@ void report_metal_summary(report_run *r, int model, int type, double *mean, doub
 #define REPORT_SIGMAS 4
 extern const double report_sigmas[REPORT_SIGMAS]; /* 0, 12, 25, 50 nm */
 
+/* The table of other renderers' metals (report_renderers.c). */
+void report_renderers(report_run *r, FILE *f);
+
 /* pareto.svg, sigma.svg, curves/<material>.svg (report_plots.c). */
 int report_plots(report_run *r, const double (*sigma_de)[REPORT_SIGMAS]);
 
