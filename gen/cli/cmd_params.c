@@ -98,7 +98,7 @@ static int print_targets(const char *which, const spectrum *s, const gen_context
     target_material_curve(s, g, p, 0, raw, &a_raw);
     for (i = 0; i < TARGET_ANGLES; i++)
         for (k = 0; k < 3; k++)
-            out_of_gamut |= raw[i][k] > 1.0;
+            out_of_gamut |= raw[i][k] < 0.0 || raw[i][k] > 1.0;
     if (strcmp(which, "all")) {
         target_fit f;
         const target *t = target_find(which);
