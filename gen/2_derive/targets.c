@@ -10,8 +10,9 @@
 #include "model/reference.h"
 
 /* MaterialX states no range for generalized_schlick_bsdf's inputs; the fit
- * searches this box, which holds every fitted metal of the data pack with
- * room to spare (a result on its edge would show in the parameters). */
+ * searches this box. The 16 metals of data/scenes/report.scene fit inside
+ * it with room to spare (colours at most 1.024, exponents 3.3-6.5 in linear
+ * sRGB); a result on its edge would show in the parameters printed. */
 #define MX_COLOUR_MAX 2.0
 #define MX_EXPONENT_MIN 1.0
 #define MX_EXPONENT_MAX 10.0
