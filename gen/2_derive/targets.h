@@ -41,6 +41,7 @@ typedef struct target {
     int param_count;
     target_param param[TARGET_MAX_PARAMS];
     int rec709;          /* the format takes linear Rec. 709 (srgb) only */
+    const char *naive_rule; /* how naive() converts, in a few words */
     /* The curve at cosine c for packed parameters x (param order, 3 numbers
      * per colour row, 1 per scalar row). */
     void (*eval)(const double *x, double c, double rgb[3]);

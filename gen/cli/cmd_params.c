@@ -71,9 +71,7 @@ static void print_target(const target *t, const target_fit *f, const gen_context
     printf("# fitted: mean dE2000 %.4f, max %.4f (theta 0-90 deg in 1 deg steps, against the ground truth under the "
            "gamut policy %s)\n",
            f->fit_mean, f->fit_max, gamut_policy_names[g->gamut]);
-    printf("# naive (the curve's value at 0 deg, and at cos theta = 1/7 for an edge parameter): mean dE2000 %.4f, "
-           "max %.4f\n",
-           f->naive_mean, f->naive_max);
+    printf("# naive (%s): mean dE2000 %.4f, max %.4f\n", t->naive_rule, f->naive_mean, f->naive_max);
     target_rows(t, f->naive, "# naive ");
     printf("# gain of the fit: mean dE2000 %.4f lower (%.1fx), max %+.4f\n", f->naive_mean - f->fit_mean,
            f->fit_mean > 0.0 ? f->naive_mean / f->fit_mean : 1.0, f->fit_max - f->naive_max);
@@ -154,7 +152,8 @@ int cmd_params(int argc, char **argv)
                    "                  --gamut policy (mean CIEDE2000 over theta 0-90 deg, inside the\n"
                    "                  renderer's ranges): rows name,r,g,b (a scalar repeated), then\n"
                    "                  # lines with the fit's mean and max dE2000, the naive conversion\n"
-                   "                  (F0, and the edge at cos theta = 1/7), its dE2000 and the gain.\n"
+                   "                  (F0; an edge parameter from the GT at cos theta = 1/7, or\n"
+                   "                  Gulbrandsen's g), its dE2000 and the gain.\n"
                    "                  --for all prints one row per target: target,fitted_mean,\n"
                    "                  fitted_max,naive_mean,naive_max (and the fit against the\n"
                    "                  unclipped GT where the material leaves the gamut). Targets:\n"
