@@ -183,7 +183,7 @@ const target target_table[] = {
      "edge_tint in [0, 1]",
      2,
      {{"reflectivity", 0, 0.0, FRESNEL_GULBRANDSEN_R_MAX}, {"edge_tint", 0, 0.0, 1.0}},
-     0, "reflectivity = F0; edge_tint from F0 and the fitted eta (the generator's Gulbrandsen g)",
+     0, "reflectivity = F0; edge_tint = the generator's Gulbrandsen g, from F0 and the fitted eta",
      eval_gulbrandsen, naive_gulbrandsen},
 };
 const int target_count = (int)(sizeof target_table / sizeof target_table[0]);
