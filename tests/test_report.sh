@@ -21,6 +21,15 @@ grep -q '## Reproducing Hoffman' "$t/out/report.md" && grep -q '## Which model f
     grep -q '## Gaussian window width' "$t/out/report.md" && grep -q '## Colours outside the gamut' "$t/out/report.md" &&
     grep -q '## Hemispherical average F_avg' "$t/out/report.md" && echo "PASS report: every section present" ||
     echo "FAIL report: a section is missing"
+# The renderers' table: the metal only, every target and the project's own columns.
+sec=$(sed -n '/^## How well each renderer shows each metal/,/^## Reproducing/p' "$t/out/report.md")
+if printf '%s\n' "$sec" | grep -q '^| metal | openpbr | materialx | blender | unreal | gltf | filament | gulbrandsen | ours: f82 | ours: exact | ours: best of the scene |$' &&
+    printf '%s\n' "$sec" | grep -qE '^\| cu( \| [0-9.]+ / [0-9.]+){7} \| - \| [0-9.]+ / [0-9.]+ \| [0-9.]+ / [0-9.]+ \([a-z0-9-]+\) \|$' &&
+    ! printf '%s\n' "$sec" | grep -q '^| water'; then
+    echo "PASS report: the renderers' table, cu's row (no f82 in the scene: '-'), no dielectric"
+else
+    echo "FAIL report: renderers' table: $(printf '%s\n' "$sec" | grep '^| ' | head -4 | tr '\n' '|')"
+fi
 "$F" report --scene "$t/missing.scene" -o "$t/out2" --no-timing >/dev/null 2>"$t/err"
 [ $? -eq 2 ] && [ ! -e "$t/out2/report.md" ] && echo "PASS report: a missing scene is an error (exit 2), nothing written" ||
     echo "FAIL report missing scene"

@@ -202,6 +202,28 @@ static void test_accepted_values(void)
     CHECK("scene 31-character material id accepted", ok, "%s", last_message);
 }
 
+/* The targets key: other renderers' parameters in the header's comments. */
+static void test_targets(void)
+{
+    scene s;
+    int rc = load_capturing(write_manifest("materials = a\nmodels = exact\ntargets = openpbr  gltf\tgulbrandsen\n"),
+                            &s);
+    CHECK("scene targets: listed in order", rc == 0 && s.target_count == 3 && !strcmp(s.targets[0], "openpbr") &&
+                                                 !strcmp(s.targets[1], "gltf") && !strcmp(s.targets[2], "gulbrandsen") &&
+                                                 s.targets_line == 3,
+          "rc %d count %d: %s", rc, s.target_count, last_message);
+    rc = load_capturing(write_manifest("materials = a\nmodels = exact\n"), &s);
+    CHECK("scene targets: none by default", rc == 0 && s.target_count == 0 && s.targets_line == 0, "%d",
+          s.target_count);
+    expect_error("scene error: unknown target lists them", "materials = a\nmodels = exact\ntargets = renderman\n", 3,
+                 "expected a renderer target (one of openpbr, materialx, blender, unreal, gltf, filament, "
+                 "gulbrandsen), got 'renderman'");
+    expect_error("scene error: near-miss target", "materials = a\nmodels = exact\ntargets = blendr\n", 3,
+                 "(did you mean 'blender'?)");
+    expect_error("scene error: target twice", "materials = a\nmodels = exact\ntargets = unreal gltf unreal\n", 3,
+                 "'unreal' is listed twice");
+}
+
 static void test_lut_names(void)
 {
     static const struct {
@@ -373,6 +395,7 @@ int main(void)
     test_defaults();
     test_accepted_values();
     test_lut_names();
+    test_targets();
     test_errors();
     test_unreadable();
     if (!harness_failed_) {

@@ -63,6 +63,10 @@ void emit_material_params(FILE *f, const scene *sc, const material_params *p, co
 double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
                        lut_spacing spacing, int *n, lut_form *form, char name[32]);
 
+/* Material i's heading comment and, for a scene with the targets key, the
+ * comment holding other renderers' parameters (emit_targets.c). */
+void emit_material_heading(FILE *f, const emit_input *in, int material);
+
 /* One material's Q1.15 constants and tables (emit_fixed.c); prefix is
  * fresnel_<scene>_<material>. */
 int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix);

@@ -223,7 +223,7 @@ int emit_header(FILE *f, const emit_input *in)
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
         if (params_fit_float(in, p))
             return CLI_BAD_INPUT;
-        fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
+        emit_material_heading(f, in, i);
         if (scene_has_type(sc, "q15") && emit_fixed_material(f, in, i, prefix))
             return CLI_BAD_INPUT;
         if (!scene_has_type(sc, "f32"))

@@ -69,7 +69,7 @@ int emit_hlsl(FILE *f, const emit_input *in)
         const material_params *p = &in->params[i];
         char prefix[160];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
-        fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
+        emit_material_heading(f, in, i);
         emit_material_params(f, sc, p, prefix, hlsl_rgb, hlsl_float);
         for (m = 0; m < sc->model_count; m++) {
             char id[32], table[32];

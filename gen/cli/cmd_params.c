@@ -3,14 +3,124 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "1_spectral/colour_difference.h"
+#include "2_derive/targets.h"
 #include "cli/cli.h"
 #include "cli/material_options.h"
+#include "scene/scene.h"
 
 #define WHERE "fresnel params"
+
+static const char *const option_names[] = {"--material", "--nk", "--name", "--format", "--space", "--gamut", "--sigma",
+                                           "--n1", "--data", "--for", "--help", NULL};
 
 static void row(const char *name, const double v[3])
 {
     printf("%s,%.9g,%.9g,%.9g\n", name, v[0], v[1], v[2]);
+}
+
+/* --for's value: a target, or "all". */
+static int target_option(const char *val)
+{
+    const char *names[16];
+    char list[256] = "";
+    size_t used = 0;
+    const char *near;
+    int i, n = target_names(names, 15);
+    if (!strcmp(val, "all") || target_find(val))
+        return 0;
+    names[n++] = "all";
+    names[n] = NULL;
+    for (i = 0; names[i]; i++)
+        used += (size_t)snprintf(list + used, sizeof list - used, "%s%s", i ? ", " : "", names[i]);
+    near = cli_suggest(val, names);
+    if (near)
+        return cli_error(WHERE, "unknown target '%s' for --for (did you mean '%s'? expected one of: %s)", val, near,
+                         list);
+    return cli_error(WHERE, "unknown target '%s' for --for (expected one of: %s)", val, list);
+}
+
+/* A target's packed numbers as CSV rows, each prefixed by lead. */
+static void target_rows(const target *t, const double *x, const char *lead)
+{
+    int i, k = 0;
+    for (i = 0; i < t->param_count; i++) {
+        double v[3];
+        if (t->param[i].scalar) {
+            v[0] = v[1] = v[2] = x[k++];
+        } else {
+            v[0] = x[k];
+            v[1] = x[k + 1];
+            v[2] = x[k + 2];
+            k += 3;
+        }
+        printf("%s", lead);
+        row(t->param[i].name, v);
+    }
+}
+
+static void print_target(const target *t, const target_fit *f, const gen_context *g, const lab_space *ls,
+                         const double (*raw)[3], int out_of_gamut)
+{
+    printf("# target %s: %s\n# formula: %s\n# source: %s\n# inputs: %s\n", t->name, t->title, t->formula, t->source,
+           t->inputs);
+    if (t->rec709 && strcmp(g->cs.id, "srgb"))
+        printf("# this format takes linear Rec.709 (--space srgb); these values are in %s\n", g->cs.id);
+    printf("parameter,r,g,b\n");
+    target_rows(t, f->fitted, "");
+    printf("# fitted: mean dE2000 %.4f, max %.4f (theta 0-90 deg in 1 deg steps, against the ground truth under the "
+           "gamut policy %s)\n",
+           f->fit_mean, f->fit_max, gamut_policy_names[g->gamut]);
+    printf("# naive (%s): mean dE2000 %.4f, max %.4f\n", t->naive_rule, f->naive_mean, f->naive_max);
+    target_rows(t, f->naive, "# naive ");
+    printf("# gain of the fit: mean dE2000 %.4f lower (%.1fx), max %+.4f\n", f->naive_mean - f->fit_mean,
+           f->fit_mean > 0.0 ? f->naive_mean / f->fit_mean : 1.0, f->fit_max - f->naive_max);
+    if (out_of_gamut) {
+        double mean, max;
+        target_curve_de(t, ls, raw, f->fitted, &mean, &max);
+        printf("# against the unclipped ground truth (outside the %s gamut): mean dE2000 %.4f, max %.4f; %s\n",
+               g->cs.id, mean, max,
+               target_above_one(t) ? "this target's colours may exceed 1: --gamut keep fits the unclipped truth"
+                                   : "this target's colours stop at 1");
+    }
+}
+
+static int print_targets(const char *which, const spectrum *s, const gen_context *g, const material_params *p)
+{
+    double truth[TARGET_ANGLES][3], raw[TARGET_ANGLES][3];
+    target_anchor a, a_raw;
+    lab_space ls;
+    int i, k, out_of_gamut = 0;
+    lab_space_init(&ls, &g->cs);
+    target_material_curve(s, g, p, 1, truth, &a);
+    target_material_curve(s, g, p, 0, raw, &a_raw);
+    for (i = 0; i < TARGET_ANGLES; i++)
+        for (k = 0; k < 3; k++)
+            out_of_gamut |= raw[i][k] < 0.0 || raw[i][k] > 1.0;
+    if (strcmp(which, "all")) {
+        target_fit f;
+        const target *t = target_find(which);
+        target_fit_curve(t, &ls, (const double(*)[3])truth, &a, &f);
+        print_target(t, &f, g, &ls, (const double(*)[3])raw, out_of_gamut);
+        return 0;
+    }
+    printf("# every target's fitted and naive parameters through its own formula: CIEDE2000 over theta 0-90 deg in "
+           "1 deg steps, against the ground truth under the gamut policy %s\n",
+           gamut_policy_names[g->gamut]);
+    printf("target,fitted_mean,fitted_max,naive_mean,naive_max%s\n", out_of_gamut ? ",fitted_mean_unclipped,fitted_max_unclipped" : "");
+    for (i = 0; i < target_count; i++) {
+        target_fit f;
+        target_fit_curve(&target_table[i], &ls, (const double(*)[3])truth, &a, &f);
+        printf("%s,%.4f,%.4f,%.4f,%.4f", target_table[i].name, f.fit_mean, f.fit_max, f.naive_mean, f.naive_max);
+        if (out_of_gamut) {
+            double mean, max;
+            target_curve_de(&target_table[i], &ls, (const double(*)[3])raw, f.fitted, &mean, &max);
+            printf(",%.4f,%.4f", mean, max);
+        }
+        printf("\n");
+    }
+    printf("# each target's parameters: fresnel params ... --for TARGET\n");
+    return 0;
 }
 
 int cmd_params(int argc, char **argv)
@@ -19,13 +129,15 @@ int cmd_params(int argc, char **argv)
     gen_context *g = NULL;
     spectrum *s = NULL;
     material_params p;
-    const char *val;
+    const char *val, *for_target = NULL;
     int i, status = 0;
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            const char *names[16];
+            int n = target_names(names, 16), k;
             printf("usage: fresnel params (--material ID | --nk FILE [--name ID]) [--space NAME] [--gamut POLICY]\n"
-                   "                      [--sigma S] [--n1 X] [--data DIR]\n\n"
+                   "                      [--sigma S] [--n1 X] [--data DIR] [--for TARGET]\n\n"
                    "Prints, as CSV parameter,r,g,b, every parameter the generator derives for one\n"
                    "material from its spectral ground truth (GT) in a colour space: dominant\n"
                    "wavelengths, F0 (unclipped, and under the --gamut policy), F82, the\n"
@@ -34,15 +146,33 @@ int cmd_params(int argc, char **argv)
                    "the fit's RMS, LSK a and alpha (on the fitted eta, kappa), Gulbrandsen r and g,\n"
                    "and Cook-Torrance's representative IOR (scalar, repeated in r, g, b). eta and\n"
                    "kappa are relative to the incident medium n1. Lines starting with # describe\n"
-                   "the run.\n\n%s",
+                   "the run.\n\n%s"
+                   "  --for TARGET    instead, the parameters another renderer's metal takes, fitted\n"
+                   "                  through that renderer's own Fresnel formula to the GT under the\n"
+                   "                  --gamut policy (mean CIEDE2000 over theta 0-90 deg, inside the\n"
+                   "                  renderer's ranges): rows name,r,g,b (a scalar repeated), then\n"
+                   "                  # lines with the fit's mean and max dE2000, the naive conversion\n"
+                   "                  (F0; an edge parameter from the GT at cos theta = 1/7, or\n"
+                   "                  Gulbrandsen's g), its dE2000 and the gain.\n"
+                   "                  --for all prints one row per target: target,fitted_mean,\n"
+                   "                  fitted_max,naive_mean,naive_max (and the fit against the\n"
+                   "                  unclipped GT where the material leaves the gamut). Targets:\n"
+                   "                 ",
                    material_options_help);
+            for (k = 0; k < n; k++)
+                printf(" %s", names[k]);
+            printf(" all\n");
             return 0;
         }
-        if (!cli_in_list(argv[i], material_option_names))
-            return cli_bad_argument(WHERE, argv[i], material_option_names);
+        if (!cli_in_list(argv[i], option_names))
+            return cli_bad_argument(WHERE, argv[i], option_names);
         if (!(val = cli_option_value(WHERE, argc, argv, &i)))
             return CLI_BAD_INPUT;
-        if (material_option(WHERE, argv[i - 1], val, &o) == CLI_BAD_INPUT)
+        if (!strcmp(argv[i - 1], "--for")) {
+            if (target_option(val))
+                return CLI_BAD_INPUT;
+            for_target = val;
+        } else if (material_option(WHERE, argv[i - 1], val, &o) == CLI_BAD_INPUT)
             return CLI_BAD_INPUT;
     }
     if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
@@ -56,6 +186,10 @@ int cmd_params(int argc, char **argv)
         printf("# material %s (%s; %s), measured %.1f-%.1f nm\n", p.info.id, p.info.name, p.info.dataset,
                p.measured_lo, p.measured_hi);
         printf("# space %s, sigma %g nm, n1 %g\n", g->cs.id, p.sigma, p.n1);
+        if (for_target) {
+            status = print_targets(for_target, s, g, &p);
+            goto done;
+        }
         printf("parameter,r,g,b\n");
         row("dominant_nm", p.nm);
         row("f0_unclamped", p.f0_unclamped);

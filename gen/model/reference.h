@@ -59,3 +59,30 @@ double ref_clamp(double x, double lo, double hi);
 double ref_lut(const double *v, int n, int cubic, double x);
 
 #endif
+
+/* Renderers' metal Fresnel formulas, transcribed from their specifications
+ * (reference_targets.c: the source beside each); `fresnel params --for`
+ * fits their parameters (2_derive/targets.h). Each keeps its renderer's own
+ * clamps and no others: where the source clamps nothing, neither do these.
+ * mu (or VoH) is the cosine of the angle of incidence. Two renderers need
+ * no function of their own: glTF's metal Fresnel is ref_schlick (F0 =
+ * baseColor), Filament's is ref_schlick_gen with exponent 5 and
+ * f90 = ref_filament_f90(F0), and Gulbrandsen's is ref_gulbrandsen. */
+
+/* OpenPBR's F82-tint: Schlick minus mu (1 - mu)^6 b, with b such that
+ * F(1/7) = specular_color * Schlick(1/7). The project's F82 model
+ * (ref_f82) is the same curve named by its value at 1/7 instead:
+ * ref_f82(f0, t * ref_schlick(f0, 1/7), mu) for t <= 1. */
+double ref_openpbr_f82_tint(double base_color, double specular_color, double mu);
+/* MaterialX generalized_schlick_bsdf: Hoffman's generalisation (color90,
+ * exponent) of the same dip; color82 is a multiplier of the curve at 1/7. */
+double ref_materialx_schlick(double color0, double color82, double color90, double exponent, double mu);
+/* Blender Principled BSDF, metallic: OpenPBR's curve with base colour and
+ * specular tint clamped to [0, 1] and the result to [0, 1]. */
+double ref_blender_f82_tint(double base_color, double specular_tint, double mu);
+/* Unreal Engine's F_AdobeF82, written as its source writes it (the same
+ * curve as OpenPBR's, F82 being the tint; the test derives it), result
+ * clamped to [0, 1]. */
+double ref_unreal_adobe_f82(double f0, double f82, double voh);
+/* Filament's f90 for an RGB f0 (shared by the three channels). */
+double ref_filament_f90(const double f0[3]);

@@ -662,6 +662,7 @@ int report_write(const report_options *o)
     write_accuracy_tables(&r, f);
     write_sigma(&r, f, sig_de, sig_err);
     write_approaches(&r, f);
+    report_renderers(&r, f);
     write_hoffman(&r, f);
     write_budget(&r, f);
     if ((status = write_cross(&r, f)) || (status = write_speed(&r, f)))

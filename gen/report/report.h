@@ -111,6 +111,9 @@ void report_metal_summary(report_run *r, int model, int type, double *mean, doub
 #define REPORT_SIGMAS 4
 extern const double report_sigmas[REPORT_SIGMAS]; /* 0, 12, 25, 50 nm */
 
+/* The table of other renderers' metals (report_renderers.c). */
+void report_renderers(report_run *r, FILE *f);
+
 /* pareto.svg, sigma.svg, curves/<material>.svg (report_plots.c), opened
  * with report_out_open: 0 or a status. */
 int report_plots(report_run *r, const double (*sigma_de)[REPORT_SIGMAS]);

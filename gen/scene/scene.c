@@ -10,6 +10,7 @@
 #include <sys/types.h>
 
 #include "cli/cli.h"
+#include "2_derive/targets.h"
 #include "3_encode/encode.h"
 #include "1_spectral/spectral.h"
 
@@ -20,9 +21,9 @@ const char *const scene_f_avg_names[] = {"no", "yes", NULL};
 const char *const gamut_policy_names[] = {"map", "clip", "keep", NULL};
 
 enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
-                 KEY_LUT_SPACING, KEY_NAME, KEY_GAMUT, KEY_F_AVG, KEY_COUNT };
+                 KEY_LUT_SPACING, KEY_NAME, KEY_GAMUT, KEY_F_AVG, KEY_TARGETS, KEY_COUNT };
 static const char *const key_names[] = {"materials", "models", "space",       "sigma", "n1",
-                                        "types",     "lut_spacing", "name", "gamut", "f_avg", NULL};
+                                        "types",     "lut_spacing", "name", "gamut", "f_avg", "targets", NULL};
 
 #define SIGMA_MAX 200.0
 #define SCENE_MAX_ERRORS 50
@@ -41,6 +42,7 @@ static int *key_line(scene *s, int key)
     case KEY_NAME: return &s->name_line;
     case KEY_GAMUT: return &s->gamut_line;
     case KEY_F_AVG: return &s->f_avg_line;
+    case KEY_TARGETS: return &s->targets_line;
     default: return &s->lut_spacing_line;
     }
 }
@@ -266,6 +268,25 @@ static int parse_types(const char *path, int line, char *value, scene *s)
     return 0;
 }
 
+/* Other renderers whose parameters the header's comments give (targets.h). */
+static int parse_targets(const char *path, int line, char *value, scene *s)
+{
+    const char *names[SCENE_MAX_TARGETS + 1];
+    char *cursor = value, *name, list[256], near[SCENE_NAME_SIZE + 32];
+    target_names(names, SCENE_MAX_TARGETS + 1);
+    while ((name = next_token(&cursor)) != NULL) {
+        if (!target_find(name))
+            return report(path, line, "expected a renderer target (one of %s), got '%s'%s",
+                          table_list(names, list, sizeof list), name, hint(names, name, near, sizeof near));
+        if (find_in(s->targets, s->target_count, name) >= 0)
+            return report(path, line, "expected each target once, '%s' is listed twice", name);
+        if (s->target_count == SCENE_MAX_TARGETS)
+            return report(path, line, "expected at most %d targets", SCENE_MAX_TARGETS);
+        snprintf(s->targets[s->target_count++], SCENE_NAME_SIZE, "%s", name);
+    }
+    return 0;
+}
+
 /* A value that must be one name of `table`, copied to dst. */
 static int parse_choice(const char *path, int line, const char *what,
                         const char *const *table, const char *value, char *dst)
@@ -330,6 +351,7 @@ static int parse_value(const char *path, int line, int key, char *value, scene *
     case KEY_MATERIALS: return parse_materials(path, line, value, s);
     case KEY_MODELS: return parse_models(path, line, value, s);
     case KEY_TYPES: return parse_types(path, line, value, s);
+    case KEY_TARGETS: return parse_targets(path, line, value, s);
     case KEY_NAME: return parse_name(path, line, value, s);
     case KEY_SPACE:
         return parse_choice(path, line, "colour space", colour_space_ids, value, s->space);

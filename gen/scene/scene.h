@@ -52,6 +52,15 @@
  *                hemispherical average F_avg = 2 int F(mu) mu dmu of the
  *                ground truth under the gamut policy, per channel, beside
  *                the models' constants (a scene that reads it only).
+ *   targets      optional; whitespace-separated renderers, each once, from
+ *                the targets of `fresnel params --for` (2_derive/targets.h:
+ *                openpbr materialx blender unreal gltf filament
+ *                gulbrandsen). Each material's section of the header then
+ *                opens with a comment giving the parameters each of them
+ *                takes, fitted through its own Fresnel formula to the ground
+ *                truth under the gamut policy, with the fit's CIEDE2000 and
+ *                the naive conversion's: values to type into those
+ *                renderers, which compile into nothing.
  *   name         optional; the scene's part of every C identifier in the
  *                header (fresnel_<name>_<material>_<constant>, include guard
  *                FRESNEL_SCENE_<NAME>_H): 1 to SCENE_PREFIX_SIZE - 1 of
@@ -90,6 +99,7 @@
 #define SCENE_MAX_MODELS 64
 #define SCENE_NAME_SIZE 24 /* model, type, space or spacing name, NUL included */
 #define SCENE_MAX_TYPES 16
+#define SCENE_MAX_TARGETS 16
 #define SCENE_LUT_MIN 4
 #define SCENE_LUT_MAX MODEL_LUT_NODES_MAX
 #define SCENE_PREFIX_SIZE 41 /* scene name, NUL included */
@@ -106,7 +116,7 @@ extern const char *const gamut_policy_names[]; /* "map", "clip", "keep", NULL: i
 typedef struct scene {
     /* Line of the file where each key was set; 0 where the default applies. */
     int materials_line, models_line, space_line, sigma_line, n1_line, types_line,
-        lut_spacing_line, name_line, gamut_line, f_avg_line;
+        lut_spacing_line, name_line, gamut_line, f_avg_line, targets_line;
     char name[SCENE_PREFIX_SIZE]; /* the name key; "" when not given */
 
     int material_count; /* in the order the file names them */
@@ -121,6 +131,8 @@ typedef struct scene {
     char lut_spacing[SCENE_NAME_SIZE];
     char gamut[SCENE_NAME_SIZE]; /* a gamut_policy_names entry */
     int f_avg;                   /* 1: emit each material's F_avg */
+    int target_count;            /* other renderers, in the file's order (2_derive/targets.h) */
+    char targets[SCENE_MAX_TARGETS][SCENE_NAME_SIZE];
     double sigma; /* nm */
     double n1;
 } scene;

@@ -1,0 +1,167 @@
+/* Fitting a renderer's metal parameters to the ground truth (targets.h).
+ *
+ * The cost is the mean CIEDE2000 over theta = 0..90 degrees: what the
+ * report measures and what an artist sees, so it is minimised directly
+ * rather than through a reflectance residual. Colour difference couples
+ * the channels, the ranges are boxes, and a target's formula may be
+ * clamped (kinks), so the search is derivative-free: a compass search with
+ * pattern moves (Hooke and Jeeves 1961), every step clamped to the box,
+ * started from the naive parameters. It accepts only improvements, so the
+ * result is never worse than the naive conversion. */
+#include <math.h>
+#include <string.h>
+
+#include "1_spectral/colour_difference.h"
+#include "2_derive/targets.h"
+#include "model/reference.h"
+
+/* Steps are fractions of each number's range: from 1/64 down to 1e-6,
+ * finer than a 16-bit texture resolves. */
+#define STEP_START (1.0 / 64.0)
+#define STEP_MIN 1e-6
+
+typedef struct fit_ctx {
+    const target *t;
+    const lab_space *ls;
+    double lab[TARGET_ANGLES][3];
+    long evaluations;
+} fit_ctx;
+
+double target_cos(int i)
+{
+    return i >= TARGET_ANGLES - 1 ? 0.0 : cos(i * (3.14159265358979323846 / 180.0));
+}
+
+static double curve_de(fit_ctx *c, const double *x, double *max)
+{
+    double sum = 0.0, worst = 0.0;
+    int i;
+    c->evaluations++;
+    for (i = 0; i < TARGET_ANGLES; i++) {
+        double rgb[3], lab[3], d;
+        c->t->eval(x, target_cos(i), rgb);
+        lab_space_lab(c->ls, rgb, lab);
+        d = ciede2000(c->lab[i], lab);
+        sum += d;
+        worst = d > worst ? d : worst;
+    }
+    if (max)
+        *max = worst;
+    return sum / TARGET_ANGLES;
+}
+
+static void ctx_init(fit_ctx *c, const target *t, const lab_space *ls, const double (*truth)[3])
+{
+    int i;
+    c->t = t;
+    c->ls = ls;
+    c->evaluations = 0;
+    for (i = 0; i < TARGET_ANGLES; i++)
+        lab_space_lab(ls, truth[i], c->lab[i]);
+}
+
+void target_curve_de(const target *t, const lab_space *ls, const double (*truth)[3], const double *x, double *mean,
+                     double *max)
+{
+    fit_ctx c;
+    ctx_init(&c, t, ls, truth);
+    *mean = curve_de(&c, x, max);
+}
+
+/* The box of each number of x. */
+static int box(const target *t, double *lo, double *hi)
+{
+    int i, ch, n = 0;
+    for (i = 0; i < t->param_count; i++)
+        for (ch = 0; ch < (t->param[i].scalar ? 1 : 3); ch++, n++) {
+            lo[n] = t->param[i].lo;
+            hi[n] = t->param[i].hi;
+        }
+    return n;
+}
+
+/* One exploratory sweep around x (value fx): each number moved by +-step
+ * of its range, the first improvement kept. Returns the new value. */
+static double explore(fit_ctx *c, int n, const double *lo, const double *hi, double step, double *x, double fx)
+{
+    int k, dir;
+    for (k = 0; k < n; k++)
+        for (dir = -1; dir <= 1; dir += 2) {
+            double keep = x[k], f;
+            x[k] = ref_clamp(keep + dir * step * (hi[k] - lo[k]), lo[k], hi[k]);
+            if (x[k] == keep)
+                continue;
+            f = curve_de(c, x, NULL);
+            if (f < fx) {
+                fx = f;
+                break;
+            }
+            x[k] = keep;
+        }
+    return fx;
+}
+
+static double search(fit_ctx *c, int n, const double *lo, const double *hi, double *x)
+{
+    double fx = curve_de(c, x, NULL), step = STEP_START;
+    while (step >= STEP_MIN) {
+        double base[TARGET_MAX_X], f;
+        memcpy(base, x, (size_t)n * sizeof *x);
+        f = explore(c, n, lo, hi, step, x, fx);
+        if (!(f < fx)) {
+            step *= 0.5;
+            continue;
+        }
+        fx = f;
+        /* Pattern moves: keep going the way the sweep went while it pays. */
+        for (;;) {
+            double trial[TARGET_MAX_X], ft;
+            int k;
+            for (k = 0; k < n; k++)
+                trial[k] = ref_clamp(2.0 * x[k] - base[k], lo[k], hi[k]);
+            ft = explore(c, n, lo, hi, step, trial, curve_de(c, trial, NULL));
+            if (!(ft < fx))
+                break;
+            memcpy(base, x, (size_t)n * sizeof *x);
+            memcpy(x, trial, (size_t)n * sizeof *x);
+            fx = ft;
+        }
+    }
+    return fx;
+}
+
+void target_fit_curve(const target *t, const lab_space *ls, const double (*truth)[3], const target_anchor *a,
+                      target_fit *out)
+{
+    fit_ctx c;
+    double lo[TARGET_MAX_X], hi[TARGET_MAX_X];
+    int n = box(t, lo, hi);
+    memset(out, 0, sizeof *out);
+    out->t = t;
+    ctx_init(&c, t, ls, truth);
+    t->naive(a, out->naive);
+    out->naive_mean = curve_de(&c, out->naive, &out->naive_max);
+    memcpy(out->fitted, out->naive, sizeof out->fitted);
+    search(&c, n, lo, hi, out->fitted);
+    out->fit_mean = curve_de(&c, out->fitted, &out->fit_max);
+    out->evaluations = c.evaluations;
+}
+
+void target_material_curve(const spectrum *s, const gen_context *g, const material_params *p, int under_policy,
+                           double (*truth)[3], target_anchor *a)
+{
+    int i;
+    for (i = 0; i < TARGET_ANGLES; i++)
+        if (under_policy)
+            ground_truth_gamut(s, g, p, target_cos(i), truth[i]);
+        else
+            ground_truth(s, &g->cm, &g->cs, p->n1, target_cos(i), truth[i]);
+    if (under_policy) {
+        memcpy(a->f0, p->f0, sizeof a->f0);
+        memcpy(a->f82, p->f82, sizeof a->f82);
+    } else {
+        ground_truth(s, &g->cm, &g->cs, p->n1, 1.0, a->f0);
+        ground_truth(s, &g->cm, &g->cs, p->n1, 1.0 / 7.0, a->f82);
+    }
+    memcpy(a->eta, p->eta_fit, sizeof a->eta);
+}

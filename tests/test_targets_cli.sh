@@ -1,0 +1,80 @@
+#!/bin/sh
+# `fresnel params --for TARGET`: the rows each renderer's metal takes, the
+# table of every target, and bad input (exit 2, the valid targets named, no
+# output); the `targets` scene key: the same parameters in the header's
+# comments, in C, GLSL and HLSL.
+F="$BUILD/fresnel"
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+bad() { # name, expected stderr pattern, args...
+    name=$1; pat=$2; shift 2
+    "$F" params "$@" >"$t/out" 2>"$t/err"
+    rc=$?
+    if [ "$rc" -eq 2 ] && grep -qE -e "$pat" "$t/err" && [ ! -s "$t/out" ]; then
+        echo "PASS params --for: $name (exit 2: $(head -1 "$t/err"))"
+    else
+        echo "FAIL params --for: $name: exit $rc, stderr '$(cat "$t/err")', stdout '$(head -2 "$t/out")'"
+    fi
+}
+all='openpbr, materialx, blender, unreal, gltf, filament, gulbrandsen, all'
+bad "unknown target lists the valid ones" "unknown target 'renderman' for --for \(expected one of: $all\)" \
+    --material cu --for renderman
+bad "near miss suggests and lists" "unknown target 'openpr' for --for \(did you mean 'openpbr'\? expected one of: $all\)" \
+    --material cu --for openpr
+bad "missing value" "--for" --material cu --for
+bad "unknown target checked before the material" "unknown target" --material nosuchmetal --for x
+
+# One target: its rows, inside OpenPBR's ranges (specular_color <= 1), then the dE lines.
+if "$F" params --material au --for openpbr >"$t/out" 2>"$t/err" &&
+    awk -F, '/^#/ { next } { rows[++n] = $1 }
+             $1 != "parameter" { for (i = 2; i <= 4; i++) if (!($i >= 0 && $i <= 1)) bad = 1 }
+             END { exit bad || n != 3 || rows[1] != "parameter" || rows[2] != "base_color" || rows[3] != "specular_color" }' \
+        "$t/out" &&
+    grep -qE '^# fitted: mean dE2000 [0-9.]+, max [0-9.]+' "$t/out" &&
+    grep -qE '^# naive base_color,' "$t/out" && grep -qE '^# gain of the fit: ' "$t/out" &&
+    grep -q 'against the unclipped ground truth (outside the srgb gamut)' "$t/out"; then
+    echo "PASS params --for openpbr: base_color, specular_color in [0, 1], fitted / naive dE2000, gold's unclipped cost"
+else
+    echo "FAIL params --for openpbr: $(cat "$t/err") $(tr '\n' '|' <"$t/out")"
+fi
+# A scalar row repeats in r, g, b.
+if "$F" params --material ag --for materialx >"$t/out" 2>"$t/err" &&
+    awk -F, '$1 == "exponent" { ok = $2 == $3 && $3 == $4 } END { exit !ok }' "$t/out" &&
+    [ "$(grep -vc '^#' "$t/out")" -eq 5 ]; then
+    echo "PASS params --for materialx: color0, color82, color90 and exponent (repeated in r, g, b)"
+else
+    echo "FAIL params --for materialx: $(cat "$t/err") $(tr '\n' '|' <"$t/out")"
+fi
+# glTF takes linear Rec.709 only: another space is flagged.
+if "$F" params --material cu --space display-p3 --for gltf >"$t/out" 2>"$t/err" &&
+    grep -q '^# this format takes linear Rec.709 (--space srgb); these values are in display-p3' "$t/out" &&
+    grep -q '^baseColorFactor,' "$t/out"; then
+    echo "PASS params --for gltf --space display-p3: baseColorFactor, flagged as not Rec.709"
+else
+    echo "FAIL params --for gltf --space display-p3: $(cat "$t/err") $(tr '\n' '|' <"$t/out")"
+fi
+# The table: every target, the fit never above the naive mean.
+if "$F" params --material cu --for all >"$t/out" 2>"$t/err" &&
+    awk -F, '/^#/ { next } NR && $1 == "target" { head = $0; next }
+             { n++; if (!($2 <= $4)) bad = 1 }
+             END { exit bad || n != 7 || head != "target,fitted_mean,fitted_max,naive_mean,naive_max" }' "$t/out"; then
+    echo "PASS params --for all: one row per target, fitted mean <= naive mean"
+else
+    echo "FAIL params --for all: $(cat "$t/err") $(tr '\n' '|' <"$t/out")"
+fi
+
+# The scene key: each material's comment holds what params --for prints.
+printf 'materials = cu\nmodels = schlick\ntargets = blender gltf\ntypes = q15\n' >"$t/t.scene"
+"$F" params --material cu --for blender >"$t/blender" 2>&1
+if "$F" gen "$t/t.scene" -o "$t/t.h" 2>"$t/err" && "$F" gen "$t/t.scene" --glsl -o "$t/t.glsl" 2>>"$t/err" &&
+    "$F" gen "$t/t.scene" --hlsl -o "$t/t.hlsl" 2>>"$t/err" &&
+    h=$(awk '$2 == "blender" && $3 == "base_color" { print $4, $5, $6 }' "$t/t.h") &&
+    p=$(awk -F, '$1 == "base_color" { printf "%.6f %.6f %.6f", $2, $3, $4 }' "$t/blender") &&
+    [ -n "$h" ] && [ "$h" = "$p" ] && grep -q '^ \*   gltf         baseColorFactor ' "$t/t.h" &&
+    grep -q '^ \*   blender      base_color ' "$t/t.glsl" && grep -q '^ \*   blender      base_color ' "$t/t.hlsl" &&
+    printf '#include "t.h"\nint main(void) { return 0; }\n' >"$t/main.c" &&
+    ${CC:-cc} -std=c99 -Wall -Wextra -Werror -Iinclude -I"$t" -c "$t/main.c" -o "$t/main.o" 2>>"$t/err"; then
+    echo "PASS gen targets key: the header's comment holds params --for's values ($h), in C, GLSL and HLSL; compiles"
+else
+    echo "FAIL gen targets key: header '$h', params '$p': $(cat "$t/err")"
+fi
