@@ -111,7 +111,7 @@ $(BUILD)/tests/gen_matrix_check: tests/gen_matrix_check.c $(BUILD)/libfresnel.a
 
 test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
            $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit \
-           $(BUILD)/vulkan/vulkan_test
+           $(BUILD)/vulkan/vulkan_test $(BUILD)/hlsl/fresnel.hlsl
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with
 # apt-get when run as root, else the exact apt-get line and a stop.
@@ -178,7 +178,7 @@ viewer: $(BUILD)/fresnel
 	$(BUILD)/fresnel viewer $(VIEWER_SCENE) -o $(BUILD)/viewer \
 	    $(if $(wildcard $(BUILD)/report/cross-count.txt),--cross $(BUILD)/report/cross-count.txt)
 
-install: $(BUILD)/libfresnel.a $(BUILD)/fresnel
+install: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(BUILD)/hlsl/fresnel.hlsl
 	@sh ports/install.sh install '$(DESTDIR)' '$(PREFIX)' '$(BUILD)'
 
 uninstall:
@@ -191,6 +191,7 @@ clean:
 
 # ---- GLSL ports and OSMesa ----
 include ports/glsl/glsl.mk
+include ports/hlsl/hlsl.mk
 
 # ---- fuzzing ----
 # `make fuzz` runs each libFuzzer target tests/fuzz/fuzz_*.c for FUZZ_SECONDS

@@ -7,7 +7,8 @@
 #   lib/cmake/fresnel/fresnelConfig.cmake + fresnelConfigVersion.cmake
 #   (imported target fresnel::fresnel), bin/fresnel, share/fresnel/data/ (the
 #   data pack, which the installed bin/fresnel finds without --data),
-#   share/fresnel/glsl/ (the GLSL port), share/fresnel/LICENSE,
+#   share/fresnel/glsl/ (the GLSL port), share/fresnel/hlsl/fresnel.hlsl (the
+#   HLSL port as one file, BUILD/hlsl/fresnel.hlsl), share/fresnel/LICENSE,
 # and share/fresnel/install_manifest.txt: one line per installed file
 # ("f PATH") and per directory the install created ("d PATH"), relative to
 # DESTDIR/PREFIX. uninstall removes exactly those files, then those
@@ -137,9 +138,9 @@ if [ "$action" != install ]; then
     echo "usage: sh ports/install.sh install DESTDIR PREFIX BUILD | uninstall DESTDIR PREFIX" >&2
     exit 2
 fi
-for f in "$build/libfresnel.a" "$build/fresnel"; do
+for f in "$build/libfresnel.a" "$build/fresnel" "$build/hlsl/fresnel.hlsl"; do
     [ -f "$f" ] || {
-        echo "install: $f missing (make builds it)" >&2
+        echo "install: $f missing (make install builds it)" >&2
         exit 1
     }
 done
@@ -199,6 +200,7 @@ for f in $(cd data && find . -type f | sed 's|^\./||' | sort); do
     put 644 "share/fresnel/data/$(dirname "$f" | sed 's|^\.$||;s|^\./||')" "data/$f"
 done
 for f in ports/glsl/*.glsl ports/glsl/README.md; do put 644 share/fresnel/glsl "$f"; done
+put 644 share/fresnel/hlsl "$build/hlsl/fresnel.hlsl"
 put 644 share/fresnel LICENSE
 echo "f $manifest_rel" >>"$list"
 {

@@ -18,7 +18,8 @@
 int emit_shader_check(const scene *sc, const char *manifest, const char *name, const char *flag);
 
 /* Shared by the GLSL and HLSL back ends (emit_glsl.c, emit_hlsl.c), whose
- * ports have the same function and macro names:
+ * ports are one source (ports/glsl/fresnel.glsl, which the HLSL port
+ * includes), so the function and macro names are the same:
  *   emit_shader_float       a binary32 literal without suffix (emit_shader_const:
  *                           a constant's declaration)
  *   emit_shader_model_ident lsk-comp -> lsk_comp (the function name part)

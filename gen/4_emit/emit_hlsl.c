@@ -1,6 +1,6 @@
 /* `fresnel gen --hlsl` (see emit_glsl.h): the scene for
- * ports/hlsl/fresnel.hlsl. The port has the GLSL port's function and macro
- * names, so the model expressions, LUT macro calls, literals and
+ * ports/hlsl/fresnel.hlsl. The port compiles the GLSL port's source, so the
+ * function and macro names, model expressions, LUT macro calls, literals and
  * identifier checks are emit_glsl.c's; what differs is the declaration
  * syntax (static const float3, array initialisers in braces) and that
  * every table is a static const array (no texture form). Output depends

@@ -5,8 +5,8 @@
  * the three emitters read the rows; no other file names a model to choose
  * or list models (tests/test_gen_layout.sh checks it).
  *
- * Adding a model: its runtime functions (src/, include/), its double
- * reference (reference.c), and one row with its evaluators here. */
+ * Adding a model: gen/README.md lists every place it touches (its runtime
+ * functions, its double reference, its shader function, one row here). */
 #ifndef FRESNEL_REGISTRY_H
 #define FRESNEL_REGISTRY_H
 
@@ -123,8 +123,8 @@ typedef struct model {
     model_eta eta;      /* which eta, kappa its exact or LSK forms read */
     lut_form form;      /* MODEL_LUT rows */
     int uniform;        /* MODEL_LUT rows: 1 nodes uniform in c, 0 in sqrt(c) */
-    /* Shader return expression (ports/glsl/fresnel.glsl and, with the same
-     * names, ports/hlsl/fresnel.hlsl); '@' stands for the material's
+    /* Shader return expression (ports/glsl/fresnel.glsl, the one source of
+     * the GLSL and HLSL ports); '@' stands for the material's
      * identifier prefix and '_'. NULL for LUT rows, whose shader code the
      * emitters build from the form; NULL in a scene row: no shader form. */
     const char *glsl;
@@ -151,10 +151,10 @@ const model *model_find(const char *name);
 /* The scene row for a manifest's model name (a LUT name: the row of its form
  * and spacing); NULL for an unknown name. */
 const model *model_scene_row(const char *name, lut_spacing spacing);
-/* Whether the shader ports (ports/glsl/fresnel.glsl, ports/hlsl/fresnel.hlsl:
- * the same function names, so one expression per row serves both) express
- * scene model name with tables spaced `spacing`: NULL, or what they lack,
- * for the back end's error message. */
+/* Whether the shader ports (ports/glsl/fresnel.glsl, which
+ * ports/hlsl/fresnel.hlsl includes, so one expression per row serves both)
+ * express scene model name with tables spaced `spacing`: NULL, or what they
+ * lack, for the back end's error message. */
 const char *model_shader_lacks(const char *name, lut_spacing spacing);
 /* N for "lutN", "lutN-residual" or "lutN-cubic" (N in lo..hi, no leading
  * zeros), setting *form (if not NULL); 0 for every other string. */

@@ -1,6 +1,9 @@
-/* fresnel.glsl -- the Fresnel models of include/fresnel.h as GLSL functions.
+/* fresnel.glsl -- the Fresnel models of include/fresnel.h as shader
+ * functions: the GLSL port, and the one source of the models for every
+ * shading language (ports/hlsl/fresnel.hlsl is HLSL's spellings, then this
+ * file).
  *
- * ONE SOURCE, THREE DIALECTS
+ * GLSL: ONE SOURCE, THREE DIALECTS
  *   GLSL ES 1.00 (WebGL 1, GLES 2), GLSL ES 3.00 (WebGL 2, GLES 3) and
  *   desktop GLSL 3.30, and every later version of each (also desktop 1.10
  *   to 1.50: tests/glsl_test.c compiles it in every version Mesa lists). Paste or include this file
@@ -14,11 +17,30 @@
  *   the common subset: float literals everywhere (ES has no implicit int to
  *   float conversion), no bit operations, no loops, no recursion.
  *
+ * OTHER LANGUAGES: SPELLINGS, NOT COPIES
+ *   The functions use only what GLSL shares with HLSL (the C preprocessor,
+ *   overloading, swizzles, float(n) and int(x) conversions, clamp, min, max,
+ *   floor, sqrt, pow) and these names for what the languages spell
+ *   differently:
+ *       FRESNEL_MP, FRESNEL_MP3     the mediump-safe functions' values: GLSL
+ *                                   float, vec3 in the default precision;
+ *                                   HLSL min16float, min16float3
+ *       FRESNEL_HP, _HP2, _HP3      binary32 values: GLSL FRESNEL_HIGHP
+ *                                   float, vec2, vec3; HLSL float, ...
+ *       FRESNEL_VEC2, FRESNEL_VEC3  vectors of the default float and their
+ *                                   constructors: vec2, vec3; float2, float3
+ *       FRESNEL_SATURATE(x)         clamp(x, 0.0, 1.0); HLSL saturate(x)
+ *   and `float` for a result in the default float (GLSL: the default
+ *   precision; HLSL: float). A language's prelude defines them and then
+ *   includes this file (ports/hlsl/fresnel.hlsl); without one they are
+ *   GLSL's, below. The texture forms of the tables (sampler2D) are GLSL's
+ *   alone. Below, "mediump" means FRESNEL_MP and "highp" FRESNEL_HP.
+ *
  * NAMES
  *   The C names: fresnel_schlick, fresnel_schlick_rgb (vec3), ...; vec3
- *   stands for fresnel_rgb, vec2 for fresnel_nk and fresnel_rg. Internal
- *   helpers are fresnel_i_*, as in the C runtime; macros FRESNEL_* (GLSL, like
- *   C++, reserves names with "__").
+ *   (HLSL float3) stands for fresnel_rgb, vec2 (float2) for fresnel_nk and
+ *   fresnel_rg. Internal helpers are fresnel_i_*, as in the C runtime;
+ *   macros FRESNEL_* (GLSL, like C++, reserves names with "__").
  *
  * CONVENTIONS (as in fresnel.h)
  *   c is cos(theta) in the incident medium, clamped to [0, 1] BEFORE 1 - c is
@@ -32,9 +54,9 @@
  *   other GPUs may differ, so do not rely on NaN being cleaned up here.
  *
  * PRECISION: WHICH FUNCTIONS RUN IN MEDIUMP, WHICH NEED HIGHP
- *   Functions whose parameters carry no precision qualifier run in the
+ *   Functions declared with FRESNEL_MP (no precision qualifier) run in the
  *   default float precision of the including shader (mediump on a mobile
- *   fragment shader); those declared with FRESNEL_HIGHP compute in highp
+ *   fragment shader); those declared with FRESNEL_HP compute in highp
  *   whatever the default is, and only their result is converted to it.
  *   mediump is IEEE binary16 on current mobile GPUs (and on Mesa's llvmpipe):
  *   11 significant bits, largest finite 65504, smallest normal 2^-14.
@@ -42,7 +64,7 @@
  *   mediump-safe (errors and guards in each function's comment):
  *     fresnel_schlick, _schlick_gen, _f82, _lsk, _lsk_comp,
  *     _approx_conductor, _f0_from_ior, _f0_in_medium (and their _rgb)
- *   highp (FRESNEL_HIGHP):
+ *   highp (FRESNEL_HP, that is FRESNEL_HIGHP float):
  *     fresnel_conductor, _dielectric, _schlick_internal: eta^2 + c^2 - 1
  *       cancels near the critical angle, and the conductor's
  *       A = eta^2 - kappa^2 - sin^2 squares again: A^2 reaches kappa^4, which
@@ -91,9 +113,17 @@
  *   function divides by a quantity that can underflow to 0 except the
  *   approximate conductor's s-denominator (eta, kappa and c all near 0), which
  *   is guarded. mix() is not used (mediump mix() misbehaves on some GPUs,
- *   WebGLSamples#4): interpolation is written a + t (b - a), as in C.
+ *   WebGLSamples#4), nor HLSL's lerp(): interpolation is written
+ *   a + t (b - a), as in C.
  */
-#ifndef FRESNEL_GLSL
+#ifndef FRESNEL_SHADER
+#define FRESNEL_SHADER 1
+
+/* ------------------------------------------------------- GLSL spellings */
+
+/* Unless a language's prelude has defined the spellings (see OTHER
+ * LANGUAGES above), this is GLSL. */
+#ifndef FRESNEL_HP
 #define FRESNEL_GLSL 1
 
 #ifndef FRESNEL_HIGHP
@@ -129,6 +159,16 @@
 #define FRESNEL_TEXTURE texture2D
 #endif
 
+#define FRESNEL_MP float
+#define FRESNEL_MP3 vec3
+#define FRESNEL_HP FRESNEL_HIGHP float
+#define FRESNEL_HP2 FRESNEL_HIGHP vec2
+#define FRESNEL_HP3 FRESNEL_HIGHP vec3
+#define FRESNEL_VEC2 vec2
+#define FRESNEL_VEC3 vec3
+#define FRESNEL_SATURATE(x) clamp(x, 0.0, 1.0)
+#endif /* GLSL spellings */
+
 /* Domains, as in fresnel.h. FRESNEL_MP_* apply to the mediump functions. */
 #define FRESNEL_ETA_MIN 0.0009765625
 #define FRESNEL_ETA_MAX 1e5
@@ -148,29 +188,29 @@
 
 /* ------------------------------------------------------------- helpers */
 
-float fresnel_i_unit(float x) { return clamp(x, 0.0, 1.0); }
-vec3 fresnel_i_unit(vec3 x) { return clamp(x, 0.0, 1.0); }
-float fresnel_i_pow5(float x)
+FRESNEL_MP fresnel_i_unit(FRESNEL_MP x) { return FRESNEL_SATURATE(x); }
+FRESNEL_MP3 fresnel_i_unit(FRESNEL_MP3 x) { return FRESNEL_SATURATE(x); }
+FRESNEL_MP fresnel_i_pow5(FRESNEL_MP x)
 {
-    float x2 = x * x;
+    FRESNEL_MP x2 = x * x;
     return x2 * x2 * x;
 }
-vec3 fresnel_i_pow5(vec3 x)
+FRESNEL_MP3 fresnel_i_pow5(FRESNEL_MP3 x)
 {
-    vec3 x2 = x * x;
+    FRESNEL_MP3 x2 = x * x;
     return x2 * x2 * x;
 }
 /* (1 - c)^p for c in [0, 1], p > 0. The C runtime uses exp(p log1p(-c));
- * GLSL has no log1p, and 1 - c is exact for c >= 0.5 (Sterbenz) so the
- * rounding p multiplies only exists where (1 - c)^p is large and its relative
- * error ~ p 6e-8 harmless. The base is >= 0 and 0 is answered without pow()
- * (pow(0, p) goes through log2(0) = -Inf). */
-float fresnel_i_pow_one_minus(float c, float p)
+ * GLSL and HLSL have no log1p, and 1 - c is exact for c >= 0.5 (Sterbenz)
+ * so the rounding p multiplies only exists where (1 - c)^p is large and its
+ * relative error ~ p 6e-8 harmless. The base is >= 0 and 0 is answered
+ * without pow() (pow(0, p) goes through log2(0) = -Inf). */
+FRESNEL_MP fresnel_i_pow_one_minus(FRESNEL_MP c, FRESNEL_MP p)
 {
-    float x = 1.0 - c;
+    FRESNEL_MP x = 1.0 - c;
     return x > 0.0 ? pow(x, p) : 0.0;
 }
-FRESNEL_HIGHP float fresnel_i_kappa(FRESNEL_HIGHP float k)
+FRESNEL_HP fresnel_i_kappa(FRESNEL_HP k)
 {
     return k >= FRESNEL_KAPPA_TINY ? min(k, FRESNEL_KAPPA_MAX) : 0.0;
 }
@@ -184,9 +224,9 @@ FRESNEL_HIGHP float fresnel_i_kappa(FRESNEL_HIGHP float k)
  * add (eta - eh)(eta + eh) + (c - ch)(c + ch) < 2^-10 with relative error
  * 2^-23. For eta >= 1 both terms of (eta-1)(eta+1) + c^2 are >= 0: no
  * cancellation. */
-FRESNEL_HIGHP float fresnel_i_eta2_minus_sin2(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
+FRESNEL_HP fresnel_i_eta2_minus_sin2(FRESNEL_HP eta, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float eh, ch;
+    FRESNEL_HP eh, ch;
     if (eta >= 1.0)
         return (eta - 1.0) * (eta + 1.0) + c * c;
     eh = floor(eta * 4096.0) * (1.0 / 4096.0);
@@ -198,12 +238,12 @@ FRESNEL_HIGHP float fresnel_i_eta2_minus_sin2(FRESNEL_HIGHP float eta, FRESNEL_H
 
 /* F0 + (1 - F0)(1 - c)^5. mediump: (1-c)^5 underflows below 2^-14 for
  * c > 0.856, which changes F by < 6.1e-5 (see the file comment). */
-float fresnel_schlick(float f0, float c)
+FRESNEL_MP fresnel_schlick(FRESNEL_MP f0, FRESNEL_MP c)
 {
     f0 = fresnel_i_unit(f0);
     return fresnel_i_unit(f0 + (1.0 - f0) * fresnel_i_pow5(1.0 - fresnel_i_unit(c)));
 }
-vec3 fresnel_schlick_rgb(vec3 f0, float c)
+FRESNEL_MP3 fresnel_schlick_rgb(FRESNEL_MP3 f0, FRESNEL_MP c)
 {
     f0 = fresnel_i_unit(f0);
     return fresnel_i_unit(f0 + (1.0 - f0) * fresnel_i_pow5(1.0 - fresnel_i_unit(c)));
@@ -211,9 +251,9 @@ vec3 fresnel_schlick_rgb(vec3 f0, float c)
 
 /* F0 + (F90 - F0)(1 - c)^p, p clamped to [1e-3, 1e3]. mediump: as Schlick;
  * pow() itself is the GPU's (binary16 pow is exp2(p log2 x) with a few ulp). */
-float fresnel_schlick_gen(float f0, float f90, float p, float c)
+FRESNEL_MP fresnel_schlick_gen(FRESNEL_MP f0, FRESNEL_MP f90, FRESNEL_MP p, FRESNEL_MP c)
 {
-    float t;
+    FRESNEL_MP t;
     c = fresnel_i_unit(c);
     f0 = fresnel_i_unit(f0);
     f90 = fresnel_i_unit(f90);
@@ -221,9 +261,9 @@ float fresnel_schlick_gen(float f0, float f90, float p, float c)
     t = p == 5.0 ? fresnel_i_pow5(1.0 - c) : fresnel_i_pow_one_minus(c, p);
     return fresnel_i_unit(f0 + (f90 - f0) * t);
 }
-vec3 fresnel_schlick_gen_rgb(vec3 f0, vec3 f90, float p, float c)
+FRESNEL_MP3 fresnel_schlick_gen_rgb(FRESNEL_MP3 f0, FRESNEL_MP3 f90, FRESNEL_MP p, FRESNEL_MP c)
 {
-    float t;
+    FRESNEL_MP t;
     c = fresnel_i_unit(c);
     f0 = fresnel_i_unit(f0);
     f90 = fresnel_i_unit(f90);
@@ -234,11 +274,11 @@ vec3 fresnel_schlick_gen_rgb(vec3 f0, vec3 f90, float p, float c)
 
 /* Schlick at the transmitted angle for eta < 1 (1 past the critical angle).
  * highp: eta^2 ct^2 = (eta-1)(eta+1) + c^2 cancels at the critical angle. */
-float fresnel_schlick_internal(float f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
+float fresnel_schlick_internal(FRESNEL_MP f0, FRESNEL_HP eta, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
-    FRESNEL_HIGHP float cc = clamp(c, 0.0, 1.0);
-    FRESNEL_HIGHP float ct2;
+    FRESNEL_HP e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HP cc = FRESNEL_SATURATE(c);
+    FRESNEL_HP ct2;
     if (e >= 1.0)
         return fresnel_schlick(f0, cc);
     ct2 = fresnel_i_eta2_minus_sin2(e, cc);
@@ -246,25 +286,25 @@ float fresnel_schlick_internal(float f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP 
         return 1.0;
     return fresnel_schlick(f0, sqrt(ct2) / e);
 }
-vec3 fresnel_schlick_internal_rgb(vec3 f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
+FRESNEL_VEC3 fresnel_schlick_internal_rgb(FRESNEL_MP3 f0, FRESNEL_HP eta, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
-    FRESNEL_HIGHP float cc = clamp(c, 0.0, 1.0);
-    FRESNEL_HIGHP float ct2;
+    FRESNEL_HP e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HP cc = FRESNEL_SATURATE(c);
+    FRESNEL_HP ct2;
     if (e >= 1.0)
         return fresnel_schlick_rgb(f0, cc);
     ct2 = fresnel_i_eta2_minus_sin2(e, cc);
     if (!(ct2 > 0.0))
-        return vec3(1.0);
+        return FRESNEL_VEC3(1.0, 1.0, 1.0);
     return fresnel_schlick_rgb(f0, sqrt(ct2) / e);
 }
 
 /* Hoffman's F0 in a surrounding medium of index etaE, rebuilt from
  * 1 - s = 2/(etaE+1) and 1 - sqrt F0 = (1-F0)/(1+sqrt F0) as in C.
  * mediump: every intermediate is in [0, 2]; etaE clamped to [1e-3, 100]. */
-float fresnel_f0_in_medium(float f0, float eta_e)
+FRESNEL_MP fresnel_f0_in_medium(FRESNEL_MP f0, FRESNEL_MP eta_e)
 {
-    float r, one_minus_s, one_minus_r, q;
+    FRESNEL_MP r, one_minus_s, one_minus_r, q;
     eta_e = clamp(eta_e, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
     f0 = fresnel_i_unit(f0);
     r = sqrt(f0);
@@ -276,30 +316,30 @@ float fresnel_f0_in_medium(float f0, float eta_e)
 
 /* ((eta-1)^2 + kappa^2) / ((eta+1)^2 + kappa^2). mediump: eta, kappa <= 100
  * keep the denominator <= 20201; it is >= 1, so nothing underflows. */
-float fresnel_f0_from_ior(float eta, float kappa)
+FRESNEL_MP fresnel_f0_from_ior(FRESNEL_MP eta, FRESNEL_MP kappa)
 {
-    float k2;
+    FRESNEL_MP k2;
     eta = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
     kappa = clamp(kappa, 0.0, FRESNEL_MP_IOR_MAX);
     k2 = kappa * kappa;
     return fresnel_i_unit(((eta - 1.0) * (eta - 1.0) + k2) / ((eta + 1.0) * (eta + 1.0) + k2));
 }
-FRESNEL_HIGHP float fresnel_i_f0_from_ior_hp(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa)
+FRESNEL_HP fresnel_i_f0_from_ior_hp(FRESNEL_HP eta, FRESNEL_HP kappa)
 {
-    FRESNEL_HIGHP float k2;
+    FRESNEL_HP k2;
     eta = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
     kappa = fresnel_i_kappa(kappa);
     k2 = kappa * kappa;
-    return clamp(((eta - 1.0) * (eta - 1.0) + k2) / ((eta + 1.0) * (eta + 1.0) + k2), 0.0, 1.0);
+    return FRESNEL_SATURATE(((eta - 1.0) * (eta - 1.0) + k2) / ((eta + 1.0) * (eta + 1.0) + k2));
 }
 
 /* ----------------------------------------------------------------- LSK */
 
 /* ((n-1)^2 + 4n (1-c)^5 + k^2) / ((n+1)^2 + k^2). mediump: guards as
  * fresnel_f0_from_ior; 4n(1-c)^5 <= 400. */
-float fresnel_lsk(float n, float k, float c)
+FRESNEL_MP fresnel_lsk(FRESNEL_MP n, FRESNEL_MP k, FRESNEL_MP c)
 {
-    float k2;
+    FRESNEL_MP k2;
     n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
     k = clamp(k, 0.0, FRESNEL_MP_IOR_MAX);
     c = fresnel_i_unit(c);
@@ -307,9 +347,9 @@ float fresnel_lsk(float n, float k, float c)
     return fresnel_i_unit(((n - 1.0) * (n - 1.0) + 4.0 * n * fresnel_i_pow5(1.0 - c) + k2) /
                           ((n + 1.0) * (n + 1.0) + k2));
 }
-vec3 fresnel_lsk_rgb(vec3 n, vec3 k, float c)
+FRESNEL_MP3 fresnel_lsk_rgb(FRESNEL_MP3 n, FRESNEL_MP3 k, FRESNEL_MP c)
 {
-    vec3 k2;
+    FRESNEL_MP3 k2;
     n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
     k = clamp(k, 0.0, FRESNEL_MP_IOR_MAX);
     c = fresnel_i_unit(c);
@@ -322,19 +362,19 @@ vec3 fresnel_lsk_rgb(vec3 n, vec3 k, float c)
  * alpha in [0, 1e3]; alpha = 0 means the term a c. mediump: a c (1-c)^alpha
  * is formed as a (c (1-c)^alpha), which stays below a; pow() underflowing to
  * 0 for large alpha drops a term < 2^-14 a c. */
-float fresnel_lsk_comp(float n, float k, float a, float alpha, float c)
+FRESNEL_MP fresnel_lsk_comp(FRESNEL_MP n, FRESNEL_MP k, FRESNEL_MP a, FRESNEL_MP alpha, FRESNEL_MP c)
 {
-    float comp;
+    FRESNEL_MP comp;
     c = fresnel_i_unit(c);
     a = clamp(a, 0.0, FRESNEL_MP_A_MAX);
     alpha = clamp(alpha, 0.0, FRESNEL_ALPHA_MAX);
     comp = alpha > 0.0 ? a * (c * fresnel_i_pow_one_minus(c, alpha)) : a * c;
     return fresnel_i_unit(fresnel_lsk(n, k, c) - comp);
 }
-vec3 fresnel_lsk_comp_rgb(vec3 n, vec3 k, vec3 a, vec3 alpha, float c)
+FRESNEL_MP3 fresnel_lsk_comp_rgb(FRESNEL_MP3 n, FRESNEL_MP3 k, FRESNEL_MP3 a, FRESNEL_MP3 alpha, FRESNEL_MP c)
 {
-    return vec3(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
-                fresnel_lsk_comp(n.b, k.b, a.b, alpha.b, c));
+    return FRESNEL_VEC3(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
+                        fresnel_lsk_comp(n.b, k.b, a.b, alpha.b, c));
 }
 
 /* ----------------------------------------------------------------- F82 */
@@ -346,9 +386,9 @@ vec3 fresnel_lsk_comp_rgb(vec3 n, vec3 k, vec3 a, vec3 alpha, float c)
  * 17.6513844 and 8.16666698 are the binary32 values of 7^7/6^6 and 49/6. */
 #define FRESNEL_I_F82_A1 17.6513844
 #define FRESNEL_I_F82_A2 8.16666698
-float fresnel_f82(float f0, float f82, float c)
+FRESNEL_MP fresnel_f82(FRESNEL_MP f0, FRESNEL_MP f82, FRESNEL_MP c)
 {
-    float x, x5, a;
+    FRESNEL_MP x, x5, a;
     f0 = fresnel_i_unit(f0);
     f82 = fresnel_i_unit(f82);
     c = fresnel_i_unit(c);
@@ -357,10 +397,10 @@ float fresnel_f82(float f0, float f82, float c)
     a = FRESNEL_I_F82_A1 * (f0 - f82) + FRESNEL_I_F82_A2 * (1.0 - f0);
     return fresnel_i_unit(f0 + (1.0 - f0) * x5 - a * c * x5 * x);
 }
-vec3 fresnel_f82_rgb(vec3 f0, vec3 f82, float c)
+FRESNEL_MP3 fresnel_f82_rgb(FRESNEL_MP3 f0, FRESNEL_MP3 f82, FRESNEL_MP c)
 {
-    float x, x5;
-    vec3 a;
+    FRESNEL_MP x, x5;
+    FRESNEL_MP3 a;
     f0 = fresnel_i_unit(f0);
     f82 = fresnel_i_unit(f82);
     c = fresnel_i_unit(c);
@@ -377,9 +417,9 @@ vec3 fresnel_f82_rgb(vec3 f0, vec3 f82, float c)
  * mediump: n, k <= 100 keep both denominators <= 20201; the rp denominator
  * is >= 1; the rs denominator underflows only when n, k and c are all below
  * 2^-8, where rs = 1 is the limit. */
-float fresnel_approx_conductor(float n, float k, float c)
+FRESNEL_MP fresnel_approx_conductor(FRESNEL_MP n, FRESNEL_MP k, FRESNEL_MP c)
 {
-    float kc, den_s;
+    FRESNEL_MP kc, den_s;
     n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
     k = clamp(k, 0.0, FRESNEL_MP_IOR_MAX);
     c = fresnel_i_unit(c);
@@ -389,65 +429,64 @@ float fresnel_approx_conductor(float n, float k, float c)
                                  ((n * c - 1.0) * (n * c - 1.0) + kc * kc) /
                                      ((n * n + k * k) * c * c + 2.0 * n * c + 1.0)));
 }
-vec3 fresnel_approx_conductor_rgb(vec3 n, vec3 k, float c)
+FRESNEL_MP3 fresnel_approx_conductor_rgb(FRESNEL_MP3 n, FRESNEL_MP3 k, FRESNEL_MP c)
 {
-    return vec3(fresnel_approx_conductor(n.r, k.r, c), fresnel_approx_conductor(n.g, k.g, c),
-                fresnel_approx_conductor(n.b, k.b, c));
+    return FRESNEL_VEC3(fresnel_approx_conductor(n.r, k.r, c), fresnel_approx_conductor(n.g, k.g, c),
+                        fresnel_approx_conductor(n.b, k.b, c));
 }
 /* The same in highp with the C domain (eta, kappa up to 1e5), for Gulbrandsen. */
-FRESNEL_HIGHP float fresnel_i_approx_conductor_hp(FRESNEL_HIGHP float n, FRESNEL_HIGHP float k,
-                                                  FRESNEL_HIGHP float c)
+FRESNEL_HP fresnel_i_approx_conductor_hp(FRESNEL_HP n, FRESNEL_HP k, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float kc, rs, rp;
+    FRESNEL_HP kc, rs, rp;
     n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
     k = fresnel_i_kappa(k);
-    c = clamp(c, 0.0, 1.0);
+    c = FRESNEL_SATURATE(c);
     kc = k * c;
     rs = ((n - c) * (n - c) + k * k) / ((n + c) * (n + c) + k * k);
     rp = ((n * c - 1.0) * (n * c - 1.0) + kc * kc) / ((n * n + k * k) * c * c + 2.0 * n * c + 1.0);
-    return clamp(0.5 * (rs + rp), 0.0, 1.0);
+    return FRESNEL_SATURATE(0.5 * (rs + rp));
 }
 
 /* ---------------------------------------------------------- Gulbrandsen */
 
 /* r, g -> (n, k), r clamped to [0, 0.9999]. highp (see the file comment).
  * k^2 in the factored form of src/gulbrandsen.c. */
-FRESNEL_HIGHP vec2 fresnel_gulbrandsen_nk(FRESNEL_HIGHP float r, FRESNEL_HIGHP float g)
+FRESNEL_HP2 fresnel_gulbrandsen_nk(FRESNEL_HP r, FRESNEL_HP g)
 {
-    FRESNEL_HIGHP float sr, nmin, nmax, n, k2;
+    FRESNEL_HP sr, nmin, nmax, n, k2;
     r = clamp(r, 0.0, FRESNEL_GULBRANDSEN_R_MAX);
-    g = clamp(g, 0.0, 1.0);
+    g = FRESNEL_SATURATE(g);
     sr = sqrt(r);
     nmin = (1.0 - r) / (1.0 + r);
     nmax = (1.0 + sr) * (1.0 + sr) / (1.0 - r);
     n = g * nmin + (1.0 - g) * nmax;
     k2 = g * (nmax - nmin) * (sr * (n + 1.0) + n - 1.0) / (1.0 + sr);
-    return vec2(n, k2 > 0.0 ? sqrt(k2) : 0.0);
+    return FRESNEL_VEC2(n, k2 > 0.0 ? sqrt(k2) : 0.0);
 }
 
 /* (n, k) -> (r, g); g clamped to [0, 1]. highp. */
-FRESNEL_HIGHP vec2 fresnel_gulbrandsen_rg(FRESNEL_HIGHP float n, FRESNEL_HIGHP float k)
+FRESNEL_HP2 fresnel_gulbrandsen_rg(FRESNEL_HP n, FRESNEL_HP k)
 {
-    FRESNEL_HIGHP float r = fresnel_i_f0_from_ior_hp(n, k);
-    FRESNEL_HIGHP float rc = min(r, FRESNEL_GULBRANDSEN_R_MAX);
-    FRESNEL_HIGHP float sr = sqrt(rc);
-    FRESNEL_HIGHP float nmin = (1.0 - rc) / (1.0 + rc);
-    FRESNEL_HIGHP float nmax = (1.0 + sr) * (1.0 + sr) / (1.0 - rc);
-    FRESNEL_HIGHP float span = nmax - nmin;
+    FRESNEL_HP r = fresnel_i_f0_from_ior_hp(n, k);
+    FRESNEL_HP rc = min(r, FRESNEL_GULBRANDSEN_R_MAX);
+    FRESNEL_HP sr = sqrt(rc);
+    FRESNEL_HP nmin = (1.0 - rc) / (1.0 + rc);
+    FRESNEL_HP nmax = (1.0 + sr) * (1.0 + sr) / (1.0 - rc);
+    FRESNEL_HP span = nmax - nmin;
     n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
-    return vec2(r, span > 0.0 ? clamp((nmax - n) / span, 0.0, 1.0) : 0.0);
+    return FRESNEL_VEC2(r, span > 0.0 ? FRESNEL_SATURATE((nmax - n) / span) : 0.0);
 }
 
 /* The approximate conductor at the (n, k) of (r, g). highp. */
-float fresnel_gulbrandsen(FRESNEL_HIGHP float r, FRESNEL_HIGHP float g, FRESNEL_HIGHP float c)
+float fresnel_gulbrandsen(FRESNEL_HP r, FRESNEL_HP g, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP vec2 nk = fresnel_gulbrandsen_nk(r, g);
+    FRESNEL_HP2 nk = fresnel_gulbrandsen_nk(r, g);
     return fresnel_i_approx_conductor_hp(nk.x, nk.y, c);
 }
-vec3 fresnel_gulbrandsen_rgb(FRESNEL_HIGHP vec3 r, FRESNEL_HIGHP vec3 g, FRESNEL_HIGHP float c)
+FRESNEL_VEC3 fresnel_gulbrandsen_rgb(FRESNEL_HP3 r, FRESNEL_HP3 g, FRESNEL_HP c)
 {
-    return vec3(fresnel_gulbrandsen(r.r, g.r, c), fresnel_gulbrandsen(r.g, g.g, c),
-                fresnel_gulbrandsen(r.b, g.b, c));
+    return FRESNEL_VEC3(fresnel_gulbrandsen(r.r, g.r, c), fresnel_gulbrandsen(r.g, g.g, c),
+                        fresnel_gulbrandsen(r.b, g.b, c));
 }
 
 /* ------------------------------------------------------------ exact */
@@ -455,13 +494,12 @@ vec3 fresnel_gulbrandsen_rgb(FRESNEL_HIGHP vec3 r, FRESNEL_HIGHP vec3 g, FRESNEL
 /* u + iv = sqrt((eta + i kappa)^2 - sin^2) on the decaying branch, and
  * m = u^2 + v^2, returned as (u, v, m). The smaller of u, v comes from
  * u v = eta kappa, never from (m - |A|)/2. eta, kappa already clamped. */
-FRESNEL_HIGHP vec3 fresnel_i_transmitted(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa,
-                                         FRESNEL_HIGHP float c)
+FRESNEL_HP3 fresnel_i_transmitted(FRESNEL_HP eta, FRESNEL_HP kappa, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float ek = eta * kappa;
-    FRESNEL_HIGHP float a = fresnel_i_eta2_minus_sin2(eta, c) - kappa * kappa;
-    FRESNEL_HIGHP float m = sqrt(a * a + 4.0 * ek * ek);
-    FRESNEL_HIGHP float u, v;
+    FRESNEL_HP ek = eta * kappa;
+    FRESNEL_HP a = fresnel_i_eta2_minus_sin2(eta, c) - kappa * kappa;
+    FRESNEL_HP m = sqrt(a * a + 4.0 * ek * ek);
+    FRESNEL_HP u, v;
     if (a >= 0.0) {
         u = sqrt(0.5 * (m + a));
         v = u > 0.0 ? ek / u : 0.0;
@@ -469,17 +507,17 @@ FRESNEL_HIGHP vec3 fresnel_i_transmitted(FRESNEL_HIGHP float eta, FRESNEL_HIGHP 
         v = sqrt(0.5 * (m - a));
         u = ek / v;
     }
-    return vec3(u, v, m);
+    return FRESNEL_VEC3(u, v, m);
 }
 
 /* Exact unpolarised reflectance of eta + i kappa (fresnel.h). highp. */
-float fresnel_conductor(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa, FRESNEL_HIGHP float c)
+float fresnel_conductor(FRESNEL_HP eta, FRESNEL_HP kappa, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
-    FRESNEL_HIGHP float k = fresnel_i_kappa(kappa);
-    FRESNEL_HIGHP float cc = clamp(c, 0.0, 1.0);
-    FRESNEL_HIGHP vec3 w;
-    FRESNEL_HIGHP float p, q, den_s, den_p, rs, rp;
+    FRESNEL_HP e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HP k = fresnel_i_kappa(kappa);
+    FRESNEL_HP cc = FRESNEL_SATURATE(c);
+    FRESNEL_HP3 w;
+    FRESNEL_HP p, q, den_s, den_p, rs, rp;
     if (e == 1.0 && k == 0.0)
         return 0.0; /* matched index: nothing reflected, also at c = 0 */
     w = fresnel_i_transmitted(e, k, cc);
@@ -489,20 +527,19 @@ float fresnel_conductor(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa, FRES
     den_p = (p + w.x) * (p + w.x) + (q + w.y) * (q + w.y);
     rs = den_s > 0.0 ? ((cc - w.x) * (cc - w.x) + w.y * w.y) / den_s : 0.0;
     rp = den_p > 0.0 ? ((p - w.x) * (p - w.x) + (q - w.y) * (q - w.y)) / den_p : 0.0;
-    return clamp(0.5 * (rs + rp), 0.0, 1.0);
+    return FRESNEL_SATURATE(0.5 * (rs + rp));
 }
-vec3 fresnel_conductor_rgb(FRESNEL_HIGHP vec3 eta, FRESNEL_HIGHP vec3 kappa, FRESNEL_HIGHP float c)
+FRESNEL_VEC3 fresnel_conductor_rgb(FRESNEL_HP3 eta, FRESNEL_HP3 kappa, FRESNEL_HP c)
 {
-    return vec3(fresnel_conductor(eta.r, kappa.r, c), fresnel_conductor(eta.g, kappa.g, c),
-                fresnel_conductor(eta.b, kappa.b, c));
+    return FRESNEL_VEC3(fresnel_conductor(eta.r, kappa.r, c), fresnel_conductor(eta.g, kappa.g, c),
+                        fresnel_conductor(eta.b, kappa.b, c));
 }
 
 /* 1 - fresnel_conductor, from sums of non-negative terms (src/exact.c). */
-FRESNEL_HIGHP float fresnel_i_conductor_transmittance(FRESNEL_HIGHP float e, FRESNEL_HIGHP float k,
-                                                      FRESNEL_HIGHP float cc)
+FRESNEL_HP fresnel_i_conductor_transmittance(FRESNEL_HP e, FRESNEL_HP k, FRESNEL_HP cc)
 {
-    FRESNEL_HIGHP vec3 w;
-    FRESNEL_HIGHP float p, q, den_s, den_p, ts, tp;
+    FRESNEL_HP3 w;
+    FRESNEL_HP p, q, den_s, den_p, ts, tp;
     if (e == 1.0 && k == 0.0)
         return 1.0;
     w = fresnel_i_transmitted(e, k, cc);
@@ -512,15 +549,15 @@ FRESNEL_HIGHP float fresnel_i_conductor_transmittance(FRESNEL_HIGHP float e, FRE
     den_p = (p + w.x) * (p + w.x) + (q + w.y) * (q + w.y);
     ts = den_s > 0.0 ? 4.0 * cc * w.x / den_s : 1.0;
     tp = den_p > 0.0 ? 4.0 * cc * w.x * (w.z + (1.0 - cc) * (1.0 + cc)) / den_p : 1.0;
-    return clamp(0.5 * (ts + tp), 0.0, 1.0);
+    return FRESNEL_SATURATE(0.5 * (ts + tp));
 }
 
 /* Exact dielectric, either side; 1 past the critical angle. highp. */
-float fresnel_dielectric(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
+float fresnel_dielectric(FRESNEL_HP eta, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
-    FRESNEL_HIGHP float cc = clamp(c, 0.0, 1.0);
-    FRESNEL_HIGHP float a, w, e2c, rs, rp;
+    FRESNEL_HP e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HP cc = FRESNEL_SATURATE(c);
+    FRESNEL_HP a, w, e2c, rs, rp;
     if (e == 1.0)
         return 0.0;
     a = fresnel_i_eta2_minus_sin2(e, cc);
@@ -530,7 +567,7 @@ float fresnel_dielectric(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
     e2c = e * e * cc;
     rs = (cc - w) / (cc + w);
     rp = (e2c - w) / (e2c + w);
-    return clamp(0.5 * (rs * rs + rp * rp), 0.0, 1.0);
+    return FRESNEL_SATURATE(0.5 * (rs * rs + rp * rp));
 }
 
 /* -------------------------------------------------------- Cook-Torrance */
@@ -538,26 +575,22 @@ float fresnel_dielectric(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float c)
 /* F0 + (1 - F0) (1 - T'(c)/T'(1)), T' the transmittance of one
  * representative eta + i kappa, T'(1) = 4 eta / ((eta+1)^2 + kappa^2).
  * F0 may be mediump; eta, kappa, c and the interpolant are highp. */
-FRESNEL_HIGHP float fresnel_i_cook_torrance_t(FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa,
-                                              FRESNEL_HIGHP float c)
+FRESNEL_HP fresnel_i_cook_torrance_t(FRESNEL_HP eta, FRESNEL_HP kappa, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
-    FRESNEL_HIGHP float k = fresnel_i_kappa(kappa);
-    FRESNEL_HIGHP float d = (e + 1.0) * (e + 1.0) + k * k;
-    return clamp(1.0 - fresnel_i_conductor_transmittance(e, k, clamp(c, 0.0, 1.0)) * d / (4.0 * e), 0.0,
-                 1.0);
+    FRESNEL_HP e = clamp(eta, FRESNEL_ETA_MIN, FRESNEL_ETA_MAX);
+    FRESNEL_HP k = fresnel_i_kappa(kappa);
+    FRESNEL_HP d = (e + 1.0) * (e + 1.0) + k * k;
+    return FRESNEL_SATURATE(1.0 - fresnel_i_conductor_transmittance(e, k, FRESNEL_SATURATE(c)) * d / (4.0 * e));
 }
-float fresnel_cook_torrance(float f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa,
-                            FRESNEL_HIGHP float c)
+float fresnel_cook_torrance(FRESNEL_MP f0, FRESNEL_HP eta, FRESNEL_HP kappa, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float t = fresnel_i_cook_torrance_t(eta, kappa, c);
+    FRESNEL_HP t = fresnel_i_cook_torrance_t(eta, kappa, c);
     f0 = fresnel_i_unit(f0);
     return fresnel_i_unit(f0 + (1.0 - f0) * t);
 }
-vec3 fresnel_cook_torrance_rgb(vec3 f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP float kappa,
-                               FRESNEL_HIGHP float c)
+FRESNEL_VEC3 fresnel_cook_torrance_rgb(FRESNEL_MP3 f0, FRESNEL_HP eta, FRESNEL_HP kappa, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP float t = fresnel_i_cook_torrance_t(eta, kappa, c);
+    FRESNEL_HP t = fresnel_i_cook_torrance_t(eta, kappa, c);
     f0 = fresnel_i_unit(f0);
     return fresnel_i_unit(f0 + (1.0 - f0) * t);
 }
@@ -565,99 +598,126 @@ vec3 fresnel_cook_torrance_rgb(vec3 f0, FRESNEL_HIGHP float eta, FRESNEL_HIGHP f
 /* --------------------------------------------------------------- LUTs */
 
 /* Tables of src/lut.c: n nodes, uniform in sqrt(c), c_i = (i/(n-1))^2
- * (fresnel_lut*), or in c (fresnel_lut_linear*); RGB tables
- * hold n red nodes, then n green, then n blue; the _residual forms add the
+ * (FRESNEL_LUT_*, fresnel_lut*), or in c (the LINEAR forms); RGB tables
+ * hold n red nodes, then n green, then n blue; the RESIDUAL forms add the
  * table to Schlick(F0). Linear interpolation between the two nodes around c,
- * computed here (not by the texture unit, whose filter weights have 8 bits
+ * computed here (not by a texture unit, whose filter weights have 8 bits
  * on many GPUs), so results match the C runtime.
  *
- * FROM A TEXTURE: the table is a strip of texels in one row of a 2D texture
+ * FROM AN ARRAY (HLSL; GLSL ES 3.00, GLSL 1.30 and later; ES 1.00 does not
+ * index fragment arrays with a variable): FRESNEL_LUT_ARRAY(table, n, c)
+ * and friends below; table is a float array (const or uniform, in HLSL
+ * static const, as `fresnel gen --hlsl` writes them, or a cbuffer) of n or
+ * 3n nodes, n an int constant expression or variable. Each macro is one
+ * expression.
+ *
+ * FROM A TEXTURE (GLSL): fresnel_lut*(table, strip, n, c), the R32F strip,
+ * and fresnel_lut*_packed_rgb, the packed RGBA8 texture, further below.
+ *
+ * Precision: position, fetches and interpolation highp (see the file
+ * comment); the result is converted to the default precision. */
+FRESNEL_HP2 fresnel_i_lut_pos(FRESNEL_HP n, FRESNEL_HP x)
+{
+    FRESNEL_HP pos = x * (n - 1.0);
+    FRESNEL_HP i = min(floor(pos), n - 2.0); /* x = 1 ends the last segment */
+    return FRESNEL_VEC2(i, pos - i);
+}
+/* Node index (floor) and fraction of c in an n-node table. */
+FRESNEL_HP2 fresnel_lut_pos(FRESNEL_HP n, FRESNEL_HP c)
+{
+    return fresnel_i_lut_pos(n, sqrt(FRESNEL_SATURATE(c)));
+}
+FRESNEL_HP2 fresnel_lut_linear_pos(FRESNEL_HP n, FRESNEL_HP c)
+{
+    return fresnel_i_lut_pos(n, FRESNEL_SATURATE(c));
+}
+FRESNEL_HP fresnel_lut_lerp(FRESNEL_HP a, FRESNEL_HP b, FRESNEL_HP t)
+{
+    return a + t * (b - a);
+}
+
+#define FRESNEL_I_LUT_AT(table, base, p) fresnel_lut_lerp((table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (p).y)
+#define FRESNEL_I_LUT_AT_RGB(table, n, p) FRESNEL_VEC3(FRESNEL_I_LUT_AT(table, 0, p), FRESNEL_I_LUT_AT(table, (n), p), FRESNEL_I_LUT_AT(table, 2 * (n), p))
+#define FRESNEL_LUT_ARRAY(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_LINEAR_ARRAY(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))))
+#define FRESNEL_LUT_RESIDUAL_ARRAY(f0, table, n, c) fresnel_i_unit(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY(f0, table, n, c) fresnel_i_unit(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))))
+#define FRESNEL_LUT_ARRAY_RGB(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_LINEAR_ARRAY_RGB(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
+#define FRESNEL_LUT_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
+
+/* fresnel_lut_cubic (src/lut.c): Catmull-Rom through the four nodes around
+ * sqrt(c), the outer ones clamped to the table's ends; tables fitted for it
+ * (lutN-cubic). Arrays, n an int (GLSL 1.20 has no integer min() and max()
+ * for the index clamps), or the packed texture (fresnel_lut_cubic_packed_rgb,
+ * every GLSL dialect). */
+FRESNEL_HP fresnel_lut_cubic_blend(FRESNEL_HP p0, FRESNEL_HP p1, FRESNEL_HP p2, FRESNEL_HP p3, FRESNEL_HP t)
+{
+    FRESNEL_HP d = p2 - p1, m1 = 0.5 * (p2 - p0), m2 = 0.5 * (p3 - p1);
+    return p1 + t * (m1 + t * ((3.0 * d - 2.0 * m1 - m2) + t * (m1 + m2 - 2.0 * d)));
+}
+#define FRESNEL_I_LUT_CUBIC_AT(table, base, n, p) fresnel_lut_cubic_blend((table)[(base) + max(int((p).x) - 1, 0)], (table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (table)[(base) + min(int((p).x) + 2, (n) - 1)], (p).y)
+#define FRESNEL_LUT_CUBIC_ARRAY(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_CUBIC_ARRAY_RGB(table, n, c) FRESNEL_SATURATE(FRESNEL_VEC3(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, (n), (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, 2 * (n), (n), fresnel_lut_pos(float(n), (c)))))
+
+#ifdef FRESNEL_GLSL
+/* ------------------------------------------------- LUTs in GLSL textures */
+
+/* THE R32F STRIP: the table is a strip of texels in one row of a 2D texture
  * (node j of an RGB table at texel first + j, j = 0..3n-1), value in .r.
  * strip = (u of the first texel's centre, v of the row's centre, du = 1/width):
  *     strip = vec3((first + 0.5) / width, (row + 0.5) / height, 1.0 / width)
  * Any filter works (fetches hit texel centres); R32F keeps the table's
  * binary32 values (ES 2.0 needs OES_texture_float; ES 3.0 has R32F,
  * unfilterable, so NEAREST), R16F rounds them to binary16 (2.4e-4 near 1),
- * 8-bit formats to 1/510.
- *
- * FROM AN ARRAY (ES 3.00, GLSL 3.30: const or uniform arrays; ES 1.00 does
- * not index fragment arrays with a variable): FRESNEL_LUT_ARRAY(table, n, c)
- * and friends below, with the same layout.
- *
- * Precision: position, fetches and interpolation highp (see the file
- * comment); the result is converted to the default precision. */
-FRESNEL_HIGHP vec2 fresnel_i_lut_pos(FRESNEL_HIGHP float n, FRESNEL_HIGHP float x)
+ * 8-bit formats to 1/510. Fetches use a highp sampler. */
+FRESNEL_HP fresnel_i_lut_tex(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP2 pos, FRESNEL_HP first)
 {
-    FRESNEL_HIGHP float pos = x * (n - 1.0);
-    FRESNEL_HIGHP float i = min(floor(pos), n - 2.0); /* x = 1 ends the last segment */
-    return vec2(i, pos - i);
-}
-/* Node index (floor) and fraction of c in an n-node table. */
-FRESNEL_HIGHP vec2 fresnel_lut_pos(FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
-{
-    return fresnel_i_lut_pos(n, sqrt(clamp(c, 0.0, 1.0)));
-}
-FRESNEL_HIGHP vec2 fresnel_lut_linear_pos(FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
-{
-    return fresnel_i_lut_pos(n, clamp(c, 0.0, 1.0));
-}
-FRESNEL_HIGHP float fresnel_lut_lerp(FRESNEL_HIGHP float a, FRESNEL_HIGHP float b, FRESNEL_HIGHP float t)
-{
-    return a + t * (b - a);
-}
-FRESNEL_HIGHP float fresnel_i_lut_tex(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                                      FRESNEL_HIGHP vec2 pos, FRESNEL_HIGHP float first)
-{
-    FRESNEL_HIGHP float u = strip.x + (first + pos.x) * strip.z;
+    FRESNEL_HP u = strip.x + (first + pos.x) * strip.z;
     return fresnel_lut_lerp(FRESNEL_TEXTURE(table, vec2(u, strip.y)).r,
                             FRESNEL_TEXTURE(table, vec2(u + strip.z, strip.y)).r, pos.y);
 }
 
-float fresnel_lut(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
-                  FRESNEL_HIGHP float c)
+float fresnel_lut(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
-    return clamp(fresnel_i_lut_tex(table, strip, fresnel_lut_pos(n, c), 0.0), 0.0, 1.0);
+    return FRESNEL_SATURATE(fresnel_i_lut_tex(table, strip, fresnel_lut_pos(n, c), 0.0));
 }
-float fresnel_lut_linear(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
-                         FRESNEL_HIGHP float c)
+float fresnel_lut_linear(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
-    return clamp(fresnel_i_lut_tex(table, strip, fresnel_lut_linear_pos(n, c), 0.0), 0.0, 1.0);
+    return FRESNEL_SATURATE(fresnel_i_lut_tex(table, strip, fresnel_lut_linear_pos(n, c), 0.0));
 }
-float fresnel_lut_residual(float f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                           FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+float fresnel_lut_residual(FRESNEL_MP f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
     return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_lut_tex(table, strip, fresnel_lut_pos(n, c), 0.0));
 }
-float fresnel_lut_linear_residual(float f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                                  FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+float fresnel_lut_linear_residual(FRESNEL_MP f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n,
+                                  FRESNEL_HP c)
 {
     return fresnel_i_unit(fresnel_schlick(f0, c) +
                           fresnel_i_lut_tex(table, strip, fresnel_lut_linear_pos(n, c), 0.0));
 }
-FRESNEL_HIGHP vec3 fresnel_i_lut_tex_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                                         FRESNEL_HIGHP vec2 pos, FRESNEL_HIGHP float n)
+FRESNEL_HP3 fresnel_i_lut_tex_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP2 pos, FRESNEL_HP n)
 {
     return vec3(fresnel_i_lut_tex(table, strip, pos, 0.0), fresnel_i_lut_tex(table, strip, pos, n),
                 fresnel_i_lut_tex(table, strip, pos, 2.0 * n));
 }
-vec3 fresnel_lut_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
-                     FRESNEL_HIGHP float c)
+vec3 fresnel_lut_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
-    return clamp(fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_pos(n, c), n), 0.0, 1.0);
+    return FRESNEL_SATURATE(fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_pos(n, c), n));
 }
-vec3 fresnel_lut_linear_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
-                            FRESNEL_HIGHP float c)
+vec3 fresnel_lut_linear_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
-    return clamp(fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_linear_pos(n, c), n), 0.0, 1.0);
+    return FRESNEL_SATURATE(fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
 }
-vec3 fresnel_lut_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                              FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+vec3 fresnel_lut_residual_rgb(FRESNEL_MP3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n,
+                              FRESNEL_HP c)
 {
     return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
                           fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_pos(n, c), n));
 }
-vec3 fresnel_lut_linear_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                                     FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+vec3 fresnel_lut_linear_residual_rgb(FRESNEL_MP3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip,
+                                     FRESNEL_HP n, FRESNEL_HP c)
 {
     return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
                           fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
@@ -675,87 +735,58 @@ vec3 fresnel_lut_linear_residual_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRE
  * quantisation error <= 2^-16; the decode below is exact in binary32 and
  * rounds once in binary16. Upload: GL_RGBA, GL_UNSIGNED_BYTE, NEAREST (any
  * filter works: fetches hit texel centres), CLAMP_TO_EDGE, no mipmaps. */
-FRESNEL_HIGHP vec2 fresnel_i_lut_u16x2(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float j)
+FRESNEL_HP2 fresnel_i_lut_u16x2(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP j)
 {
     FRESNEL_HIGHP vec4 b = floor(FRESNEL_TEXTURE(table, vec2(strip.x + j * strip.z, strip.y)) * 255.0 + 0.5);
     /* (hi - 64) / 128 + lo / 2^15, with constants that are normal binary16 */
     return (b.yw * (1.0 / 256.0) + (b.xz - 64.0)) * (1.0 / 128.0);
 }
-FRESNEL_HIGHP vec3 fresnel_i_lut_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                                            FRESNEL_HIGHP vec2 pos, FRESNEL_HIGHP float n)
+FRESNEL_HP3 fresnel_i_lut_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP2 pos, FRESNEL_HP n)
 {
-    FRESNEL_HIGHP vec2 r = fresnel_i_lut_u16x2(table, strip, pos.x);
-    FRESNEL_HIGHP vec2 g = fresnel_i_lut_u16x2(table, strip, n + pos.x);
-    FRESNEL_HIGHP vec2 b = fresnel_i_lut_u16x2(table, strip, 2.0 * n + pos.x);
+    FRESNEL_HP2 r = fresnel_i_lut_u16x2(table, strip, pos.x);
+    FRESNEL_HP2 g = fresnel_i_lut_u16x2(table, strip, n + pos.x);
+    FRESNEL_HP2 b = fresnel_i_lut_u16x2(table, strip, 2.0 * n + pos.x);
     return vec3(fresnel_lut_lerp(r.x, r.y, pos.y), fresnel_lut_lerp(g.x, g.y, pos.y), fresnel_lut_lerp(b.x, b.y, pos.y));
 }
-vec3 fresnel_lut_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
-                            FRESNEL_HIGHP float c)
+vec3 fresnel_lut_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
-    return clamp(fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_pos(n, c), n), 0.0, 1.0);
+    return FRESNEL_SATURATE(fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_pos(n, c), n));
 }
-vec3 fresnel_lut_linear_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
-                                   FRESNEL_HIGHP float c)
+vec3 fresnel_lut_linear_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
-    return clamp(fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_linear_pos(n, c), n), 0.0, 1.0);
+    return FRESNEL_SATURATE(fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
 }
-vec3 fresnel_lut_residual_packed_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                                     FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+vec3 fresnel_lut_residual_packed_rgb(FRESNEL_MP3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip,
+                                     FRESNEL_HP n, FRESNEL_HP c)
 {
     return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
                           fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_pos(n, c), n));
 }
-vec3 fresnel_lut_linear_residual_packed_rgb(vec3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                                            FRESNEL_HIGHP float n, FRESNEL_HIGHP float c)
+vec3 fresnel_lut_linear_residual_packed_rgb(FRESNEL_MP3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip,
+                                            FRESNEL_HP n, FRESNEL_HP c)
 {
     return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
                           fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
 }
 
-/* Arrays: table is a float array (const or uniform) of n or 3n nodes, n an
- * int constant expression or variable. Each macro is one expression. */
-#define FRESNEL_I_LUT_AT(table, base, p) fresnel_lut_lerp((table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (p).y)
-#define FRESNEL_I_LUT_AT_RGB(table, n, p) vec3(FRESNEL_I_LUT_AT(table, 0, p), FRESNEL_I_LUT_AT(table, (n), p), FRESNEL_I_LUT_AT(table, 2 * (n), p))
-#define FRESNEL_LUT_ARRAY(table, n, c) clamp(FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))), 0.0, 1.0)
-#define FRESNEL_LUT_LINEAR_ARRAY(table, n, c) clamp(FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))), 0.0, 1.0)
-#define FRESNEL_LUT_RESIDUAL_ARRAY(f0, table, n, c) fresnel_i_unit(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))))
-#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY(f0, table, n, c) fresnel_i_unit(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))))
-#define FRESNEL_LUT_ARRAY_RGB(table, n, c) clamp(FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))), 0.0, 1.0)
-#define FRESNEL_LUT_LINEAR_ARRAY_RGB(table, n, c) clamp(FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))), 0.0, 1.0)
-#define FRESNEL_LUT_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
-#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
-
-/* fresnel_lut_cubic (src/lut.c): Catmull-Rom through the four nodes around
- * sqrt(c), the outer ones clamped to the table's ends; tables fitted for it
- * (lutN-cubic). Arrays (ES 3.00, GLSL 1.30 and later), n an int, or the packed
- * texture (fresnel_lut_cubic_packed_rgb, every dialect). */
-FRESNEL_HIGHP float fresnel_lut_cubic_blend(FRESNEL_HIGHP float p0, FRESNEL_HIGHP float p1, FRESNEL_HIGHP float p2,
-                                            FRESNEL_HIGHP float p3, FRESNEL_HIGHP float t)
-{
-    FRESNEL_HIGHP float d = p2 - p1, m1 = 0.5 * (p2 - p0), m2 = 0.5 * (p3 - p1);
-    return p1 + t * (m1 + t * ((3.0 * d - 2.0 * m1 - m2) + t * (m1 + m2 - 2.0 * d)));
-}
-#define FRESNEL_I_LUT_CUBIC_AT(table, base, n, p) fresnel_lut_cubic_blend((table)[(base) + max(int((p).x) - 1, 0)], (table)[(base) + int((p).x)], (table)[(base) + int((p).x) + 1], (table)[(base) + min(int((p).x) + 2, (n) - 1)], (p).y)
-#define FRESNEL_LUT_CUBIC_ARRAY(table, n, c) clamp(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), 0.0, 1.0)
-#define FRESNEL_LUT_CUBIC_ARRAY_RGB(table, n, c) clamp(vec3(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, (n), (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, 2 * (n), (n), fresnel_lut_pos(float(n), (c)))), 0.0, 1.0)
-
 /* The cubic from the packed texture: texel i gives p1, p2; texel max(i-1, 0)
  * gives p0 in .rg; texel i + 1 gives p3 in .ba (node min(i + 2, n - 1),
  * since a channel's last texel repeats its last node). */
-FRESNEL_HIGHP float fresnel_i_lut_cubic_packed(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip,
-                                               FRESNEL_HIGHP vec2 pos, FRESNEL_HIGHP float first)
+FRESNEL_HP fresnel_i_lut_cubic_packed(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP2 pos,
+                                      FRESNEL_HP first)
 {
-    FRESNEL_HIGHP vec2 a = fresnel_i_lut_u16x2(table, strip, first + max(pos.x - 1.0, 0.0));
-    FRESNEL_HIGHP vec2 m = fresnel_i_lut_u16x2(table, strip, first + pos.x);
-    FRESNEL_HIGHP vec2 z = fresnel_i_lut_u16x2(table, strip, first + pos.x + 1.0);
+    FRESNEL_HP2 a = fresnel_i_lut_u16x2(table, strip, first + max(pos.x - 1.0, 0.0));
+    FRESNEL_HP2 m = fresnel_i_lut_u16x2(table, strip, first + pos.x);
+    FRESNEL_HP2 z = fresnel_i_lut_u16x2(table, strip, first + pos.x + 1.0);
     return fresnel_lut_cubic_blend(a.x, m.x, m.y, z.y, pos.y);
 }
-vec3 fresnel_lut_cubic_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HIGHP vec3 strip, FRESNEL_HIGHP float n,
-                                  FRESNEL_HIGHP float c)
+vec3 fresnel_lut_cubic_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
-    FRESNEL_HIGHP vec2 pos = fresnel_lut_pos(n, c);
-    return clamp(vec3(fresnel_i_lut_cubic_packed(table, strip, pos, 0.0), fresnel_i_lut_cubic_packed(table, strip, pos, n),
-                      fresnel_i_lut_cubic_packed(table, strip, pos, 2.0 * n)), 0.0, 1.0);
+    FRESNEL_HP2 pos = fresnel_lut_pos(n, c);
+    return FRESNEL_SATURATE(vec3(fresnel_i_lut_cubic_packed(table, strip, pos, 0.0),
+                                 fresnel_i_lut_cubic_packed(table, strip, pos, n),
+                                 fresnel_i_lut_cubic_packed(table, strip, pos, 2.0 * n)));
 }
-
 #endif /* FRESNEL_GLSL */
+
+#endif /* FRESNEL_SHADER */
