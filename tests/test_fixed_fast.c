@@ -6,7 +6,9 @@
  * the LUT, the tables of test_fixed_bounds.c (exact conductor curves of
  * every 4th material, 2 to 1024 nodes uniform in sqrt(c)), against the
  * double interpolation at the exact sqrt(c). The position's square root is
- * checked on its own on every code. The maxima are printed (NOTE lines). */
+ * checked on its own on every code. The exact conductor's sets are at
+ * check_conductor and the functions after it. The maxima are printed (NOTE
+ * lines). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -421,7 +423,7 @@ static void check_conductor_boundaries(void)
                 if (p.shift != 0 || p.a0 + c0 * c0 != ah_at[t] || (p.span != 0) != kind)
                     continue;
                 hit[kind][t]++;
-                conductor_codes(&w[0], &bad, eta, kappa, c0 - 2, c0 + 2, kind ? "two words at the edge" : "one word, |A| small");
+                conductor_codes(&w[0], &bad, eta, kappa, c0 - 2, c0 + 2, kind ? "span 65535, ah at the edge" : "span 0, ah at the edge");
                 conductor_codes(&w[0], &bad, eta, kappa, 0, 0, "c = 0");
                 conductor_codes(&w[0], &bad, eta, kappa, ONE, ONE, "c = one");
             }
