@@ -54,7 +54,7 @@
 #define FRESNEL_BOUND_LUT_Q15_FAST_1024 2.8    /* n <= 1024 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST 3.4      /* n <= 64 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR 15.5 /* n <= 64 across a total-reflection edge */
-#define FRESNEL_BOUND_CONDUCTOR_Q15_FAST 3.6     /* over its documented domain */
+#define FRESNEL_BOUND_CONDUCTOR_Q15_FAST 3.0     /* over its documented domain */
 
 /* x^5 in Q15 for x in Q15, 0 <= x <= 2^15: x^2 rounded up, x^4 and x^5
  * truncated, so that the errors straddle zero with one constant (every
@@ -272,11 +272,12 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *tabl
  *   shift = the smallest s such that a0 + [0, 2^(30-s)] fits int32 and
  *   b 2^(30-s) < 2^31, where a0 = round(D 2^(30-s)) and
  *   a0_lo = round((D 2^(30-s) - a0) 2^16), in [-2^15, 2^15];
- *   b1 = round(b 2^(30-s)); where b1 < 2^15, b2 = round(b 2^(46-s)) and
- *   span = 65534 (A = a0 + c^2 >> s is read in two words, A 2^16 + a0_lo
- *   against b2, where |A| < 2^15 too: a dielectric's critical angle), else
- *   b2 = 0 and span = 0; b = bm 2^-be with bm in [2^15, 2^16) rounded
- *   (bm = 0, be = 255 for kappa = 0).
+ *   b1 = round(b 2^(30-s)); where s = 0 and b1 < 2^15, b2 = round(b 2^46)
+ *   and span = 65535 (ah = a0 + c^2 is then read in two words, ah 2^16 +
+ *   a0_lo against b2, at the codes where |ah| < 2^15 too: a dielectric's
+ *   critical angle), else b2 = 0 and span = 0 (one word at every code);
+ *   b = bm 2^-be with bm in [2^15, 2^16) rounded (bm = 0, be = 255 for
+ *   kappa = 0).
  * The domain of the fast path (FRESNEL_CONDUCTOR_*_Q15_FAST): eta in
  * [0.03, 8], kappa in [0, 16], eta >= 0.07 where kappa < 0.1 (a dielectric
  * of a smaller relative index is steeper at its critical angle than the
@@ -292,52 +293,63 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *tabl
 /* fresnel_conductor_prep_q15 is declared in fresnel_fixed.h, so that a
  * generated header can hold its constants without this header. */
 
-/* round(2^12 sqrt(j)) for j = 64..256, and round(2^23 / j) for j = 128..256. */
+/* sqrt(j) and 2^7 / j in Q16 (4 bits below the results' units), raised
+ * (sqrt, concave) or lowered (1/j, convex) by half the chord's largest
+ * deviation on a segment, plus 8 so that the final >> 4 rounds:
+ * round(2^16 sqrt(j) + 2^10 j^-1.5) + 8 for j = 64..256, and
+ * round(2^27 / j - 2^24 j^-3) + 8 for j = 128..257. */
 static const uint32_t fresnel_i_fast_sq[193] = {
-    32768u, 33023u, 33276u, 33527u, 33776u, 34024u, 34270u, 34514u, 34756u, 34996u, 35235u, 35472u,
-    35708u, 35942u, 36175u, 36406u, 36636u, 36864u, 37091u, 37316u, 37540u, 37763u, 37985u, 38205u,
-    38424u, 38642u, 38858u, 39073u, 39287u, 39500u, 39712u, 39923u, 40132u, 40341u, 40548u, 40755u,
-    40960u, 41164u, 41368u, 41570u, 41771u, 41972u, 42171u, 42369u, 42567u, 42763u, 42959u, 43154u,
-    43348u, 43541u, 43733u, 43925u, 44115u, 44305u, 44494u, 44682u, 44869u, 45056u, 45242u, 45427u,
-    45611u, 45795u, 45977u, 46160u, 46341u, 46522u, 46702u, 46881u, 47059u, 47237u, 47415u, 47591u,
-    47767u, 47942u, 48117u, 48291u, 48465u, 48637u, 48809u, 48981u, 49152u, 49322u, 49492u, 49661u,
-    49830u, 49998u, 50166u, 50332u, 50499u, 50665u, 50830u, 50995u, 51159u, 51323u, 51486u, 51649u,
-    51811u, 51972u, 52134u, 52294u, 52454u, 52614u, 52773u, 52932u, 53090u, 53248u, 53405u, 53562u,
-    53719u, 53874u, 54030u, 54185u, 54340u, 54494u, 54647u, 54801u, 54954u, 55106u, 55258u, 55410u,
-    55561u, 55712u, 55862u, 56012u, 56162u, 56311u, 56459u, 56608u, 56756u, 56903u, 57051u, 57198u,
-    57344u, 57490u, 57636u, 57781u, 57926u, 58071u, 58215u, 58359u, 58503u, 58646u, 58789u, 58931u,
-    59073u, 59215u, 59357u, 59498u, 59639u, 59779u, 59919u, 60059u, 60199u, 60338u, 60477u, 60615u,
-    60753u, 60891u, 61029u, 61166u, 61303u, 61440u, 61576u, 61712u, 61848u, 61984u, 62119u, 62254u,
-    62388u, 62523u, 62657u, 62790u, 62924u, 63057u, 63190u, 63323u, 63455u, 63587u, 63719u, 63850u,
-    63982u, 64113u, 64243u, 64374u, 64504u, 64634u, 64763u, 64893u, 65022u, 65151u, 65279u, 65408u,
-    65536u};
-static const uint32_t fresnel_i_fast_rc[129] = {
-    65536u, 65028u, 64528u, 64035u, 63550u, 63072u, 62602u, 62138u, 61681u, 61231u, 60787u, 60350u,
-    59919u, 59494u, 59075u, 58662u, 58254u, 57852u, 57456u, 57065u, 56680u, 56299u, 55924u, 55554u,
-    55188u, 54828u, 54471u, 54120u, 53773u, 53431u, 53092u, 52759u, 52429u, 52103u, 51782u, 51464u,
-    51150u, 50840u, 50534u, 50231u, 49932u, 49637u, 49345u, 49056u, 48771u, 48489u, 48210u, 47935u,
-    47663u, 47393u, 47127u, 46864u, 46603u, 46346u, 46091u, 45839u, 45590u, 45344u, 45100u, 44859u,
-    44620u, 44384u, 44151u, 43919u, 43691u, 43464u, 43240u, 43019u, 42799u, 42582u, 42367u, 42154u,
-    41943u, 41734u, 41528u, 41323u, 41121u, 40920u, 40721u, 40525u, 40330u, 40137u, 39946u, 39756u,
-    39569u, 39383u, 39199u, 39017u, 38836u, 38657u, 38480u, 38304u, 38130u, 37958u, 37787u, 37617u,
-    37449u, 37283u, 37118u, 36954u, 36792u, 36631u, 36472u, 36314u, 36158u, 36003u, 35849u, 35696u,
-    35545u, 35395u, 35246u, 35099u, 34953u, 34808u, 34664u, 34521u, 34380u, 34239u, 34100u, 33962u,
-    33825u, 33689u, 33554u, 33421u, 33288u, 33157u, 33026u, 32897u, 32768u};
+    524298u, 528378u, 532427u, 536445u, 540434u, 544393u, 548323u, 552226u, 556101u, 559949u,
+    563772u, 567568u, 571339u, 575086u, 578808u, 582506u, 586181u, 589833u, 593463u, 597071u,
+    600657u, 604221u, 607765u, 611288u, 614791u, 618275u, 621738u, 625183u, 628608u, 632015u,
+    635404u, 638775u, 642128u, 645464u, 648782u, 652084u, 655369u, 658638u, 661890u, 665127u,
+    668348u, 671553u, 674743u, 677919u, 681079u, 684225u, 687356u, 690473u, 693577u, 696666u,
+    699742u, 702804u, 705853u, 708889u, 711912u, 714922u, 717920u, 720905u, 723878u, 726838u,
+    729787u, 732723u, 735648u, 738562u, 741464u, 744355u, 747234u, 750102u, 752960u, 755807u,
+    758643u, 761468u, 764283u, 767088u, 769882u, 772667u, 775441u, 778205u, 780960u, 783705u,
+    786441u, 789167u, 791883u, 794590u, 797288u, 799977u, 802657u, 805328u, 807991u, 810644u,
+    813289u, 815925u, 818553u, 821172u, 823783u, 826386u, 828981u, 831567u, 834146u, 836716u,
+    839279u, 841834u, 844381u, 846920u, 849452u, 851976u, 854493u, 857003u, 859505u, 862000u,
+    864488u, 866968u, 869442u, 871908u, 874368u, 876820u, 879266u, 881705u, 884137u, 886563u,
+    888982u, 891394u, 893800u, 896200u, 898593u, 900979u, 903360u, 905734u, 908102u, 910464u,
+    912819u, 915169u, 917512u, 919850u, 922182u, 924507u, 926827u, 929142u, 931450u, 933753u,
+    936050u, 938341u, 940627u, 942907u, 945182u, 947451u, 949715u, 951974u, 954227u, 956475u,
+    958717u, 960955u, 963187u, 965414u, 967636u, 969853u, 972064u, 974271u, 976473u, 978669u,
+    980861u, 983048u, 985230u, 987408u, 989580u, 991748u, 993911u, 996069u, 998223u, 1000372u,
+    1002516u, 1004656u, 1006791u, 1008922u, 1011048u, 1013170u, 1015288u, 1017401u, 1019509u, 1021613u,
+    1023713u, 1025809u, 1027900u, 1029987u, 1032070u, 1034149u, 1036223u, 1038294u, 1040360u, 1042422u,
+    1044480u, 1046534u, 1048584u};
+static const uint32_t fresnel_i_fast_rc[130] = {
+    1048576u, 1040448u, 1032444u, 1024563u, 1016802u, 1009157u, 1001626u, 994207u, 986896u, 979693u,
+    972594u, 965597u, 958700u, 951901u, 945197u, 938588u, 932070u, 925642u, 919302u, 913048u,
+    906879u, 900793u, 894788u, 888862u, 883015u, 877243u, 871547u, 865924u, 860374u, 854894u,
+    849483u, 844140u, 838865u, 833654u, 828509u, 823426u, 818405u, 813445u, 808545u, 803703u,
+    798920u, 794192u, 789521u, 784904u, 780340u, 775830u, 771371u, 766963u, 762606u, 758297u,
+    754037u, 749825u, 745659u, 741540u, 737465u, 733435u, 729449u, 725507u, 721606u, 717747u,
+    713930u, 710152u, 706415u, 702716u, 699056u, 695434u, 691850u, 688302u, 684790u, 681314u,
+    677873u, 674467u, 671095u, 667756u, 664450u, 661177u, 657936u, 654727u, 651548u, 648401u,
+    645284u, 642196u, 639138u, 636109u, 633109u, 630136u, 627192u, 624275u, 621385u, 618521u,
+    615684u, 612873u, 610087u, 607326u, 604591u, 601880u, 599193u, 596530u, 593890u, 591274u,
+    588681u, 586110u, 583562u, 581036u, 578531u, 576048u, 573587u, 571146u, 568726u, 566326u,
+    563947u, 561587u, 559247u, 556927u, 554626u, 552343u, 550080u, 547834u, 545607u, 543398u,
+    541207u, 539034u, 536878u, 534739u, 532617u, 530512u, 528423u, 526351u, 524295u, 522255u};
 
-/* sqrt(x) for x in [2^30, 2^32), in [2^15, 2^16): the chord of one of 192
- * segments (relative error below 2^-16.9), rounded. */
+/* sqrt(x) for x in [2^30, 2^32), in [2^15, 2^16]: the chord of one of 192
+ * segments, rounded; relative error below 2^-15.6 (tests/test_fixed_fast.c,
+ * every x >> 8). */
 FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt32(uint32_t x)
 {
     const uint32_t *t = fresnel_i_fast_sq + ((x >> 24) - 64u);
-    return t[0] + (((t[1] - t[0]) * ((x >> 8) & 0xffffu) + 32768u) >> 16);
+    return (t[0] + (((t[1] - t[0]) * ((x >> 8) & 0xffffu)) >> 16)) >> 4;
 }
 
-/* 2^31 / d for d in [2^15, 2^16): the chord of one of 128 segments
- * (relative error below 2^-16), rounded. */
+/* 2^31 / d for d in [2^15, 2^16], in [2^15, 2^16]: the chord of one of 129
+ * segments, rounded; relative error below 2^-15.6 (tests/test_fixed_fast.c,
+ * every d). */
 FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_recip16(uint32_t d)
 {
     const uint32_t *t = fresnel_i_fast_rc + ((d >> 8) - 128u);
-    return t[0] - (((t[0] - t[1]) * (d & 255u) + 128u) >> 8);
+    return (t[0] - (((t[0] - t[1]) * (d & 255u)) >> 8)) >> 4;
 }
 
 /* The number of leading zeros of x > 0 (Cortex-M0 has no CLZ): a byte
@@ -368,7 +380,7 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_mul15(uint32_t x, uint32_t c)
     return (x >> 15) * c + (((x & 32767u) * c) >> 15);
 }
 
-/* x y / 2^16 for y < 2^16, from 16-bit halves. */
+/* x y / 2^16 for y <= 2^16 with x y / 2^16 < 2^32, from 16-bit halves. */
 FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_mul16(uint32_t x, uint32_t y)
 {
     return (x >> 16) * y + (((x & 0xffffu) * y) >> 16);
@@ -391,18 +403,51 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
  *   G = m + c^2, G2 = c^2 m + s^4, H = 2 c u,
  *   F = Rs (1 + P)/2 = Ns (Dp + Np) / (2 Ds Dp),
  * in block floating point with 16-bit mantissas: the two square roots and
- * the one reciprocal are table chords (192 and 128 segments, relative error
- * below 2^-16), normalisations a byte table of leading zeros (Cortex-M0 has
- * no CLZ), every product 32 x 32 -> 32. c = 0 gives one (0 for the matched
- * index).
- * Error <= FRESNEL_BOUND_CONDUCTOR_Q15_FAST LSB over the domain above
- * (tests/test_fixed_fast.c); results in [0, one].
- * Cost: about 21 mul; on Cortex-M0 -Os under 300 instructions (`make
- * cross-count`, ports/README.md: about a tenth of fresnel_conductor_q15's),
- * 796 bytes of code and 1544 bytes of tables. */
+ * the one reciprocal are table chords (192 and 129 segments, relative error
+ * below 2^-15.6), normalisations a byte table of leading zeros (Cortex-M0
+ * has no CLZ), every product 32 x 32 -> 32. c = 0 gives one (0 for the
+ * matched index).
+ * Error <= FRESNEL_BOUND_CONDUCTOR_Q15_FAST LSB over the domain above, every
+ * c code (tests/test_fixed_fast.c); results in [0, one].
+ * Cost: 22 mul (26 for A < 0); on Cortex-M0 -Os under 300 instructions
+ * (`make cross-count`, ports/README.md: about a tenth of
+ * fresnel_conductor_q15's), 1548 bytes of tables.
+ *
+ * Why every step holds for every (p, c) fixed_conductor_fast makes from the
+ * domain (tests/test_fixed_fast.c searches each boundary below):
+ *   shift <= 8 (|D|, b <= 257), and a0 + [0, 2^(30-shift)] fits int32, so ah does.
+ *   Two words iff ah + 32767 < span as uint32: span is 65535 only where
+ *     shift = 0 and b1 < 2^15, and then it takes exactly |ah| <= 32767
+ *     (ah = -32767 wraps to 0, and span 0 takes nothing). There
+ *     a = A 2^46 to half a unit (c^2 >> 0 is exact), |a| < 2^31, b2 < 2^31.
+ *     In one word |a| < 2^31 and max(|a|, b1) >= 2^15: b1 >= 2^15, or
+ *     |ah| > 32767 (shift > 0 only for D >= 1 or D < -2, where |A| >= 1).
+ *   x = 0 only in two words, A 2^46 and b2 rounding to 0: a dielectric at
+ *     its critical angle, where F = 1.
+ *   n = lz(x) in [1, 31] puts max(ak, bk) in [2^15, 2^16): k is in [7, 30]
+ *     in one word, [31, 61] in two.
+ *   ak (ak + 1) + bk (bk + 1) (the truncated halves added back) is in
+ *     [2^30, 2^33): x < s is its bit 32; mk < 92682.
+ *   mk + ak is in [2^15, 3 2^16): x << (15 - (x >> 16)) is in [2^30, 2^31),
+ *     one more for an even k + 1 + e below 2^32.
+ *   r = max(k - 17, 0) and q = max(17 - k, 0) <= 10 set the scale 2^e of
+ *     G and G2, e = 30 - q = k + 13 - r, where both are below 2^30.8; r is
+ *     cut to 31, where the terms it shifts (< 2^29.5) are 0 anyway.
+ *   he = c um 2^(16 - q - eu) is H at that scale (times B for A < 0); H <=
+ *     G (G - H >= (sqrt m - c)^2, u <= sqrt m), so he < 2^31 and a left
+ *     shift is below 16 (c um >= 2^15 where um > 0).
+ *   G >= max(|D|, b) >= 0.0007 and G2 >= (eta^2 - kappa^2)^2 >= 2.3e-5 in
+ *     the domain, so g, g2 >= 2^9 at e >= 20 (B halves them at most): lz
+ *     never sees 0.
+ *   Ns = Ds - 2H and Np = Dp - 2 H s^2, the small term rounded at the same
+ *     normalisation (Rs, P near one keep half a unit), clamped at 0.
+ *   ds dp is in [2^30, 2^32); its top 16 bits rounded, in [2^15, 2^16], are
+ *     recip16's domain; ns (dp + np)/2 <= ds dp, so its product with the
+ *     reciprocal (<= 2^16) stays below 2^32 and F below one + 2^-14, cut
+ *     to one. */
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conductor_prep_q15 *p, int32_t c_in)
 {
-    uint32_t c = (uint32_t)c_in, c2, ak, bk, x, s, mk, um, he, me, c2e, g, ds, ns, dp, np, n;
+    uint32_t c = (uint32_t)c_in, c2, ak, bk, x, s, mk, um, he, g, g2, ds, ns, dp, np, n, r, q;
     int32_t ah, a, k, e, eb2, eu;
     int neg;
     if (c == 0)
@@ -411,7 +456,7 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conduct
     /* A = a0 + c^2 and b = 2 eta kappa at one scale, in two words where
      * both are small; m = sqrt(ak^2 + bk^2) 2^-k */
     ah = p->a0 + (int32_t)(c2 >> p->shift);
-    if ((uint32_t)ah + 32767u <= p->span) {
+    if ((uint32_t)ah + 32767u < p->span) {
         a = (int32_t)((uint32_t)ah << 16) + p->a0_lo;
         bk = (uint32_t)p->b2;
         k = 30 - p->shift;
@@ -429,15 +474,15 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conduct
     ak = (ak << n) >> 16;
     bk = (bk << n) >> 16;
     k += (int32_t)n;
-    s = ak * ak;
-    x = s + bk * bk; /* in [2^30, 2^33): the carry out of 32 bits is bit 32 */
+    s = ak * (ak + 1u);
+    x = s + bk * (bk + 1u);
     if (x < s)
         mk = fresnel_i_fast_sqrt32((x >> 2) | 0x40000000u) << 1;
     else
-        mk = fresnel_i_fast_sqrt32(x); /* m = mk 2^-k, mk < 2^16.5 */
+        mk = fresnel_i_fast_sqrt32(x); /* m = mk 2^-k */
     /* B = sqrt((m + |A|)/2) = s 2^-eb2; u = B for A >= 0, (b/2)/B for A < 0 */
     x = mk + ak;
-    e = 15 - (int32_t)((x >> 16) != 0) - (int32_t)((x >> 17) != 0);
+    e = 15 - (int32_t)(x >> 16);
     e += (k + 1 + e) & 1;
     s = fresnel_i_fast_sqrt32(x << e);
     eb2 = (k + 1 + e) >> 1;
@@ -448,38 +493,38 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conduct
         um = (uint32_t)p->bm;
         eu = p->be + 17 - eb2;
     }
-    /* the scale 2^-e of the denominators: m < 2^29.5, c^2 <= 2^30 */
-    e = k + 13 < 30 ? k + 13 : 30;
-    me = fresnel_i_fast_shift(mk, e - k);
-    c2e = c2 >> (30 - e);
-    he = fresnel_i_fast_shift(c * um, e - 14 - eu); /* H = 2 c u */
-    g = me + c2e;
-    if (neg)
+    /* G 2^e and G2 2^e, e = 30 - q = k + 13 - r */
+    e = k - 17;
+    r = e > 0 ? (uint32_t)e : 0u;
+    q = r - (uint32_t)e;
+    if (r > 31u)
+        r = 31u;
+    g = ((mk << 13) >> r) + (c2 >> q);
+    x = fresnel_i_fast_mul15(fresnel_i_fast_mul15(32768u * 32768u - c2, 32768u + c), 32768u - c); /* s^4 in Q30 */
+    g2 = ((fresnel_i_fast_mul15(mk * c, c) >> 2) >> r) + (x >> q);
+    if (neg) {
         g = fresnel_i_fast_mul16(g, s);
+        g2 = fresnel_i_fast_mul16(g2, s);
+    }
+    he = fresnel_i_fast_shift(c * um, 16 - (int32_t)q - eu); /* H = 2 c u */
     ds = g + he;
-    ns = g > he ? g - he : 0u;
     n = fresnel_i_fast_lz(ds);
     ds = (ds << n) >> 16;
-    ns = (ns << n) >> 16;
-    /* G2 = c^2 m + s^4 and H s^2 = H (1 - c)(1 + c) */
-    x = fresnel_i_fast_mul15(fresnel_i_fast_mul15(32768u * 32768u - c2, 32768u + c), 32768u - c); /* s^4 in Q30 */
-    g = fresnel_i_fast_shift(((mk * c) >> 15) * c, e - k - 15) + (x >> (30 - e)); /* mk c^2 < 2^32 */
-    if (neg)
-        g = fresnel_i_fast_mul16(g, s);
-    he = fresnel_i_fast_mul15(fresnel_i_fast_mul15(he, 32768u - c), 32768u + c);
-    dp = g + he;
-    np = g > he ? g - he : 0u;
+    x = (((he << n) >> 14) + 1u) >> 1;
+    ns = ds > x ? ds - x : 0u;
+    he = fresnel_i_fast_mul15(fresnel_i_fast_mul15(he, 32768u + c), 32768u - c); /* H s^2 */
+    dp = g2 + he;
     n = fresnel_i_fast_lz(dp);
     dp = (dp << n) >> 16;
-    np = (np << n) >> 16;
+    x = (((he << n) >> 14) + 1u) >> 1;
+    np = dp > x ? dp - x : 0u;
     /* F = Rs (1 + P)/2 = Ns (Dp + Np) / (2 Ds Dp), one reciprocal */
     x = ds * dp;
     np = ns * ((dp + np) >> 1);
-    n = 15u + (x >> 31);
-    x >>= n;
-    np >>= n;
-    x = ((np * fresnel_i_fast_recip16(x)) >> 1) + 16384u;
-    return (fresnel_q15)(x >> 30 ? 32768u : x >> 15);
+    n = 14u + (x >> 31);
+    x = ((x >> n) + 1u) >> 1;
+    np = ((fresnel_i_fast_mul16(np, fresnel_i_fast_recip16(x)) >> n) + 1u) >> 1;
+    return (fresnel_q15)(np >> 15 ? 32768u : np);
 }
 
 #endif /* FRESNEL_HAS_FIXED: fast paths */

@@ -16,7 +16,7 @@
  *                         (fresnel_fixed_fast.h): shift in [0, 30], a0 +
  *                         2^(30 - shift) in int32, |a0_lo| <= 2^15, b1, b2
  *                         in [0, 2^31), bm 0 (be 255) or in [2^15, 2^16),
- *                         span 0 or 65534
+ *                         span 0 or 65535 (65535 only with shift 0)
  *   enum NAME_frac        a residual table's fraction bits, [14, 30]
  * and each initialiser has exactly as many values as its type and length
  * need. Any other declared type is an error, so a new emitted type must be
@@ -130,8 +130,8 @@ static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
             hc_fail(h, "%s %s: b1 %.17g or b2 %.17g not in [0, 2^31)", t, d->name, v[3], v[4]);
         if (v[5] == 0.0 ? v[6] != 255.0 : !hc_in(v[5], 32768.0, 65535.0) || !hc_in(v[6], -64.0, 254.0))
             hc_fail(h, "%s %s: bm %.17g, be %.17g: expected 0, 255 or bm in [2^15, 2^16)", t, d->name, v[5], v[6]);
-        if (v[7] != 0.0 && v[7] != 65534.0)
-            hc_fail(h, "%s %s: span %.17g not 0 or 65534", t, d->name, v[7]);
+        if (v[7] != 0.0 && (v[7] != 65535.0 || v[2] != 0.0))
+            hc_fail(h, "%s %s: span %.17g not 0, or 65535 with shift 0", t, d->name, v[7]);
     } else if (!strcmp(t, "fresnel_nk_prep_q15")) {
         hc_qf(h, d, v);
         hc_qf(h, d, v + 2);

@@ -6,7 +6,9 @@
  * the LUT, the tables of test_fixed_bounds.c (exact conductor curves of
  * every 4th material, 2 to 1024 nodes uniform in sqrt(c)), against the
  * double interpolation at the exact sqrt(c). The position's square root is
- * checked on its own on every code. The maxima are printed (NOTE lines). */
+ * checked on its own on every code. The exact conductor's sets are at
+ * check_conductor and the functions after it. The maxima are printed (NOTE
+ * lines). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -218,6 +220,64 @@ static void check_lut_pl(const test_material *mat, int nmat)
                 bad);
 }
 
+/* fresnel_conductor_q15_fast's helpers: the square root on every x >> 8
+ * of [2^30, 2^32) (both ends of each step of 256: it reads no lower bit),
+ * the reciprocal on every d of [2^15, 2^16], within the relative error the
+ * header states, and their tables from the recipes it gives. */
+#define FAST_HELPER_REL 2.0617e-5 /* 2^-15.6 */
+static void check_conductor_helpers(void)
+{
+    const uint32_t nsq = sizeof fresnel_i_fast_sq / sizeof fresnel_i_fast_sq[0];
+    const uint32_t nrc = sizeof fresnel_i_fast_rc / sizeof fresnel_i_fast_rc[0];
+    double w = 0.0;
+    uint32_t j, at = 0, bad_sq = 0, bad_rc = 0;
+    for (j = 0; j < nsq; j++)
+        bad_sq += fresnel_i_fast_sq[j] !=
+                  (uint32_t)floor(65536.0 * sqrt(j + 64.0) + 1024.0 * pow(j + 64.0, -1.5) + 0.5) + 8u;
+    for (j = 0; j < nrc; j++)
+        bad_rc += fresnel_i_fast_rc[j] != (uint32_t)floor(134217728.0 / (j + 128.0) - 16777216.0 / pow(j + 128.0, 3.0) + 0.5) + 8u;
+    CHECK("fixed fast conductor: the root and reciprocal tables follow their recipes (j = 64..256, 128..257)",
+          nsq == 193 && nrc == 130 && bad_sq == 0 && bad_rc == 0, "%u, %u entries; %u root, %u reciprocal entries differ",
+          (unsigned)nsq, (unsigned)nrc, (unsigned)bad_sq, (unsigned)bad_rc);
+    for (j = 1u << 22; j < 1u << 24; j++) {
+        uint32_t x = j << 8, k;
+        for (k = 0; k < 2; k++, x += 255u) {
+            double t = sqrt((double)x), e = fabs(fresnel_i_fast_sqrt32(x) - t) / t;
+            if (e > w)
+                w = e, at = x;
+        }
+    }
+    printf("NOTE fixed fast conductor: sqrt32 max relative error 2^%.3f at %u\n", log2(w), (unsigned)at);
+    CHECK("fixed fast conductor: sqrt32 within 2^-15.6 on [2^30, 2^32)", w <= FAST_HELPER_REL, "2^%.3f at %u", log2(w),
+          (unsigned)at);
+    w = 0.0;
+    for (j = 32768; j <= (nrc > 129 ? 65536u : 65535u); j++) {
+        double t = 2147483648.0 / j, e = fabs(fresnel_i_fast_recip16(j) - t) / t;
+        if (e > w)
+            w = e, at = j;
+    }
+    printf("NOTE fixed fast conductor: recip16 max relative error 2^%.3f at %u\n", log2(w), (unsigned)at);
+    CHECK("fixed fast conductor: recip16 within 2^-15.6 on [2^15, 2^16]", w <= FAST_HELPER_REL, "2^%.3f at %u", log2(w),
+          (unsigned)at);
+}
+
+/* fresnel_conductor_q15_fast on constants made by fixed_conductor_fast, at
+ * the codes lo..hi (cut to [0, one]), against ref_conductor at the double
+ * eta, kappa the constants were made from. */
+static void conductor_codes(worst *w, long *bad, double eta, double kappa, int32_t lo, int32_t hi, const char *what)
+{
+    fresnel_conductor_prep_q15 p;
+    char where[96];
+    int32_t c;
+    fixed_conductor_fast(eta, kappa, &p);
+    snprintf(where, sizeof where, "%.36s eta %.17g kappa %.17g", what, eta, kappa);
+    for (c = lo < 0 ? 0 : lo; c <= hi && c <= ONE; c++) {
+        int32_t got = fresnel_conductor_q15_fast(&p, c);
+        *bad += got < 0 || got > ONE;
+        note_worst(w, fabs(got / 32768.0 - ref_conductor(eta, kappa, c / 32768.0)) * 32768.0, where, c);
+    }
+}
+
 /* fresnel_conductor_q15_fast over its documented domain: eta on a
  * geometric grid (ratio 1.06) from FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST to
  * FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST, kappa at 0, 1e-8 .. 1e-3 and 24
@@ -225,22 +285,12 @@ static void check_lut_pl(const test_material *mat, int nmat)
  * domain (kappa >= 0.1 below FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST,
  * |eta^2 - kappa^2 - 1 + 2i eta kappa| >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST); every
  * material of data/ at every 10 nm from 380 to 780 nm; and the test
- * materials inside the domain. Every cos code, against ref_conductor at the
- * double eta, kappa the constants were made from. */
+ * materials inside the domain. Every cos code. */
 #define conductor_in_domain fixed_conductor_fast_in_domain
 
 static void conductor_curve(worst *w, long *bad, long *n, double eta, double kappa, const char *what)
 {
-    fresnel_conductor_prep_q15 p;
-    char where[96];
-    int32_t c;
-    fixed_conductor_fast(eta, kappa, &p);
-    snprintf(where, sizeof where, "%.40s eta %.6g kappa %.6g", what, eta, kappa);
-    for (c = 0; c <= ONE; c++) {
-        int32_t got = fresnel_conductor_q15_fast(&p, c);
-        *bad += got < 0 || got > ONE;
-        note_worst(w, fabs(got / 32768.0 - ref_conductor(eta, kappa, c / 32768.0)) * 32768.0, where, c);
-    }
+    conductor_codes(w, bad, eta, kappa, 0, ONE, what);
     ++*n;
 }
 
@@ -298,6 +348,258 @@ static void check_conductor(const test_material *mat, int nmat)
     }
 }
 
+/* Materials once reported above the bound, every code: two whose
+ * constants take one word everywhere (span 0) while a0 + c^2 is -32767 at
+ * one code (4815, 25616), two conductors and three low-index dielectrics
+ * near their critical angle near normal incidence. */
+static void check_conductor_reported(void)
+{
+    static const double m[][2] = {{1.7668102256209994, 1.4640124426721695}, {6.552184082229366, 6.5225902857269098},
+                                  {7.4082362219860336, 8.7293341103153441}, {4.09, 12.23},
+                                  {0.072794403943372984, 1.0310499682974676e-07},
+                                  {0.071556823005167636, 2.9802974677711449e-08}, {0.0703, 0.0}};
+    worst w;
+    long bad = 0;
+    int i, in = 1;
+    memset(&w, 0, sizeof w);
+    for (i = 0; i < (int)(sizeof m / sizeof m[0]); i++) {
+        in &= conductor_in_domain(m[i][0], m[i][1]);
+        conductor_codes(&w, &bad, m[i][0], m[i][1], 0, ONE, "reported");
+    }
+    CHECK("fixed fast exact conductor: the reported materials lie in the domain", in, "one does not");
+    check_bound("exact conductor, reported materials, every code", &w, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+}
+
+static uint64_t conductor_rng = 0x9e3779b97f4a7c15ull;
+static double conductor_rnd(void) /* [0, 1), xorshift64 */
+{
+    conductor_rng ^= conductor_rng << 13;
+    conductor_rng ^= conductor_rng >> 7;
+    conductor_rng ^= conductor_rng << 17;
+    return (double)(conductor_rng >> 11) * (1.0 / 9007199254740992.0);
+}
+
+/* eta for the given kappa such that A = eta^2 - kappa^2 - 1 + (c/one)^2 is
+ * a 2^-30 at code c (eta^2 = 1 + kappa^2 + a 2^-30 - c^2 2^-30), or 0 when
+ * no eta of the domain gives it. */
+static double conductor_eta_for(double a, double kappa, int32_t c)
+{
+    double e2 = 1.0 + kappa * kappa + (a - (double)c * c) / 1073741824.0, eta = e2 > 0.0 ? sqrt(e2) : 0.0;
+    return conductor_in_domain(eta, kappa) ? eta : 0.0;
+}
+
+/* The boundaries of the fast path's case split (fresnel_fixed_fast.h, "Why
+ * every step holds"), each searched by solving for materials that put a
+ * chosen code on it, the codes around it evaluated:
+ * - one word or two: a0 + c^2 at -32768..-32766 and 32766..32768 at code
+ *   c0, both with b large (span 0: one word however small a0 + c^2 is) and
+ *   with b < 2^-15 (span 65535);
+ * - two words down to A 2^46 = a0_lo in -3..3 and +-2^t (every
+ *   normalisation shift, up to A = b = 0 at a dielectric's critical angle),
+ *   kappa 0 or b2 in 1..3;
+ * - A at +-2^-p (1 +- eps), p = -6..45: every leading-zero count of A, k
+ *   across 17 (the scale r, q), the root's argument across 2^16 and 2^17;
+ * - |A| = b (the two mantissas equal: their squares' sum across 2^32);
+ * and c = 0 and one on each. */
+static void check_conductor_boundaries(void)
+{
+    static const int32_t ah_at[] = {-32768, -32767, -32766, 32766, 32767, 32768};
+    worst w[4];
+    long bad = 0, hit[2][6], tiny = 0, pow2 = 0, carry = 0;
+    int i, t, kind;
+    memset(w, 0, sizeof w);
+    memset(hit, 0, sizeof hit);
+    for (i = 0; i < 4000; i++)
+        for (kind = 0; kind < 2; kind++)
+            for (t = 0; t < 6; t++) {
+                int32_t c0 = 1 + (int32_t)(conductor_rnd() * 32767.0);
+                double kappa = kind == 0 ? 0.001 + 0.7 * conductor_rnd()
+                                         : (conductor_rnd() < 0.3 ? 0.0 : 1e-12 * pow(1e7, conductor_rnd()));
+                double eta = conductor_eta_for(ah_at[t] + 0.8 * conductor_rnd() - 0.4, kappa, c0);
+                fresnel_conductor_prep_q15 p;
+                if (eta == 0.0)
+                    continue;
+                fixed_conductor_fast(eta, kappa, &p);
+                if (p.shift != 0 || p.a0 + c0 * c0 != ah_at[t] || (p.span != 0) != kind)
+                    continue;
+                hit[kind][t]++;
+                conductor_codes(&w[0], &bad, eta, kappa, c0 - 2, c0 + 2, kind ? "span 65535, ah at the edge" : "span 0, ah at the edge");
+                conductor_codes(&w[0], &bad, eta, kappa, 0, 0, "c = 0");
+                conductor_codes(&w[0], &bad, eta, kappa, ONE, ONE, "c = one");
+            }
+    for (i = 0; i < 400; i++) {
+        static const int32_t lo_at[] = {0, 1, -1, 2, -2, 3, -3, 64, -64, 4096, -4096, 32767, -32767};
+        int32_t c0 = 2000 + (int32_t)(conductor_rnd() * 30500.0), b2 = (int32_t)(conductor_rnd() * 4.0);
+        for (t = 0; t < (int)(sizeof lo_at / sizeof lo_at[0]); t++) {
+            /* b2 = round(2 eta kappa 2^46): kappa from an estimate of eta */
+            double eta0 = conductor_eta_for(lo_at[t] / 65536.0, 0.0, c0);
+            double kappa = eta0 > 0.0 ? b2 / (2.0 * eta0 * 70368744177664.0) : 0.0;
+            double eta = conductor_eta_for(lo_at[t] / 65536.0, kappa, c0);
+            fresnel_conductor_prep_q15 p;
+            if (eta == 0.0)
+                continue;
+            fixed_conductor_fast(eta, kappa, &p);
+            if (p.span == 0 || p.a0 + c0 * c0 != 0 || p.a0_lo != lo_at[t] || p.b2 != b2)
+                continue;
+            tiny++;
+            conductor_codes(&w[1], &bad, eta, kappa, c0 - 2, c0 + 2, "A 2^46 tiny");
+        }
+    }
+    for (i = 0; i < 60; i++) {
+        int32_t c0 = 1 + (int32_t)(conductor_rnd() * 32767.0), pp;
+        for (pp = -6; pp <= 45; pp++) {
+            static const double eps[] = {-1e-3, -3e-5, -1e-9, 1e-9, 3e-5, 1e-3};
+            for (t = 0; t < 12; t++) {
+                double kappa = i % 3 == 0 ? 0.0 : (i % 3 == 1 ? 1e-9 : 1e-4);
+                double a = (t < 6 ? 1.0 : -1.0) * ldexp(1.0 + eps[t % 6], 30 - pp);
+                double eta = conductor_eta_for(a, kappa, c0);
+                if (eta == 0.0)
+                    continue;
+                pow2++;
+                conductor_codes(&w[2], &bad, eta, kappa, c0 - 2, c0 + 2, "A at a power of two");
+            }
+        }
+    }
+    for (i = 0; i < 3000; i++) {
+        /* A = s b: eta^2 - kappa^2 - 1 + c^2 = 2 s eta kappa */
+        int32_t c0 = 1 + (int32_t)(conductor_rnd() * 32767.0);
+        double eta = 0.03 * pow(8.0 / 0.03, conductor_rnd()), cc = (double)c0 * c0 / 1073741824.0;
+        double q = 2.0 * eta * eta - 1.0 + cc, kappa = q < 0.0 ? -1.0 : (i & 1 ? -eta : eta) + sqrt(q);
+        if (!(kappa >= 0.0) || !conductor_in_domain(eta, kappa))
+            continue;
+        carry++;
+        conductor_codes(&w[3], &bad, eta, kappa, c0 - 16, c0 + 16, "|A| = b");
+    }
+    printf("NOTE fixed fast exact conductor: a0 + c^2 at -32768..-32766, 32766..32768 with span 0: %ld %ld %ld %ld %ld %ld; "
+           "with span 65535: %ld %ld %ld %ld %ld %ld; A 2^46 tiny: %ld; A at a power of two: %ld; |A| = b: %ld\n",
+           hit[0][0], hit[0][1], hit[0][2], hit[0][3], hit[0][4], hit[0][5], hit[1][0], hit[1][1], hit[1][2], hit[1][3],
+           hit[1][4], hit[1][5], tiny, pow2, carry);
+    for (kind = 0, t = 1; kind < 2; kind++)
+        for (i = 0; i < 6; i++)
+            t &= hit[kind][i] >= 20;
+    CHECK("fixed fast exact conductor: the search puts 20 codes or more on each edge of one and two words", t,
+          "too few");
+    CHECK("fixed fast exact conductor: the search reaches tiny A, powers of two and |A| = b",
+          tiny >= 1000 && pow2 >= 10000 && carry >= 1000, "%ld %ld %ld", tiny, pow2, carry);
+    check_bound("exact conductor, one word or two", &w[0], FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+    check_bound("exact conductor, A 2^46 tiny", &w[1], FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+    check_bound("exact conductor, A at powers of two", &w[2], FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+    check_bound("exact conductor, |A| = b", &w[3], FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+}
+
+/* Seeded random materials of the domain (eta log-uniform; kappa 0,
+ * log-uniform from 1e-9, or uniform to 16; a quarter of them low-index
+ * dielectrics, eta 0.07..0.2 with kappa below 1e-4): 300 at every code,
+ * then 300000 at one random code each. */
+static void conductor_random_material(double *eta, double *kappa)
+{
+    do {
+        int r = (int)(conductor_rnd() * 4.0);
+        *eta = FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST *
+               pow(FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST / FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST, conductor_rnd());
+        if (r == 0)
+            *kappa = 0.0;
+        else if (r == 1)
+            *kappa = 1e-9 * pow(FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST / 1e-9, conductor_rnd());
+        else if (r == 2) {
+            *eta = 0.07 + 0.13 * conductor_rnd();
+            *kappa = 1e-4 * conductor_rnd();
+        } else
+            *kappa = FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST * conductor_rnd();
+    } while (!conductor_in_domain(*eta, *kappa));
+}
+
+/* The largest error at codes lo..hi, and where. */
+static double conductor_err(double eta, double kappa, int32_t lo, int32_t hi, int32_t *at)
+{
+    fresnel_conductor_prep_q15 p;
+    double w = 0.0;
+    int32_t c;
+    fixed_conductor_fast(eta, kappa, &p);
+    for (c = lo < 0 ? 0 : lo; c <= hi && c <= ONE; c++) {
+        double e = fabs(fresnel_conductor_q15_fast(&p, c) / 32768.0 - ref_conductor(eta, kappa, c / 32768.0)) * 32768.0;
+        if (e > w)
+            w = e, *at = c;
+    }
+    return w;
+}
+
+/* Then from the 8 worst of those, a local search for a larger error: eta
+ * and kappa moved by a relative 1e-9 .. 1e-3 (which reshuffles every
+ * mantissa's truncation), kept where the largest error within 6 codes
+ * grows, 3000 steps each. */
+typedef struct conductor_case {
+    double eta, kappa, err;
+    int32_t c;
+} conductor_case;
+
+static void conductor_keep(conductor_case *top, int n, double eta, double kappa, int32_t c, double err)
+{
+    int i, low = 0;
+    for (i = 0; i < n; i++) {
+        if (top[i].eta == eta && top[i].kappa == kappa) {
+            if (err > top[i].err)
+                top[i].err = err, top[i].c = c;
+            return;
+        }
+        if (top[i].err < top[low].err)
+            low = i;
+    }
+    if (err > top[low].err) {
+        top[low].eta = eta;
+        top[low].kappa = kappa;
+        top[low].c = c;
+        top[low].err = err;
+    }
+}
+
+static void check_conductor_random(void)
+{
+    conductor_case top[8];
+    worst w, climb;
+    long bad = 0;
+    int i, step;
+    memset(&w, 0, sizeof w);
+    memset(&climb, 0, sizeof climb);
+    memset(top, 0, sizeof top);
+    for (i = 0; i < 300; i++) {
+        double eta, kappa, e;
+        int32_t at = 0;
+        conductor_random_material(&eta, &kappa);
+        e = conductor_err(eta, kappa, 0, ONE, &at);
+        conductor_keep(top, 8, eta, kappa, at, e);
+        conductor_codes(&w, &bad, eta, kappa, 0, ONE, "random");
+    }
+    for (i = 0; i < 300000; i++) {
+        double eta, kappa;
+        int32_t c = (int32_t)(conductor_rnd() * 32769.0), at = c;
+        conductor_random_material(&eta, &kappa);
+        conductor_keep(top, 8, eta, kappa, c, conductor_err(eta, kappa, c, c, &at));
+        conductor_codes(&w, &bad, eta, kappa, c, c, "random");
+    }
+    check_bound("exact conductor, random materials", &w, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+    for (i = 0; i < 8; i++) {
+        conductor_case best = top[i];
+        for (step = 0; step < 3000; step++) {
+            double scale = pow(10.0, -3.0 - 6.0 * conductor_rnd());
+            double eta = best.eta * (1.0 + scale * (2.0 * conductor_rnd() - 1.0));
+            double kappa = best.kappa * (1.0 + scale * (2.0 * conductor_rnd() - 1.0)), e;
+            int32_t at = best.c;
+            if (!conductor_in_domain(eta, kappa))
+                continue;
+            e = conductor_err(eta, kappa, best.c - 6, best.c + 6, &at);
+            if (e > best.err) {
+                best.eta = eta;
+                best.kappa = kappa;
+                best.c = at;
+                best.err = e;
+            }
+        }
+        conductor_codes(&climb, &bad, best.eta, best.kappa, best.c - 6, best.c + 6, "local search");
+    }
+    check_bound("exact conductor, local search from the worst random", &climb, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+}
+
 static void check_schlick_rgb(void)
 {
     int32_t c, ok = 1;
@@ -324,6 +626,10 @@ int main(void)
     check_lut(mat, nmat);
     check_schlick_rgb();
     check_lut_pl(mat, nmat);
+    check_conductor_helpers();
     check_conductor(mat, nmat);
+    check_conductor_reported();
+    check_conductor_boundaries();
+    check_conductor_random();
     return harness_exit();
 }

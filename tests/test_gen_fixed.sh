@@ -1,7 +1,9 @@
 #!/bin/sh
 # `fresnel gen` for `types = f32 q15`: the header compiles
 # warning-free with the fixed-point header, a q15-only scene emits no float
-# constants, and every Q1.15 constant evaluates like its f32 twin.
+# constants, every Q1.15 constant evaluates like its f32 twin, and the exact
+# conductor's fast-path constants of two user files are the host's
+# (tests/gen_fast_check.c).
 case "$BUILD" in *asan*) exit 0 ;; esac # the fixed-point runtime's own tests run under the sanitizers
 F="$BUILD/fresnel"
 t=$(mktemp -d)
@@ -39,4 +41,18 @@ if grep -q 'fresnel_q_cu_f0_q15' "$t/q.h" && grep -q 'fresnel_q_cu_lut16_q15' "$
     echo "PASS gen q15: a q15-only scene holds only Q1.15 constants (no float)"
 else
     echo "FAIL gen q15: q15-only scene: $(grep 'static const' "$t/q.h" | cut -c1-80)"
+fi
+# Two user materials of constant n, k whose fast-path constants take one word
+# at every code while a0 + c^2 is -32767 at one code (c = 4815, 25616).
+n1=1.7668102256209994 k1=1.4640124426721695 n2=6.552184082229366 k2=6.5225902857269098
+printf 'wavelength_nm,n,k\n360,%s,%s\n830,%s,%s\n' $n1 $k1 $n1 $k1 >"$t/rep1.csv"
+printf 'wavelength_nm,n,k\n360,%s,%s\n830,%s,%s\n' $n2 $k2 $n2 $k2 >"$t/rep2.csv"
+printf 'material rep1 = rep1.csv\nmaterial rep2 = rep2.csv\nmodels = exact\ntypes = f32 q15\n' >"$t/rep.scene"
+if "$F" gen "$t/rep.scene" -o "$t/scene_rep.h" 2>"$t/err" &&
+    cc $W -O2 -Iinclude -Igen -I"$t" -DREP1_N=$n1 -DREP1_K=$k1 -DREP2_N=$n2 -DREP2_K=$k2 tests/gen_fast_check.c \
+        "$BUILD/obj/gen/3_encode/fixed_params.o" "$BUILD/obj/gen/model/reference.o" "$BUILD/libfresnel.a" -lm \
+        -o "$t/fast" 2>"$t/cc" && [ ! -s "$t/cc" ]; then
+    "$t/fast"
+else
+    echo "FAIL gen q15: user materials for the exact fast path: $(cat "$t/err" "$t/cc" | head -8)"
 fi

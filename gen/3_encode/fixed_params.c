@@ -79,7 +79,7 @@ void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out)
 void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *out)
 {
     double eh, el, d, x, hi = 0.0, b;
-    int s, k;
+    int s, k, two;
     eta = eta_dom(eta);
     kappa = kappa_dom(kappa);
     eh = eta * eta;
@@ -100,8 +100,12 @@ void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *
     out->a0_lo = (int32_t)floor((x - hi) * 65536.0 + 0.5);
     out->b1 = (int32_t)floor(b * ldexp(1.0, 30 - s) + 0.5);
     x = floor(b * ldexp(1.0, 46 - s) + 0.5);
-    out->b2 = out->b1 < 32768 ? (int32_t)x : 0;
-    out->span = out->b1 < 32768 ? 65534u : 0u; /* the two-word A only where b is small too */
+    /* the two-word A only where b is small too, and at s = 0, where a0 + c^2
+     * drops no bit of c^2 (fresnel_fixed_fast.h: shift > 0 only where
+     * |A| >= 1 at every c, which one word holds) */
+    two = s == 0 && out->b1 < 32768;
+    out->b2 = two ? (int32_t)x : 0;
+    out->span = two ? 65535u : 0u;
     if (b > 0.0) {
         double f = frexp(b, &k); /* [0.5, 1) */
         double m = floor(f * 65536.0 + 0.5);

@@ -134,11 +134,10 @@ static void fuzz_prepared(fuzz_bytes *b, int32_t c)
             continue;
         check(m->name, m->q15(&mf, c), m->f64(&mp, ref_clamp(unit_code(c), 0.0, 1.0)), bound, in, args);
     }
-    /* The exact conductor's fast path on its own domain (fresnel_fixed_fast.h:
-     * c in [0, one] is a precondition, so c is clamped here). */
-    if (eta >= FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST && eta <= FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST &&
-        kappa <= FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST && (kappa >= 0.1 || eta >= FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST) &&
-        hypot(eta * eta - kappa * kappa - 1.0, 2.0 * eta * kappa) >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST) {
+    /* The exact conductor's fast path on its own domain (fresnel_fixed_fast.h,
+     * the generator's test: c in [0, one] is a precondition, so c is
+     * clamped here), held to its documented bound. */
+    if (fixed_conductor_fast_in_domain(eta, kappa)) {
         fresnel_conductor_prep_q15 cf;
         int32_t cc = c < 0 ? 0 : (c > 32768 ? 32768 : c);
         fixed_conductor_fast(eta, kappa, &cf);
