@@ -105,9 +105,6 @@ $(BUILD)/vulkan/vulkan_test: $(VULKAN_TEST_SRC) ports/vulkan/vkrun.h $(GEN_OBJ) 
 $(BUILD)/tests/viewer_lit: tests/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
-$(BUILD)/tests/gen_matrix_check: tests/gen_matrix_check.c $(BUILD)/libfresnel.a
-	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(BUILD)/libfresnel.a $(LDLIBS)
 
 test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
            $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit \

@@ -159,7 +159,7 @@ int main(int argc, char **argv)
 
     for (m = 0; m < sc.model_count; m++) {
         char *body = main_body(&sc, ident, sc.models[m]);
-        int is_lut = models[m].lut_n > 0, form = models[m].form;
+        int is_lut = models[m].lut.n > 0, form = models[m].lut.form;
         for (v = 0; v < NVARIANTS && body; v++) {
             const struct variant *va = &variants[v];
             int texture = is_lut && va->texture, mediump = v == V_ES100_MEDIUMP;
@@ -197,15 +197,15 @@ int main(int argc, char **argv)
                 float qtab[3 * SCENE_LUT_MAX];
                 if (texture) { /* the nodes as the texture holds them */
                     int k;
-                    for (k = 0; k < 3 * sm->lut_n; k++)
-                        qtab[k] = (float)((emit_glsl_node_code(sm->table_d[k]) - 16384) / 32768.0);
-                    qm.table = qtab;
+                    for (k = 0; k < 3 * sm->lut.n; k++)
+                        qtab[k] = (float)((emit_glsl_node_code(sm->lut.nodes[k]) - 16384) / 32768.0);
+                    qm.lut.f32 = qtab;
                 }
                 for (x = 0; x < W; x++) {
                     float c = (float)(x - 1) / 256.0f, ref[3], refq[3];
                     const float *gpu = out + 4 * ((size_t)i * W + (size_t)x);
-                    scene_model_eval(sm, &params[i], c, ref);
-                    scene_model_eval(&qm, &params[i], c, refq);
+                    scene_model_eval(sm, c, ref);
+                    scene_model_eval(&qm, c, refq);
                     for (ch = 0; ch < 3; ch++) {
                         double d = fabs(gpu[ch] - ref[ch]), dq = fabs(gpu[ch] - refq[ch]);
                         if (!(d <= worst))
@@ -231,8 +231,8 @@ int main(int argc, char **argv)
     {
         double q = 0.0;
         for (i = 0; i < nmat * sc.model_count; i++)
-            for (x = 0; x < 3 * models[i].lut_n; x++) {
-                double d = fabs((emit_glsl_node_code(models[i].table_d[x]) - 16384) / 32768.0 - models[i].table[x]);
+            for (x = 0; x < 3 * models[i].lut.n; x++) {
+                double d = fabs((emit_glsl_node_code(models[i].lut.nodes[x]) - 16384) / 32768.0 - models[i].lut.f32[x]);
                 if (d > q)
                     q = d;
             }

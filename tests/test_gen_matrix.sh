@@ -8,6 +8,12 @@
 # fixed-point runtime, to its binary32 twin within the documented bound.
 # The LUT sizes are the grammar's ends and a middle one (4, 16, 256; 64 for
 # grazing-pl). Also: a types = f32 and a types = q15 header compile alone.
+# Then the report against the header: for water (a dielectric with a
+# total-reflection edge for n1 > 1.33), gold (outside the sRGB gamut) and
+# diamond, every scene model x type x LUT size in {4, 8, 12, 16, 64, 128,
+# 256} (grazing-pl: N <= 64) x spacing x n1, gen_matrix_check's SCENE mode
+# evaluates each model as `fresnel report` does and requires the header's
+# numbers, and holds each Q15 LUT to its bound of its own double nodes.
 case "$BUILD" in *asan*) exit 0 ;; esac # the runtime's own tests run under the sanitizers
 B=${BUILD:-build}
 F="$B/fresnel"
@@ -35,10 +41,10 @@ compile() {
     done
 }
 
-# scene NAME SPACING N1 TYPES MODELS
+# scene NAME SPACING N1 TYPES MODELS [MATERIALS]
 scene() {
     printf 'name = %s\nmaterials = %s\nmodels = %s\ntypes = %s\nn1 = %s\nlut_spacing = %s\n' \
-        "$1" "$mats" "$5" "$4" "$3" "$2" >"$t/$1.scene"
+        "$1" "${6:-$mats}" "$5" "$4" "$3" "$2" >"$t/$1.scene"
     if ! "$F" gen "$t/$1.scene" -o "$t/$1.h" 2>"$t/gen.log" >/dev/null; then
         echo "FAIL gen matrix $1: fresnel gen: $(grep -v warning "$t/gen.log" | head -3)"
         return 1
@@ -63,6 +69,25 @@ done
 for types in f32 q15; do
     scene "m_only_$types" grazing 1.5 "$types" "$named lut4 lut16-residual lut16-cubic" &&
         compile "m_only_$types (types = $types alone)" "$t/m_only_$types.h"
+done
+
+for spacing in grazing uniform grazing-pl; do
+    luts=""
+    types="f32 q15"
+    for n in 4 8 12 16 64 128 256; do
+        case $spacing in
+        grazing) luts="$luts lut$n lut$n-residual lut$n-cubic" ;;
+        uniform) luts="$luts lut$n lut$n-residual" ;;
+        *) [ "$n" -le 64 ] && luts="$luts lut$n"; types="q15" ;;
+        esac
+    done
+    for n1 in 1 1.33 1.5 2.42 4; do
+        name=r_$(echo "$spacing" | tr -c 'a-z0-9\n' _)_$(echo "$n1" | tr . _)
+        scene "$name" "$spacing" "$n1" "$types" "$named$luts" "water au diamond" || continue
+        [ "$n1" = 1.5 ] && compile "$name" "$t/$name.h"
+        "$t/check" "$t/$name.h" "$spacing" "$name (${spacing}, n1 $n1)" "$t/$name.scene"
+        rm -f "$t/$name.h"
+    done
 done
 
 # The checker itself must catch what a wrong header looks like: a residual

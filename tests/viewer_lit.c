@@ -40,7 +40,6 @@ static double clampd(double x, double lo, double hi) { return x < lo ? lo : (x >
 /* What the page's fresnel_of evaluates for one row. */
 typedef struct row {
     const scene_model *model; /* NULL: the reference table */
-    const material_params *p;
     const double *ref; /* VIEWER_REF_NODES x 3 */
 } row;
 
@@ -48,7 +47,7 @@ static vec3 fresnel(const row *r, double c)
 {
     if (r->model) {
         float v[3];
-        scene_model_eval(r->model, r->p, (float)c, v);
+        scene_model_eval(r->model, (float)c, v);
         return v3(v[0], v[1], v[2]);
     } else {
         double x = sqrt(clampd(c, 0.0, 1.0)) * (VIEWER_REF_NODES - 1), t;
@@ -181,7 +180,6 @@ int main(int argc, char **argv)
             continue;
         }
         r.model = mo < 0 ? NULL : &models[mi * l.sc->model_count + mo];
-        r.p = &l.params[mi];
         r.ref = refs + mi * VIEWER_REF_NODES * 3;
         e = shade(&r, dist, u, w);
         worst = fmax(worst, fabs(got[0] - e.x) / fmax(fabs(e.x), 0.01));

@@ -322,7 +322,7 @@ int main(int argc, char **argv)
             if (scene_model_prepare(sc.models[m], scene_lut_spacing(&sc), &spectra[i], &gc, &params[i], sm))
                 return 1;
             for (k = 0; k < NCOS; k++)
-                scene_model_eval(sm, &params[i], cosines[k], ref + (size_t)m * nout + 3 * ((size_t)i * NCOS + k));
+                scene_model_eval(sm, cosines[k], ref + (size_t)m * nout + 3 * ((size_t)i * NCOS + k));
         }
     }
     snprintf(path, sizeof path, "ports/glsl/prelude_450.glsl");
@@ -446,8 +446,8 @@ int main(int argc, char **argv)
     for (m = 0; m < sc.model_count; m++) {
         const model *row = model_find_offered(sc.models[m], MODEL_SCENE);
         double b16 = row && row->f16_bound > 0.0 ? row->f16_bound
-                   : models[m].form == LUT_CUBIC ? FRESNEL_BOUND_LUT_CUBIC_F16
-                   : models[m].lut_n > 0         ? FRESNEL_BOUND_LUT_F16
+                   : models[m].lut.form == LUT_CUBIC ? FRESNEL_BOUND_LUT_CUBIC_F16
+                   : models[m].lut.n > 0         ? FRESNEL_BOUND_LUT_F16
                                                  : 0.0;
         char cell[NVARIANTS][32];
         for (vi = 0; vi < NVARIANTS; vi++) {

@@ -16,6 +16,7 @@ typedef struct emit_input {
     const gen_context *g;
     const material_params *params; /* one per scene material, in order */
     spectrum *const *spectra;      /* the same */
+    const encoded_material *enc;   /* the same, encoded: every constant the back ends write */
     int glsl; /* EMIT_C: C header for include/fresnel.h; EMIT_GLSL, EMIT_HLSL: shader source */
 } emit_input;
 
@@ -33,6 +34,7 @@ typedef struct emit_loaded {
     gen_context *g;
     material_params *params;
     spectrum **spectra;
+    encoded_material *enc;
     char name[SCENE_PREFIX_SIZE];
     emit_input in;
 } emit_loaded;
@@ -51,15 +53,19 @@ void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
 void emit_material_list(FILE *f, const emit_input *in);
 /* The opening comment's ground-truth line, with the scene's gamut policy. */
 void emit_truth_comment(FILE *f, const scene *sc);
-/* One material's float parameters for the scene's models, through the back
- * end's syntax for an RGB triple and a scalar. */
+/* One material's binary32 constants (the encoder's) for the scene's models,
+ * through the back end's syntax for an RGB triple and a scalar. */
 typedef void (*emit_rgb_fn)(FILE *f, const char *prefix, const char *name, const double v[3], const char *why);
 typedef void (*emit_float_fn)(FILE *f, const char *prefix, const char *name, double v, const char *why);
-void emit_material_params(FILE *f, const scene *sc, const material_params *p, const char *prefix, emit_rgb_fn rgb,
+void emit_material_params(FILE *f, const scene *sc, const encoded_material *e, const char *prefix, emit_rgb_fn rgb,
                           emit_float_fn flt);
-/* A LUT model's table for one material (3n values, malloc'd; NULL when out
- * of memory) and the model's name as a C identifier part (lut16-residual ->
- * lut16_residual) in name[32]; *n and *form describe the table. */
+/* A LUT model's table for one material in every number type (encode_table;
+ * 0, or -1 when out of memory) and the model's name as a C identifier part
+ * (lut16-residual -> lut16_residual) in name[32]. */
+int emit_lut_encode(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
+                    lut_spacing spacing, encoded_lut *t, char name[32]);
+/* Its binary32 nodes as doubles (3n values, malloc'd; NULL when out of
+ * memory), for the shader back ends; *n and *form describe the table. */
 double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
                        lut_spacing spacing, int *n, lut_form *form, char name[32]);
 

@@ -375,7 +375,7 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
         char prefix[160];
         snprintf(prefix, sizeof prefix, "%s_%s", scene_prefix, p->info.id);
         fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
-        emit_material_params(f, sc, p, prefix, emit_rgb, emit_float);
+        emit_material_params(f, sc, &in->enc[i], prefix, emit_rgb, emit_float);
         for (m = 0; m < sc->model_count; m++) {
             const glsl_lut *u = layout_find(&l, i, m);
             if (u)

@@ -50,18 +50,21 @@ static int emit_lut(FILE *f, const emit_input *in, const char *prefix, const cha
     int n, i, residual;
     lut_form form;
     char name[32];
-    double *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
-    const char *suffix = form == LUT_RESIDUAL ? "_residual" : (form == LUT_CUBIC ? "_cubic" : "");
-    if (!t)
+    encoded_lut t;
+    const char *suffix;
+    if (emit_lut_encode(model, p, s, g, spacing, &t, name))
         return cli_oom("fresnel gen");
-    for (i = 0; i < 3 * n; i++)
-        if (!(fabs(t[i]) <= FLT_MAX)) {
-            char where[1100];
-            snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->models_line);
-            cli_error(where, "%s: %s node %d is %g, not a binary32 float; no header written", prefix, model, i, t[i]);
-            free(t);
-            return CLI_BAD_INPUT;
-        }
+    n = t.n;
+    form = t.form;
+    suffix = form == LUT_RESIDUAL ? "_residual" : (form == LUT_CUBIC ? "_cubic" : "");
+    if (t.bad >= 0) {
+        char where[1100];
+        snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->models_line);
+        cli_error(where, "%s: %s node %d is %g, outside what the header's types hold; no header written", prefix,
+                  model, t.bad, t.nodes[t.bad]);
+        encoded_lut_free(&t);
+        return CLI_BAD_INPUT;
+    }
     residual = form == LUT_RESIDUAL;
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
                " * fitted to the ground truth through %s interpolation.\n",
@@ -72,12 +75,12 @@ static int emit_lut(FILE *f, const emit_input *in, const char *prefix, const cha
     fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
     for (i = 0; i < 3 * n; i++) {
         fputs(i % 6 == 0 ? "\n    " : " ", f);
-        put_float(f, t[i]);
+        put_float(f, t.f32[i]);
         if (i + 1 < 3 * n)
             fputc(',', f);
     }
     fprintf(f, "\n};\n");
-    free(t);
+    encoded_lut_free(&t);
     return 0;
 }
 
@@ -108,42 +111,55 @@ static int params_fit_float(const emit_input *in, const material_params *p)
     return 0;
 }
 
+/* A binary32 triple as the back ends' double[3]. */
+static const double *d3(fresnel_rgb v, double out[3])
+{
+    out[0] = v.r;
+    out[1] = v.g;
+    out[2] = v.b;
+    return out;
+}
+
 /* One material's floating-point parameters, those its scene's models need:
  * the same list in C and GLSL, each back end giving its own syntax. */
-void emit_material_params(FILE *f, const scene *sc, const material_params *p, const char *prefix, emit_rgb_fn rgb,
+void emit_material_params(FILE *f, const scene *sc, const encoded_material *e, const char *prefix, emit_rgb_fn rgb,
                           emit_float_fn flt)
 {
     unsigned reads = scene_reads(sc, 0);
+    double v[3];
     if (reads & MP_F0)
-        rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");
+        rgb(f, prefix, "f0", d3(e->f0, v), "F0: ground truth at normal incidence");
     if (sc->f_avg)
-        rgb(f, prefix, "f_avg", p->f_avg, "F_avg: 2 int F(mu) mu dmu of the ground truth (multiple-scattering albedo)");
+        rgb(f, prefix, "f_avg", d3(e->f_avg, v),
+            "F_avg: 2 int F(mu) mu dmu of the ground truth (multiple-scattering albedo)");
     if (reads & MP_F82)
-        rgb(f, prefix, "f82", p->f82, "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
+        rgb(f, prefix, "f82", d3(e->f82, v), "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
     if (reads & MP_ETA_FIT) {
-        rgb(f, prefix, "eta", p->eta_fit, "eta fitted to the ground truth (exact, lsk, approx-conductor)");
-        rgb(f, prefix, "kappa", p->kappa_fit, "kappa fitted to the ground truth");
+        rgb(f, prefix, "eta", d3(e->eta[ETA_FIT], v), "eta fitted to the ground truth (exact, lsk, approx-conductor)");
+        rgb(f, prefix, "kappa", d3(e->kappa[ETA_FIT], v), "kappa fitted to the ground truth");
     }
     if (reads & MP_LSK) {
-        rgb(f, prefix, "lsk_a", p->lsk_a, "LSK compensation weight a (fresnel_lsk_comp_rgb)");
-        rgb(f, prefix, "lsk_alpha", p->lsk_alpha, "LSK compensation exponent alpha");
+        rgb(f, prefix, "lsk_a", d3(e->lsk_a, v), "LSK compensation weight a (fresnel_lsk_comp_rgb)");
+        rgb(f, prefix, "lsk_alpha", d3(e->lsk_alpha, v), "LSK compensation exponent alpha");
     }
     if (reads & MP_ETA_GAUSS) {
-        rgb(f, prefix, "eta_gaussian", p->eta_gauss, "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
-        rgb(f, prefix, "kappa_gaussian", p->kappa_gauss, "Metzgar: kappa' in a Gaussian window");
+        rgb(f, prefix, "eta_gaussian", d3(e->eta[ETA_GAUSS], v),
+            "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
+        rgb(f, prefix, "kappa_gaussian", d3(e->kappa[ETA_GAUSS], v), "Metzgar: kappa' in a Gaussian window");
     }
     if (reads & MP_ETA_POINT) {
-        rgb(f, prefix, "eta_point", p->eta_point, "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
-        rgb(f, prefix, "kappa_point", p->kappa_point, "kappa point-sampled at the dominant wavelengths");
+        rgb(f, prefix, "eta_point", d3(e->eta[ETA_POINT], v),
+            "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
+        rgb(f, prefix, "kappa_point", d3(e->kappa[ETA_POINT], v), "kappa point-sampled at the dominant wavelengths");
     }
     if (reads & MP_GULB) {
-        rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
-        rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen edge tint g from F0 and the fitted eta");
+        rgb(f, prefix, "gulbrandsen_r", d3(e->gulb_r, v), "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
+        rgb(f, prefix, "gulbrandsen_g", d3(e->gulb_g, v), "Gulbrandsen edge tint g from F0 and the fitted eta");
     }
     if (reads & MP_CT) {
-        flt(f, prefix, "ct_eta", p->ct_eta,
+        flt(f, prefix, "ct_eta", e->ct_eta,
             "Cook-Torrance representative IOR at the green wavelength (fresnel_cook_torrance_rgb)");
-        flt(f, prefix, "ct_kappa", p->ct_kappa, "Cook-Torrance representative kappa");
+        flt(f, prefix, "ct_kappa", e->ct_kappa, "Cook-Torrance representative kappa");
     }
 }
 
@@ -228,7 +244,7 @@ int emit_header(FILE *f, const emit_input *in)
             return CLI_BAD_INPUT;
         if (!scene_has_type(sc, "f32"))
             continue;
-        emit_material_params(f, sc, p, prefix, emit_rgb, emit_float);
+        emit_material_params(f, sc, &in->enc[i], prefix, emit_rgb, emit_float);
         for (m = 0; m < sc->model_count; m++)
             if (scene_model_lut_size(sc->models[m], NULL) &&
                 emit_lut(f, in, prefix, sc->models[m], p, in->spectra[i], g, spacing))

@@ -70,7 +70,7 @@ int emit_hlsl(FILE *f, const emit_input *in)
         char prefix[160];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
         fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
-        emit_material_params(f, sc, p, prefix, hlsl_rgb, hlsl_float);
+        emit_material_params(f, sc, &in->enc[i], prefix, hlsl_rgb, hlsl_float);
         for (m = 0; m < sc->model_count; m++) {
             char id[32], table[32];
             int n = 0;

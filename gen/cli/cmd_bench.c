@@ -136,26 +136,21 @@ int cmd_bench(int argc, char **argv)
         printf("model,type,ns_per_rgb_eval\n");
     for (m = 0; m < sc.model_count; m++) {
         scene_model sm;
-        report_prepared *q;
+        model_rgb q;
         if (only_model && strcmp(only_model, sc.models[m]))
             continue;
         if ((status = scene_model_prepare(sc.models[m], scene_lut_spacing(&sc),
                                           s, g, &p, &sm)))
             goto done;
-        if (!(q = report_prepare(&sm, &p))) {
-            scene_model_free(&sm);
-            status = cli_oom(WHERE);
-            goto done;
-        }
+        q = scene_model_rgb(&sm);
         for (t = 0; t < report_type_count; t++) {
             double ns;
             if (only_type && strcmp(only_type, report_types[t].name))
                 continue;
-            ns = report_time(&report_types[t], q, count, runs);
+            ns = report_time(&report_types[t], &q, count, runs);
             if (runs > 0)
                 printf("%s,%s,%.3f\n", sc.models[m], report_types[t].name, ns);
         }
-        report_prepared_free(q);
         scene_model_free(&sm);
     }
 done:

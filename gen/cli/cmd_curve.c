@@ -97,7 +97,7 @@ int cmd_curve(int argc, char **argv)
         printf("%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", theta, c, gt[0], gt[1], gt[2], raw[0], raw[1], raw[2]);
         for (m = 0; m < n_models; m++) {
             float v[3];
-            scene_model_eval(&models[m], &p, (float)c, v);
+            scene_model_eval(&models[m], (float)c, v);
             printf(",%.9g,%.9g,%.9g", v[0], v[1], v[2]);
         }
         printf("\n");

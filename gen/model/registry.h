@@ -47,9 +47,6 @@
 /* The most nodes a scene LUT has (scene.h: SCENE_LUT_MAX). */
 #define MODEL_LUT_NODES_MAX 256
 
-/* Which eta, kappa a scene model's exact or LSK forms read. */
-typedef enum model_eta { ETA_FIT, ETA_GAUSS, ETA_POINT } model_eta;
-
 /* Everything any model needs. eta and kappa are relative to the incident
  * medium; the rest are derived from them by the reference (model_derive). */
 typedef struct model_params {
@@ -70,28 +67,13 @@ typedef struct model_fixed {
     fresnel_lsk_prep_q15 lsk;
 } model_fixed;
 
-/* One material's scene parameters prepared for one model in every number
- * type (model_rgb_prepare): what the scene evaluators read. */
+/* One scene model of one material as the runtime sees it in every number
+ * type: the encoder's values (3_encode/encode.h), which are what `fresnel
+ * gen` writes; what the scene evaluators read. */
 typedef struct model_rgb {
     const struct model *def;
-    int n; /* LUT nodes; 0 for analytic models */
-    lut_spacing spacing;
-    /* binary32 */
-    fresnel_rgb f0, f82, eta, kappa, a, alpha, r, g;
-    float ct_eta, ct_kappa;
-    const float *table; /* 3n nodes */
-    /* Q1.15 */
-    fresnel_rgb_q15 q_f0, q_f82, q_r, q_g;
-    fresnel_ior_prep_q15 q_ior[3], q_ct;
-    fresnel_nk_prep_q15 q_nk[3];
-    fresnel_lsk_prep_q15 q_lsk[3];
-    uint16_t *q_table;
-    int16_t *q_res;
-    int q_frac;
-#if FRESNEL_HAS_F16
-    fresnel_f16 h_f0[3], h_f82[3], h_eta[3], h_kappa[3], h_a[3], h_alpha[3], h_r[3], h_g[3], h_ct_eta, h_ct_kappa;
-    fresnel_f16 *h_table;
-#endif
+    const encoded_material *mat;
+    const encoded_lut *lut; /* the LUT rows' table; NULL for the others */
 } model_rgb;
 
 /* A timed loop over n cosines (c for the float types, cq the same as Q15
@@ -120,7 +102,7 @@ typedef struct model {
     /* As a scene model (MODEL_SCENE) */
     unsigned reads;     /* MP_* */
     unsigned q15_reads; /* MQ_* */
-    model_eta eta;      /* which eta, kappa its exact or LSK forms read */
+    model_eta eta;      /* which eta, kappa its exact forms read (encode.h) */
     lut_form form;      /* MODEL_LUT rows */
     int uniform;        /* MODEL_LUT rows: 1 nodes uniform in c, 0 in sqrt(c) */
     /* Shader return expression (ports/glsl/fresnel.glsl and, with the same
@@ -195,14 +177,5 @@ void model_params_round_fixed(model_params *m);
 void model_fixed_from_params(const model_params *m, model_fixed *out);
 /* And for binary16: every parameter rounded to binary16 (a no-op without _Float16). */
 void model_params_round_f16(model_params *m);
-
-/* A scene model's parameters for material p: the binary32 ones only (no
- * allocation; q->table = table), or every type (the LUT's Q15 and binary16
- * copies allocated from table_d: model_rgb_free). 0, or -1 when out of memory. */
-void model_rgb_prepare_f32(const model *def, const material_params *p, const float *table, int n,
-                           lut_spacing spacing, model_rgb *q);
-int model_rgb_prepare(const model *def, const material_params *p, const float *table, const double *table_d, int n,
-                      lut_spacing spacing, model_rgb *q);
-void model_rgb_free(model_rgb *q);
 
 #endif

@@ -111,14 +111,12 @@ static void write_average_closed_forms(report_run *r, FILE *f)
             const report_material *rm = &r->mats[i];
             const scene_model *sm = &rm->models[m];
             const report_cell *c = report_cell_at(r, i, m, t32);
-            model_rgb q;
+            model_rgb q = scene_model_rgb(sm);
             fresnel_rgb v;
             double e;
-            if (!sm->def->avg_f32 ||
-                model_rgb_prepare(sm->def, &rm->p, sm->table, sm->table_d, sm->lut_n, sm->spacing, &q))
+            if (!sm->def->avg_f32)
                 break;
             v = sm->def->avg_f32(&q);
-            model_rgb_free(&q);
 
             e = fmax(fabs(v.r - rm->p.f_avg[0]), fmax(fabs(v.g - rm->p.f_avg[1]), fabs(v.b - rm->p.f_avg[2])));
             sum += e;
@@ -565,8 +563,7 @@ int report_write(const report_options *o)
         snprintf(where, sizeof where, "%s:%d", scene_path, r.sc.material_line[i]);
         if (!source.path && (status = material_lookup(r.g->dir, r.sc.materials[i], &rm->p.info, where)))
             goto done;
-        if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models)) ||
-            !(rm->prepared = calloc((size_t)r.sc.model_count, sizeof *rm->prepared))) {
+        if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models))) {
             status = cli_oom(WHERE);
             goto done;
         }
@@ -577,10 +574,6 @@ int report_write(const report_options *o)
             lut_spacing sp = scene_lut_spacing(&r.sc);
             if ((status = scene_model_prepare(r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
                 goto done;
-            if (!(rm->prepared[m] = report_prepare(&rm->models[m], &rm->p))) {
-                status = cli_oom(WHERE);
-                goto done;
-            }
             for (t = 0; t < report_type_count; t++)
                 report_measure(&r.ls, rm, m, &report_types[t], report_cell_at(&r, i, m, t));
         }
@@ -598,8 +591,9 @@ int report_write(const report_options *o)
     for (m = 0; m < r.sc.model_count; m++)
         for (t = 0; t < report_type_count; t++) {
             int k = m * report_type_count + t;
+            model_rgb q = scene_model_rgb(&r.mats[r.timed_material].models[m]);
             if (timing)
-                r.ns[k] = report_time(&report_types[t], r.mats[r.timed_material].prepared[m], 1 << 20, 5);
+                r.ns[k] = report_time(&report_types[t], &q, 1 << 20, 5);
             if (instructions)
                 r.instr[k] = callgrind_instructions(scene_path, r.mats[r.timed_material].p.info.id, r.sc.models[m],
                                                     report_types[t].name);
@@ -640,14 +634,9 @@ int report_write(const report_options *o)
 done:
     if (r.mats)
         for (i = 0; i < r.sc.material_count; i++) {
-            for (m = 0; m < r.sc.model_count; m++) {
-                if (r.mats[i].models)
-                    scene_model_free(&r.mats[i].models[m]);
-                if (r.mats[i].prepared)
-                    report_prepared_free(r.mats[i].prepared[m]);
-            }
+            for (m = 0; r.mats[i].models && m < r.sc.model_count; m++)
+                scene_model_free(&r.mats[i].models[m]);
             free(r.mats[i].models);
-            free(r.mats[i].prepared);
             free(r.mats[i].s);
         }
     free(r.mats);

@@ -18,9 +18,6 @@
 
 double report_cos(int angle); /* cos of angle degrees; exactly 0 at 90 */
 
-/* A model prepared for one material in every number type (report_types.c). */
-typedef struct report_prepared report_prepared;
-
 typedef struct report_material {
     material_params p;
     spectrum *s;
@@ -30,23 +27,19 @@ typedef struct report_material {
     /* CIEDE2000 mean and max against gt_raw of each policy's own curve
      * (gamut_policy order: map, clip, keep). */
     double policy_de_mean[3], policy_de_max[3];
-    scene_model *models;             /* one per report model */
-    report_prepared **prepared;      /* the same, prepared for every type */
+    scene_model *models;             /* one per report model: the encoder's constants and tables */
 } report_material;
-
-report_prepared *report_prepare(const scene_model *m, const material_params *p); /* NULL: out of memory */
-void report_prepared_free(report_prepared *q);
 
 /* A number type the runtime offers: f32, q15 (Q1.15) and, where the compiler
  * has _Float16, f16. */
 typedef struct report_type {
     const char *name;
-    void (*eval)(const report_prepared *q, double c, double rgb[3]);
+    void (*eval)(const model_rgb *q, double c, double rgb[3]);
 } report_type;
 extern const report_type report_types[];
 extern const int report_type_count;
 /* ns per RGB evaluation of q in type t (bench.c): median of runs batches of n. */
-double report_time(const report_type *t, const report_prepared *q, int n, int runs);
+double report_time(const report_type *t, const model_rgb *q, int n, int runs);
 /* The Cortex-M0 mean instructions per call of row `name` in a `make
  * cross-count` output file; NaN when the file or the row is missing. */
 double report_m0_count(const char *path, const char *name);

@@ -153,11 +153,12 @@ static int write_curves(report_run *r, int mi)
         svg_axis ya = {0.0, 1.0, SVG_LINEAR, 0.25, "reflectance", NULL};
         svg_panel p;
         char ptitle[96];
+        model_rgb q = scene_model_rgb(&rm->models[m]);
         for (a = 0; a < CURVE_N; a++)
-            report_types[0].eval(rm->prepared[m], a == CURVE_N - 1 ? 0.0 : cos(th[a] * 3.14159265358979323846 / 180.0),
+            report_types[0].eval(&q, a == CURVE_N - 1 ? 0.0 : cos(th[a] * 3.14159265358979323846 / 180.0),
                                  mv[a]);
         for (a = 0; a < ZOOM_N; a++)
-            report_types[0].eval(rm->prepared[m], a == ZOOM_N - 1 ? 0.0 : cos(zt[a] * 3.14159265358979323846 / 180.0),
+            report_types[0].eval(&q, a == ZOOM_N - 1 ? 0.0 : cos(zt[a] * 3.14159265358979323846 / 180.0),
                                  zv[a]);
         snprintf(ptitle, sizeof ptitle, "%s (mean dE2000 %.3f)", r->sc.models[m],
                  report_cell_at(r, mi, m, 0)->de_mean);

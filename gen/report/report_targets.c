@@ -78,8 +78,7 @@ static int lut_metal(report_run *r, const report_material *rm, const lut_variant
             for (ch = 0; ch < 3; ch++)
                 table[ch * v->n + i] = gt[ch];
         }
-    for (i = 0; i < 3 * v->n; i++)
-        q[i] = (uint16_t)fixed_q15(table[i]);
+    encode_curve_q15(table, 3 * v->n, q);
     for (a = 0; a < REPORT_ANGLES; a++) {
         int32_t c = fixed_q15(report_cos(a));
         fresnel_rgb_q15 o;

@@ -1,7 +1,7 @@
-/* The number types the report measures: each scene model prepared once per
- * material in binary32, Q1.15 and binary16 (model_rgb_prepare), evaluated
- * for accuracy (one cosine at a time) and timed (the registry row's own
- * batch loop, so no dispatch sits inside the timed loop). */
+/* The number types the report measures: each scene model's encoded
+ * constants and tables (scene_model_rgb) in binary32, Q1.15 and binary16,
+ * evaluated for accuracy (one cosine at a time) and timed (the registry
+ * row's own batch loop, so no dispatch sits inside the timed loop). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,41 +10,17 @@
 #include "model/registry.h"
 #include "report/report.h"
 
-struct report_prepared {
-    model_rgb q;
-};
-
-report_prepared *report_prepare(const scene_model *m, const material_params *p)
+static void eval_f32(const model_rgb *q, double c, double rgb[3])
 {
-    report_prepared *r = calloc(1, sizeof *r);
-    if (!r)
-        return NULL;
-    if (model_rgb_prepare(m->def, p, m->table, m->table_d, m->lut_n, m->spacing, &r->q)) {
-        free(r);
-        return NULL;
-    }
-    return r;
-}
-
-void report_prepared_free(report_prepared *r)
-{
-    if (!r)
-        return;
-    model_rgb_free(&r->q);
-    free(r);
-}
-
-static void eval_f32(const report_prepared *r, double c, double rgb[3])
-{
-    fresnel_rgb v = r->q.def->rgb_f32(&r->q, (float)c);
+    fresnel_rgb v = q->def->rgb_f32(q, (float)c);
     rgb[0] = v.r;
     rgb[1] = v.g;
     rgb[2] = v.b;
 }
 
-static void eval_q15(const report_prepared *r, double c, double rgb[3])
+static void eval_q15(const model_rgb *q, double c, double rgb[3])
 {
-    fresnel_rgb_q15 v = r->q.def->rgb_q15(&r->q, (int32_t)lround(c * 32768.0));
+    fresnel_rgb_q15 v = q->def->rgb_q15(q, (int32_t)lround(c * 32768.0));
     rgb[0] = v.r / 32768.0;
     rgb[1] = v.g / 32768.0;
     rgb[2] = v.b / 32768.0;
@@ -52,11 +28,11 @@ static void eval_q15(const report_prepared *r, double c, double rgb[3])
 
 #if FRESNEL_HAS_F16
 /* binary16: the row's scalar function channel by channel, as a shader would */
-static void eval_f16(const report_prepared *r, double c, double rgb[3])
+static void eval_f16(const model_rgb *q, double c, double rgb[3])
 {
     int ch;
     for (ch = 0; ch < 3; ch++)
-        rgb[ch] = r->q.def->ch_f16(&r->q, ch, c);
+        rgb[ch] = q->def->ch_f16(q, ch, c);
 }
 
 static double batch_f16(const void *x, const float *c, const int32_t *cq, int n)
@@ -72,14 +48,14 @@ static double batch_f16(const void *x, const float *c, const int32_t *cq, int n)
 }
 #endif
 
-double report_time(const report_type *t, const report_prepared *r, int n, int runs)
+double report_time(const report_type *t, const model_rgb *q, int n, int runs)
 {
-    bench_batch fn = !strcmp(t->name, "q15") ? r->q.def->batch_q15 : r->q.def->batch_f32;
+    bench_batch fn = !strcmp(t->name, "q15") ? q->def->batch_q15 : q->def->batch_f32;
 #if FRESNEL_HAS_F16
     if (!strcmp(t->name, "f16"))
         fn = batch_f16;
 #endif
-    return bench_ns_per_eval(fn, &r->q, n, runs);
+    return bench_ns_per_eval(fn, q, n, runs);
 }
 
 const report_type report_types[] = {

@@ -95,16 +95,13 @@ static int write_matrix(FILE *f, const gen_context *g, const lab_space *ls, cons
 static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_path)
 {
     scene_model sm;
-    report_prepared *q;
     int t;
     double ns = NAN, m0 = NAN;
     for (t = 0; t < report_type_count && strcmp(report_types[t].name, "f32"); t++)
         ;
     if (!scene_model_prepare(l->sc->models[m], scene_lut_spacing(l->sc), l->spectra[0], l->g, &l->params[0], &sm)) {
-        if ((q = report_prepare(&sm, &l->params[0]))) {
-            ns = report_time(&report_types[t], q, 1 << 16, 3);
-            report_prepared_free(q);
-        }
+        model_rgb q = scene_model_rgb(&sm);
+        ns = report_time(&report_types[t], &q, 1 << 16, 3);
         if (cross_path && sm.def->cross_row)
             m0 = report_m0_count(cross_path, sm.def->cross_row);
         scene_model_free(&sm);
@@ -195,7 +192,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
             for (k = 0; k < VIEWER_ANGLES; k++) {
                 float v[3];
                 double d[3];
-                scene_model_eval(&sm, &l->params[i], (float)viewer_cos(k), v);
+                scene_model_eval(&sm, (float)viewer_cos(k), v);
                 d[0] = v[0];
                 d[1] = v[1];
                 d[2] = v[2];
@@ -223,7 +220,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
                 float rgb[3];
                 ground_truth_gamut(l->spectra[i], g, &l->params[i], report_cos(a), gt[a]);
                 ground_truth(l->spectra[i], &g->cm, &g->cs, l->params[i].n1, report_cos(a), raw[a]);
-                scene_model_eval(&sm, &l->params[i], (float)report_cos(a), rgb);
+                scene_model_eval(&sm, (float)report_cos(a), rgb);
                 v[a][0] = rgb[0];
                 v[a][1] = rgb[1];
                 v[a][2] = rgb[2];
