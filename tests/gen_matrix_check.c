@@ -331,7 +331,7 @@ static int scene_mode(const char *scene_path, const char *label)
         free(s);
         return 1;
     }
-    g->gamut = scene_gamut(&sc);
+    g->gamut = sc.gamut;
     if (sc.name[0])
         snprintf(scene_name, sizeof scene_name, "%s", sc.name);
     else
@@ -351,8 +351,8 @@ static int scene_mode(const char *scene_path, const char *label)
             memset(&hm, 0, sizeof hm);
             hm.h = &hh;
             snprintf(hm.prefix, sizeof hm.prefix, "fresnel_%s_%s", scene_name, sc.materials[i]);
-            if (scene_model_prepare(sc.models[m], scene_lut_spacing(&sc), s, g, &p, &sm)) {
-                printf("FAIL gen matrix %s: cannot prepare %s for %s as the report does\n", label, sc.models[m],
+            if (scene_model_prepare(&sc.models[m], sc.spacing, s, g, &p, &sm)) {
+                printf("FAIL gen matrix %s: cannot prepare %s for %s as the report does\n", label, sc.models[m].name,
                        sc.materials[i]);
                 fails++;
                 break;
@@ -365,8 +365,8 @@ static int scene_mode(const char *scene_path, const char *label)
                     continue;
                 for (c = 0; c <= 32768 && !fails; c += c < 2048 ? 1 : 4) {
                     double got[3], want[3];
-                    if (hdr_eval(&hm, sc.models[m], &sm, q15, c, want)) {
-                        printf("FAIL gen matrix %s: %s %s %s: %s\n", label, sc.materials[i], sc.models[m],
+                    if (hdr_eval(&hm, sc.models[m].name, &sm, q15, c, want)) {
+                        printf("FAIL gen matrix %s: %s %s %s: %s\n", label, sc.materials[i], sc.models[m].name,
                                report_types[t].name,
                                hm.missing ? "missing from the header" : "a model the checker cannot evaluate");
                         if (hm.missing)
@@ -384,7 +384,7 @@ static int scene_mode(const char *scene_path, const char *label)
                         if (got[ch] != want[ch]) {
                             printf("FAIL gen matrix %s: %s %s %s at c = %ld/32768: the report evaluates %.9g, "
                                    "the header %.9g (channel %d)\n",
-                                   label, sc.materials[i], sc.models[m], report_types[t].name, (long)c, got[ch],
+                                   label, sc.materials[i], sc.models[m].name, report_types[t].name, (long)c, got[ch],
                                    want[ch], ch);
                             fails++;
                             break;
@@ -398,8 +398,8 @@ static int scene_mode(const char *scene_path, const char *label)
                         if (sm.lut.form == LUT_RESIDUAL) {
                             char name[HC_NAME + 80], id[64];
                             int k;
-                            for (k = 0; sc.models[m][k] && k < 63; k++)
-                                id[k] = sc.models[m][k] == '-' ? '_' : sc.models[m][k];
+                            for (k = 0; sc.models[m].name[k] && k < 63; k++)
+                                id[k] = sc.models[m].name[k] == '-' ? '_' : sc.models[m].name[k];
                             id[k] = '\0';
                             snprintf(name, sizeof name, "%s_%s_frac", hm.prefix, id);
                             frac = hc_find(&hh, name);
@@ -409,7 +409,7 @@ static int scene_mode(const char *scene_path, const char *label)
                             double err = fabs(got[ch] * 32768.0 - own_double(&sm, &p, ch, c));
                             if (err - bound > lut_excess) {
                                 lut_excess = err - bound, lut_err = err, lut_bound = bound;
-                                snprintf(lut_where, sizeof lut_where, "%s %s c=%ld", sc.materials[i], sc.models[m],
+                                snprintf(lut_where, sizeof lut_where, "%s %s c=%ld", sc.materials[i], sc.models[m].name,
                                          (long)c);
                             }
                         }

@@ -77,17 +77,14 @@ static GLuint program(const struct variant *v, const char *prelude, const char *
 }
 
 /* main(): row r of the viewport evaluates material r's function. */
-static char *main_body(const scene *sc, const char *ident, const char *model)
+static char *main_body(const scene *sc, const char *ident, const char *id)
 {
     size_t size = 4096 + (size_t)sc->material_count * 256;
-    char *b = malloc(size), id[32];
+    char *b = malloc(size);
     size_t len;
     int i;
     if (!b)
         return NULL;
-    for (i = 0; model[i] && i < 31; i++)
-        id[i] = model[i] == '-' ? '_' : model[i];
-    id[i] = '\0';
     len = (size_t)snprintf(b, size,
                            "void main() {\n    highp float c = (floor(fr_uv.x * %d.0) - 1.0) * (1.0 / 256.0);\n"
                            "    highp float row = floor(fr_uv.y * %d.0);\n    vec3 r = vec3(0.0);\n",
@@ -133,7 +130,7 @@ int main(int argc, char **argv)
         if (derive_parameters(&gc, &(material_source){sc.materials[i], NULL, NK_FORMAT_AUTO}, sc.sigma, sc.n1, &spectra[i], &params[i]))
             return 1;
         for (m = 0; m < sc.model_count; m++)
-            if (scene_model_prepare(sc.models[m], scene_lut_spacing(&sc), &spectra[i], &gc, &params[i],
+            if (scene_model_prepare(&sc.models[m], sc.spacing, &spectra[i], &gc, &params[i],
                                     &models[i * sc.model_count + m]))
                 return 1;
     }
@@ -158,7 +155,7 @@ int main(int argc, char **argv)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
     for (m = 0; m < sc.model_count; m++) {
-        char *body = main_body(&sc, ident, sc.models[m]);
+        char *body = main_body(&sc, ident, sc.models[m].ident);
         int is_lut = models[m].lut.n > 0, form = models[m].lut.form;
         for (v = 0; v < NVARIANTS && body; v++) {
             const struct variant *va = &variants[v];
@@ -171,7 +168,7 @@ int main(int argc, char **argv)
             bound = mediump ? MEDIUMP_BOUND
                   : texture ? (form == LUT_CUBIC ? 1.25 : 1.0) * ldexp(1.0, -16) + 1e-6
                             : HIGHP_BOUND;
-            snprintf(name, sizeof name, "glsl gen: %s %s, %d materials, %s%s", ident, sc.models[m], nmat, va->name,
+            snprintf(name, sizeof name, "glsl gen: %s %s, %d materials, %s%s", ident, sc.models[m].name, nmat, va->name,
                      is_lut ? (texture ? " (packed texture)" : " (const arrays)") : "");
             prog = prelude[v] ? program(va, prelude[v], port, scene_src, body) : 0;
             if (!prog) {

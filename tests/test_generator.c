@@ -47,7 +47,7 @@ static void check_lut_fit(const char *id, const spectrum *s, const gen_context *
         int ch;
         char name[128];
         scene_model m;
-        if (scene_model_prepare(model, LUT_GRAZING, s, g, p, &m)) {
+        if (scene_model_prepare_name(model, LUT_GRAZING, s, g, p, &m)) {
             CHECK(model, 0, "prepare failed");
             return;
         }

@@ -36,7 +36,7 @@ int main(void)
           "%g %g %g", rm.policy_de_max[0], rm.policy_de_max[1], rm.policy_de_max[2]);
     rm.models = sm;
     for (m = 0; m < 6; m++) {
-        scene_model_prepare(models[m], LUT_GRAZING, rm.s, g, &rm.p, &sm[m]);
+        scene_model_prepare_name(models[m], LUT_GRAZING, rm.s, g, &rm.p, &sm[m]);
         for (t = 0; t < report_type_count; t++) {
             report_cell c;
             char name[96];

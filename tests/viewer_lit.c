@@ -153,7 +153,7 @@ int main(int argc, char **argv)
         return 2;
     for (i = 0; i < l.sc->material_count; i++) {
         for (k = 0; k < l.sc->model_count; k++)
-            if (scene_model_prepare(l.sc->models[k], scene_lut_spacing(l.sc), l.spectra[i], l.g, &l.params[i],
+            if (scene_model_prepare(&l.sc->models[k], l.sc->spacing, l.spectra[i], l.g, &l.params[i],
                                     &models[i * l.sc->model_count + k]))
                 return 2;
         for (k = 0; k < VIEWER_REF_NODES; k++) {
@@ -173,7 +173,7 @@ int main(int argc, char **argv)
             if (!strcmp(l.sc->materials[i], mat))
                 mi = i;
         for (k = 0; k < l.sc->model_count; k++)
-            if (!strcmp(l.sc->models[k], model))
+            if (!strcmp(l.sc->models[k].name, model))
                 mo = k;
         if (mi < 0 || (mo < 0 && strcmp(model, "reference"))) {
             bad++;

@@ -59,15 +59,12 @@ typedef void (*emit_rgb_fn)(FILE *f, const char *prefix, const char *name, const
 typedef void (*emit_float_fn)(FILE *f, const char *prefix, const char *name, double v, const char *why);
 void emit_material_params(FILE *f, const scene *sc, const encoded_material *e, const char *prefix, emit_rgb_fn rgb,
                           emit_float_fn flt);
-/* A LUT model's table for one material in every number type (encode_table;
- * 0, or -1 when out of memory) and the model's name as a C identifier part
- * (lut16-residual -> lut16_residual) in name[32]. */
-int emit_lut_encode(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
-                    lut_spacing spacing, encoded_lut *t, char name[32]);
+/* LUT model e's table for material i of the input in every number type
+ * (encode_table): 0, or -1 when out of memory. */
+int emit_lut_encode(const emit_input *in, const scene_entry *e, int i, encoded_lut *t);
 /* Its binary32 nodes as doubles (3n values, malloc'd; NULL when out of
- * memory), for the shader back ends; *n and *form describe the table. */
-double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
-                       lut_spacing spacing, int *n, lut_form *form, char name[32]);
+ * memory), for the shader back ends. */
+double *emit_lut_table(const emit_input *in, const scene_entry *e, int i);
 
 /* One material's Q1.15 constants and tables (emit_fixed.c); prefix is
  * fresnel_<scene>_<material>. */

@@ -195,14 +195,15 @@ static void emit_lsk3(fx_out *o, const char *prefix, const char *name, const mat
     }
 }
 
-static int emit_lut_q15(fx_out *o, const char *prefix, const char *model, const material_params *p,
-                        const spectrum *s, const gen_context *g, lut_spacing spacing)
+static int emit_lut_q15(fx_out *o, const char *prefix, const scene_entry *e, int mi)
 {
     FILE *f = o->f;
+    lut_spacing spacing = o->in->sc->spacing;
+    const char *model = e->name, *name = e->ident;
     int n, i;
     encoded_lut t;
-    char name[32], id[160];
-    if (emit_lut_encode(model, p, s, g, spacing, &t, name))
+    char id[160];
+    if (emit_lut_encode(o->in, e, mi, &t))
         return cli_oom("fresnel gen");
     n = t.n;
     snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
@@ -247,7 +248,6 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
     const scene *sc = in->sc;
     const material_params *p = &in->params[mi];
     const encoded_material *e = &in->enc[mi];
-    lut_spacing spacing = scene_lut_spacing(sc);
     unsigned reads = scene_reads(sc, 0), q15_reads = scene_reads(sc, 1);
     int m;
     fx_out o;
@@ -304,8 +304,7 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
         fputs(";\n", f);
     }
     for (m = 0; m < sc->model_count && !o.bad; m++)
-        if (scene_model_lut_size(sc->models[m], NULL) &&
-            emit_lut_q15(&o, prefix, sc->models[m], p, in->spectra[mi], in->g, spacing))
+        if (sc->models[m].lut_n && emit_lut_q15(&o, prefix, &sc->models[m], mi))
             return CLI_BAD_INPUT;
     return o.bad ? CLI_BAD_INPUT : 0;
 }

@@ -44,15 +44,14 @@ static void emit_float(FILE *f, const char *prefix, const char *name, double v, 
     fputs(";\n", f);
 }
 
-static int emit_lut(FILE *f, const emit_input *in, const char *prefix, const char *model, const material_params *p, const spectrum *s,
-                    const gen_context *g, lut_spacing spacing)
+static int emit_lut(FILE *f, const emit_input *in, const char *prefix, const scene_entry *e, int mi)
 {
     int n, i, residual;
     lut_form form;
-    char name[32];
+    lut_spacing spacing = in->sc->spacing;
     encoded_lut t;
-    const char *suffix;
-    if (emit_lut_encode(model, p, s, g, spacing, &t, name))
+    const char *suffix, *model = e->name;
+    if (emit_lut_encode(in, e, mi, &t))
         return cli_oom("fresnel gen");
     n = t.n;
     form = t.form;
@@ -72,7 +71,7 @@ static int emit_lut(FILE *f, const emit_input *in, const char *prefix, const cha
             form == LUT_CUBIC ? "Catmull-Rom" : "linear");
     fprintf(f, " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n", spacing == LUT_UNIFORM ? "lut_linear" : "lut",
             suffix, residual ? "f0, " : "", n);
-    fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
+    fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, e->ident, 3 * n);
     for (i = 0; i < 3 * n; i++) {
         fputs(i % 6 == 0 ? "\n    " : " ", f);
         put_float(f, t.f32[i]);
@@ -171,7 +170,7 @@ void emit_truth_comment(FILE *f, const scene *sc)
                                        "values above 1 kept"};
     fprintf(f, " * Ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs -> linear RGB, under the gamut\n"
                " * policy %s (%s; gen/2_derive/derive.h).\n",
-            sc->gamut, what[scene_gamut(sc)]);
+            gamut_policy_names[sc->gamut], what[sc->gamut]);
 }
 
 /* What a user ships when they ship generated constants (C and GLSL). */
@@ -203,7 +202,6 @@ int emit_header(FILE *f, const emit_input *in)
 {
     const scene *sc = in->sc;
     const gen_context *g = in->g;
-    lut_spacing spacing = scene_lut_spacing(sc);
     char guard[96];
     int i, m;
     for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
@@ -220,7 +218,7 @@ int emit_header(FILE *f, const emit_input *in)
     emit_truth_comment(f, in->sc);
     fprintf(f, " * Models:");
     for (m = 0; m < sc->model_count; m++)
-        fprintf(f, " %s", sc->models[m]);
+        fprintf(f, " %s", sc->models[m].name);
     fprintf(f, "; number types:");
     for (m = 0; m < sc->type_count; m++)
         fprintf(f, " %s", sc->types[m]);
@@ -246,8 +244,7 @@ int emit_header(FILE *f, const emit_input *in)
             continue;
         emit_material_params(f, sc, &in->enc[i], prefix, emit_rgb, emit_float);
         for (m = 0; m < sc->model_count; m++)
-            if (scene_model_lut_size(sc->models[m], NULL) &&
-                emit_lut(f, in, prefix, sc->models[m], p, in->spectra[i], g, spacing))
+            if (sc->models[m].lut_n && emit_lut(f, in, prefix, &sc->models[m], i))
                 return CLI_BAD_INPUT;
     }
     fprintf(f, "\n#endif\n");

@@ -53,7 +53,7 @@ int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loade
     }
     if ((status = gen_context_load(data_dir(dir_option), l->sc->space, l->g)))
         goto done;
-    l->g->gamut = scene_gamut(l->sc);
+    l->g->gamut = l->sc->gamut;
     /* Every unknown material is reported, not only the first. */
     for (i = 0; i < l->sc->material_count; i++) {
         material_info info;

@@ -113,13 +113,13 @@ int cmd_bench(int argc, char **argv)
         material_id_from_path(nk_file, nk_id);
         source.id = nk_id;
     }
-    if (scene_lut_spacing(&sc) == LUT_GRAZING_PL)
+    if (sc.spacing == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `make cross-count` "
                                      "times fresnel_lut_pl_u16_q15_fast");
     if (only_model && !scene_has_model(&sc, only_model)) {
         const char *names[SCENE_MAX_MODELS + 1];
         for (m = 0; m < sc.model_count; m++)
-            names[m] = sc.models[m];
+            names[m] = sc.models[m].name;
         names[m] = NULL;
         return cli_unknown(WHERE, "model (of the scene)", only_model, names);
     }
@@ -129,7 +129,7 @@ int cmd_bench(int argc, char **argv)
     }
     if ((status = gen_context_load(data_dir(dir_option), sc.space, g)))
         goto done;
-    g->gamut = scene_gamut(&sc);
+    g->gamut = sc.gamut;
     if ((status = derive_parameters(g, &source, sc.sigma, sc.n1, s, &p)))
         goto done;
     if (runs > 0)
@@ -137,9 +137,9 @@ int cmd_bench(int argc, char **argv)
     for (m = 0; m < sc.model_count; m++) {
         scene_model sm;
         model_rgb q;
-        if (only_model && strcmp(only_model, sc.models[m]))
+        if (only_model && strcmp(only_model, sc.models[m].name))
             continue;
-        if ((status = scene_model_prepare(sc.models[m], scene_lut_spacing(&sc),
+        if ((status = scene_model_prepare(&sc.models[m], sc.spacing,
                                           s, g, &p, &sm)))
             goto done;
         q = scene_model_rgb(&sm);
@@ -149,7 +149,7 @@ int cmd_bench(int argc, char **argv)
                 continue;
             ns = report_time(&report_types[t], &q, count, runs);
             if (runs > 0)
-                printf("%s,%s,%.3f\n", sc.models[m], report_types[t].name, ns);
+                printf("%s,%s,%.3f\n", sc.models[m].name, report_types[t].name, ns);
         }
         scene_model_free(&sm);
     }

@@ -61,10 +61,10 @@ int cmd_curve(int argc, char **argv)
                 model_list = val;
             } else {
                 static const char *const spacings[] = {"grazing", "uniform", NULL};
-                if (!strcmp(val, "uniform"))
-                    spacing = LUT_UNIFORM;
-                else if (strcmp(val, "grazing"))
+                int k = scene_choice(spacings, val);
+                if (k < 0)
                     return cli_unknown(WHERE, "--lut-spacing", val, spacings);
+                spacing = (lut_spacing)scene_choice(scene_lut_spacing_names, val);
             }
         }
     }
@@ -80,7 +80,7 @@ int cmd_curve(int argc, char **argv)
             status = cli_error(WHERE, "at most %d models", MAX_MODELS);
             goto done;
         }
-        if ((status = scene_model_prepare(tok, spacing, s, g, &p, &models[n_models])))
+        if ((status = scene_model_prepare_name(tok, spacing, s, g, &p, &models[n_models])))
             goto done;
         n_models++;
     }

@@ -40,10 +40,8 @@ void material_options_init(material_options *o)
 
 int gamut_option(const char *where, const char *val, gamut_policy *out)
 {
-    int i;
-    for (i = 0; gamut_policy_names[i] && strcmp(gamut_policy_names[i], val); i++)
-        ;
-    if (!gamut_policy_names[i])
+    int i = scene_choice(gamut_policy_names, val);
+    if (i < 0)
         return cli_unknown(where, "--gamut", val, gamut_policy_names);
     *out = (gamut_policy)i;
     return 0;

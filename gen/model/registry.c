@@ -469,7 +469,8 @@ const model *model_find_offered(const char *name, unsigned offered)
 
 const model *model_find(const char *name) { return model_find_offered(name, MODEL_EVAL); }
 
-int model_lut_size(const char *name, int lo, int hi, lut_form *form)
+/* N for a LUT name (N in lo..hi), setting *form; 0 for every other string. */
+static int lut_size(const char *name, int lo, int hi, lut_form *form)
 {
     const char *p;
     int n = 0, digits = 0;
@@ -489,32 +490,33 @@ int model_lut_size(const char *name, int lo, int hi, lut_form *form)
     /* the rest must be a LUT row's name after its "lutN" */
     for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
         if (!strcmp(p, lut_table[i].name + 4)) {
-            if (form)
-                *form = lut_table[i].form;
+            *form = lut_table[i].form;
             return n;
         }
     return 0;
 }
 
-const model *model_scene_row(const char *name, lut_spacing spacing)
+const model *model_lut_row(lut_form form, lut_spacing spacing)
 {
-    lut_form form;
+    int uniform = spacing == LUT_UNIFORM;
     size_t i;
-    if (model_lut_size(name, 1, MODEL_LUT_NODES_MAX, &form)) {
-        int uniform = spacing == LUT_UNIFORM;
-        for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
-            if (lut_table[i].form == form && (lut_table[i].uniform == uniform || form == LUT_CUBIC))
-                return &lut_table[i];
-        return NULL;
-    }
-    return model_find_offered(name, MODEL_SCENE);
+    for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
+        if (lut_table[i].form == form && (lut_table[i].uniform == uniform || form == LUT_CUBIC))
+            return &lut_table[i];
+    return NULL;
 }
 
-const char *model_shader_lacks(const char *name, lut_spacing spacing)
+const model *model_scene_parse(const char *name, lut_spacing spacing, int lo, int hi, int *lut_n)
 {
-    const model *row = model_scene_row(name, spacing);
-    if (!row)
-        return "the model is unknown";
+    lut_form form;
+    *lut_n = lut_size(name, lo, hi, &form);
+    if (!name)
+        return NULL;
+    return *lut_n ? model_lut_row(form, spacing) : model_find_offered(name, MODEL_SCENE);
+}
+
+const char *model_shader_lacks(const model *row, lut_spacing spacing)
+{
     if (row->offered & MODEL_LUT)
         return spacing == LUT_GRAZING_PL ? "grazing-pl tables are read by fresnel_lut_pl_u16_q15_fast, which the "
                                            "shader ports do not have"

@@ -130,17 +130,19 @@ extern const int model_count;
 const model *model_find_offered(const char *name, unsigned offered);
 /* The MODEL_EVAL row named name (fresnel eval); NULL if none. */
 const model *model_find(const char *name);
-/* The scene row for a manifest's model name (a LUT name: the row of its form
- * and spacing); NULL for an unknown name. */
-const model *model_scene_row(const char *name, lut_spacing spacing);
+/* A scene model's name read, the one place a name is: the row of a
+ * MODEL_SCENE name, or for "lutN", "lutN-residual", "lutN-cubic" (N in
+ * lo..hi, no leading zeros) the row of its form at `spacing` with N in
+ * *lut_n (0 for the others). NULL for any other string. */
+const model *model_scene_parse(const char *name, lut_spacing spacing, int lo, int hi, int *lut_n);
+/* The LUT row of form `form` at `spacing` (a manifest may set its spacing
+ * after its models). */
+const model *model_lut_row(lut_form form, lut_spacing spacing);
 /* Whether the shader ports (ports/glsl/fresnel.glsl, ports/hlsl/fresnel.hlsl:
  * the same function names, so one expression per row serves both) express
- * scene model name with tables spaced `spacing`: NULL, or what they lack,
+ * scene row `row` with tables spaced `spacing`: NULL, or what they lack,
  * for the back end's error message. */
-const char *model_shader_lacks(const char *name, lut_spacing spacing);
-/* N for "lutN", "lutN-residual" or "lutN-cubic" (N in lo..hi, no leading
- * zeros), setting *form (if not NULL); 0 for every other string. */
-int model_lut_size(const char *name, int lo, int hi, lut_form *form);
+const char *model_shader_lacks(const model *row, lut_spacing spacing);
 /* The rows offered as `offered`, without LUT rows, NULL-terminated: their
  * names for messages and --help. max includes the NULL. */
 int model_names(unsigned offered, const char **out, int max);

@@ -95,7 +95,7 @@ static void write_gamut(report_run *r, FILE *f)
             for (m = 0; m < r->sc.model_count; m++)
                 for (t = 0; t < report_type_count; t++) {
                     const report_cell *c = report_cell_at(r, i, m, t);
-                    fprintf(f, "| %s | %s | %s | %.3f | %.3f |\n", r->mats[i].p.info.id, r->sc.models[m],
+                    fprintf(f, "| %s | %s | %s | %.3f | %.3f |\n", r->mats[i].p.info.id, r->sc.models[m].name,
                             report_types[t].name, c->raw_de_mean, c->raw_de_max);
                 }
 }
@@ -135,7 +135,7 @@ static void write_average_closed_forms(report_run *r, FILE *f)
                        "| model | mean abs error | worst | max vs the integrated curve |\n"
                        "|---|---:|---:|---:|\n");
         header = 1;
-        fprintf(f, "| %s | %.2e | %.2e | %.1e |\n", r->sc.models[m], sum / r->sc.material_count, worst, vs_curve);
+        fprintf(f, "| %s | %.2e | %.2e | %.1e |\n", r->sc.models[m].name, sum / r->sc.material_count, worst, vs_curve);
     }
 }
 
@@ -166,7 +166,7 @@ static void write_average(report_run *r, FILE *f)
                     at = r->mats[i].p.info.id;
                 }
             }
-            fprintf(f, "| %s | %s | %.2e | %.2e | %s |\n", r->sc.models[m], report_types[t].name,
+            fprintf(f, "| %s | %s | %.2e | %.2e | %s |\n", r->sc.models[m].name, report_types[t].name,
                     sum / r->sc.material_count, worst, at);
         }
     write_average_closed_forms(r, f);
@@ -191,7 +191,7 @@ static void write_accuracy_tables(report_run *r, FILE *f)
             for (i = 0; i < r->sc.material_count; i++)
                 if (report_cell_at(r, i, m, t)->vs_ref_max > vs)
                     vs = report_cell_at(r, i, m, t)->vs_ref_max;
-            fprintf(f, "| %s | %s | ", r->sc.models[m], report_types[t].name);
+            fprintf(f, "| %s | %s | ", r->sc.models[m].name, report_types[t].name);
             if (isnan(mean)) /* a scene without metals: nothing to average */
                 fprintf(f, "no metals | - | ");
             else
@@ -216,7 +216,7 @@ static void write_accuracy_tables(report_run *r, FILE *f)
             for (t = 0; t < report_type_count; t++) {
                 report_cell *c = report_cell_at(r, i, m, t);
                 fprintf(f, "| %s | %s | %s | %.4f | %.4f | %.4f | %.2e | %.2e | %.2e | %.1e |\n", r->mats[i].p.info.id,
-                        r->sc.models[m], report_types[t].name, c->de_mean, c->de_rms, c->de_max, c->abs_max[0],
+                        r->sc.models[m].name, report_types[t].name, c->de_mean, c->de_rms, c->de_max, c->abs_max[0],
                         c->abs_max[1], c->abs_max[2], c->vs_ref_max);
             }
     write_gamut(r, f);
@@ -270,7 +270,7 @@ static int model_index(report_run *r, const char *name)
 {
     int m;
     for (m = 0; m < r->sc.model_count; m++)
-        if (!strcmp(r->sc.models[m], name))
+        if (!strcmp(r->sc.models[m].name, name))
             return m;
     return -1;
 }
@@ -485,7 +485,7 @@ static void write_budget(report_run *r, FILE *f)
         double mean, worst, pm, pw;
         int k0 = front[a];
         report_metal_summary(r, k0 / report_type_count, k0 % report_type_count, &mean, &worst);
-        fprintf(f, "- **%s (%s)**: %.0f %s", r->sc.models[k0 / report_type_count], report_types[k0 % report_type_count].name,
+        fprintf(f, "- **%s (%s)**: %.0f %s", r->sc.models[k0 / report_type_count].name, report_types[k0 % report_type_count].name,
                 cost[k0], use_instr ? "instructions" : "ns");
         if (use_instr && !isnan(r->ns[k0]))
             fprintf(f, ", %.2f ns", r->ns[k0]);
@@ -538,7 +538,7 @@ int report_write(const report_options *o)
         return status;
     }
     r.timing = timing;
-    if (scene_lut_spacing(&r.sc) == LUT_GRAZING_PL)
+    if (r.sc.spacing == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only and the report measures every number "
                                      "type; its targets table measures them itself");
     r.g = malloc(sizeof *r.g);
@@ -554,7 +554,7 @@ int report_write(const report_options *o)
     }
     if ((status = gen_context_load(data_dir(o->data_dir), r.sc.space, r.g)))
         goto done;
-    r.g->gamut = o->gamut_given ? o->gamut : scene_gamut(&r.sc);
+    r.g->gamut = o->gamut_given ? o->gamut : r.sc.gamut;
     lab_space_init(&r.ls, &r.g->cs);
     for (i = 0; i < r.sc.material_count; i++) {
         report_material *rm = &r.mats[i];
@@ -571,8 +571,8 @@ int report_write(const report_options *o)
             goto done;
         report_ground_truth(r.g, &r.ls, rm);
         for (m = 0; m < r.sc.model_count; m++) {
-            lut_spacing sp = scene_lut_spacing(&r.sc);
-            if ((status = scene_model_prepare(r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
+            lut_spacing sp = r.sc.spacing;
+            if ((status = scene_model_prepare(&r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
                 goto done;
             for (t = 0; t < report_type_count; t++)
                 report_measure(&r.ls, rm, m, &report_types[t], report_cell_at(&r, i, m, t));
@@ -595,10 +595,10 @@ int report_write(const report_options *o)
             if (timing)
                 r.ns[k] = report_time(&report_types[t], &q, 1 << 20, 5);
             if (instructions)
-                r.instr[k] = callgrind_instructions(scene_path, r.mats[r.timed_material].p.info.id, r.sc.models[m],
+                r.instr[k] = callgrind_instructions(scene_path, r.mats[r.timed_material].p.info.id, r.sc.models[m].name,
                                                     report_types[t].name);
             if (timing || instructions)
-                fprintf(stderr, "%s: %s %s: %.2f ns, %.0f instructions\n", WHERE, r.sc.models[m],
+                fprintf(stderr, "%s: %s %s: %.2f ns, %.0f instructions\n", WHERE, r.sc.models[m].name,
                         report_types[t].name, r.ns[k], r.instr[k]);
         }
     sigma_sweep(&r, sig_de, sig_err);

@@ -46,7 +46,7 @@ static int write_pareto(report_run *r)
             if (isnan(mean)) /* no metals in the scene: no error to plot */
                 continue;
             measured++;
-            snprintf(label, sizeof label, "%s %s", r->sc.models[m], report_types[t].name);
+            snprintf(label, sizeof label, "%s %s", r->sc.models[m].name, report_types[t].name);
             svg_point(&p, r->ns[k], mean, SVG_CIRCLE, 6, svg_palette(m), label, SVG_LABEL_RIGHT);
             for (j = 0; j < n && !dominated; j++) {
                 if (j == k || isnan(r->ns[j]))
@@ -160,7 +160,7 @@ static int write_curves(report_run *r, int mi)
         for (a = 0; a < ZOOM_N; a++)
             report_types[0].eval(&q, a == ZOOM_N - 1 ? 0.0 : cos(zt[a] * 3.14159265358979323846 / 180.0),
                                  zv[a]);
-        snprintf(ptitle, sizeof ptitle, "%s (mean dE2000 %.3f)", r->sc.models[m],
+        snprintf(ptitle, sizeof ptitle, "%s (mean dE2000 %.3f)", r->sc.models[m].name,
                  report_cell_at(r, mi, m, 0)->de_mean);
         if (svg_panel_begin(&p, &d, 0, y0, 420, row_h - 40, &xa, &ya, ptitle) == 0)
             for (ch = 0; ch < 3; ch++) {
@@ -208,7 +208,7 @@ static int write_curves(report_run *r, int mi)
         }
         svg_text(&d, 735, y0 + 40, 11, SVG_START, "black", "ground truth, 0 -> 90 deg");
         svg_strip(&d, 735, y0 + 46, 215, 22, (const double(*)[3])gt, CURVE_N);
-        svg_text(&d, 735, y0 + 86, 11, SVG_START, "black", r->sc.models[m]);
+        svg_text(&d, 735, y0 + 86, 11, SVG_START, "black", r->sc.models[m].name);
         svg_strip(&d, 735, y0 + 92, 215, 22, (const double(*)[3])mv, CURVE_N);
         svg_text(&d, 735, y0 + 132, 11, SVG_START, "black", "80 -> 90 deg: ground truth, model");
         svg_strip(&d, 735, y0 + 138, 215, 14, (const double(*)[3])(zgt + 100), ZOOM_N - 100);

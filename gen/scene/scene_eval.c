@@ -5,21 +5,29 @@
 
 #include "cli/cli.h"
 #include "model/reference.h"
-#include "scene/scene.h"
 
-int scene_model_prepare(const char *name, lut_spacing spacing, const spectrum *s, const gen_context *g,
+int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectrum *s, const gen_context *g,
                         const material_params *p, scene_model *m)
 {
-    int form = LUT_PLAIN, n = scene_model_lut_size(name, &form);
     memset(m, 0, sizeof *m);
     m->lut.bad = -1;
-    if (!scene_model_known(name) || strlen(name) >= sizeof m->name || !(m->def = model_scene_row(name, spacing)))
-        return cli_error("scene model", "unknown model '%s'", name);
-    strcpy(m->name, name);
+    m->def = e->row;
+    strcpy(m->name, e->name);
     encode_material(p, &m->mat);
-    if (n && encode_table(s, g, p, spacing, n, (lut_form)form, &m->lut))
+    if (e->lut_n && encode_table(s, g, p, spacing, e->lut_n, e->row->form, &m->lut))
         return cli_oom("scene model");
     return 0;
+}
+
+int scene_model_prepare_name(const char *name, lut_spacing spacing, const spectrum *s, const gen_context *g,
+                             const material_params *p, scene_model *m)
+{
+    scene_entry e;
+    memset(m, 0, sizeof *m);
+    m->lut.bad = -1;
+    if (scene_entry_parse(name, spacing, &e))
+        return cli_error("scene model", "unknown model '%s' (fresnel gen --help lists the models)", name);
+    return scene_model_prepare(&e, spacing, s, g, p, m);
 }
 
 void scene_model_free(scene_model *m) { encoded_lut_free(&m->lut); }

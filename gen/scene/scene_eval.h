@@ -8,19 +8,24 @@
 
 #include "3_encode/encode.h"
 #include "model/registry.h"
+#include "scene/scene.h"
 
 /* A model with the material's constants and its LUT, if it has one. */
 typedef struct scene_model {
-    char name[24];
+    char name[SCENE_NAME_SIZE];
     const model *def;     /* its registry row */
     encoded_material mat; /* the material's constants in every number type */
     encoded_lut lut;      /* LUT rows: the table in every number type; lut.n 0 for the others */
 } scene_model;
 
-/* Prepare model `name` for material p (s = its spectrum, for LUT nodes);
- * 0, or CLI_BAD_INPUT for an unknown name (after a message), or CLI_OOM. */
-int scene_model_prepare(const char *name, lut_spacing spacing, const spectrum *s, const gen_context *g,
+/* Prepare model e, with tables spaced `spacing`, for material p (s = its
+ * spectrum, for LUT nodes): 0, or CLI_OOM after a message. */
+int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectrum *s, const gen_context *g,
                         const material_params *p, scene_model *m);
+/* The same for a model named on a command line (scene_entry_parse):
+ * CLI_BAD_INPUT after a message for a name no scene model answers to. */
+int scene_model_prepare_name(const char *name, lut_spacing spacing, const spectrum *s, const gen_context *g,
+                             const material_params *p, scene_model *m);
 void scene_model_free(scene_model *m);
 /* What the registry row's evaluators read: pointers into m. */
 model_rgb scene_model_rgb(const scene_model *m);

@@ -36,14 +36,6 @@ static double viewer_cos(int k)
     return k == VIEWER_ANGLES - 1 ? 0.0 : cos(90.0 * k / (VIEWER_ANGLES - 1) * (3.14159265358979323846 / 180.0));
 }
 
-static void model_ident(const char *model, char *out, size_t size)
-{
-    size_t i;
-    for (i = 0; model[i] && i + 1 < size; i++)
-        out[i] = model[i] == '-' ? '_' : model[i];
-    out[i] = '\0';
-}
-
 /* vec3 fresnel_select(int mat, int model, float c): the scene's functions
  * by index, in the scene's order of materials and models; with
  * FRESNEL_VIEWER_MATERIAL defined, only that material's (WebGL 1). */
@@ -54,12 +46,9 @@ static void write_select(FILE *f, const emit_loaded *l)
     for (i = 0; i < l->sc->material_count; i++) {
         fprintf(f, "#if !defined(FRESNEL_VIEWER_MATERIAL) || FRESNEL_VIEWER_MATERIAL == %d\n", i);
         fprintf(f, "    if (mat == %d) {\n", i);
-        for (m = 0; m < l->sc->model_count; m++) {
-            char id[SCENE_NAME_SIZE];
-            model_ident(l->sc->models[m], id, sizeof id);
+        for (m = 0; m < l->sc->model_count; m++)
             fprintf(f, "        if (model == %d)\n            return fresnel_%s_%s_%s_rgb(c);\n", m, l->name,
-                    l->sc->materials[i], id);
-        }
+                    l->sc->materials[i], l->sc->models[m].ident);
         fprintf(f, "    }\n#endif\n");
     }
     fprintf(f, "    return vec3(0.0);\n}\n");
@@ -99,7 +88,7 @@ static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_p
     double ns = NAN, m0 = NAN;
     for (t = 0; t < report_type_count && strcmp(report_types[t].name, "f32"); t++)
         ;
-    if (!scene_model_prepare(l->sc->models[m], scene_lut_spacing(l->sc), l->spectra[0], l->g, &l->params[0], &sm)) {
+    if (!scene_model_prepare(&l->sc->models[m], l->sc->spacing, l->spectra[0], l->g, &l->params[0], &sm)) {
         model_rgb q = scene_model_rgb(&sm);
         ns = report_time(&report_types[t], &q, 1 << 16, 3);
         if (cross_path && sm.def->cross_row)
@@ -146,7 +135,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
     int i, m, k;
     lab_space_init(&ls, &g->cs);
     fprintf(f, "{\"scene\":\"%s\",\"space\":\"%s\",\"gamut\":\"%s\",\"refN\":%d,\n\"materials\":[", l->name, sc->space,
-            sc->gamut, VIEWER_REF_NODES);
+            gamut_policy_names[sc->gamut], VIEWER_REF_NODES);
     for (i = 0; i < sc->material_count; i++) {
         const char *name = l->params[i].info.name;
         fprintf(f, "%s{\"id\":\"%s\",\"name\":\"", i ? "," : "", sc->materials[i]);
@@ -156,7 +145,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
     }
     fprintf(f, "],\n\"models\":[");
     for (m = 0; m < sc->model_count; m++)
-        fprintf(f, "%s\"%s\"", m ? "," : "", sc->models[m]);
+        fprintf(f, "%s\"%s\"", m ? "," : "", sc->models[m].name);
     fprintf(f, "],\n\"theta\":[");
     for (k = 0; k < VIEWER_ANGLES; k++)
         fprintf(f, "%s%.6g", k ? "," : "", 90.0 * k / (VIEWER_ANGLES - 1));
@@ -186,7 +175,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
         fprintf(f, "%s[", i ? "," : "");
         for (m = 0; m < sc->model_count; m++) {
             scene_model sm;
-            if (scene_model_prepare(sc->models[m], scene_lut_spacing(sc), l->spectra[i], g, &l->params[i], &sm))
+            if (scene_model_prepare(&sc->models[m], sc->spacing, l->spectra[i], g, &l->params[i], &sm))
                 return CLI_BAD_INPUT;
             fprintf(f, "%s[", m ? "," : "");
             for (k = 0; k < VIEWER_ANGLES; k++) {
@@ -214,7 +203,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
             double mean, rms, max, raw_mean, raw_max;
             scene_model sm;
             int a;
-            if (scene_model_prepare(sc->models[m], scene_lut_spacing(sc), l->spectra[i], g, &l->params[i], &sm))
+            if (scene_model_prepare(&sc->models[m], sc->spacing, l->spectra[i], g, &l->params[i], &sm))
                 return CLI_BAD_INPUT;
             for (a = 0; a < REPORT_ANGLES; a++) {
                 float rgb[3];
@@ -269,7 +258,7 @@ static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene, con
         fwrite(p, 1, (size_t)(slot - p), f);
         len = (size_t)(end - slot - 2);
         if (len == 5 && !strncmp(slot + 2, "TITLE", len))
-            fprintf(f, "Fresnel viewer: scene %s, %s, gamut %s", l->name, l->sc->space, l->sc->gamut);
+            fprintf(f, "Fresnel viewer: scene %s, %s, gamut %s", l->name, l->sc->space, gamut_policy_names[l->sc->gamut]);
         else if (len == 9 && !strncmp(slot + 2, "GLSL_PORT", len))
             fputs((const char *)viewer_glsl_port, f);
         else if (len == 10 && !strncmp(slot + 2, "GLSL_SCENE", len))
@@ -303,7 +292,7 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
         status = cli_oom(WHERE);
         goto done;
     }
-    for (m = 0; m < l.sc->model_count && !scene_model_lut_size(l.sc->models[m], NULL); m++)
+    for (m = 0; m < l.sc->model_count && !l.sc->models[m].lut_n; m++)
         ;
     status = emit_glsl(mem, m < l.sc->model_count ? tex_mem : NULL, &l.in); /* a texture only with tables */
     if ((fclose(mem) | fclose(tex_mem)) && !status)
