@@ -19,10 +19,11 @@
  * at the runtime's own position.
  *
  * With SCENE (the manifest the header was generated from), also the
- * header against the report (scene_mode below).
+ * header against the report (scene_mode below); with SCENE CURVE_CSV
+ * MATERIAL TYPE instead, against `fresnel curve --type TYPE` (curve_mode).
  *
- * usage: gen_matrix_check HEADER SPACING LABEL [SCENE]   (SPACING grazing,
- * uniform or grazing-pl) */
+ * usage: gen_matrix_check HEADER SPACING LABEL [SCENE [CURVE_CSV MATERIAL
+ * TYPE]]   (SPACING grazing, uniform or grazing-pl) */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -112,15 +113,17 @@ static void note(worst *w, double err, double bound, const char *table, int32_t 
 /* ---- SCENE mode: the header against what `fresnel report` (and `curve`,
  * the viewer) evaluate for the same scene. Each material is derived and
  * each model prepared as the report prepares it (scene_model_prepare), then
- * evaluated by the report's own per-type evaluator
- * (report_types); the header's constants and tables are evaluated through
- * the runtime as a program that includes it would. Both must give the same
- * number at every cosine code. Each Q15 LUT is also held, through the
+ * evaluated by the report's own per-type evaluator (the number type
+ * registry's eval, which `fresnel curve` calls too); the header's constants
+ * and tables are evaluated through the runtime as a program that includes
+ * it would. Both must give the same number at each cosine code of
+ * scene_mode's grid, in every number type of the scene. Each Q15 LUT is also held, through the
  * report's evaluator, to the same interpolation in double of its fitted
  * double nodes (the encoder's input), within the runtime's documented
  * bound plus what rounding the nodes to codes adds (the bounds above), the
  * double held to [0, 1] (residual) or [0, max(one, the nodes)] (curve) as
- * the runtime holds its result. */
+ * the runtime holds its result; a binary16 LUT's distance from its own
+ * binary16 nodes in double is printed beside fresnel_f16.h's bound. */
 
 static fresnel_rgb hdr_rgb(const hc_decl *d)
 {
@@ -169,13 +172,73 @@ static const hc_decl *need(hdr_model *m, const char *suffix)
     return d;
 }
 
-/* The header's model `name` at cosine code c in binary32 (q15 0) or Q1.15
- * (q15 1, codes / 32768), through the runtime function the header's
- * comments name; -1 when the checker knows no such model (then the test
- * must learn it) or a constant is missing. */
-static int hdr_eval(hdr_model *m, const char *model, const scene_model *sm, int q15, int32_t c, double out[3])
+#if FRESNEL_HAS_F16
+/* Channel ch of a binary16 model of the header at the binary16 cosine c,
+ * through the scalar function its comments name; -1 as hdr_eval. */
+static int hdr_eval_f16(hdr_model *m, const char *model, const scene_model *sm, const char *id, int ch, fresnel_f16 c,
+                        double *out)
 {
-    float cf = (float)c / 32768.0f;
+    const hc_decl *d, *e, *a, *b;
+    char name[96];
+#define HV(decl) ((fresnel_f16)(float)(decl)->v[ch])
+    if (sm->lut.n) {
+        static fresnel_f16 t[256];
+        int n = sm->lut.n, i, uniform = sm->lut.spacing == LUT_UNIFORM;
+        snprintf(name, sizeof name, "%s_f16", id);
+        if (!(d = need(m, name)) || d->count != 3 * n)
+            return -1;
+        for (i = 0; i < n; i++)
+            t[i] = (fresnel_f16)(float)d->v[ch * n + i];
+        if (sm->lut.form == LUT_RESIDUAL) {
+            if (!(e = need(m, "f0_f16")))
+                return -1;
+            *out = (double)(uniform ? fresnel_lut_linear_residual_f16(HV(e), t, n, c)
+                                    : fresnel_lut_residual_f16(HV(e), t, n, c));
+        } else
+            *out = (double)(sm->lut.form == LUT_CUBIC ? fresnel_lut_cubic_f16(t, n, c)
+                                                     : (uniform ? fresnel_lut_linear_f16(t, n, c) : fresnel_lut_f16(t, n, c)));
+    } else if (!strcmp(model, "schlick") && (d = need(m, "f0_f16")))
+        *out = (double)fresnel_schlick_f16(HV(d), c);
+    else if (!strcmp(model, "f82") && (d = need(m, "f0_f16")) && (e = need(m, "f82_f16")))
+        *out = (double)fresnel_f82_f16(HV(d), HV(e), c);
+    else if (!strcmp(model, "gulbrandsen") && (d = need(m, "gulbrandsen_r_f16")) && (e = need(m, "gulbrandsen_g_f16")))
+        *out = (double)fresnel_gulbrandsen_f16(HV(d), HV(e), c);
+    else if (!strcmp(model, "cook-torrance") && (d = need(m, "f0_f16")) && (a = need(m, "ct_eta_f16")) &&
+             (b = need(m, "ct_kappa_f16")))
+        *out = (double)fresnel_cook_torrance_f16(HV(d), (fresnel_f16)(float)a->v[0], (fresnel_f16)(float)b->v[0], c);
+    else if (!strcmp(model, "lsk") && (d = need(m, "eta_f16")) && (e = need(m, "kappa_f16")))
+        *out = (double)fresnel_lsk_f16(HV(d), HV(e), c);
+    else if (!strcmp(model, "lsk-comp") && (d = need(m, "eta_f16")) && (e = need(m, "kappa_f16")) &&
+             (a = need(m, "lsk_a_f16")) && (b = need(m, "lsk_alpha_f16")))
+        *out = (double)fresnel_lsk_comp_f16(HV(d), HV(e), HV(a), HV(b), c);
+    else if (!strcmp(model, "approx-conductor") && (d = need(m, "eta_f16")) && (e = need(m, "kappa_f16")))
+        *out = (double)fresnel_approx_conductor_f16(HV(d), HV(e), c);
+    else if (!strcmp(model, "exact") || !strcmp(model, "exact-gaussian") || !strcmp(model, "exact-point")) {
+        const char *suffix = !strcmp(model, "exact") ? "" : (!strcmp(model, "exact-point") ? "_point" : "_gaussian");
+        char kname[64];
+        snprintf(name, sizeof name, "eta%s_f16", suffix);
+        snprintf(kname, sizeof kname, "kappa%s_f16", suffix);
+        if (!(d = need(m, name)) || !(e = need(m, kname)))
+            return -1;
+        *out = (double)fresnel_conductor_f16(HV(d), HV(e), c);
+    } else
+        return -1;
+#undef HV
+    return m->missing ? -1 : 0;
+}
+#endif
+
+/* The header's model `name` at cosine x in number type `type` (x converted
+ * to the type: rounded to binary32 or binary16, Q1.15 code round(x
+ * 32768); results as doubles, Q1.15 codes / 32768), through the runtime
+ * function the header's comments name; -1 when the checker knows no such
+ * model (then the test must learn it) or a constant is missing. */
+static int hdr_eval(hdr_model *m, const char *model, const scene_model *sm, number_type_id type, double x,
+                    double out[3])
+{
+    int q15 = type == TYPE_Q15;
+    int32_t c = (int32_t)lround(x * 32768.0);
+    float cf = (float)x;
     fresnel_rgb r = {0.0f, 0.0f, 0.0f};
     fresnel_rgb_q15 o = {0, 0, 0};
     const hc_decl *d, *e, *f0;
@@ -184,6 +247,17 @@ static int hdr_eval(hdr_model *m, const char *model, const scene_model *sm, int 
     for (i = 0; model[i] && i < 63; i++)
         id[i] = model[i] == '-' ? '_' : model[i];
     id[i] = '\0';
+    if (type == TYPE_F16) {
+#if FRESNEL_HAS_F16
+        int ch;
+        for (ch = 0; ch < 3; ch++)
+            if (hdr_eval_f16(m, model, sm, id, ch, (fresnel_f16)x, &out[ch]))
+                return -1;
+        return 0;
+#else
+        return -1;
+#endif
+    }
     if (sm->lut.n) {
         static uint16_t u16[3 * 256];
         static int16_t s16[3 * 256];
@@ -297,24 +371,39 @@ static int hdr_eval(hdr_model *m, const char *model, const scene_model *sm, int 
 /* The interpolation the runtime documents its Q15 bound against, in double
  * on the encoder's double nodes, at the double position of c (at the
  * runtime's own 15-bit position for grazing-pl): Q1.15 LSB. */
-static double own_double(const scene_model *sm, const material_params *p, int ch, int32_t c)
+/* top: max(one, the channel's nodes), a curve's upper clamp */
+static double own_double(const scene_model *sm, const material_params *p, int ch, int32_t c, double top)
 {
     const double *t = sm->lut.nodes + ch * sm->lut.n;
-    double x = c / 32768.0, v, top = 1.0;
+    double x = c / 32768.0, v;
     if (sm->lut.spacing == LUT_GRAZING_PL)
         return pl_ref_d(t, sm->lut.n, c) * 32768.0;
-    int i;
     v = ref_lut(t, sm->lut.n, sm->lut.form == LUT_CUBIC, sm->lut.spacing == LUT_UNIFORM ? x : sqrt(x));
     if (sm->lut.form == LUT_RESIDUAL)
         return fmin(fmax(v + ref_schlick(p->f0[ch], x), 0.0), 1.0) * 32768.0;
-    for (i = 0; i < sm->lut.n; i++) /* a curve is held to [0, max(one, its nodes)] */
-        top = fmax(top, t[i]);
     return fmin(fmax(v, 0.0), top) * 32768.0;
 }
 
-/* Every material and model of the scene at every cosine code below 2048
- * and every 4th above: the report's figure against the header's, in each
- * number type the header holds and the report measures. */
+#if FRESNEL_HAS_F16
+/* The same for a binary16 table: the interpolation in double of its own
+ * binary16 nodes (and F0) at the binary16 cosine, the reference
+ * fresnel_f16.h's bounds are measured against. */
+static double own_double_f16(const scene_model *sm, const double *t16, int ch, int32_t c, double top)
+{
+    double x = (double)(fresnel_f16)(c / 32768.0), v;
+    int n = sm->lut.n;
+    const double *t = t16 + ch * n;
+    v = ref_lut(t, n, sm->lut.form == LUT_CUBIC, sm->lut.spacing == LUT_UNIFORM ? x : sqrt(x));
+    if (sm->lut.form == LUT_RESIDUAL)
+        return fmin(fmax(v + ref_schlick((double)sm->mat.h_f0[ch], x), 0.0), 1.0);
+    return fmin(fmax(v, 0.0), top);
+}
+#endif
+
+/* Every material and model of the scene at every cosine code below 256,
+ * every 4th below 2048 and every 16th above (several per segment of the
+ * finest table): the report's figure against the header's, in each number
+ * type the header holds and the report measures. */
 static int scene_mode(const char *scene_path, const char *label)
 {
     scene sc;
@@ -322,9 +411,13 @@ static int scene_mode(const char *scene_path, const char *label)
     spectrum *s = malloc(sizeof *s);
     char scene_name[SCENE_PREFIX_SIZE];
     int i, m, t, ch, fails = 0;
-    long compared = 0, luts = 0;
-    double lut_excess = -1e9, lut_err = 0.0, lut_bound = 0.0;
-    char lut_where[200] = "";
+    long compared = 0, luts = 0, luts16 = 0;
+    double lut_excess = -1e9, lut_err = 0.0, lut_bound = 0.0, h_excess = -1e9, h_err = 0.0, h_bound = 0.0;
+    char lut_where[200] = "", h_where[200] = "";
+#if FRESNEL_HAS_F16
+    static double nodes16[3 * 256];
+#endif
+    double top[3], top16[3];
     if (!g || !s || scene_load(scene_path, &sc) || gen_context_load(data_dir(NULL), sc.space, g)) {
         printf("FAIL gen matrix %s: cannot load the scene %s\n", label, scene_path);
         free(g);
@@ -358,16 +451,29 @@ static int scene_mode(const char *scene_path, const char *label)
                 break;
             }
             rp = scene_model_rgb(&sm);
-            for (t = 0; t < report_type_count && !fails; t++) {
-                int q15 = !strcmp(report_types[t].name, "q15");
+            {
+                int k;
+                for (ch = 0; ch < 3; ch++) {
+                    top[ch] = top16[ch] = 1.0;
+                    for (k = 0; k < sm.lut.n; k++) {
+                        top[ch] = fmax(top[ch], sm.lut.nodes[ch * sm.lut.n + k]);
+#if FRESNEL_HAS_F16
+                        nodes16[ch * sm.lut.n + k] = (double)sm.lut.f16[ch * sm.lut.n + k];
+                        top16[ch] = fmax(top16[ch], nodes16[ch * sm.lut.n + k]);
+#endif
+                    }
+                }
+            }
+            for (t = 0; t < number_types_available && !fails; t++) {
+                int q15 = number_types[t].id == TYPE_Q15;
                 int32_t c;
-                if (!scene_has_type(&sc, report_types[t].name))
+                if (!scene_has_type(&sc, number_types[t].id))
                     continue;
-                for (c = 0; c <= 32768 && !fails; c += c < 2048 ? 1 : 4) {
+                for (c = 0; c <= 32768 && !fails; c += c < 256 ? 1 : (c < 2048 ? 4 : 16)) {
                     double got[3], want[3];
-                    if (hdr_eval(&hm, sc.models[m].name, &sm, q15, c, want)) {
+                    if (hdr_eval(&hm, sc.models[m].name, &sm, number_types[t].id, c / 32768.0, want)) {
                         printf("FAIL gen matrix %s: %s %s %s: %s\n", label, sc.materials[i], sc.models[m].name,
-                               report_types[t].name,
+                               number_types[t].name,
                                hm.missing ? "missing from the header" : "a model the checker cannot evaluate");
                         if (hm.missing)
                             printf("    (%s)\n", hm.what);
@@ -377,18 +483,36 @@ static int scene_mode(const char *scene_path, const char *label)
                     if (sm.lut.spacing == LUT_GRAZING_PL) { /* the report measures no grazing-pl scene */
                         memcpy(got, want, sizeof got);
                     } else {
-                        report_types[t].eval(&rp, c / 32768.0, got);
+                        number_types[t].eval(&rp, c / 32768.0, got);
                         compared++;
                     }
                     for (ch = 0; ch < 3; ch++)
                         if (got[ch] != want[ch]) {
                             printf("FAIL gen matrix %s: %s %s %s at c = %ld/32768: the report evaluates %.9g, "
                                    "the header %.9g (channel %d)\n",
-                                   label, sc.materials[i], sc.models[m].name, report_types[t].name, (long)c, got[ch],
+                                   label, sc.materials[i], sc.models[m].name, number_types[t].name, (long)c, got[ch],
                                    want[ch], ch);
                             fails++;
                             break;
                         }
+#if FRESNEL_HAS_F16
+                    if (number_types[t].id == TYPE_F16 && sm.lut.n && !fails) {
+                        /* the cubic's bound holds on reflectance curves; tables across a
+                         * total-reflection edge (a dielectric seen from the denser side) have
+                         * FRESNEL_BOUND_LUT_F16 */
+                        int tir = p.eta_fit[0] < 1.0 || p.eta_fit[1] < 1.0 || p.eta_fit[2] < 1.0;
+                        double bound = sm.lut.form == LUT_CUBIC && !tir ? FRESNEL_BOUND_LUT_CUBIC_F16
+                                                                        : FRESNEL_BOUND_LUT_F16;
+                        for (ch = 0; ch < 3; ch++) {
+                            double err = fabs(got[ch] - own_double_f16(&sm, nodes16, ch, c, top16[ch]));
+                            if (err - bound > h_excess) {
+                                h_excess = err - bound, h_err = err, h_bound = bound;
+                                snprintf(h_where, sizeof h_where, "%s %s c=%ld", sc.materials[i], sc.models[m].name,
+                                         (long)c);
+                            }
+                        }
+                    }
+#endif
                     if (q15 && sm.lut.n && !fails) {
                         const hc_decl *frac = NULL;
                         double bound = sm.lut.form == LUT_CUBIC ? FRESNEL_BOUND_LUT_CUBIC_Q15 + 0.625
@@ -406,7 +530,7 @@ static int scene_mode(const char *scene_path, const char *label)
                             bound += 0.5 + ldexp(1.0, 14 - (frac ? (int)frac->v[0] : 14));
                         }
                         for (ch = 0; ch < 3; ch++) {
-                            double err = fabs(got[ch] * 32768.0 - own_double(&sm, &p, ch, c));
+                            double err = fabs(got[ch] * 32768.0 - own_double(&sm, &p, ch, c, top[ch]));
                             if (err - bound > lut_excess) {
                                 lut_excess = err - bound, lut_err = err, lut_bound = bound;
                                 snprintf(lut_where, sizeof lut_where, "%s %s c=%ld", sc.materials[i], sc.models[m].name,
@@ -417,6 +541,8 @@ static int scene_mode(const char *scene_path, const char *label)
                 }
                 if (q15 && sm.lut.n)
                     luts++;
+                if (number_types[t].id == TYPE_F16 && sm.lut.n)
+                    luts16++;
             }
             scene_model_free(&sm);
         }
@@ -432,8 +558,90 @@ static int scene_mode(const char *scene_path, const char *label)
                "(bound %.4f) at %s\n",
                lut_excess > 0.0 ? "FAIL" : "PASS", label, luts, lut_err, lut_bound, lut_where);
     }
+    if (luts16 && !fails)
+        printf("NOTE gen matrix %s: %ld binary16 LUT rows against their own binary16 nodes in double: worst %.3g "
+               "(fresnel_f16.h's bound %.3g%s) at %s\n",
+               label, luts16, h_err, h_bound, h_excess > 0.0 ? ", exceeded" : "", h_where);
     free(g);
     free(s);
+    return fails;
+}
+
+/* CURVE mode: `fresnel curve --type TYPE` of one material of the scene
+ * (its CSV), every model column against the header at the same cosines
+ * (curve's: theta = 90 r / (rows - 1) degrees), the same %.9g text. */
+static int curve_mode(const char *scene_path, const char *csv_path, const char *material, const char *type_name,
+                      const char *label)
+{
+    scene sc;
+    const number_type *type = number_type_find(type_name);
+    char *csv = read_all(csv_path), *line, *save = NULL, scene_name[SCENE_PREFIX_SIZE];
+    int rows = 0, r, m, ch, fails = 0;
+    long compared = 0;
+    hdr_model hm;
+    if (!csv || !type || scene_load(scene_path, &sc)) {
+        printf("FAIL gen matrix %s: cannot read %s, type %s or the scene\n", label, csv_path, type_name);
+        free(csv);
+        return 1;
+    }
+    for (line = csv; *line; line++)
+        rows += *line == '\n';
+    rows--; /* the column names */
+    if (sc.name[0])
+        snprintf(scene_name, sizeof scene_name, "%s", sc.name);
+    else
+        scene_name_from_path(scene_path, scene_name);
+    memset(&hm, 0, sizeof hm);
+    hm.h = &hh;
+    snprintf(hm.prefix, sizeof hm.prefix, "fresnel_%s_%s", scene_name, material);
+    line = strtok_r(csv, "\n", &save); /* column names: 8, then 3 per model in the scene's order */
+    for (r = 0; r < rows && !fails && (line = strtok_r(NULL, "\n", &save)); r++) {
+        double theta = 90.0 * r / (rows - 1), c = r == rows - 1 ? 0.0 : cos(theta * (3.14159265358979323846 / 180.0));
+        char *field[8 + 3 * SCENE_MAX_MODELS], *p = line;
+        int nf = 0;
+        while (p && nf < (int)(sizeof field / sizeof field[0])) {
+            field[nf++] = p;
+            if ((p = strchr(p, ',')))
+                *p++ = '\0';
+        }
+        if (nf != 8 + 3 * sc.model_count) {
+            printf("FAIL gen matrix %s: %s row %d has %d columns, expected %d\n", label, csv_path, r, nf,
+                   8 + 3 * sc.model_count);
+            fails++;
+            break;
+        }
+        for (m = 0; m < sc.model_count && !fails; m++) {
+            scene_model sm;
+            double want[3];
+            memset(&sm, 0, sizeof sm);
+            sm.lut.n = sc.models[m].lut_n;
+            sm.lut.form = sc.models[m].row->form;
+            sm.lut.spacing = sc.spacing;
+            if (hdr_eval(&hm, sc.models[m].name, &sm, type->id, c, want)) {
+                printf("FAIL gen matrix %s: %s %s: not in the header or not known to the checker\n", label,
+                       sc.models[m].name, type->name);
+                fails++;
+                break;
+            }
+            for (ch = 0; ch < 3; ch++) {
+                char text[40];
+                snprintf(text, sizeof text, "%.9g", want[ch]);
+                compared++;
+                if (strcmp(text, field[8 + 3 * m + ch])) {
+                    printf("FAIL gen matrix %s: fresnel curve --type %s prints %s for %s %s at theta %g, the header "
+                           "%s (channel %d)\n",
+                           label, type->name, field[8 + 3 * m + ch], material, sc.models[m].name, theta, text, ch);
+                    fails++;
+                    break;
+                }
+            }
+        }
+    }
+    if (!fails)
+        printf("PASS gen matrix %s: fresnel curve --type %s prints what the header computes for %s (%ld values, %d "
+               "models)\n",
+               label, type->name, material, compared, sc.model_count);
+    free(csv);
     return fails;
 }
 
@@ -444,8 +652,8 @@ int main(int argc, char **argv)
     int i, uniform, pl, fails = 0;
     worst w[4]; /* linear, residual, cubic, pl */
     static const char *const form_name[4] = {"linear", "residual", "cubic", "grazing-pl"};
-    if (argc != 4 && argc != 5) {
-        fprintf(stderr, "usage: gen_matrix_check HEADER SPACING LABEL [SCENE]\n");
+    if (argc != 4 && argc != 5 && argc != 8) {
+        fprintf(stderr, "usage: gen_matrix_check HEADER SPACING LABEL [SCENE [CURVE_CSV MATERIAL TYPE]]\n");
         return 2;
     }
     spacing = argv[2];
@@ -568,6 +776,8 @@ int main(int argc, char **argv)
     }
     if (argc == 5)
         fails += scene_mode(argv[4], label);
+    if (argc == 8)
+        fails += curve_mode(argv[4], argv[5], argv[6], argv[7], label);
     hc_free(&hh);
     free(text);
     return fails != 0;

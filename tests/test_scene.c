@@ -135,7 +135,7 @@ static void test_full_manifest(void)
     CHECK("scene full: space", !strcmp(s.space, "display-p3"), "'%s'", s.space);
     CHECK("scene full: sigma", s.sigma == 12.5, "%g", s.sigma);
     CHECK("scene full: n1", s.n1 == 1.33, "%g", s.n1);
-    CHECK("scene full: types", s.type_count == 1 && !strcmp(s.types[0], "f32"), "count %d",
+    CHECK("scene full: types", s.type_count == 1 && s.types[0]->id == TYPE_F32, "count %d",
           s.type_count);
     CHECK("scene full: lut_spacing", s.spacing == LUT_UNIFORM, "%d", (int)s.spacing);
     CHECK("scene full: key lines",
@@ -158,7 +158,7 @@ static void test_defaults(void)
         return;
     CHECK("scene defaults: values",
           !strcmp(s.space, "srgb") && s.sigma == 25.0 && s.n1 == 1.0 && s.type_count == 1 &&
-              !strcmp(s.types[0], "f32") && s.spacing == LUT_GRAZING && s.gamut == GAMUT_MAP,
+              s.types[0]->id == TYPE_F32 && s.spacing == LUT_GRAZING && s.gamut == GAMUT_MAP,
           "space %s sigma %g n1 %g types %d lut_spacing %d gamut %d", s.space, s.sigma, s.n1,
           s.type_count, (int)s.spacing, (int)s.gamut);
     CHECK("scene defaults: lines 0 where defaulted, set where given",
@@ -193,6 +193,15 @@ static void test_accepted_values(void)
     ok = load_capturing(write_manifest("materials = a\nmodels = exact\nlut_spacing = grazing\n"),
                         &s) == 0 && s.spacing == LUT_GRAZING;
     CHECK("scene lut_spacing grazing accepted", ok, "%s", last_message);
+    ok = load_capturing(write_manifest("materials = a\nmodels = exact\ntypes = fixed f32\n"), &s) == 0 &&
+         s.type_count == 2 && s.types[0] == &number_types[TYPE_Q15] && s.types[1] == &number_types[TYPE_F32];
+    CHECK("scene types: rows of the number type registry in file order, fixed the older name of q15", ok, "%s",
+          last_message);
+    ok = load_capturing(write_manifest("materials = a\nmodels = exact\ntypes = f16\n"), &s) == 0;
+    CHECK("scene types = f16 accepted where the build has _Float16, refused with a reason where not",
+          FRESNEL_HAS_F16 ? ok && s.type_count == 1 && s.types[0]->id == TYPE_F16
+                          : !ok && strstr(last_message, "_Float16") != NULL,
+          "%s", last_message);
 
     used = (size_t)snprintf(text, sizeof text, "models = exact\nmaterials =");
     for (i = 0; i < SCENE_MAX_MATERIALS; i++)

@@ -195,34 +195,20 @@ static void emit_lsk3(fx_out *o, const char *prefix, const char *name, const mat
     }
 }
 
-static int emit_lut_q15(fx_out *o, const char *prefix, const scene_entry *e, int mi)
+static void emit_lut_q15(fx_out *o, const char *prefix, const scene_entry *e, const encoded_lut *t)
 {
     FILE *f = o->f;
     lut_spacing spacing = o->in->sc->spacing;
     const char *model = e->name, *name = e->ident;
-    int n, i;
-    encoded_lut t;
+    int n = t->n, i;
     char id[160];
-    if (emit_lut_encode(o->in, e, mi, &t))
-        return cli_oom("fresnel gen");
-    n = t.n;
     snprintf(id, sizeof id, "%s_%s_q15", prefix, name);
-    if (t.bad >= 0) { /* a node no code holds: reported, nothing written */
-        double v = t.nodes[t.bad];
-        fx_finite(o, v, "a LUT node", id);
-        if (t.form == LUT_RESIDUAL)
-            fx_check(o, v, -2.0, 32767.0 / 16384.0, "int16_t at 14 fraction bits", "a residual LUT node", id);
-        else
-            fx_check(o, v, 0.0, 65535.0 / 32768.0, "Q1.15 [0, 2)", "a LUT node", id);
-        encoded_lut_free(&t);
-        return 0;
-    }
-    if (t.form == LUT_RESIDUAL)
+    if (t->form == LUT_RESIDUAL)
         fprintf(f, "/* %s in Q1.15: residual (GT - Schlick(F0)) * 2^%d as int16. Evaluate with\n"
                    " * fresnel_lut_%sresidual_s16_q15_rgb(f0_q15, table, %d, %s_%s_frac, c). */\n"
                    "enum { %s_%s_frac = %d };\n"
                    "static const int16_t %s[%d] FRESNEL_GEN_UNUSED = {",
-                model, t.frac, spacing == LUT_UNIFORM ? "linear_" : "", n, prefix, name, prefix, name, t.frac, id,
+                model, t->frac, spacing == LUT_UNIFORM ? "linear_" : "", n, prefix, name, prefix, name, t->frac, id,
                 3 * n);
     else if (spacing == LUT_GRAZING_PL)
         fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_fixed_fast.h's\n"
@@ -234,16 +220,14 @@ static int emit_lut_q15(fx_out *o, const char *prefix, const scene_entry *e, int
         fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1). Evaluate with\n"
                    " * fresnel_lut_%su16_q15_rgb(table, %d, c). */\n"
                    "static const uint16_t %s[%d] FRESNEL_GEN_UNUSED = {",
-                model, t.form == LUT_CUBIC ? "cubic_" : (spacing == LUT_UNIFORM ? "linear_" : ""), n, id, 3 * n);
+                model, t->form == LUT_CUBIC ? "cubic_" : (spacing == LUT_UNIFORM ? "linear_" : ""), n, id, 3 * n);
     for (i = 0; i < 3 * n; i++)
-        fprintf(f, "%s%ld%s", i % 12 == 0 ? "\n    " : " ", t.form == LUT_RESIDUAL ? (long)t.q15_res[i] : (long)t.q15[i],
+        fprintf(f, "%s%ld%s", i % 12 == 0 ? "\n    " : " ", t->form == LUT_RESIDUAL ? (long)t->q15_res[i] : (long)t->q15[i],
                 i + 1 < 3 * n ? "," : "");
     fprintf(f, "\n};\n");
-    encoded_lut_free(&t);
-    return 0;
 }
 
-int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefix)
+int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefix, const encoded_lut *luts)
 {
     const scene *sc = in->sc;
     const material_params *p = &in->params[mi];
@@ -304,7 +288,7 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
         fputs(";\n", f);
     }
     for (m = 0; m < sc->model_count && !o.bad; m++)
-        if (sc->models[m].lut_n && emit_lut_q15(&o, prefix, &sc->models[m], mi))
-            return CLI_BAD_INPUT;
+        if (luts[m].n)
+            emit_lut_q15(&o, prefix, &sc->models[m], &luts[m]);
     return o.bad ? CLI_BAD_INPUT : 0;
 }

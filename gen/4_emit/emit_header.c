@@ -13,73 +13,52 @@
 #include "4_emit/emit.h"
 #include "scene/scene.h"
 
-/* A binary32 literal that reads back to the same float: 9 significant
- * digits, always with a '.' or an exponent, and the 'f' suffix. (GLSL:
- * emit_glsl.c.) */
-static void put_float(FILE *f, double v)
-{
-    char buf[40];
-    snprintf(buf, sizeof buf, "%.9g", (double)(float)v);
-    fputs(buf, f);
-    if (!strpbrk(buf, ".e"))
-        fputs(".0", f);
-    fputc('f', f);
-}
-
 static void emit_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
 {
     fprintf(f, "/* %s */\nstatic const fresnel_rgb %s_%s FRESNEL_GEN_UNUSED = {", why, prefix, name);
-    put_float(f, v[0]);
+    emit_c_float(f, v[0]);
     fputs(", ", f);
-    put_float(f, v[1]);
+    emit_c_float(f, v[1]);
     fputs(", ", f);
-    put_float(f, v[2]);
+    emit_c_float(f, v[2]);
     fputs("};\n", f);
 }
 
 static void emit_float(FILE *f, const char *prefix, const char *name, double v, const char *why)
 {
     fprintf(f, "/* %s */\nstatic const float %s_%s FRESNEL_GEN_UNUSED = ", why, prefix, name);
-    put_float(f, v);
+    emit_c_float(f, v);
     fputs(";\n", f);
 }
 
-static int emit_lut(FILE *f, const emit_input *in, const char *prefix, const scene_entry *e, int mi)
+static void emit_lut(FILE *f, const emit_input *in, const char *prefix, const scene_entry *e, const encoded_lut *t)
 {
-    int n, i, residual;
-    lut_form form;
+    int n = t->n, i, residual = t->form == LUT_RESIDUAL;
     lut_spacing spacing = in->sc->spacing;
-    encoded_lut t;
-    const char *suffix, *model = e->name;
-    if (emit_lut_encode(in, e, mi, &t))
-        return cli_oom("fresnel gen");
-    n = t.n;
-    form = t.form;
-    suffix = form == LUT_RESIDUAL ? "_residual" : (form == LUT_CUBIC ? "_cubic" : "");
-    if (t.bad >= 0) {
-        char where[1100];
-        snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->models_line);
-        cli_error(where, "%s: %s node %d is %g, outside what the header's types hold; no header written", prefix,
-                  model, t.bad, t.nodes[t.bad]);
-        encoded_lut_free(&t);
-        return CLI_BAD_INPUT;
-    }
-    residual = form == LUT_RESIDUAL;
+    const char *suffix = residual ? "_residual" : (t->form == LUT_CUBIC ? "_cubic" : "");
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
                " * fitted to the ground truth through %s interpolation.\n",
-            model, n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
-            form == LUT_CUBIC ? "Catmull-Rom" : "linear");
+            e->name, n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
+            t->form == LUT_CUBIC ? "Catmull-Rom" : "linear");
     fprintf(f, " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n", spacing == LUT_UNIFORM ? "lut_linear" : "lut",
             suffix, residual ? "f0, " : "", n);
     fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, e->ident, 3 * n);
     for (i = 0; i < 3 * n; i++) {
         fputs(i % 6 == 0 ? "\n    " : " ", f);
-        put_float(f, t.f32[i]);
+        emit_c_float(f, t->f32[i]);
         if (i + 1 < 3 * n)
             fputc(',', f);
     }
     fprintf(f, "\n};\n");
-    encoded_lut_free(&t);
+}
+
+int emit_f32_material(FILE *f, const emit_input *in, int mi, const char *prefix, const encoded_lut *luts)
+{
+    int m;
+    emit_material_params(f, in->sc, &in->enc[mi], prefix, emit_rgb, emit_float);
+    for (m = 0; m < in->sc->model_count; m++)
+        if (luts[m].n)
+            emit_lut(f, in, prefix, &in->sc->models[m], &luts[m]);
     return 0;
 }
 
@@ -108,58 +87,6 @@ static int params_fit_float(const emit_input *in, const material_params *p)
                                  p->info.id, all[i].what, all[i].v[ch]);
             }
     return 0;
-}
-
-/* A binary32 triple as the back ends' double[3]. */
-static const double *d3(fresnel_rgb v, double out[3])
-{
-    out[0] = v.r;
-    out[1] = v.g;
-    out[2] = v.b;
-    return out;
-}
-
-/* One material's floating-point parameters, those its scene's models need:
- * the same list in C and GLSL, each back end giving its own syntax. */
-void emit_material_params(FILE *f, const scene *sc, const encoded_material *e, const char *prefix, emit_rgb_fn rgb,
-                          emit_float_fn flt)
-{
-    unsigned reads = scene_reads(sc, 0);
-    double v[3];
-    if (reads & MP_F0)
-        rgb(f, prefix, "f0", d3(e->f0, v), "F0: ground truth at normal incidence");
-    if (sc->f_avg)
-        rgb(f, prefix, "f_avg", d3(e->f_avg, v),
-            "F_avg: 2 int F(mu) mu dmu of the ground truth (multiple-scattering albedo)");
-    if (reads & MP_F82)
-        rgb(f, prefix, "f82", d3(e->f82, v), "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
-    if (reads & MP_ETA_FIT) {
-        rgb(f, prefix, "eta", d3(e->eta[ETA_FIT], v), "eta fitted to the ground truth (exact, lsk, approx-conductor)");
-        rgb(f, prefix, "kappa", d3(e->kappa[ETA_FIT], v), "kappa fitted to the ground truth");
-    }
-    if (reads & MP_LSK) {
-        rgb(f, prefix, "lsk_a", d3(e->lsk_a, v), "LSK compensation weight a (fresnel_lsk_comp_rgb)");
-        rgb(f, prefix, "lsk_alpha", d3(e->lsk_alpha, v), "LSK compensation exponent alpha");
-    }
-    if (reads & MP_ETA_GAUSS) {
-        rgb(f, prefix, "eta_gaussian", d3(e->eta[ETA_GAUSS], v),
-            "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
-        rgb(f, prefix, "kappa_gaussian", d3(e->kappa[ETA_GAUSS], v), "Metzgar: kappa' in a Gaussian window");
-    }
-    if (reads & MP_ETA_POINT) {
-        rgb(f, prefix, "eta_point", d3(e->eta[ETA_POINT], v),
-            "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
-        rgb(f, prefix, "kappa_point", d3(e->kappa[ETA_POINT], v), "kappa point-sampled at the dominant wavelengths");
-    }
-    if (reads & MP_GULB) {
-        rgb(f, prefix, "gulbrandsen_r", d3(e->gulb_r, v), "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
-        rgb(f, prefix, "gulbrandsen_g", d3(e->gulb_g, v), "Gulbrandsen edge tint g from F0 and the fitted eta");
-    }
-    if (reads & MP_CT) {
-        flt(f, prefix, "ct_eta", e->ct_eta,
-            "Cook-Torrance representative IOR at the green wavelength (fresnel_cook_torrance_rgb)");
-        flt(f, prefix, "ct_kappa", e->ct_kappa, "Cook-Torrance representative kappa");
-    }
 }
 
 /* The ground truth's definition and the scene's gamut policy, for the C and
@@ -198,12 +125,52 @@ void emit_licence_comment(FILE *f)
                " * see data/SOURCES.md; this generated header may be used under the project's MIT licence.\n");
 }
 
+/* Each number type's back end, in the order a material's constants are
+ * written; every row of the number type registry has one. */
+static const struct {
+    number_type_id type;
+    emit_type_fn emit;
+} emit_types[] = {{TYPE_Q15, emit_fixed_material}, {TYPE_F32, emit_f32_material}, {TYPE_F16, emit_f16_material}};
+typedef char emit_types_cover_the_registry[sizeof emit_types / sizeof emit_types[0] == NUMBER_TYPES ? 1 : -1];
+
+/* Every LUT of material i, encoded once for all its types (luts[m].n 0 for
+ * the other models): 0, or CLI_* after a message (then nothing is held). */
+static int encode_luts(const emit_input *in, int i, const char *prefix, encoded_lut *luts)
+{
+    const scene *sc = in->sc;
+    int m, k;
+    for (m = 0; m < sc->model_count; m++) {
+        memset(&luts[m], 0, sizeof luts[m]);
+        if (!sc->models[m].lut_n)
+            continue;
+        if (emit_lut_encode(in, &sc->models[m], i, &luts[m])) {
+            for (k = 0; k < m; k++)
+                encoded_lut_free(&luts[k]);
+            return cli_oom("fresnel gen");
+        }
+        if (luts[m].bad >= 0) {
+            char where[1100];
+            snprintf(where, sizeof where, "%s:%d", in->manifest_path, sc->models_line);
+            cli_error(where, "%s: %s node %d is %g, which no %s table holds; no header written", prefix,
+                      sc->models[m].name, luts[m].bad, luts[m].nodes[luts[m].bad],
+                      luts[m].form == LUT_RESIDUAL ? "Q1.15 residual (int16_t at 14 fraction bits)" : "Q1.15 [0, 2)");
+            for (k = 0; k <= m; k++)
+                encoded_lut_free(&luts[k]);
+            return CLI_BAD_INPUT;
+        }
+    }
+    return 0;
+}
+
 int emit_header(FILE *f, const emit_input *in)
 {
     const scene *sc = in->sc;
     const gen_context *g = in->g;
     char guard[96];
-    int i, m;
+    int i, m, k, status = 0;
+    encoded_lut *luts = calloc((size_t)sc->model_count, sizeof *luts);
+    if (!luts)
+        return cli_oom("fresnel gen");
     for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
         guard[i] = (char)toupper((unsigned char)in->name[i]);
     guard[i] = '\0';
@@ -221,32 +188,35 @@ int emit_header(FILE *f, const emit_input *in)
         fprintf(f, " %s", sc->models[m].name);
     fprintf(f, "; number types:");
     for (m = 0; m < sc->type_count; m++)
-        fprintf(f, " %s", sc->types[m]);
+        fprintf(f, " %s", sc->types[m]->name);
     fprintf(f, ".\n");
     emit_material_list(f, in);
     fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n", guard, guard);
-    if (scene_has_type(sc, "q15"))
-        fprintf(f, "#include \"fresnel_fixed.h\"\n");
+    for (k = 0; k < NUMBER_TYPES; k++)
+        if (scene_has_type(sc, emit_types[k].type) && strcmp(number_types[emit_types[k].type].header, "fresnel.h"))
+            fprintf(f, "#include \"%s\"\n", number_types[emit_types[k].type].header);
     fputc('\n', f);
     fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
                "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");
 
-    for (i = 0; i < sc->material_count; i++) {
+    for (i = 0; i < sc->material_count && !status; i++) {
         const material_params *p = &in->params[i];
         char prefix[96];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
-        if (params_fit_float(in, p))
-            return CLI_BAD_INPUT;
+        if (params_fit_float(in, p) || (status = encode_luts(in, i, prefix, luts))) {
+            status = CLI_BAD_INPUT;
+            break;
+        }
         fprintf(f, "\n/* ---- %s: %s */\n", p->info.id, p->info.name);
-        if (scene_has_type(sc, "q15") && emit_fixed_material(f, in, i, prefix))
-            return CLI_BAD_INPUT;
-        if (!scene_has_type(sc, "f32"))
-            continue;
-        emit_material_params(f, sc, &in->enc[i], prefix, emit_rgb, emit_float);
+        for (k = 0; k < NUMBER_TYPES && !status; k++)
+            if (scene_has_type(sc, emit_types[k].type))
+                status = emit_types[k].emit(f, in, i, prefix, luts);
         for (m = 0; m < sc->model_count; m++)
-            if (sc->models[m].lut_n && emit_lut(f, in, prefix, &sc->models[m], i))
-                return CLI_BAD_INPUT;
+            encoded_lut_free(&luts[m]);
     }
+    free(luts);
+    if (status)
+        return status;
     fprintf(f, "\n#endif\n");
     return 0;
 }

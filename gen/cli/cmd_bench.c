@@ -9,6 +9,7 @@
 #include "bench/bench.h"
 #include "bench/bench_targets.h"
 #include "cli/cli.h"
+#include "cli/material_options.h"
 #include "report/report.h"
 
 #define WHERE "fresnel bench"
@@ -33,8 +34,9 @@ static int bench_targets_print(void)
 
 int cmd_bench(int argc, char **argv)
 {
-    const char *scene_path = "data/scenes/report.scene", *material = "au", *only_model = NULL, *only_type = NULL,
+    const char *scene_path = "data/scenes/report.scene", *material = "au", *only_model = NULL,
                *dir_option = NULL, *nk_file = NULL;
+    const number_type *only_type = NULL;
     char nk_id[32];
     material_source source;
     int count = 1 << 20, runs = 5, i, m, t, status = 0, targets = 0, scene_options = 0;
@@ -85,10 +87,8 @@ int cmd_bench(int argc, char **argv)
         else if (!strcmp(o, "--model"))
             only_model = v;
         else if (!strcmp(o, "--type")) {
-            static const char *const types[] = {"f32", "q15", "f16", NULL};
-            only_type = !strcmp(v, "fixed") ? "q15" : v;
-            if (!cli_in_list(only_type, types))
-                return cli_unknown(WHERE, "type", v, types);
+            if (type_option(WHERE, v, &only_type))
+                return CLI_BAD_INPUT;
         } else if (!strcmp(o, "--data"))
             dir_option = v;
         else if (!strcmp(o, "--count")) {
@@ -143,13 +143,13 @@ int cmd_bench(int argc, char **argv)
                                           s, g, &p, &sm)))
             goto done;
         q = scene_model_rgb(&sm);
-        for (t = 0; t < report_type_count; t++) {
+        for (t = 0; t < number_types_available; t++) {
             double ns;
-            if (only_type && strcmp(only_type, report_types[t].name))
+            if (only_type && only_type != &number_types[t])
                 continue;
-            ns = report_time(&report_types[t], &q, count, runs);
+            ns = report_time(&number_types[t], &q, count, runs);
             if (runs > 0)
-                printf("%s,%s,%.3f\n", sc.models[m].name, report_types[t].name, ns);
+                printf("%s,%s,%.3f\n", sc.models[m].name, number_types[t].name, ns);
         }
         scene_model_free(&sm);
     }

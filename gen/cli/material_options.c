@@ -38,6 +38,17 @@ void material_options_init(material_options *o)
     o->gamut = GAMUT_MAP;
 }
 
+int type_option(const char *where, const char *val, const number_type **out)
+{
+    const char *names[NUMBER_TYPES + 1];
+    number_type_names(names, NUMBER_TYPES + 1);
+    if (!(*out = number_type_find(val)))
+        return cli_unknown(where, "type", val, names);
+    if (!(*out)->available)
+        return cli_error(where, "--type %s: this build's compiler has no _Float16", val);
+    return 0;
+}
+
 int gamut_option(const char *where, const char *val, gamut_policy *out)
 {
     int i = scene_choice(gamut_policy_names, val);

@@ -8,6 +8,7 @@
 
 #include "1_spectral/colour_difference.h"
 #include "2_derive/derive.h"
+#include "model/number_type.h"
 #include "scene/scene.h"
 #include "scene/scene_eval.h"
 
@@ -30,16 +31,10 @@ typedef struct report_material {
     scene_model *models;             /* one per report model: the encoder's constants and tables */
 } report_material;
 
-/* A number type the runtime offers: f32, q15 (Q1.15) and, where the compiler
- * has _Float16, f16. */
-typedef struct report_type {
-    const char *name;
-    void (*eval)(const model_rgb *q, double c, double rgb[3]);
-} report_type;
-extern const report_type report_types[];
-extern const int report_type_count;
-/* ns per RGB evaluation of q in type t (bench.c): median of runs batches of n. */
-double report_time(const report_type *t, const model_rgb *q, int n, int runs);
+/* The report measures every available number type (model/number_type.h:
+ * number_types[0 .. number_types_available - 1]). ns per RGB evaluation of
+ * q in type t (bench.c): median of runs batches of n. */
+double report_time(const number_type *t, const model_rgb *q, int n, int runs);
 /* The Cortex-M0 mean instructions per call of row `name` in a `make
  * cross-count` output file; NaN when the file or the row is missing. */
 double report_m0_count(const char *path, const char *name);
@@ -102,7 +97,7 @@ int report_plots(report_run *r, const double (*sigma_de)[REPORT_SIGMAS]);
 /* Ground truth and the clamp's cost for one material. */
 void report_ground_truth(const gen_context *g, const lab_space *ls, report_material *rm);
 /* Accuracy of one prepared model in one type. */
-void report_measure(const lab_space *ls, const report_material *rm, int model, const report_type *t,
+void report_measure(const lab_space *ls, const report_material *rm, int model, const number_type *t,
                     report_cell *out);
 /* Mean, RMS and max CIEDE2000 of a whole curve given per angle (rgb[REPORT_ANGLES][3]). */
 void report_curve_de(const lab_space *ls, const double (*gt)[3], const double (*rgb)[3], double *mean,

@@ -57,7 +57,7 @@ void report_ground_truth(const gen_context *g, const lab_space *ls, report_mater
 
 typedef struct model_curve {
     const model_rgb *q;
-    const report_type *t;
+    const number_type *t;
 } model_curve;
 
 static void model_at(const void *ctx, double mu, double rgb[3])
@@ -66,7 +66,7 @@ static void model_at(const void *ctx, double mu, double rgb[3])
     m->t->eval(m->q, mu, rgb);
 }
 
-void report_measure(const lab_space *ls, const report_material *rm, int model, const report_type *t,
+void report_measure(const lab_space *ls, const report_material *rm, int model, const number_type *t,
                     report_cell *out)
 {
     const scene_model *m = &rm->models[model];

@@ -13,8 +13,6 @@
 #include "3_encode/encode.h"
 #include "1_spectral/spectral.h"
 
-/* Number types the generator can emit; a new type is one more entry here. */
-const char *const scene_type_names[] = {"f32", "q15", NULL};
 const char *const scene_lut_spacing_names[] = {"grazing", "uniform", "grazing-pl", NULL};
 const char *const scene_f_avg_names[] = {"no", "yes", NULL};
 const char *const gamut_policy_names[] = {"map", "clip", "keep", NULL};
@@ -175,15 +173,6 @@ static int find_model(const scene *s, const char *name)
     return -1;
 }
 
-static int find_in(char (*list)[SCENE_NAME_SIZE], int count, const char *s)
-{
-    int i;
-    for (i = 0; i < count; i++)
-        if (strcmp(list[i], s) == 0)
-            return i;
-    return -1;
-}
-
 /* Append material id (named at line; file "" for the data pack's). */
 static int add_material(const char *path, int line, const char *id, const char *file, scene *s)
 {
@@ -260,21 +249,25 @@ static int parse_models(const char *path, int line, char *value, scene *s)
 static int parse_types(const char *path, int line, char *value, scene *s)
 {
     char *cursor = value, *type, names[256];
+    const char *available[NUMBER_TYPES + 1];
+    number_type_names(available, NUMBER_TYPES + 1);
     s->type_count = 0; /* replaces the default */
     while ((type = next_token(&cursor)) != NULL) {
         char near[SCENE_NAME_SIZE + 32];
-        if (strcmp(type, "fixed") == 0)
-            type = "q15"; /* the older name of the Q15 type */
-        if (table_index(scene_type_names, type) < 0)
+        const number_type *t = number_type_find(type);
+        int i;
+        if (!t)
             return report(path, line, "expected a number type (one of %s), got '%s'%s",
-                          table_list(scene_type_names, names, sizeof names), type,
-                          hint(scene_type_names, type, near, sizeof near));
-        if (find_in(s->types, s->type_count, type) >= 0)
-            return report(path, line, "expected each type once, '%s' is listed twice", type);
-        if (s->type_count == SCENE_MAX_TYPES)
-            return report(path, line, "expected at most %d types", SCENE_MAX_TYPES);
-        /* Bounded: the type table is meant to grow. */
-        snprintf(s->types[s->type_count++], SCENE_NAME_SIZE, "%s", type);
+                          table_list(available, names, sizeof names), type,
+                          hint(available, type, near, sizeof near));
+        if (!t->available)
+            return report(path, line, "expected a number type this build of fresnel writes (one of %s), got '%s': "
+                          "its compiler has no _Float16 (a gcc build has it)",
+                          table_list(available, names, sizeof names), type);
+        for (i = 0; i < s->type_count; i++)
+            if (s->types[i] == t)
+                return report(path, line, "expected each type once, '%s' is listed twice", t->name);
+        s->types[s->type_count++] = t;
     }
     return 0;
 }
@@ -372,7 +365,7 @@ static void set_defaults(scene *s)
     strcpy(s->space, "srgb");
     s->spacing = LUT_GRAZING;
     s->gamut = GAMUT_MAP;
-    strcpy(s->types[0], "f32");
+    s->types[0] = &number_types[TYPE_F32];
     s->type_count = 1;
     s->sigma = 25.0;
     s->n1 = 1.0;
@@ -469,7 +462,7 @@ int scene_load(const char *path, scene *out)
     if (out->models_line == 0)
         return report(path, line > 0 ? line : 1,
                       "expected a 'models = name ...' line, the required key is missing");
-    if (out->spacing == LUT_GRAZING_PL && (out->type_count != 1 || strcmp(out->types[0], "q15") != 0))
+    if (out->spacing == LUT_GRAZING_PL && (out->type_count != 1 || out->types[0]->id != TYPE_Q15))
         return report(path, out->lut_spacing_line ? out->lut_spacing_line : 1,
                       "expected types = q15 with lut_spacing grazing-pl (its tables are for "
                       "fresnel_lut_pl_u16_q15_fast only)");
@@ -519,11 +512,11 @@ int scene_has_model(const scene *sc, const char *model)
     return 0;
 }
 
-int scene_has_type(const scene *sc, const char *type)
+int scene_has_type(const scene *sc, number_type_id type)
 {
     int i;
     for (i = 0; i < sc->type_count; i++)
-        if (!strcmp(sc->types[i], type))
+        if (sc->types[i]->id == type)
             return 1;
     return 0;
 }

@@ -36,8 +36,10 @@
  *                number in [0, 200] (0 = point sampling).
  *   n1           optional, default 1; real index of the incident medium, a
  *                finite number in [1, 4].
- *   types        optional, default f32; whitespace-separated number types
- *                from scene_type_names[], no duplicates.
+ *   types        optional, default f32; whitespace-separated names of the
+ *                number type registry (model/number_type.c: f32, q15 or
+ *                its older name fixed, and f16 where the generator's
+ *                compiler has _Float16), no duplicates.
  *   lut_spacing  optional, default grazing; one of scene_lut_spacing_names[]:
  *                grazing (LUT nodes uniform in sqrt(cos theta), denser
  *                towards cos theta = 0), uniform (nodes uniform in cos theta) or
@@ -84,13 +86,13 @@
 #define FRESNEL_SCENE_H
 
 #include "3_encode/encode.h"
+#include "model/number_type.h"
 #include "model/registry.h"
 
 #define SCENE_MAX_MATERIALS 64
 #define SCENE_ID_SIZE 32 /* material id, NUL included: matches material_info.id */
 #define SCENE_MAX_MODELS 64
 #define SCENE_NAME_SIZE 24 /* model, type, space or spacing name, NUL included */
-#define SCENE_MAX_TYPES 16
 #define SCENE_LUT_MIN 4
 #define SCENE_LUT_MAX MODEL_LUT_NODES_MAX
 #define SCENE_PREFIX_SIZE 41 /* scene name, NUL included */
@@ -98,8 +100,7 @@
 
 /* The vocabulary, NULL-terminated, for reuse in --help text (colour spaces:
  * colour_space_ids in spectral.h; models: the registry's MODEL_SCENE rows,
- * model_names, and its LUT patterns). */
-extern const char *const scene_type_names[];
+ * model_names, and its LUT patterns; number types: number_type_names). */
 extern const char *const scene_lut_spacing_names[]; /* in lut_spacing's order */
 extern const char *const scene_f_avg_names[];       /* "no", "yes" */
 extern const char *const gamut_policy_names[];      /* "map", "clip", "keep", NULL: in gamut_policy's order */
@@ -133,7 +134,7 @@ typedef struct scene {
     int model_count;
     scene_entry models[SCENE_MAX_MODELS];
     int type_count;
-    char types[SCENE_MAX_TYPES][SCENE_NAME_SIZE];
+    const number_type *types[NUMBER_TYPES]; /* in the file's order */
     char space[SCENE_NAME_SIZE]; /* a colour_space_ids entry */
     lut_spacing spacing;
     gamut_policy gamut;
@@ -157,9 +158,9 @@ material_source scene_material(const scene *sc, int i);
 
 /* 1 if the loaded scene names this model (as written) / number type, else 0. */
 int scene_has_model(const scene *sc, const char *model);
+int scene_has_type(const scene *sc, number_type_id type);
 /* What the scene's models read: the union of their registry rows' MP_* bits
  * (q15 0) or MQ_* bits (q15 1). */
 unsigned scene_reads(const scene *sc, int q15);
-int scene_has_type(const scene *sc, const char *type);
 
 #endif

@@ -84,13 +84,10 @@ static int write_matrix(FILE *f, const gen_context *g, const lab_space *ls, cons
 static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_path)
 {
     scene_model sm;
-    int t;
     double ns = NAN, m0 = NAN;
-    for (t = 0; t < report_type_count && strcmp(report_types[t].name, "f32"); t++)
-        ;
     if (!scene_model_prepare(&l->sc->models[m], l->sc->spacing, l->spectra[0], l->g, &l->params[0], &sm)) {
         model_rgb q = scene_model_rgb(&sm);
-        ns = report_time(&report_types[t], &q, 1 << 16, 3);
+        ns = report_time(&number_types[TYPE_F32], &q, 1 << 16, 3);
         if (cross_path && sm.def->cross_row)
             m0 = report_m0_count(cross_path, sm.def->cross_row);
         scene_model_free(&sm);

@@ -40,7 +40,7 @@ static void check_scene(const scene *s)
         FUZZ_FAIL("material_count %d", s->material_count);
     if (!(s->model_count >= 1 && s->model_count <= SCENE_MAX_MODELS))
         FUZZ_FAIL("model_count %d", s->model_count);
-    if (!(s->type_count >= 1 && s->type_count <= SCENE_MAX_TYPES))
+    if (!(s->type_count >= 1 && s->type_count <= NUMBER_TYPES))
         FUZZ_FAIL("type_count %d", s->type_count);
     for (i = 0; i < s->material_count && i < SCENE_MAX_MATERIALS; i++) {
         if (memchr(s->materials[i], '\0', SCENE_ID_SIZE) == NULL || !valid_id(s->materials[i]))
@@ -59,9 +59,9 @@ static void check_scene(const scene *s)
             if (!strcmp(e->name, s->models[j].name))
                 FUZZ_FAIL("model '%s' accepted twice", e->name);
     }
-    for (i = 0; i < s->type_count && i < SCENE_MAX_TYPES; i++)
-        if (memchr(s->types[i], '\0', SCENE_NAME_SIZE) == NULL || !in_table(scene_type_names, s->types[i]))
-            FUZZ_FAIL("type %d: unknown '%.30s'", i, s->types[i]);
+    for (i = 0; i < s->type_count && i < NUMBER_TYPES; i++)
+        if (!s->types[i] || s->types[i] != number_type_find(s->types[i]->name) || !s->types[i]->available)
+            FUZZ_FAIL("type %d: not an available row of the number type registry", i);
     if (memchr(s->space, '\0', SCENE_NAME_SIZE) == NULL || !in_table(colour_space_ids, s->space))
         FUZZ_FAIL("unknown space accepted");
     if (!((unsigned)s->spacing <= LUT_GRAZING_PL) || !((unsigned)s->gamut <= GAMUT_KEEP))
