@@ -200,7 +200,7 @@ FUZZ_SECONDS ?= 60
 FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
                 -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Igen -Itests/fuzz
 # Host code the targets exercise, linked into each with the whole runtime.
-FUZZ_GEN     := gen/model/reference.c gen/cli/cli.c gen/1_spectral/load_nk.c gen/1_spectral/resample.c \
+FUZZ_GEN     := gen/common/reference.c gen/common/cli.c gen/1_spectral/load_nk.c gen/1_spectral/resample.c \
                 gen/scene/scene.c gen/1_spectral/colour_space.c gen/1_spectral/colorimetry.c \
                 gen/model/registry.c gen/model/number_type.c gen/3_encode/fixed_params.c
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))

@@ -34,7 +34,7 @@
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
 #include "header_check.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "report/report.h"
 
 static hc_header hh;

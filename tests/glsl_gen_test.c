@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit_glsl.h"
 #include "3_encode/encode.h"
 #include "glctx.h"

@@ -26,7 +26,7 @@
 #include "fresnel_fixed.h"
 #include "harness.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define GRID_MAX 2100
 

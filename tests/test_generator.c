@@ -7,7 +7,7 @@
 #include "fresnel.h"
 #include "3_encode/encode.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "scene/scene_eval.h"
 
 static const char *const metals[] = {"ag", "cu", "au", "commercial_bronze", "brass", "al", "pd",

@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "harness.h"
 #include "scene/scene.h"
 #include "1_spectral/spectral.h"

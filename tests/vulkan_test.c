@@ -38,7 +38,7 @@
 
 #include "fresnel.h"
 #include "fresnel_f16.h"
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "harness.h"
 #include "model/registry.h"
 #include "scene/scene.h"

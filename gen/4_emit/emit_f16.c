@@ -5,7 +5,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
 
 #if FRESNEL_HAS_F16

@@ -15,9 +15,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "scene/scene.h"
 
 /* Where a value that does not fit is reported, and whether one did. */

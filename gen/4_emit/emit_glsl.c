@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 
 #define WHERE "fresnel gen"
 

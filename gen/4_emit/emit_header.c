@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
 #include "scene/scene.h"
 

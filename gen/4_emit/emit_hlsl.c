@@ -9,7 +9,7 @@
 
 #include <stdlib.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 
 #define WHERE "fresnel gen"
 

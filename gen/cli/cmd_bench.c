@@ -8,7 +8,7 @@
 
 #include "bench/bench.h"
 #include "bench/bench_targets.h"
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "cli/material_options.h"
 #include "report/report.h"
 

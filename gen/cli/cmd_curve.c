@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "cli/material_options.h"
 #include "scene/scene.h"
 #include "scene/scene_eval.h"

@@ -2,7 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
 #include "3_encode/encode.h"
 #include "scene/scene.h"

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "scene/scene.h"
 
 const char material_options_help[] =

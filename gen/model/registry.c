@@ -10,7 +10,7 @@
 #include "3_encode/fixed_params.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define F(x) ((float)(x))
 

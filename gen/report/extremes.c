@@ -12,7 +12,7 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 const extreme_case extreme_cases[] = {
     {"eta -> 0", 0.01, 0.0, 1.0, "F0 = 0.96"},

@@ -9,10 +9,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "bench/bench.h"
 #include "bench/speed_targets.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "model/registry.h"
 #include "report/report.h"
 #include "scene/scene.h"

@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "report/report.h"
 #include "report/svg.h"
 

@@ -9,7 +9,7 @@
 #include <string.h>
 #include <sys/types.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "3_encode/encode.h"
 #include "1_spectral/spectral.h"
 

@@ -3,8 +3,8 @@
 
 #include <string.h>
 
-#include "cli/cli.h"
-#include "model/reference.h"
+#include "common/cli.h"
+#include "common/reference.h"
 
 int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectrum *s, const gen_context *g,
                         const material_params *p, scene_model *m)

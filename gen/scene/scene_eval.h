@@ -31,7 +31,7 @@ void scene_model_free(scene_model *m);
 model_rgb scene_model_rgb(const scene_model *m);
 /* The binary32 runtime at c. */
 void scene_model_eval(const scene_model *m, float c, float rgb[3]);
-/* The same model in double precision (gen/model/reference.c) on the
+/* The same model in double precision (gen/common/reference.c) on the
  * binary32 constants and nodes: the difference from scene_model_eval is
  * the runtime's rounding, not the model's error. */
 void scene_model_eval_ref(const scene_model *m, double c, double rgb[3]);

@@ -16,7 +16,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
 #include "4_emit/emit_glsl.h"
 #include "bench/bench.h"

@@ -9,7 +9,7 @@
  *     one message "path:N: ..." naming a line of the file. */
 #include "fuzz_parser.h"
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "scene/scene.h"
 #include "1_spectral/spectral.h"
 
