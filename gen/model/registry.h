@@ -6,7 +6,7 @@
  * or list models (tests/test_gen_layout.sh checks it).
  *
  * Adding a model: its runtime functions (src/, include/), its double
- * reference (reference.c), and one row with its evaluators here. */
+ * reference (common/reference.c), and one row with its evaluators here. */
 #ifndef FRESNEL_REGISTRY_H
 #define FRESNEL_REGISTRY_H
 
