@@ -152,6 +152,16 @@ static void hdr_ior(const double *v, fresnel_ior_prep_q15 *o)
     o->b = hdr_qf(v + 3), o->n4 = hdr_qf(v + 5), o->t1_inv = hdr_qf(v + 7), o->inv_eta2 = hdr_qf(v + 9);
 }
 
+/* A model name as the header's identifiers spell it (lsk-comp -> lsk_comp),
+ * derived here rather than taken from the generator. */
+static void ident_of(const char *model, char id[64])
+{
+    int i;
+    for (i = 0; model[i] && i < 63; i++)
+        id[i] = model[i] == '-' ? '_' : model[i];
+    id[i] = '\0';
+}
+
 /* One header model for one material: its constants, found by name. */
 typedef struct hdr_model {
     const hc_header *h;
@@ -244,9 +254,7 @@ static int hdr_eval(hdr_model *m, const char *model, const scene_model *sm, numb
     const hc_decl *d, *e, *f0;
     char id[64];
     int i;
-    for (i = 0; model[i] && i < 63; i++)
-        id[i] = model[i] == '-' ? '_' : model[i];
-    id[i] = '\0';
+    ident_of(model, id);
     if (type == TYPE_F16) {
 #if FRESNEL_HAS_F16
         int ch;
@@ -521,10 +529,7 @@ static int scene_mode(const char *scene_path, const char *label)
                             bound = FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR + 0.5;
                         if (sm.lut.form == LUT_RESIDUAL) {
                             char name[HC_NAME + 80], id[64];
-                            int k;
-                            for (k = 0; sc.models[m].name[k] && k < 63; k++)
-                                id[k] = sc.models[m].name[k] == '-' ? '_' : sc.models[m].name[k];
-                            id[k] = '\0';
+                            ident_of(sc.models[m].name, id);
                             snprintf(name, sizeof name, "%s_%s_frac", hm.prefix, id);
                             frac = hc_find(&hh, name);
                             bound += 0.5 + ldexp(1.0, 14 - (frac ? (int)frac->v[0] : 14));
