@@ -105,9 +105,6 @@ $(BUILD)/vulkan/vulkan_test: $(VULKAN_TEST_SRC) ports/vulkan/vkrun.h $(GEN_OBJ) 
 $(BUILD)/tests/viewer_lit: tests/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
-$(BUILD)/tests/gen_matrix_check: tests/gen_matrix_check.c $(BUILD)/libfresnel.a
-	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(BUILD)/libfresnel.a $(LDLIBS)
 
 test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
            $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit \
@@ -204,9 +201,9 @@ FUZZ_SECONDS ?= 60
 FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
                 -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -Igen -Itests/fuzz
 # Host code the targets exercise, linked into each with the whole runtime.
-FUZZ_GEN     := gen/model/reference.c gen/cli/cli.c gen/1_spectral/load_nk.c gen/1_spectral/resample.c \
-                gen/scene/scene.c gen/2_derive/targets.c gen/model/reference_targets.c gen/1_spectral/colour_space.c gen/1_spectral/colorimetry.c \
-                gen/model/registry.c gen/3_encode/fixed_params.c
+FUZZ_GEN     := gen/common/reference.c gen/common/reference_targets.c gen/common/cli.c gen/1_spectral/load_nk.c \
+                gen/1_spectral/resample.c gen/scene/scene.c gen/2_derive/targets.c gen/1_spectral/colour_space.c \
+                gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/fixed_params.c
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 
 .PHONY: fuzz fuzz-bins

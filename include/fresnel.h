@@ -77,7 +77,7 @@
  *   included, clamps F0 and its result to 1 as above, so gold's F0 of 1.04
  *   in linear sRGB is evaluated as 1 by them.
  *   Error bounds are absolute, against a double-precision evaluation of the
- *   SAME model with the same binary32 inputs (gen/model/reference.c). They hold for
+ *   SAME model with the same binary32 inputs (gen/common/reference.c). They hold for
  *   eta in [0.01, 100], kappa in {0} u [1e-3, 1000] (relative indices, such
  *   as eta/n1 for an incident medium n1) and every c; fresnel_lsk_comp's and
  *   fresnel_gulbrandsen_rg's over the whole eta, kappa domain. On the rest of

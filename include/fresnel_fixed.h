@@ -52,7 +52,7 @@
  *   FRESNEL_BOUND_*_Q15 are in LSB of Q15 (1 LSB = 2^-15 = 3.05e-5): bounds
  *   on |result/32768 - reference| for every cos code 0..32768 over the whole
  *   domain eta in [2^-10, 32767], kappa in [0, 32767], where "reference" is
- *   the double model (gen/model/reference.c) at the same parameters: the Q15 inputs
+ *   the double model (gen/common/reference.c) at the same parameters: the Q15 inputs
  *   (F0, F82, F90, r, g) and the Q16.16 ones (p, alpha) as the codes given,
  *   and eta, kappa as the double values the prepared constants were made
  *   from, so the rounding of the constants is part of the error. Rounding

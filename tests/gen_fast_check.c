@@ -13,7 +13,7 @@
 #include "3_encode/fixed_params.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "scene_rep.h"
 
 static int failures;

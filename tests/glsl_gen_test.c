@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit_glsl.h"
 #include "3_encode/encode.h"
 #include "glctx.h"
@@ -77,17 +77,14 @@ static GLuint program(const struct variant *v, const char *prelude, const char *
 }
 
 /* main(): row r of the viewport evaluates material r's function. */
-static char *main_body(const scene *sc, const char *ident, const char *model)
+static char *main_body(const scene *sc, const char *ident, const char *id)
 {
     size_t size = 4096 + (size_t)sc->material_count * 256;
-    char *b = malloc(size), id[32];
+    char *b = malloc(size);
     size_t len;
     int i;
     if (!b)
         return NULL;
-    for (i = 0; model[i] && i < 31; i++)
-        id[i] = model[i] == '-' ? '_' : model[i];
-    id[i] = '\0';
     len = (size_t)snprintf(b, size,
                            "void main() {\n    highp float c = (floor(fr_uv.x * %d.0) - 1.0) * (1.0 / 256.0);\n"
                            "    highp float row = floor(fr_uv.y * %d.0);\n    vec3 r = vec3(0.0);\n",
@@ -133,7 +130,7 @@ int main(int argc, char **argv)
         if (derive_parameters(&gc, &(material_source){sc.materials[i], NULL, NK_FORMAT_AUTO}, sc.sigma, sc.n1, &spectra[i], &params[i]))
             return 1;
         for (m = 0; m < sc.model_count; m++)
-            if (scene_model_prepare(sc.models[m], scene_lut_spacing(&sc), &spectra[i], &gc, &params[i],
+            if (scene_model_prepare(&sc.models[m], sc.spacing, &spectra[i], &gc, &params[i],
                                     &models[i * sc.model_count + m]))
                 return 1;
     }
@@ -158,8 +155,8 @@ int main(int argc, char **argv)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
     for (m = 0; m < sc.model_count; m++) {
-        char *body = main_body(&sc, ident, sc.models[m]);
-        int is_lut = models[m].lut_n > 0, form = models[m].form;
+        char *body = main_body(&sc, ident, sc.models[m].ident);
+        int is_lut = models[m].lut.n > 0, form = models[m].lut.form;
         for (v = 0; v < NVARIANTS && body; v++) {
             const struct variant *va = &variants[v];
             int texture = is_lut && va->texture, mediump = v == V_ES100_MEDIUMP;
@@ -171,7 +168,7 @@ int main(int argc, char **argv)
             bound = mediump ? MEDIUMP_BOUND
                   : texture ? (form == LUT_CUBIC ? 1.25 : 1.0) * ldexp(1.0, -16) + 1e-6
                             : HIGHP_BOUND;
-            snprintf(name, sizeof name, "glsl gen: %s %s, %d materials, %s%s", ident, sc.models[m], nmat, va->name,
+            snprintf(name, sizeof name, "glsl gen: %s %s, %d materials, %s%s", ident, sc.models[m].name, nmat, va->name,
                      is_lut ? (texture ? " (packed texture)" : " (const arrays)") : "");
             prog = prelude[v] ? program(va, prelude[v], port, scene_src, body) : 0;
             if (!prog) {
@@ -197,15 +194,15 @@ int main(int argc, char **argv)
                 float qtab[3 * SCENE_LUT_MAX];
                 if (texture) { /* the nodes as the texture holds them */
                     int k;
-                    for (k = 0; k < 3 * sm->lut_n; k++)
-                        qtab[k] = (float)((emit_glsl_node_code(sm->table_d[k]) - 16384) / 32768.0);
-                    qm.table = qtab;
+                    for (k = 0; k < 3 * sm->lut.n; k++)
+                        qtab[k] = (float)((emit_glsl_node_code(sm->lut.nodes[k]) - 16384) / 32768.0);
+                    qm.lut.f32 = qtab;
                 }
                 for (x = 0; x < W; x++) {
                     float c = (float)(x - 1) / 256.0f, ref[3], refq[3];
                     const float *gpu = out + 4 * ((size_t)i * W + (size_t)x);
-                    scene_model_eval(sm, &params[i], c, ref);
-                    scene_model_eval(&qm, &params[i], c, refq);
+                    scene_model_eval(sm, c, ref);
+                    scene_model_eval(&qm, c, refq);
                     for (ch = 0; ch < 3; ch++) {
                         double d = fabs(gpu[ch] - ref[ch]), dq = fabs(gpu[ch] - refq[ch]);
                         if (!(d <= worst))
@@ -231,8 +228,8 @@ int main(int argc, char **argv)
     {
         double q = 0.0;
         for (i = 0; i < nmat * sc.model_count; i++)
-            for (x = 0; x < 3 * models[i].lut_n; x++) {
-                double d = fabs((emit_glsl_node_code(models[i].table_d[x]) - 16384) / 32768.0 - models[i].table[x]);
+            for (x = 0; x < 3 * models[i].lut.n; x++) {
+                double d = fabs((emit_glsl_node_code(models[i].lut.nodes[x]) - 16384) / 32768.0 - models[i].lut.f32[x]);
                 if (d > q)
                     q = d;
             }

@@ -41,7 +41,7 @@
 #include "glctx.h"
 #include "harness.h"
 #include "png.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define W 512     /* cosines per strip (a power of two: u = x / W is exact) */
 #define MAXROWS 8

@@ -3,6 +3,8 @@
  * is read back, and each value is checked against its C type and the range
  * include/fresnel_fixed.h and fresnel.h document for it:
  *   float, fresnel_rgb    binary32 literals with an 'f' suffix, finite
+ *   fresnel_f16           the same, each a binary16 value (11 significant
+ *                         bits, or a multiple of 2^-24 below 2^-14; |v| <= 65504)
  *   fresnel_rgb_q15       3 codes in [0, FRESNEL_ONE_Q15]
  *   uint16_t              LUT codes in [0, FRESNEL_ONE_Q15]
  *   int16_t               residual LUT nodes in [-32768, 32767]
@@ -70,7 +72,7 @@ static inline int hc_fields(const char *type, int *is_float)
     } t[] = {{"float", 1, 1},   {"fresnel_rgb", 3, 1},      {"fresnel_rgb_q15", 3, 0},
              {"uint16_t", 1, 0}, {"int16_t", 1, 0},          {"int32_t", 1, 0},
              {"fresnel_ior_prep_q15", 11, 0}, {"fresnel_nk_prep_q15", 4, 0}, {"fresnel_lsk_prep_q15", 4, 0},
-             {"fresnel_conductor_prep_q15", 8, 0}};
+             {"fresnel_conductor_prep_q15", 8, 0}, {"fresnel_f16", 1, 1}};
     size_t i;
     for (i = 0; i < sizeof t / sizeof t[0]; i++)
         if (!strcmp(t[i].type, type)) {
@@ -95,7 +97,13 @@ static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
 {
     const char *t = d->type;
     int i;
-    if (!strcmp(t, "fresnel_rgb_q15")) {
+    if (!strcmp(t, "fresnel_f16")) { /* the literal is a float's */
+        int e;
+        double x = (double)(float)v[0], m = frexp(x, &e);
+        if (!(fabs(x) <= 65504.0) ||
+            (fabs(x) >= 0x1p-14 ? ldexp(m, 11) != floor(ldexp(m, 11)) : ldexp(x, 24) != floor(ldexp(x, 24))))
+            hc_fail(h, "%s %s: %.17g is not a binary16 value", t, d->name, v[0]);
+    } else if (!strcmp(t, "fresnel_rgb_q15")) {
         for (i = 0; i < 3; i++)
             if (!hc_in(v[i], 0.0, 32768.0))
                 hc_fail(h, "%s %s: code %.17g not in [0, 32768]", t, d->name, v[i]);

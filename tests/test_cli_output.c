@@ -1,4 +1,4 @@
-/* gen/cli/cli.c's safe output and parsing helpers, tested directly: the signal
+/* gen/common/cli.c's safe output and parsing helpers, tested directly: the signal
  * handler's cleanup (deterministic here, where a real SIGTERM mid-write
  * would race), the temporary's name and mode, and the number and name
  * helpers every subcommand shares. */
@@ -10,7 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "harness.h"
 
 static int count_entries(const char *dir)

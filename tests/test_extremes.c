@@ -26,7 +26,7 @@
 #include "fresnel_fixed.h"
 #include "harness.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define GRID_MAX 2100
 
@@ -39,7 +39,7 @@
 /* Binary32, Q15 and binary16 steps of the cosine in [0.5, 1). */
 static double ulp_upper(const extreme_type *ty)
 {
-    return !strcmp(ty->name, "q15") ? 0x1p-15 : !strcmp(ty->name, "f16") ? 0x1p-11 : 0x1p-24;
+    return ty->type->id == TYPE_Q15 ? 0x1p-15 : ty->type->id == TYPE_F16 ? 0x1p-11 : 0x1p-24;
 }
 
 static int eval(const model *m, const extreme_type *ty, const extreme_typed *t, double x, double *got)
@@ -60,7 +60,7 @@ static void test_cosine_policy(const extreme_type *ty)
         for (mi = 0; mi < model_count; mi++) {
             const model *m = &model_table[mi];
             double at0, at1;
-            if (!ty->has(m))
+            if (!ty->type->has(m))
                 continue;
             eval(m, ty, &t, 0.0, &at0);
             eval(m, ty, &t, 1.0, &at1);
@@ -91,10 +91,10 @@ static void test_cosine_policy(const extreme_type *ty)
     }
     snprintf(name, sizeof name,
              "extremes %s: every model, case and cosine (NaN, +-Inf, -0, <0, >1, one LSB) gives a number in [0, 1]",
-             ty->name);
+             ty->type->name);
     CHECK(name, bad_range == 0 && tried > 0, "%ld bad of %ld, first %s", bad_range, tried, first);
     snprintf(name, sizeof name, "extremes %s: c < 0, -0, NaN, -Inf give exactly f(0); c > 1, +Inf exactly f(1)",
-             ty->name);
+             ty->type->name);
     CHECK(name, bad_subst == 0, "%ld differ, first %s", bad_subst, first);
 }
 
@@ -137,7 +137,7 @@ static void test_bounds(const extreme_type *ty)
         const char *where = "", *where_out = "";
         long bad = 0;
         char name[200];
-        if (!ty->has(m))
+        if (!ty->type->has(m))
             continue;
         for (ei = 0; ei < extreme_case_count; ei++) {
             extreme_typed t;
@@ -154,13 +154,13 @@ static void test_bounds(const extreme_type *ty)
                 where_out = extreme_cases[ei].name;
             }
         }
-        snprintf(name, sizeof name, "extremes %s: %s in [0, 1] on every case", ty->name, m->name);
+        snprintf(name, sizeof name, "extremes %s: %s in [0, 1] on every case", ty->type->name, m->name);
         CHECK(name, bad == 0, "%ld cases with a result outside [0, 1] or NaN", bad);
         snprintf(name, sizeof name, "extremes %s: %s within its bound %.1e on every case in the measured range",
-                 ty->name, m->name, ty->bound(m));
-        CHECK(name, worst <= ty->bound(m), "max|err| %.3g on %s", worst, where);
+                 ty->type->name, m->name, ty->type->bound(m));
+        CHECK(name, worst <= ty->type->bound(m), "max|err| %.3g on %s", worst, where);
         if (*where_out)
-            NOTE("extremes %s: %s outside the measured range (%s): max|err| %.3g", ty->name, m->name, where_out,
+            NOTE("extremes %s: %s outside the measured range (%s): max|err| %.3g", ty->type->name, m->name, where_out,
                  worst_out);
     }
 }
@@ -189,7 +189,7 @@ static void test_matched_index(const extreme_type *ty)
     }
     snprintf(name, sizeof name,
              "extremes %s: matched index (eta = n1, kappa = 0) gives 0 at every c, c = 0 included, and so does the reference",
-             ty->name);
+             ty->type->name);
     CHECK(name, bad == 0 && cases >= 2, "%ld non-zero results over %d cases", bad, cases);
 }
 
@@ -277,7 +277,7 @@ static void test_monotone(const extreme_type *ty)
                 rise = r - prev;
                 if (rise > worst_rise)
                     worst_rise = rise;
-                if (rise > 2.0 * ty->bound(m)) {
+                if (rise > 2.0 * ty->type->bound(m)) {
                     exact_bad++;
                     if (!*first)
                         snprintf(first, sizeof first, "%s on %s: R(%.9g) = %.9g > R(%.9g) = %.9g", m->name, e->name,
@@ -288,15 +288,15 @@ static void test_monotone(const extreme_type *ty)
         }
     }
     snprintf(name, sizeof name, "extremes %s: reference dielectric reflectance is monotone in c exactly when eta <= 2 + sqrt 3",
-             ty->name);
+             ty->type->name);
     CHECK(name, physics_bad == 0, "%d cases disagree", physics_bad);
-    snprintf(name, sizeof name, "extremes %s: Schlick and LSK never increase with c (every case)", ty->name);
+    snprintf(name, sizeof name, "extremes %s: Schlick and LSK never increase with c (every case)", ty->type->name);
     CHECK(name, strict_bad == 0, "%ld increases", strict_bad);
     snprintf(name, sizeof name,
              "extremes %s: exact forms on external dielectric reflection (eta <= 2 + sqrt 3) never rise by more than 2x the bound",
-             ty->name);
+             ty->type->name);
     CHECK(name, exact_bad == 0 && cases >= 4, "%ld rises over %d cases, first %s", exact_bad, cases, first);
-    NOTE("extremes %s: largest rise of the exact forms with c on those cases: %.3g (flat curve near c = 1)", ty->name,
+    NOTE("extremes %s: largest rise of the exact forms with c on those cases: %.3g (flat curve near c = 1)", ty->type->name,
          worst_rise);
 }
 
@@ -337,12 +337,12 @@ static void test_critical_angle(const extreme_type *ty)
                 err = fabs(got - r);
                 if (ref_c < cc && got != 1.0)
                     not_one++;
-                if (!(err <= ty->bound(m)))
+                if (!(err <= ty->type->bound(m)))
                     over++;
                 worst = err > worst ? err : worst;
                 if (i > -64) {
                     double step = fabs(got - prev_f), ref_step = fabs(r - prev_r);
-                    if (step > ref_step + 2.0 * ty->bound(m))
+                    if (step > ref_step + 2.0 * ty->type->bound(m))
                         jump++;
                     worst_step = step > worst_step ? step : worst_step;
                 }
@@ -350,18 +350,18 @@ static void test_critical_angle(const extreme_type *ty)
                 prev_r = r;
             }
             snprintf(name, sizeof name, "extremes %s: %s on %s: exactly one under total internal reflection",
-                     ty->name, m->name, e->name);
+                     ty->type->name, m->name, e->name);
             CHECK(name, not_one == 0, "%ld cosines below the critical %.9g do not give one", not_one, cc);
             snprintf(name, sizeof name,
                      "extremes %s: %s on %s: continuous across the critical angle (128 cosines within %.1e of the reference)",
-                     ty->name, m->name, e->name, ty->bound(m));
+                     ty->type->name, m->name, e->name, ty->type->bound(m));
             CHECK(name, over == 0 && jump == 0, "%ld beyond the bound (max %.3g), %ld steps not in the reference", over,
                   worst, jump);
-            NOTE("%s %s on %s: largest step between neighbouring cosines at the critical angle %.3g", ty->name, m->name,
+            NOTE("%s %s on %s: largest step between neighbouring cosines at the critical angle %.3g", ty->type->name, m->name,
                  e->name, worst_step);
         }
     }
-    snprintf(name, sizeof name, "extremes %s: at least three total-internal-reflection cases", ty->name);
+    snprintf(name, sizeof name, "extremes %s: at least three total-internal-reflection cases", ty->type->name);
     CHECK(name, cases >= 3, "%d", cases);
 }
 
@@ -426,7 +426,7 @@ static void test_reflectances(void)
             worst = err > worst ? err : worst;
         }
         snprintf(name, sizeof name, "extremes %s: F82 model on extreme F0/F82 pairs in [0, 1] and within %.1e",
-                 ty->name, bound);
+                 ty->type->name, bound);
         CHECK(name, bad == 0 && worst <= bound, "%ld bad, max|err| %.3g", bad, worst);
     }
 }
@@ -446,7 +446,7 @@ static void test_gulbrandsen(void)
             bad += b;
             worst = err > worst ? err : worst;
         }
-        snprintf(name, sizeof name, "extremes %s: Gulbrandsen at the ends of r and g: in [0, 1], within %.1e", ty->name,
+        snprintf(name, sizeof name, "extremes %s: Gulbrandsen at the ends of r and g: in [0, 1], within %.1e", ty->type->name,
                  bound);
         CHECK(name, bad == 0 && worst <= bound, "%ld bad, max|err| %.3g", bad, worst);
     }

@@ -17,7 +17,7 @@
 #include "f16/internal.h"
 #include "fixed_materials.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define NC 15361 /* binary16 values 0x0000 .. 0x3c00: every half in [0, 1] */
 

@@ -7,7 +7,7 @@
 
 #include "2_derive/fit.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define ANGLES 91
 #define PI 3.14159265358979323846

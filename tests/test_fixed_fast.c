@@ -23,7 +23,7 @@
 #include "harness.h"
 #include "worst.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define ONE 32768
 

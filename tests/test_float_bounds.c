@@ -9,7 +9,7 @@
 #include "grid.h"
 #include "harness.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 struct worst {
     double err, eta, kappa, n1, c, ref, got;

@@ -41,23 +41,20 @@ static int measure(const gen_context *g, const lab_space *ls, const char *id, sp
                    double (*truth)[3], cost *policy, cost *f32, cost *q15, double *table_max)
 {
     double curve[REPORT_ANGLES][3], v32[REPORT_ANGLES][3], v15[REPORT_ANGLES][3];
-    uint16_t q[48];
     scene_model m;
     int a, k;
     if (derive_parameters(g, &(material_source){id, NULL, NK_FORMAT_AUTO}, 25.0, 1.0, s, p) ||
-        scene_model_prepare("lut16-cubic", LUT_GRAZING, s, g, p, &m))
+        scene_model_prepare_name("lut16-cubic", LUT_GRAZING, s, g, p, &m))
         return -1;
     *table_max = 0.0;
-    for (k = 0; k < 48; k++) {
-        q[k] = (uint16_t)fixed_q15(m.table_d[k]);
-        *table_max = fmax(*table_max, m.table_d[k]);
-    }
+    for (k = 0; k < 48; k++)
+        *table_max = fmax(*table_max, m.lut.nodes[k]);
     for (a = 0; a < REPORT_ANGLES; a++) {
         float rgb[3];
-        fresnel_rgb_q15 r = fresnel_lut_cubic_u16_q15_rgb(q, 16, fixed_q15(report_cos(a)));
+        fresnel_rgb_q15 r = fresnel_lut_cubic_u16_q15_rgb(m.lut.q15, 16, fixed_q15(report_cos(a)));
         ground_truth(s, &g->cm, &g->cs, 1.0, report_cos(a), truth[a]);
         ground_truth_gamut(s, g, p, report_cos(a), curve[a]);
-        scene_model_eval(&m, p, (float)report_cos(a), rgb);
+        scene_model_eval(&m, (float)report_cos(a), rgb);
         for (k = 0; k < 3; k++)
             v32[a][k] = rgb[k];
         v15[a][0] = r.r / 32768.0;

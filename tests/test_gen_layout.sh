@@ -1,5 +1,9 @@
 #!/bin/sh
 # The generator's architecture, checked on its object files (gen/README.md):
+# - floors: gen/'s folders in the order of `floors` below, the ground floor
+#   first; a file includes (#include "folder/...") and calls (uses a symbol
+#   defined in) only files of its own folder and of the folders before it,
+#   and every folder of gen/ has its place in the order;
 # - no dependency cycle between gen/ sources: file A depends on file B when
 #   A's object uses a symbol B's defines; tsort finds any loop;
 # - a subcommand (gen/cli/cmd_X.c) only parses and calls: it defines no
@@ -28,6 +32,38 @@ if tsort "$t/edges" >"$t/order" 2>"$t/loop"; then
 else
     echo "FAIL gen layout: dependency cycle between gen/ sources: $(grep -v 'input contains a loop' "$t/loop" | sed 's/^tsort: //' | tr '\n' ' ')"
 fi
+# Floors, from the ground up (gen/main.c is "main").
+floors="common 1_spectral 2_derive 3_encode model scene 4_emit bench report viewer cli main"
+for f in $(find gen -name '*.[ch]' | sort); do
+    d=${f#gen/}
+    case $d in */*) d=${d%%/*} ;; *) d=main ;; esac
+    sed -n 's|^#include "\([a-z0-9_]*\)/.*|\1|p' "$f" | sort -u | sed "s|^|include $f $d |"
+done >"$t/includes"
+awk -v floors="$floors" '
+    function folder(f) { sub(/^gen\//, "", f); return f ~ /\// ? substr(f, 1, index(f, "/") - 1) : "main" }
+    BEGIN { n = split(floors, fl, " "); for (i = 1; i <= n; i++) rank[fl[i]] = i }
+    FILENAME ~ /includes$/ { from = $3; to = $4; how = "includes"; file = $2 }
+    FILENAME ~ /edges$/ { from = folder($1); to = folder($2); how = "calls"; file = $1 " -> " $2 }
+    from != to {
+        if (!(from in rank)) unknown[from] = 1
+        if (!(to in rank)) unknown[to] = 1
+        if ((from in rank) && (to in rank) && rank[to] > rank[from]) {
+            key = from " " how " " to
+            if (!(key in up)) { up[key] = file; nup++ }
+        }
+    }
+    END {
+        for (u in unknown) print "UNKNOWN " u
+        for (k in up) print "UP " k " (" up[k] ")"
+    }' "$t/includes" "$t/edges" | sort >"$t/floors"
+nfolders=$(find gen -mindepth 1 -maxdepth 1 -type d | wc -l)
+if [ ! -s "$t/floors" ]; then
+    echo "PASS gen layout: the $nfolders folders of gen/ lie in floors ($floors); no include or call runs up one"
+else
+    echo "FAIL gen layout: $(grep -c '^UP' "$t/floors") arrows run up a floor or a folder has no floor ($floors):" \
+        "$(head -12 "$t/floors" | tr '\n' ';')"
+fi
+
 bad=$(awk '$1 == "def" && $2 ~ /^gen\/cli\/cmd_/ { n = $2; sub(/^gen\/cli\//, "", n); sub(/\.c$/, "", n); if ($3 != n) print $2 ":" $3 }' "$t/syms")
 if [ -z "$bad" ]; then
     echo "PASS gen layout: each gen/cli/cmd_X.c defines only cmd_X"

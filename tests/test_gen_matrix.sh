@@ -7,7 +7,18 @@
 # and documented range) and holds each Q1.15 LUT table, through the
 # fixed-point runtime, to its binary32 twin within the documented bound.
 # The LUT sizes are the grammar's ends and a middle one (4, 16, 256; 64 for
-# grazing-pl). Also: a types = f32 and a types = q15 header compile alone.
+# grazing-pl). Also: a header of each number type alone compiles.
+# Then the report against the header: for water (a dielectric with a
+# total-reflection edge for n1 > 1.33), gold (outside the sRGB gamut) and
+# diamond, every scene model x number type (f32, q15 and, where the build
+# has _Float16, f16: `fresnel gen --help` lists them) x LUT size in {4, 8,
+# 12, 16, 64, 128, 256} (grazing-pl: N <= 64, q15 only) x spacing x n1,
+# gen_matrix_check's SCENE mode evaluates each model as `fresnel report`
+# does and requires the header's numbers, and holds each Q15 LUT to its
+# bound of its own double nodes (each binary16 LUT's distance from its own
+# nodes in double is printed beside fresnel_f16.h's bound, a NOTE: the
+# binary16 position keeps 3 fraction bits at 256 nodes); at n1 1.5,
+# `fresnel curve --type` of each material prints the header's numbers too.
 case "$BUILD" in *asan*) exit 0 ;; esac # the runtime's own tests run under the sanitizers
 B=${BUILD:-build}
 F="$B/fresnel"
@@ -21,6 +32,9 @@ fi
 cp "$B/tests/gen_matrix_check" "$t/check"
 mats=$(tail -n +2 data/materials.csv | cut -d, -f1 | tr '\n' ' ')
 named="schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point"
+all_types=$("$F" gen --help | sed -n 's/.*number types: *//p')
+case " $all_types " in *" f32 "*) case " $all_types " in *" q15 "*) ;; *) all_types="" ;; esac ;; *) all_types="" ;; esac
+[ -n "$all_types" ] || echo "FAIL gen matrix: fresnel gen --help lists no number types f32 and q15"
 
 # compile NAME HEADER: the four compilers, one line each
 compile() {
@@ -35,10 +49,10 @@ compile() {
     done
 }
 
-# scene NAME SPACING N1 TYPES MODELS
+# scene NAME SPACING N1 TYPES MODELS [MATERIALS]
 scene() {
     printf 'name = %s\nmaterials = %s\nmodels = %s\ntypes = %s\nn1 = %s\nlut_spacing = %s\n' \
-        "$1" "$mats" "$5" "$4" "$3" "$2" >"$t/$1.scene"
+        "$1" "${6:-$mats}" "$5" "$4" "$3" "$2" >"$t/$1.scene"
     if ! "$F" gen "$t/$1.scene" -o "$t/$1.h" 2>"$t/gen.log" >/dev/null; then
         echo "FAIL gen matrix $1: fresnel gen: $(grep -v warning "$t/gen.log" | head -3)"
         return 1
@@ -60,19 +74,52 @@ for spacing in grazing uniform grazing-pl; do
         rm -f "$t/$name.h"
     done
 done
-for types in f32 q15; do
+for types in $all_types; do
     scene "m_only_$types" grazing 1.5 "$types" "$named lut4 lut16-residual lut16-cubic" &&
         compile "m_only_$types (types = $types alone)" "$t/m_only_$types.h"
 done
 
+for spacing in grazing uniform grazing-pl; do
+    luts=""
+    types=$all_types
+    for n in 4 8 12 16 64 128 256; do
+        case $spacing in
+        grazing) luts="$luts lut$n lut$n-residual lut$n-cubic" ;;
+        uniform) luts="$luts lut$n lut$n-residual" ;;
+        *) [ "$n" -le 64 ] && luts="$luts lut$n"; types="q15" ;;
+        esac
+    done
+    for n1 in 1 1.33 1.5 2.42 4; do
+        name=r_$(echo "$spacing" | tr -c 'a-z0-9\n' _)_$(echo "$n1" | tr . _)
+        scene "$name" "$spacing" "$n1" "$types" "$named$luts" "water au diamond" || continue
+        [ "$n1" = 1.5 ] && compile "$name" "$t/$name.h"
+        "$t/check" "$t/$name.h" "$spacing" "$name (${spacing}, n1 $n1)" "$t/$name.scene" 2>"$t/check.err"
+        # fresnel curve --type evaluates the same values (grazing-pl has no curve)
+        if [ "$spacing" != grazing-pl ] && [ "$n1" = 1.5 ]; then
+            for mat in water au diamond; do
+                for ty in $types; do
+                    if "$F" curve --material "$mat" --n1 "$n1" --lut-spacing "$spacing" --type "$ty" --samples 181 \
+                        --models "$named$luts" >"$t/curve.csv" 2>"$t/curve.err"; then
+                        "$t/check" "$t/$name.h" "$spacing" "$name curve" "$t/$name.scene" "$t/curve.csv" "$mat" "$ty" 2>"$t/check.err"
+                    else
+                        echo "FAIL gen matrix $name: fresnel curve --type $ty: $(head -2 "$t/curve.err")"
+                    fi
+                done
+            done
+        fi
+        rm -f "$t/$name.h"
+    done
+done
+
 # The checker itself must catch what a wrong header looks like: a residual
 # node wrapped past int16_t, an infinite float, a C99 designated initialiser
-# (no C++17), a Q15 code above one.
+# (no C++17), a Q15 code above one, a binary16 constant that no binary16 holds.
 printf '/* x */\nenum { fresnel_b_w_lut8_residual_frac = 15 };\nstatic const int16_t fresnel_b_w_lut8_residual_q15[3] FRESNEL_GEN_UNUSED = {\n    -385, 34867, 304\n};\n' >"$t/bad1.h"
 printf '/* x */\nstatic const float fresnel_b_w_ct_eta FRESNEL_GEN_UNUSED = inf.0f;\n' >"$t/bad2.h"
 printf '/* x */\nstatic const fresnel_nk_prep_q15 fresnel_b_w_nk_q15[1] FRESNEL_GEN_UNUSED = {\n    {.n = {1073741824, -30}, .nk2 = {1073741824, -29}}\n};\n' >"$t/bad3.h"
 printf '/* x */\nstatic const fresnel_rgb_q15 fresnel_b_w_f0_q15 FRESNEL_GEN_UNUSED = {32769, 0, 0};\n' >"$t/bad4.h"
-for b in 1 2 3 4; do
+printf '/* x */\nstatic const fresnel_f16 fresnel_b_w_f0_f16[3] FRESNEL_GEN_UNUSED = {0.5f, 0.1f, 0.25f};\n' >"$t/bad5.h"
+for b in 1 2 3 4 5; do
     if "$t/check" "$t/bad$b.h" grazing "bad$b" | grep -q '^FAIL gen matrix bad'"$b"': header values'; then
         echo "PASS gen matrix: the checker rejects wrong header $b ($(head -3 "$t/bad$b.h" | tail -1 | cut -c1-50))"
     else

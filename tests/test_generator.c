@@ -7,7 +7,7 @@
 #include "fresnel.h"
 #include "3_encode/encode.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "scene/scene_eval.h"
 
 static const char *const metals[] = {"ag", "cu", "au", "commercial_bronze", "brass", "al", "pd",
@@ -47,7 +47,7 @@ static void check_lut_fit(const char *id, const spectrum *s, const gen_context *
         int ch;
         char name[128];
         scene_model m;
-        if (scene_model_prepare(model, LUT_GRAZING, s, g, p, &m)) {
+        if (scene_model_prepare_name(model, LUT_GRAZING, s, g, p, &m)) {
             CHECK(model, 0, "prepare failed");
             return;
         }
@@ -57,18 +57,18 @@ static void check_lut_fit(const char *id, const spectrum *s, const gen_context *
             for (ch = 0; ch < 3; ch++)
                 sampled[ch * N + k] = v[ch];
         }
-        e_fit = sq_error(m.table_d, N, form, (const double(*)[3])gt, cs, COUNT);
+        e_fit = sq_error(m.lut.nodes, N, form, (const double(*)[3])gt, cs, COUNT);
         e_sampled = sq_error(sampled, N, form, (const double(*)[3])gt, cs, COUNT);
         /* a minimum: moving any one node either way, within [0, 1], costs */
         for (k = 0; k < 3 * N; k++) {
             int sign;
             for (sign = -1; sign <= 1; sign += 2) {
                 double e;
-                if (m.table_d[k] + sign * 1e-3 < 0.0 || m.table_d[k] + sign * 1e-3 > 1.0)
+                if (m.lut.nodes[k] + sign * 1e-3 < 0.0 || m.lut.nodes[k] + sign * 1e-3 > 1.0)
                     continue; /* held at a bound: a constrained minimum */
-                m.table_d[k] += sign * 1e-3;
-                e = sq_error(m.table_d, N, form, (const double(*)[3])gt, cs, COUNT);
-                m.table_d[k] -= sign * 1e-3;
+                m.lut.nodes[k] += sign * 1e-3;
+                e = sq_error(m.lut.nodes, N, form, (const double(*)[3])gt, cs, COUNT);
+                m.lut.nodes[k] -= sign * 1e-3;
                 if (e < e_best_neighbour)
                     e_best_neighbour = e;
             }

@@ -7,7 +7,7 @@
 #include "fresnel.h"
 #include "grid.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define NEAR(a, b, tol) (fabs((double)(a) - (double)(b)) <= (tol))
 

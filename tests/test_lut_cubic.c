@@ -14,7 +14,7 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 static double cubic_ref(const double *t, int n, double c)
 {

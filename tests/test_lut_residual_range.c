@@ -12,7 +12,7 @@
 
 #include "fresnel_fixed.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 static double ref(double f0, const double *v, int n, int linear, double c)
 {

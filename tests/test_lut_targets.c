@@ -5,6 +5,7 @@
  * within 0.01 mean / 0.05 max, 32 nodes within 0.005 / 0.03. `make report`
  * shows the same numbers in its targets table. */
 #include <math.h>
+#include <string.h>
 #include <stdlib.h>
 
 #include "3_encode/fixed_params.h"
@@ -46,14 +47,13 @@ int main(void)
             scene_model m;
             uint16_t q[96];
             double gt[REPORT_ANGLES][3], v[REPORT_ANGLES][3], mean, rms, max;
-            int a, k;
+            int a;
             if (derive_parameters(g, &(material_source){metals[i], NULL, NK_FORMAT_AUTO}, 25.0, 1.0, s, &p) ||
-                scene_model_prepare(targets[t].model, targets[t].spacing, s, g, &p, &m)) {
+                scene_model_prepare_name(targets[t].model, targets[t].spacing, s, g, &p, &m)) {
                 CHECK(metals[i], 0, "cannot prepare %s", targets[t].model);
                 continue;
             }
-            for (k = 0; k < 3 * targets[t].n; k++)
-                q[k] = (uint16_t)fixed_q15(m.table_d[k]);
+            memcpy(q, m.lut.q15, 3 * (size_t)targets[t].n * sizeof *q);
             scene_model_free(&m);
             for (a = 0; a < REPORT_ANGLES; a++) {
                 int32_t c = fixed_q15(report_cos(a));

@@ -5,7 +5,7 @@
  * numbers, divide by a vanishing one or overflow, and lose digits where the
  * physics is perfectly tame. This test implements each textbook form in
  * binary32 next to the runtime's and measures both against the double
- * reference (gen/model/reference.c) on the inputs where the textbook form breaks.
+ * reference (gen/common/reference.c) on the inputs where the textbook form breaks.
  * It asserts that the runtime stays within its documented FRESNEL_BOUND_*
  * while the textbook form is outside that bound, so neither half can pass by
  * accident: if the textbook form ever came within the bound, the case would
@@ -53,7 +53,7 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 /* ---- the textbook forms, in binary32 ---- */
 

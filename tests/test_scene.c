@@ -7,7 +7,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "harness.h"
 #include "scene/scene.h"
 #include "1_spectral/spectral.h"
@@ -123,14 +123,21 @@ static void test_full_manifest(void)
           "count %d", s.material_count);
     ok = s.model_count == (int)(sizeof models / sizeof models[0]);
     for (i = 0; ok && i < s.model_count; i++)
-        ok = !strcmp(s.models[i], models[i]);
+        ok = !strcmp(s.models[i].name, models[i]);
     CHECK("scene full: models in file order", ok, "count %d", s.model_count);
+    CHECK("scene full: models typed once (row, nodes, identifier; LUT rows at the scene's spacing)",
+          s.models[2].row == model_find_offered("lsk-comp", MODEL_SCENE) && s.models[2].lut_n == 0 &&
+              !strcmp(s.models[2].ident, "lsk_comp") && s.models[11].lut_n == 256 &&
+              s.models[11].row == model_lut_row(LUT_RESIDUAL, LUT_UNIFORM) &&
+              s.models[11].row != model_lut_row(LUT_RESIDUAL, LUT_GRAZING) &&
+              !strcmp(s.models[11].ident, "lut256_residual"),
+          "lsk-comp %s, lut256-residual %d %s", s.models[2].ident, s.models[11].lut_n, s.models[11].ident);
     CHECK("scene full: space", !strcmp(s.space, "display-p3"), "'%s'", s.space);
     CHECK("scene full: sigma", s.sigma == 12.5, "%g", s.sigma);
     CHECK("scene full: n1", s.n1 == 1.33, "%g", s.n1);
-    CHECK("scene full: types", s.type_count == 1 && !strcmp(s.types[0], "f32"), "count %d",
+    CHECK("scene full: types", s.type_count == 1 && s.types[0]->id == TYPE_F32, "count %d",
           s.type_count);
-    CHECK("scene full: lut_spacing", !strcmp(s.lut_spacing, "uniform"), "'%s'", s.lut_spacing);
+    CHECK("scene full: lut_spacing", s.spacing == LUT_UNIFORM, "%d", (int)s.spacing);
     CHECK("scene full: key lines",
           s.materials_line == 2 && s.models_line == 5 && s.space_line == 6 &&
               s.sigma_line == 7 && s.n1_line == 8 && s.types_line == 9 &&
@@ -151,9 +158,9 @@ static void test_defaults(void)
         return;
     CHECK("scene defaults: values",
           !strcmp(s.space, "srgb") && s.sigma == 25.0 && s.n1 == 1.0 && s.type_count == 1 &&
-              !strcmp(s.types[0], "f32") && !strcmp(s.lut_spacing, "grazing"),
-          "space %s sigma %g n1 %g types %d lut_spacing %s", s.space, s.sigma, s.n1,
-          s.type_count, s.lut_spacing);
+              s.types[0]->id == TYPE_F32 && s.spacing == LUT_GRAZING && s.gamut == GAMUT_MAP,
+          "space %s sigma %g n1 %g types %d lut_spacing %d gamut %d", s.space, s.sigma, s.n1,
+          s.type_count, (int)s.spacing, (int)s.gamut);
     CHECK("scene defaults: lines 0 where defaulted, set where given",
           s.models_line == 1 && s.materials_line == 2 && s.space_line == 0 &&
               s.sigma_line == 0 && s.n1_line == 0 && s.types_line == 0 &&
@@ -184,8 +191,17 @@ static void test_accepted_values(void)
                               &s) == 0 && s.sigma == 25.0;
     CHECK("scene sigma and n1 range ends accepted", ok, "%s", last_message);
     ok = load_capturing(write_manifest("materials = a\nmodels = exact\nlut_spacing = grazing\n"),
-                        &s) == 0 && !strcmp(s.lut_spacing, "grazing");
+                        &s) == 0 && s.spacing == LUT_GRAZING;
     CHECK("scene lut_spacing grazing accepted", ok, "%s", last_message);
+    ok = load_capturing(write_manifest("materials = a\nmodels = exact\ntypes = fixed f32\n"), &s) == 0 &&
+         s.type_count == 2 && s.types[0] == &number_types[TYPE_Q15] && s.types[1] == &number_types[TYPE_F32];
+    CHECK("scene types: rows of the number type registry in file order, fixed the older name of q15", ok, "%s",
+          last_message);
+    ok = load_capturing(write_manifest("materials = a\nmodels = exact\ntypes = f16\n"), &s) == 0;
+    CHECK("scene types = f16 accepted where the build has _Float16, refused with a reason where not",
+          FRESNEL_HAS_F16 ? ok && s.type_count == 1 && s.types[0]->id == TYPE_F16
+                          : !ok && strstr(last_message, "_Float16") != NULL,
+          "%s", last_message);
 
     used = (size_t)snprintf(text, sizeof text, "models = exact\nmaterials =");
     for (i = 0; i < SCENE_MAX_MATERIALS; i++)
@@ -208,8 +224,8 @@ static void test_targets(void)
     scene s;
     int rc = load_capturing(write_manifest("materials = a\nmodels = exact\ntargets = openpbr  gltf\tgulbrandsen\n"),
                             &s);
-    CHECK("scene targets: listed in order", rc == 0 && s.target_count == 3 && !strcmp(s.targets[0], "openpbr") &&
-                                                 !strcmp(s.targets[1], "gltf") && !strcmp(s.targets[2], "gulbrandsen") &&
+    CHECK("scene targets: listed in order", rc == 0 && s.target_count == 3 && !strcmp(s.targets[0]->name, "openpbr") &&
+                                                 !strcmp(s.targets[1]->name, "gltf") && !strcmp(s.targets[2]->name, "gulbrandsen") &&
                                                  s.targets_line == 3,
           "rc %d count %d: %s", rc, s.target_count, last_message);
     rc = load_capturing(write_manifest("materials = a\nmodels = exact\n"), &s);
@@ -237,25 +253,23 @@ static void test_lut_names(void)
                  {"exact", 0, 0},         {"lut16-residual-residual", 0, 0},
                  {"lut16-cubic", 16, 2},  {"lut16-cubic-residual", 0, 0}, {"lut16-cubi", 0, 0}};
     size_t i;
-    int residual;
+    scene_entry e;
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         char name[64];
-        int size;
-        residual = -1;
-        size = scene_model_lut_size(cases[i].name, &residual);
+        int size, form = -1;
+        size = scene_entry_parse(cases[i].name, LUT_GRAZING, &e) ? 0 : e.lut_n;
+        if (size)
+            form = (int)e.row->form;
         snprintf(name, sizeof name, "scene lut size of '%s'", cases[i].name);
-        CHECK(name, size == cases[i].size && (size == 0 || residual == cases[i].residual),
-              "got N %d residual %d", size, residual);
+        CHECK(name, size == cases[i].size && (size == 0 || form == cases[i].residual), "got N %d form %d", size,
+              form);
     }
-    CHECK("scene lut size with NULL residual pointer", scene_model_lut_size("lut32", NULL) == 32,
-          "got %d", scene_model_lut_size("lut32", NULL));
-    CHECK("scene lut size of NULL", scene_model_lut_size(NULL, NULL) == 0, "not 0");
-    CHECK("scene model_known",
-          scene_model_known("f82") && scene_model_known("lut8-residual") &&
-              !scene_model_known("F82") && !scene_model_known("lut2") &&
-              !scene_model_known(NULL),
-          "f82 %d lut8-residual %d F82 %d lut2 %d", scene_model_known("f82"),
-          scene_model_known("lut8-residual"), scene_model_known("F82"), scene_model_known("lut2"));
+    CHECK("scene model name of NULL", scene_entry_parse(NULL, LUT_GRAZING, &e) != 0, "accepted");
+    CHECK("scene model names",
+          !scene_entry_parse("f82", LUT_GRAZING, &e) && e.lut_n == 0 &&
+              !scene_entry_parse("lut8-residual", LUT_GRAZING, &e) && e.lut_n == 8 &&
+              scene_entry_parse("F82", LUT_GRAZING, &e) && scene_entry_parse("lut2", LUT_GRAZING, &e),
+          "f82, lut8-residual, F82, lut2");
 }
 
 static void test_errors(void)

@@ -7,9 +7,9 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "1_spectral/spectral.h"
 
 #define MAX_MATERIALS 256

@@ -1,5 +1,5 @@
 /* Other renderers as targets (gen/2_derive/targets.h).
- *   Each transcribed formula (gen/model/reference_targets.c) against values
+ *   Each transcribed formula (gen/common/reference_targets.c) against values
  *   worked by hand from its specification, and the identities between them
  *   that the sources imply: Unreal's F_AdobeF82, Blender's Principled metal
  *   and MaterialX's generalized Schlick at (color90 1, exponent 5) are
@@ -17,7 +17,7 @@
 #include "1_spectral/colour_difference.h"
 #include "2_derive/targets.h"
 #include "harness.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define NEAR(a, b, tol) (fabs((a) - (b)) <= (tol))
 

@@ -40,7 +40,6 @@ static double clampd(double x, double lo, double hi) { return x < lo ? lo : (x >
 /* What the page's fresnel_of evaluates for one row. */
 typedef struct row {
     const scene_model *model; /* NULL: the reference table */
-    const material_params *p;
     const double *ref; /* VIEWER_REF_NODES x 3 */
 } row;
 
@@ -48,7 +47,7 @@ static vec3 fresnel(const row *r, double c)
 {
     if (r->model) {
         float v[3];
-        scene_model_eval(r->model, r->p, (float)c, v);
+        scene_model_eval(r->model, (float)c, v);
         return v3(v[0], v[1], v[2]);
     } else {
         double x = sqrt(clampd(c, 0.0, 1.0)) * (VIEWER_REF_NODES - 1), t;
@@ -154,7 +153,7 @@ int main(int argc, char **argv)
         return 2;
     for (i = 0; i < l.sc->material_count; i++) {
         for (k = 0; k < l.sc->model_count; k++)
-            if (scene_model_prepare(l.sc->models[k], scene_lut_spacing(l.sc), l.spectra[i], l.g, &l.params[i],
+            if (scene_model_prepare(&l.sc->models[k], l.sc->spacing, l.spectra[i], l.g, &l.params[i],
                                     &models[i * l.sc->model_count + k]))
                 return 2;
         for (k = 0; k < VIEWER_REF_NODES; k++) {
@@ -174,14 +173,13 @@ int main(int argc, char **argv)
             if (!strcmp(l.sc->materials[i], mat))
                 mi = i;
         for (k = 0; k < l.sc->model_count; k++)
-            if (!strcmp(l.sc->models[k], model))
+            if (!strcmp(l.sc->models[k].name, model))
                 mo = k;
         if (mi < 0 || (mo < 0 && strcmp(model, "reference"))) {
             bad++;
             continue;
         }
         r.model = mo < 0 ? NULL : &models[mi * l.sc->model_count + mo];
-        r.p = &l.params[mi];
         r.ref = refs + mi * VIEWER_REF_NODES * 3;
         e = shade(&r, dist, u, w);
         worst = fmax(worst, fabs(got[0] - e.x) / fmax(fabs(e.x), 0.01));

@@ -39,7 +39,7 @@
 
 #include "fresnel.h"
 #include "fresnel_f16.h"
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "harness.h"
 #include "model/registry.h"
 #include "scene/scene.h"
@@ -110,9 +110,7 @@ static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, in
                    "    highp float c;\n",
                 GROUP);
     fprintf(f, "    if (i >= %d)\n        return;\n    c = fr_c[i];\n", NCOS);
-    for (i = 0; sc->models[m][i] && i < 31; i++)
-        id[i] = sc->models[m][i] == '-' ? '_' : sc->models[m][i];
-    id[i] = '\0';
+    snprintf(id, sizeof id, "%s", sc->models[m].ident);
     for (i = 0; i < sc->material_count; i++)
         fprintf(f, "    %sif (fr_material == %d) r = fresnel_%s_%s_%s_rgb(c);\n", i ? "else " : "", i, ident,
                 sc->materials[i], id);
@@ -323,10 +321,10 @@ int main(int argc, char **argv)
             return 1;
         for (m = 0; m < sc.model_count; m++) {
             scene_model *sm = &models[i * sc.model_count + m];
-            if (scene_model_prepare(sc.models[m], scene_lut_spacing(&sc), &spectra[i], &gc, &params[i], sm))
+            if (scene_model_prepare(&sc.models[m], sc.spacing, &spectra[i], &gc, &params[i], sm))
                 return 1;
             for (k = 0; k < NCOS; k++)
-                scene_model_eval(sm, &params[i], cosines[k], ref + (size_t)m * nout + 3 * ((size_t)i * NCOS + k));
+                scene_model_eval(sm, cosines[k], ref + (size_t)m * nout + 3 * ((size_t)i * NCOS + k));
         }
     }
     snprintf(path, sizeof path, "ports/glsl/prelude_450.glsl");
@@ -359,14 +357,14 @@ int main(int argc, char **argv)
             size_t nbytes = 0;
             int bad = 0, ok = 1, relaxed;
             FILE *f;
-            snprintf(name, sizeof name, "vulkan: %s %s, %d materials, %s", ident, sc.models[m], nmat, va->name);
+            snprintf(name, sizeof name, "vulkan: %s %s, %d materials, %s", ident, sc.models[m].name, nmat, va->name);
             snprintf(base, sizeof base, "%s/%s_%d_%d", dir, ident, vi, m);
             snprintf(path, sizeof path, "%s.%s", base, va->ext);
             if (!(f = fopen(path, "w"))) {
                 CHECK(name, 0, "cannot write %s", path);
                 continue;
             }
-            fprintf(f, "// vulkan_test: %s, scene %s, model %s\n", va->name, ident, sc.models[m]);
+            fprintf(f, "// vulkan_test: %s, scene %s, model %s\n", va->name, ident, sc.models[m].name);
             if (va->hlsl) {
                 if (!va->relaxed)
                     fputs("#define FRESNEL_MP float\n", f);
@@ -446,10 +444,10 @@ int main(int argc, char **argv)
     NOTE("table | %s | model | GLSL 4.50 highp | GLSL mediump | HLSL float | HLSL min16float | fresnel_f16.h bound |",
          ident);
     for (m = 0; m < sc.model_count; m++) {
-        const model *row = model_find_offered(sc.models[m], MODEL_SCENE);
-        double b16 = row && row->f16_bound > 0.0 ? row->f16_bound
-                   : models[m].form == LUT_CUBIC ? FRESNEL_BOUND_LUT_CUBIC_F16
-                   : models[m].lut_n > 0         ? FRESNEL_BOUND_LUT_F16
+        const model *row = sc.models[m].row;
+        double b16 = row->f16_bound > 0.0 ? row->f16_bound
+                   : models[m].lut.form == LUT_CUBIC ? FRESNEL_BOUND_LUT_CUBIC_F16
+                   : models[m].lut.n > 0         ? FRESNEL_BOUND_LUT_F16
                                                  : 0.0;
         char cell[NVARIANTS][32];
         for (vi = 0; vi < NVARIANTS; vi++) {
@@ -458,7 +456,7 @@ int main(int argc, char **argv)
             else
                 snprintf(cell[vi], sizeof cell[vi], "not run");
         }
-        NOTE("table | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m], cell[0], cell[1], cell[2], cell[3],
+        NOTE("table | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m].name, cell[0], cell[1], cell[2], cell[3],
              b16);
     }
     vkrun_close(&v);

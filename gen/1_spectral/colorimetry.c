@@ -5,7 +5,7 @@
  * to interpolate around. */
 #include <math.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/spectral.h"
 
 /* Reads a table whose first column is wavelength in whole nm, ascending in

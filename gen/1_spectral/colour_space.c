@@ -12,7 +12,7 @@
 #include <string.h>
 #include <strings.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/spectral.h"
 
 const char *const colour_space_ids[] = {"srgb",    "display-p3", "dci-p3", "adobe-rgb",

@@ -3,7 +3,7 @@
  * CMFs -> XYZ -> adapted RGB]. Exact Fresnel at each 1 nm CMF sample, lit by
  * D65, normalised by the illuminant's Y so a perfect reflector has Y = 1;
  * colour_space's per-channel scale then makes it exactly (1,1,1). */
-#include "model/reference.h"
+#include "common/reference.h"
 #include "1_spectral/spectral.h"
 
 /* Every tenth 0.1 nm node is a whole nanometre, where the CMFs are tabulated. */

@@ -21,7 +21,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/import.h"
 
 const char *const nk_format_names[] = {"auto", "csv", "rii-yaml", "rii-csv", "sopra", "spd", NULL};

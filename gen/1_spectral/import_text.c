@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/import.h"
 
 /* Largest file read. The biggest refractiveindex.info data files are a few

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/spectral.h"
 
 #define NK_HEADER "wavelength_nm,n,k"

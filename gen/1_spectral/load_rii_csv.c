@@ -8,7 +8,7 @@
  * of fields and a block without rows are errors at their line. */
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/import.h"
 
 enum block { BLOCK_NONE, BLOCK_N, BLOCK_K, BLOCK_NK };

@@ -6,7 +6,7 @@
  * increasing and a file without two pairs are errors. */
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/import.h"
 
 static int read_pairs(text_file *t, nk_column *c)

@@ -3,7 +3,7 @@
  * `materials` listing can say which measurement a constant came from. */
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/spectral.h"
 
 #define MATERIALS_HEADER "id,name,dataset,kind"

@@ -7,7 +7,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/spectral.h"
 
 /* Grid wavelengths come from integers so that node i is the double nearest

@@ -4,11 +4,11 @@
 #include <math.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/colour_difference.h"
 #include "2_derive/fit.h"
 #include "2_derive/derive.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 int gen_context_load(const char *dir, const char *space, gen_context *g)
 {

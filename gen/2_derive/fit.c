@@ -25,7 +25,7 @@
 #include <stddef.h>
 #include <stdlib.h>
 
-#include "model/reference.h"
+#include "common/reference.h"
 
 /* Coarse grid: eta log-spaced over GRID_ETA_LO..HI, kappa 0 plus log-spaced
  * over GRID_KAPPA_LO..HI. Wider than metals' usual [0.05, 5] x [0, 10] so

@@ -13,7 +13,7 @@
 
 #include "1_spectral/colour_difference.h"
 #include "2_derive/targets.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 /* Steps are fractions of each number's range: from 1/64 down to 1e-6,
  * finer than a 16-bit texture resolves. */

@@ -1,5 +1,5 @@
 /* Other renderers' metals: the table of targets (targets.h). Each row's
- * formula is transcribed in model/reference_targets.c beside its source;
+ * formula is transcribed in common/reference_targets.c beside its source;
  * the ranges are what that source states, and where it states none the
  * row says what the fit assumes. */
 #include "2_derive/targets.h"
@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "fresnel.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 /* MaterialX states no range for generalized_schlick_bsdf's inputs; the fit
  * searches this box. The 16 metals of data/scenes/report.scene fit inside
@@ -178,7 +178,7 @@ const target target_table[] = {
     {"gulbrandsen", "Gulbrandsen's artist-friendly metallic Fresnel (reflectivity r, edge tint g)",
      "r, g to n, k, then the approximate unpolarised conductor Fresnel, as the paper defines it",
      "Gulbrandsen 2014, \"Artist Friendly Metallic Fresnel\", JCGT 3(4), section 2.3.3 (n, k from r, g) and "
-     "equations 4-6 (the approximate Fresnel); model/reference.c, ref_gulbrandsen",
+     "equations 4-6 (the approximate Fresnel); common/reference.c, ref_gulbrandsen",
      "linear RGB of the renderer's working space; reflectivity in [0, 1) (0.9999 here, the runtime's clamp), "
      "edge_tint in [0, 1]",
      2,

@@ -5,7 +5,7 @@
  *
  * targets.c holds the table: each target's name, the parameters its UI or
  * file format takes (names, the range the fit keeps to, what the source says
- * of it), where the values go, and its formula from model/reference.h with
+ * of it), where the values go, and its formula from common/reference.h with
  * the source it is transcribed from. target_fit.c fits the parameters: the
  * naive conversion (F0 at normal incidence, the edge value at cos = 1/7,
  * "82 degrees"), and the parameters minimising the mean CIEDE2000 over

@@ -12,7 +12,7 @@
 
 #include "fresnel_fixed_fast.h"
 #include "3_encode/encode.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define FIT_STEPS 1800 /* samples at theta = k 90/FIT_STEPS degrees */
 

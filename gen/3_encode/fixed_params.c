@@ -5,7 +5,7 @@
 #include <math.h>
 
 #include "fresnel.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 fresnel_qf fixed_qf(double x)
 {

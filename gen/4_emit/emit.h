@@ -16,6 +16,7 @@ typedef struct emit_input {
     const gen_context *g;
     const material_params *params; /* one per scene material, in order */
     spectrum *const *spectra;      /* the same */
+    const encoded_material *enc;   /* the same, encoded: every constant the back ends write */
     int glsl; /* EMIT_C: C header for include/fresnel.h; EMIT_GLSL, EMIT_HLSL: shader source */
 } emit_input;
 
@@ -33,6 +34,7 @@ typedef struct emit_loaded {
     gen_context *g;
     material_params *params;
     spectrum **spectra;
+    encoded_material *enc;
     char name[SCENE_PREFIX_SIZE];
     emit_input in;
 } emit_loaded;
@@ -51,24 +53,41 @@ void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
 void emit_material_list(FILE *f, const emit_input *in);
 /* The opening comment's ground-truth line, with the scene's gamut policy. */
 void emit_truth_comment(FILE *f, const scene *sc);
-/* One material's float parameters for the scene's models, through the back
- * end's syntax for an RGB triple and a scalar. */
+/* One material's floating-point constants for the scene's models, through
+ * the back end's syntax for an RGB triple and a scalar: the binary32 ones
+ * (the encoder's), or those of one number type seen as doubles. */
 typedef void (*emit_rgb_fn)(FILE *f, const char *prefix, const char *name, const double v[3], const char *why);
 typedef void (*emit_float_fn)(FILE *f, const char *prefix, const char *name, double v, const char *why);
-void emit_material_params(FILE *f, const scene *sc, const material_params *p, const char *prefix, emit_rgb_fn rgb,
+void emit_material_params(FILE *f, const scene *sc, const encoded_material *e, const char *prefix, emit_rgb_fn rgb,
                           emit_float_fn flt);
-/* A LUT model's table for one material (3n values, malloc'd; NULL when out
- * of memory) and the model's name as a C identifier part (lut16-residual ->
- * lut16_residual) in name[32]; *n and *form describe the table. */
-double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
-                       lut_spacing spacing, int *n, lut_form *form, char name[32]);
+typedef struct emit_floats {
+    double f0[3], f_avg[3], f82[3], eta[ETA_SOURCES][3], kappa[ETA_SOURCES][3], lsk_a[3], lsk_alpha[3], gulb_r[3],
+        gulb_g[3], ct_eta, ct_kappa;
+} emit_floats;
+void emit_float_params(FILE *f, const scene *sc, const emit_floats *v, const char *prefix, emit_rgb_fn rgb,
+                       emit_float_fn flt);
+/* A C float literal that reads back to the same binary32 value (9
+ * significant digits, a '.' or an exponent, the 'f' suffix). */
+void emit_c_float(FILE *f, double v);
+/* LUT model e's table for material i of the input in every number type
+ * (encode_table): 0, or -1 when out of memory. */
+int emit_lut_encode(const emit_input *in, const scene_entry *e, int i, encoded_lut *t);
+/* Its binary32 nodes as doubles (3n values, malloc'd; NULL when out of
+ * memory), for the shader back ends. */
+double *emit_lut_table(const emit_input *in, const scene_entry *e, int i);
 
 /* Material i's heading comment and, for a scene with the targets key, the
  * comment holding other renderers' parameters (emit_targets.c). */
 void emit_material_heading(FILE *f, const emit_input *in, int material);
 
-/* One material's Q1.15 constants and tables (emit_fixed.c); prefix is
- * fresnel_<scene>_<material>. */
-int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix);
+/* The C header's back end of each number type: one material's constants and
+ * tables (luts[m]: model m's table, encoded once for every type; n 0 for
+ * the other models); prefix is fresnel_<scene>_<material>. 0, or
+ * CLI_BAD_INPUT after a message. emit_header.c: binary32; emit_fixed.c:
+ * Q1.15; emit_f16.c: binary16. */
+typedef int (*emit_type_fn)(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
+int emit_f32_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
+int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
+int emit_f16_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
 
 #endif

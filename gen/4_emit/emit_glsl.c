@@ -12,7 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 
 #define WHERE "fresnel gen"
 
@@ -66,16 +66,16 @@ int emit_shader_check(const scene *sc, const char *manifest, const char *name, c
     char where[1100];
     int i;
     for (i = 0; i < sc->model_count; i++) {
-        const char *lacks = model_shader_lacks(sc->models[i], scene_lut_spacing(sc));
+        const char *lacks = model_shader_lacks(sc->models[i].row, sc->spacing);
         if (!lacks)
             continue;
-        if (scene_lut_spacing(sc) == LUT_GRAZING_PL) {
+        if (sc->spacing == LUT_GRAZING_PL) {
             snprintf(where, sizeof where, "%s:%d", manifest, sc->lut_spacing_line ? sc->lut_spacing_line : 1);
             return cli_error(where, "expected lut_spacing grazing or uniform with %s: %s", flag, lacks);
         }
         snprintf(where, sizeof where, "%s:%d", manifest, sc->models_line);
-        return cli_error(where, "expected models the shader ports have with %s, got '%s': %s", flag, sc->models[i],
-                         lacks);
+        return cli_error(where, "expected models the shader ports have with %s, got '%s': %s", flag,
+                         sc->models[i].name, lacks);
     }
     if (!glsl_part_ok(name))
         return cli_error(manifest,
@@ -137,7 +137,6 @@ static void layout_free(glsl_layout *l)
 static int layout_build(const emit_input *in, glsl_layout *l)
 {
     const scene *sc = in->sc;
-    lut_spacing spacing = scene_lut_spacing(sc);
     int i, m, nmax = 0, cols = 1, rows;
     memset(l, 0, sizeof *l);
     l->luts = calloc((size_t)sc->material_count * (size_t)sc->model_count + 1, sizeof *l->luts);
@@ -146,12 +145,15 @@ static int layout_build(const emit_input *in, glsl_layout *l)
     for (i = 0; i < sc->material_count; i++)
         for (m = 0; m < sc->model_count; m++) {
             glsl_lut *u = &l->luts[l->count];
-            if (!scene_model_lut_size(sc->models[m], NULL))
+            const scene_entry *e = &sc->models[m];
+            if (!e->lut_n)
                 continue;
             u->material = i;
             u->model = m;
-            u->t = emit_lut_table(sc->models[m], &in->params[i], in->spectra[i], in->g, spacing, &u->n, &u->form,
-                                  u->name);
+            u->n = e->lut_n;
+            u->form = e->row->form;
+            snprintf(u->name, sizeof u->name, "%s", e->ident);
+            u->t = emit_lut_table(in, e, i);
             if (!u->t) {
                 layout_free(l);
                 return cli_error(WHERE, "out of memory");
@@ -181,14 +183,6 @@ static const glsl_lut *layout_find(const glsl_layout *l, int material, int model
         if (l->luts[i].material == material && l->luts[i].model == model)
             return &l->luts[i];
     return NULL;
-}
-
-void emit_shader_model_ident(const char *model, char out[32])
-{
-    int i;
-    for (i = 0; model[i] && i < 31; i++)
-        out[i] = model[i] == '-' ? '_' : model[i];
-    out[i] = '\0';
 }
 
 static void emit_lut_data(FILE *f, const char *scene_prefix, const char *prefix, const glsl_lut *u,
@@ -225,9 +219,8 @@ void emit_shader_lut_array_call(FILE *f, const char *prefix, const char *table, 
             form == LUT_RESIDUAL ? "_f0, " : "", prefix, table, n);
 }
 
-void emit_shader_model_expr(FILE *f, const char *prefix, const char *model)
+void emit_shader_model_expr(FILE *f, const char *prefix, const struct model *row)
 {
-    const struct model *row = model_find_offered(model, MODEL_SCENE);
     const char *t;
     for (t = row->glsl; *t; t++)
         if (*t == '@')
@@ -238,12 +231,10 @@ void emit_shader_model_expr(FILE *f, const char *prefix, const char *model)
 
 /* vec3 <prefix>_<model>_rgb(c): the model for this material, as
  * gen/scene/scene_eval.c evaluates it with the C runtime. */
-static void emit_model_function(FILE *f, const char *scene_prefix, const char *prefix, const char *model,
+static void emit_model_function(FILE *f, const char *scene_prefix, const char *prefix, const scene_entry *e,
                                 const glsl_lut *u, lut_spacing spacing)
 {
-    char id[32];
-    emit_shader_model_ident(model, id);
-    fprintf(f, "vec3 %s_%s_rgb(FRESNEL_HIGHP float c)\n{\n", prefix, id);
+    fprintf(f, "vec3 %s_%s_rgb(FRESNEL_HIGHP float c)\n{\n", prefix, e->ident);
     if (u) {
         const char *kind = u->form == LUT_CUBIC ? "cubic_" : (u->form == LUT_RESIDUAL ? "residual_" : "");
         const char *lin = spacing == LUT_UNIFORM ? "linear_" : "";
@@ -258,7 +249,7 @@ static void emit_model_function(FILE *f, const char *scene_prefix, const char *p
         return;
     }
     fputs("    return ", f);
-    emit_shader_model_expr(f, prefix, model);
+    emit_shader_model_expr(f, prefix, e->row);
     fputs(";\n}\n", f);
 }
 
@@ -280,7 +271,7 @@ static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, con
                     free(px);
                     return cli_error(WHERE,
                                      "%s %s: a LUT node (%g) outside the packed texture's range [-0.5, 1.5)",
-                                     in->params[u->material].info.id, in->sc->models[u->model],
+                                     in->params[u->material].info.id, in->sc->models[u->model].name,
                                      a < 0 ? u->t[ch * u->n + j] : u->t[ch * u->n + j + 1]);
                 }
                 t[0] = (unsigned char)(a >> 8);
@@ -330,7 +321,7 @@ void emit_shader_opening(FILE *f, const emit_input *in, char guard[96])
     emit_truth_comment(f, sc);
     fprintf(f, " * Models:");
     for (m = 0; m < sc->model_count; m++)
-        fprintf(f, " %s", sc->models[m]);
+        fprintf(f, " %s", sc->models[m].name);
     fprintf(f, ".\n");
     emit_material_list(f, in);
 }
@@ -338,7 +329,7 @@ void emit_shader_opening(FILE *f, const emit_input *in, char guard[96])
 int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
 {
     const scene *sc = in->sc;
-    lut_spacing spacing = scene_lut_spacing(sc);
+    lut_spacing spacing = sc->spacing;
     glsl_layout l;
     char guard[96], scene_prefix[96];
     int i, m, status;
@@ -375,14 +366,14 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
         char prefix[160];
         snprintf(prefix, sizeof prefix, "%s_%s", scene_prefix, p->info.id);
         emit_material_heading(f, in, i);
-        emit_material_params(f, sc, p, prefix, emit_rgb, emit_float);
+        emit_material_params(f, sc, &in->enc[i], prefix, emit_rgb, emit_float);
         for (m = 0; m < sc->model_count; m++) {
             const glsl_lut *u = layout_find(&l, i, m);
             if (u)
                 emit_lut_data(f, scene_prefix, prefix, u, &l, spacing);
         }
         for (m = 0; m < sc->model_count; m++)
-            emit_model_function(f, scene_prefix, prefix, sc->models[m], layout_find(&l, i, m), spacing);
+            emit_model_function(f, scene_prefix, prefix, &sc->models[m], layout_find(&l, i, m), spacing);
     }
     fprintf(f, "\n#endif\n");
     status = tex ? emit_texture(tex, in, &l, guard) : 0;

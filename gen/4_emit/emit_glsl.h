@@ -22,7 +22,6 @@ int emit_shader_check(const scene *sc, const char *manifest, const char *name, c
  * includes), so the function and macro names are the same:
  *   emit_shader_float       a binary32 literal without suffix (emit_shader_const:
  *                           a constant's declaration)
- *   emit_shader_model_ident lsk-comp -> lsk_comp (the function name part)
  *   emit_shader_model_expr  an analytic model's return expression for the
  *                           material prefix (the registry row's)
  *   emit_shader_lut_array_call  FRESNEL_LUT_..._ARRAY_RGB(table, n, c) for
@@ -34,8 +33,7 @@ void emit_shader_const(FILE *f, const char *decl, const char *ctor, const char *
 /* The opening comment's shared lines (scene, licence, colour space, window,
  * truth, models, materials), and the scene name upper-cased in guard. */
 void emit_shader_opening(FILE *f, const emit_input *in, char guard[96]);
-void emit_shader_model_ident(const char *model, char out[32]);
-void emit_shader_model_expr(FILE *f, const char *prefix, const char *model);
+void emit_shader_model_expr(FILE *f, const char *prefix, const struct model *row);
 void emit_shader_lut_array_call(FILE *f, const char *prefix, const char *table, int n, lut_form form,
                                 lut_spacing spacing);
 

@@ -9,75 +9,56 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
 #include "scene/scene.h"
-
-/* A binary32 literal that reads back to the same float: 9 significant
- * digits, always with a '.' or an exponent, and the 'f' suffix. (GLSL:
- * emit_glsl.c.) */
-static void put_float(FILE *f, double v)
-{
-    char buf[40];
-    snprintf(buf, sizeof buf, "%.9g", (double)(float)v);
-    fputs(buf, f);
-    if (!strpbrk(buf, ".e"))
-        fputs(".0", f);
-    fputc('f', f);
-}
 
 static void emit_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
 {
     fprintf(f, "/* %s */\nstatic const fresnel_rgb %s_%s FRESNEL_GEN_UNUSED = {", why, prefix, name);
-    put_float(f, v[0]);
+    emit_c_float(f, v[0]);
     fputs(", ", f);
-    put_float(f, v[1]);
+    emit_c_float(f, v[1]);
     fputs(", ", f);
-    put_float(f, v[2]);
+    emit_c_float(f, v[2]);
     fputs("};\n", f);
 }
 
 static void emit_float(FILE *f, const char *prefix, const char *name, double v, const char *why)
 {
     fprintf(f, "/* %s */\nstatic const float %s_%s FRESNEL_GEN_UNUSED = ", why, prefix, name);
-    put_float(f, v);
+    emit_c_float(f, v);
     fputs(";\n", f);
 }
 
-static int emit_lut(FILE *f, const emit_input *in, const char *prefix, const char *model, const material_params *p, const spectrum *s,
-                    const gen_context *g, lut_spacing spacing)
+static void emit_lut(FILE *f, const emit_input *in, const char *prefix, const scene_entry *e, const encoded_lut *t)
 {
-    int n, i, residual;
-    lut_form form;
-    char name[32];
-    double *t = emit_lut_table(model, p, s, g, spacing, &n, &form, name);
-    const char *suffix = form == LUT_RESIDUAL ? "_residual" : (form == LUT_CUBIC ? "_cubic" : "");
-    if (!t)
-        return cli_oom("fresnel gen");
-    for (i = 0; i < 3 * n; i++)
-        if (!(fabs(t[i]) <= FLT_MAX)) {
-            char where[1100];
-            snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->models_line);
-            cli_error(where, "%s: %s node %d is %g, not a binary32 float; no header written", prefix, model, i, t[i]);
-            free(t);
-            return CLI_BAD_INPUT;
-        }
-    residual = form == LUT_RESIDUAL;
+    int n = t->n, i, residual = t->form == LUT_RESIDUAL;
+    lut_spacing spacing = in->sc->spacing;
+    const char *suffix = residual ? "_residual" : (t->form == LUT_CUBIC ? "_cubic" : "");
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
                " * fitted to the ground truth through %s interpolation.\n",
-            model, n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
-            form == LUT_CUBIC ? "Catmull-Rom" : "linear");
+            e->name, n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
+            t->form == LUT_CUBIC ? "Catmull-Rom" : "linear");
     fprintf(f, " * Evaluate with fresnel_%s%s_rgb(%stable, %d, c). */\n", spacing == LUT_UNIFORM ? "lut_linear" : "lut",
             suffix, residual ? "f0, " : "", n);
-    fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, name, 3 * n);
+    fprintf(f, "static const float %s_%s[%d] FRESNEL_GEN_UNUSED = {", prefix, e->ident, 3 * n);
     for (i = 0; i < 3 * n; i++) {
         fputs(i % 6 == 0 ? "\n    " : " ", f);
-        put_float(f, t[i]);
+        emit_c_float(f, t->f32[i]);
         if (i + 1 < 3 * n)
             fputc(',', f);
     }
     fprintf(f, "\n};\n");
-    free(t);
+}
+
+int emit_f32_material(FILE *f, const emit_input *in, int mi, const char *prefix, const encoded_lut *luts)
+{
+    int m;
+    emit_material_params(f, in->sc, &in->enc[mi], prefix, emit_rgb, emit_float);
+    for (m = 0; m < in->sc->model_count; m++)
+        if (luts[m].n)
+            emit_lut(f, in, prefix, &in->sc->models[m], &luts[m]);
     return 0;
 }
 
@@ -108,45 +89,6 @@ static int params_fit_float(const emit_input *in, const material_params *p)
     return 0;
 }
 
-/* One material's floating-point parameters, those its scene's models need:
- * the same list in C and GLSL, each back end giving its own syntax. */
-void emit_material_params(FILE *f, const scene *sc, const material_params *p, const char *prefix, emit_rgb_fn rgb,
-                          emit_float_fn flt)
-{
-    unsigned reads = scene_reads(sc, 0);
-    if (reads & MP_F0)
-        rgb(f, prefix, "f0", p->f0, "F0: ground truth at normal incidence");
-    if (sc->f_avg)
-        rgb(f, prefix, "f_avg", p->f_avg, "F_avg: 2 int F(mu) mu dmu of the ground truth (multiple-scattering albedo)");
-    if (reads & MP_F82)
-        rgb(f, prefix, "f82", p->f82, "F82: ground truth at cos theta = 1/7 (fresnel_f82_rgb)");
-    if (reads & MP_ETA_FIT) {
-        rgb(f, prefix, "eta", p->eta_fit, "eta fitted to the ground truth (exact, lsk, approx-conductor)");
-        rgb(f, prefix, "kappa", p->kappa_fit, "kappa fitted to the ground truth");
-    }
-    if (reads & MP_LSK) {
-        rgb(f, prefix, "lsk_a", p->lsk_a, "LSK compensation weight a (fresnel_lsk_comp_rgb)");
-        rgb(f, prefix, "lsk_alpha", p->lsk_alpha, "LSK compensation exponent alpha");
-    }
-    if (reads & MP_ETA_GAUSS) {
-        rgb(f, prefix, "eta_gaussian", p->eta_gauss, "Metzgar: eta' in a Gaussian window (fresnel_conductor_rgb)");
-        rgb(f, prefix, "kappa_gaussian", p->kappa_gauss, "Metzgar: kappa' in a Gaussian window");
-    }
-    if (reads & MP_ETA_POINT) {
-        rgb(f, prefix, "eta_point", p->eta_point, "eta point-sampled at the dominant wavelengths (fresnel_conductor_rgb)");
-        rgb(f, prefix, "kappa_point", p->kappa_point, "kappa point-sampled at the dominant wavelengths");
-    }
-    if (reads & MP_GULB) {
-        rgb(f, prefix, "gulbrandsen_r", p->gulb_r, "Gulbrandsen reflectivity r = F0 (fresnel_gulbrandsen_rgb)");
-        rgb(f, prefix, "gulbrandsen_g", p->gulb_g, "Gulbrandsen edge tint g from F0 and the fitted eta");
-    }
-    if (reads & MP_CT) {
-        flt(f, prefix, "ct_eta", p->ct_eta,
-            "Cook-Torrance representative IOR at the green wavelength (fresnel_cook_torrance_rgb)");
-        flt(f, prefix, "ct_kappa", p->ct_kappa, "Cook-Torrance representative kappa");
-    }
-}
-
 /* The ground truth's definition and the scene's gamut policy, for the C and
  * GLSL headers' opening comments. */
 void emit_truth_comment(FILE *f, const scene *sc)
@@ -155,7 +97,7 @@ void emit_truth_comment(FILE *f, const scene *sc)
                                        "values above 1 kept"};
     fprintf(f, " * Ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs -> linear RGB, under the gamut\n"
                " * policy %s (%s; gen/2_derive/derive.h).\n",
-            sc->gamut, what[scene_gamut(sc)]);
+            gamut_policy_names[sc->gamut], what[sc->gamut]);
 }
 
 /* What a user ships when they ship generated constants (C and GLSL). */
@@ -183,13 +125,52 @@ void emit_licence_comment(FILE *f)
                " * see data/SOURCES.md; this generated header may be used under the project's MIT licence.\n");
 }
 
+/* Each number type's back end, in the order a material's constants are
+ * written; every row of the number type registry has one. */
+static const struct {
+    number_type_id type;
+    emit_type_fn emit;
+} emit_types[] = {{TYPE_Q15, emit_fixed_material}, {TYPE_F32, emit_f32_material}, {TYPE_F16, emit_f16_material}};
+typedef char emit_types_cover_the_registry[sizeof emit_types / sizeof emit_types[0] == NUMBER_TYPES ? 1 : -1];
+
+/* Every LUT of material i, encoded once for all its types (luts[m].n 0 for
+ * the other models): 0, or CLI_* after a message (then nothing is held). */
+static int encode_luts(const emit_input *in, int i, const char *prefix, encoded_lut *luts)
+{
+    const scene *sc = in->sc;
+    int m, k;
+    for (m = 0; m < sc->model_count; m++) {
+        memset(&luts[m], 0, sizeof luts[m]);
+        if (!sc->models[m].lut_n)
+            continue;
+        if (emit_lut_encode(in, &sc->models[m], i, &luts[m])) {
+            for (k = 0; k < m; k++)
+                encoded_lut_free(&luts[k]);
+            return cli_oom("fresnel gen");
+        }
+        if (luts[m].bad >= 0) {
+            char where[1100];
+            snprintf(where, sizeof where, "%s:%d", in->manifest_path, sc->models_line);
+            cli_error(where, "%s: %s node %d is %g, which no %s table holds; no header written", prefix,
+                      sc->models[m].name, luts[m].bad, luts[m].nodes[luts[m].bad],
+                      luts[m].form == LUT_RESIDUAL ? "Q1.15 residual (int16_t at 14 fraction bits)" : "Q1.15 [0, 2)");
+            for (k = 0; k <= m; k++)
+                encoded_lut_free(&luts[k]);
+            return CLI_BAD_INPUT;
+        }
+    }
+    return 0;
+}
+
 int emit_header(FILE *f, const emit_input *in)
 {
     const scene *sc = in->sc;
     const gen_context *g = in->g;
-    lut_spacing spacing = scene_lut_spacing(sc);
     char guard[96];
-    int i, m;
+    int i, m, k, status = 0;
+    encoded_lut *luts = calloc((size_t)sc->model_count, sizeof *luts);
+    if (!luts)
+        return cli_oom("fresnel gen");
     for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
         guard[i] = (char)toupper((unsigned char)in->name[i]);
     guard[i] = '\0';
@@ -204,36 +185,38 @@ int emit_header(FILE *f, const emit_input *in)
     emit_truth_comment(f, in->sc);
     fprintf(f, " * Models:");
     for (m = 0; m < sc->model_count; m++)
-        fprintf(f, " %s", sc->models[m]);
+        fprintf(f, " %s", sc->models[m].name);
     fprintf(f, "; number types:");
     for (m = 0; m < sc->type_count; m++)
-        fprintf(f, " %s", sc->types[m]);
+        fprintf(f, " %s", sc->types[m]->name);
     fprintf(f, ".\n");
     emit_material_list(f, in);
     fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n", guard, guard);
-    if (scene_has_type(sc, "q15"))
-        fprintf(f, "#include \"fresnel_fixed.h\"\n");
+    for (k = 0; k < NUMBER_TYPES; k++)
+        if (scene_has_type(sc, emit_types[k].type) && strcmp(number_types[emit_types[k].type].header, "fresnel.h"))
+            fprintf(f, "#include \"%s\"\n", number_types[emit_types[k].type].header);
     fputc('\n', f);
     fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
                "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");
 
-    for (i = 0; i < sc->material_count; i++) {
+    for (i = 0; i < sc->material_count && !status; i++) {
         const material_params *p = &in->params[i];
         char prefix[96];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
-        if (params_fit_float(in, p))
-            return CLI_BAD_INPUT;
+        if (params_fit_float(in, p) || (status = encode_luts(in, i, prefix, luts))) {
+            status = CLI_BAD_INPUT;
+            break;
+        }
         emit_material_heading(f, in, i);
-        if (scene_has_type(sc, "q15") && emit_fixed_material(f, in, i, prefix))
-            return CLI_BAD_INPUT;
-        if (!scene_has_type(sc, "f32"))
-            continue;
-        emit_material_params(f, sc, p, prefix, emit_rgb, emit_float);
+        for (k = 0; k < NUMBER_TYPES && !status; k++)
+            if (scene_has_type(sc, emit_types[k].type))
+                status = emit_types[k].emit(f, in, i, prefix, luts);
         for (m = 0; m < sc->model_count; m++)
-            if (scene_model_lut_size(sc->models[m], NULL) &&
-                emit_lut(f, in, prefix, sc->models[m], p, in->spectra[i], g, spacing))
-                return CLI_BAD_INPUT;
+            encoded_lut_free(&luts[m]);
     }
+    free(luts);
+    if (status)
+        return status;
     fprintf(f, "\n#endif\n");
     return 0;
 }

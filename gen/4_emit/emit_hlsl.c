@@ -9,7 +9,7 @@
 
 #include <stdlib.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 
 #define WHERE "fresnel gen"
 
@@ -23,25 +23,22 @@ static void hlsl_float(FILE *f, const char *prefix, const char *name, double v, 
     emit_shader_const(f, "static const float", NULL, prefix, name, &v, 1, why);
 }
 
-/* The LUT of one material and model as a static const array; its name part
- * in name[32], its size and form in *n, *form. */
-static int hlsl_lut(FILE *f, const emit_input *in, int i, int m, const char *prefix, char name[32], int *n,
-                    lut_form *form)
+/* LUT model e of material i as a static const array. */
+static int hlsl_lut(FILE *f, const emit_input *in, int i, const scene_entry *e, const char *prefix)
 {
-    lut_spacing spacing = scene_lut_spacing(in->sc);
-    double *t = emit_lut_table(in->sc->models[m], &in->params[i], in->spectra[i], in->g, spacing, n, form, name);
-    int k;
+    double *t = emit_lut_table(in, e, i);
+    int k, n = e->lut_n;
     if (!t)
         return cli_error(WHERE, "out of memory");
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
                " * fitted to the ground truth through %s interpolation. */\n",
-            name, *n, spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
-            *form == LUT_CUBIC ? "Catmull-Rom" : "linear");
-    fprintf(f, "static const float %s_%s[%d] = {", prefix, name, 3 * *n);
-    for (k = 0; k < 3 * *n; k++) {
+            e->ident, n, in->sc->spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
+            e->row->form == LUT_CUBIC ? "Catmull-Rom" : "linear");
+    fprintf(f, "static const float %s_%s[%d] = {", prefix, e->ident, 3 * n);
+    for (k = 0; k < 3 * n; k++) {
         fputs(k % 6 == 0 ? "\n    " : " ", f);
         emit_shader_float(f, t[k]);
-        if (k + 1 < 3 * *n)
+        if (k + 1 < 3 * n)
             fputc(',', f);
     }
     fputs("\n};\n", f);
@@ -52,7 +49,6 @@ static int hlsl_lut(FILE *f, const emit_input *in, int i, int m, const char *pre
 int emit_hlsl(FILE *f, const emit_input *in)
 {
     const scene *sc = in->sc;
-    lut_spacing spacing = scene_lut_spacing(sc);
     char guard[96];
     int i, m;
     emit_shader_opening(f, in, guard);
@@ -70,19 +66,16 @@ int emit_hlsl(FILE *f, const emit_input *in)
         char prefix[160];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
         emit_material_heading(f, in, i);
-        emit_material_params(f, sc, p, prefix, hlsl_rgb, hlsl_float);
+        emit_material_params(f, sc, &in->enc[i], prefix, hlsl_rgb, hlsl_float);
         for (m = 0; m < sc->model_count; m++) {
-            char id[32], table[32];
-            int n = 0;
-            lut_form form = LUT_PLAIN;
-            emit_shader_model_ident(sc->models[m], id);
-            if (scene_model_lut_size(sc->models[m], NULL) && hlsl_lut(f, in, i, m, prefix, table, &n, &form))
+            const scene_entry *e = &sc->models[m];
+            if (e->lut_n && hlsl_lut(f, in, i, e, prefix))
                 return CLI_BAD_INPUT;
-            fprintf(f, "float3 %s_%s_rgb(float c)\n{\n    return ", prefix, id);
-            if (n)
-                emit_shader_lut_array_call(f, prefix, table, n, form, spacing);
+            fprintf(f, "float3 %s_%s_rgb(float c)\n{\n    return ", prefix, e->ident);
+            if (e->lut_n)
+                emit_shader_lut_array_call(f, prefix, e->ident, e->lut_n, e->row->form, sc->spacing);
             else
-                emit_shader_model_expr(f, prefix, sc->models[m]);
+                emit_shader_model_expr(f, prefix, e->row);
             fputs(";\n}\n", f);
         }
     }

@@ -1,25 +1,24 @@
-/* A LUT model's table for one material, shared by the C, Q15 and GLSL
- * emitters (emit.h). */
+/* A LUT model's table for one material, shared by the C, Q15, GLSL and
+ * HLSL emitters (emit.h). */
 #include <stdlib.h>
 
 #include "4_emit/emit.h"
-#include "scene/scene.h"
 
-double *emit_lut_table(const char *model, const material_params *p, const spectrum *s, const gen_context *g,
-                       lut_spacing spacing, int *n, lut_form *form, char name[32])
+int emit_lut_encode(const emit_input *in, const scene_entry *e, int i, encoded_lut *t)
 {
-    double *t;
-    int i, f = LUT_PLAIN;
-    *n = scene_model_lut_size(model, &f);
-    *form = (lut_form)f;
-    if (!(t = malloc(3 * (size_t)*n * sizeof *t)))
+    return encode_table(in->spectra[i], in->g, &in->params[i], in->sc->spacing, e->lut_n, e->row->form, t);
+}
+
+double *emit_lut_table(const emit_input *in, const scene_entry *e, int i)
+{
+    encoded_lut t;
+    double *v;
+    int k;
+    if (emit_lut_encode(in, e, i, &t))
         return NULL;
-    if (encode_lut(s, g, p, spacing, *n, *form, t)) {
-        free(t);
-        return NULL;
-    }
-    for (i = 0; model[i] && i < 31; i++)
-        name[i] = model[i] == '-' ? '_' : model[i];
-    name[i] = '\0';
-    return t;
+    if ((v = malloc(3 * (size_t)t.n * sizeof *v)) != NULL)
+        for (k = 0; k < 3 * t.n; k++)
+            v[k] = t.f32[k];
+    encoded_lut_free(&t);
+    return v;
 }

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
 #include "4_emit/emit_glsl.h"
 #include "3_encode/encode.h"
@@ -20,6 +20,7 @@ void emit_loaded_free(emit_loaded *l)
         for (i = 0; l->sc && i < l->sc->material_count; i++)
             free(l->spectra[i]);
     free(l->spectra);
+    free(l->enc);
     free(l->params);
     free(l->g);
     free(l->sc);
@@ -45,13 +46,14 @@ int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loade
         goto done;
     l->params = calloc((size_t)l->sc->material_count, sizeof *l->params);
     l->spectra = calloc((size_t)l->sc->material_count, sizeof *l->spectra);
-    if (!l->params || !l->spectra) {
+    l->enc = calloc((size_t)l->sc->material_count, sizeof *l->enc);
+    if (!l->params || !l->spectra || !l->enc) {
         status = cli_oom(WHERE);
         goto done;
     }
     if ((status = gen_context_load(data_dir(dir_option), l->sc->space, l->g)))
         goto done;
-    l->g->gamut = scene_gamut(l->sc);
+    l->g->gamut = l->sc->gamut;
     /* Every unknown material is reported, not only the first. */
     for (i = 0; i < l->sc->material_count; i++) {
         material_info info;
@@ -70,6 +72,7 @@ int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loade
         m = scene_material(l->sc, i);
         if ((status = derive_parameters(l->g, &m, l->sc->sigma, l->sc->n1, l->spectra[i], &l->params[i])))
             goto done;
+        encode_material(&l->params[i], &l->enc[i]);
     }
     l->in.sc = l->sc;
     l->in.name = l->name;
@@ -78,6 +81,7 @@ int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loade
     l->in.g = l->g;
     l->in.params = l->params;
     l->in.spectra = l->spectra;
+    l->in.enc = l->enc;
     l->in.glsl = glsl;
 done:
     if (status)

@@ -24,7 +24,7 @@ static void targets_comment(FILE *f, const emit_input *in, int material)
                " * Fresnel formula to the ground truth above; CIEDE2000 over theta 0-90 deg, mean / max:\n",
             p->info.id);
     for (i = 0; i < sc->target_count; i++) {
-        const target *t = target_find(sc->targets[i]);
+        const target *t = sc->targets[i];
         target_fit fit;
         target_fit_curve(t, &ls, (const double(*)[3])truth, &a, &fit);
         for (k = n = 0; k < t->param_count; k++) {

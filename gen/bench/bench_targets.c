@@ -9,7 +9,7 @@
 #include "fresnel.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 /* ---- rows */
 enum {

@@ -7,9 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "1_spectral/spectral.h"
 
 #define WHERE "fresnel accuracy"

@@ -8,7 +8,8 @@
 
 #include "bench/bench.h"
 #include "bench/bench_targets.h"
-#include "cli/cli.h"
+#include "common/cli.h"
+#include "cli/material_options.h"
 #include "report/report.h"
 
 #define WHERE "fresnel bench"
@@ -33,8 +34,9 @@ static int bench_targets_print(void)
 
 int cmd_bench(int argc, char **argv)
 {
-    const char *scene_path = "data/scenes/report.scene", *material = "au", *only_model = NULL, *only_type = NULL,
+    const char *scene_path = "data/scenes/report.scene", *material = "au", *only_model = NULL,
                *dir_option = NULL, *nk_file = NULL;
+    const number_type *only_type = NULL;
     char nk_id[32];
     material_source source;
     int count = 1 << 20, runs = 5, i, m, t, status = 0, targets = 0, scene_options = 0;
@@ -85,10 +87,8 @@ int cmd_bench(int argc, char **argv)
         else if (!strcmp(o, "--model"))
             only_model = v;
         else if (!strcmp(o, "--type")) {
-            static const char *const types[] = {"f32", "q15", "f16", NULL};
-            only_type = !strcmp(v, "fixed") ? "q15" : v;
-            if (!cli_in_list(only_type, types))
-                return cli_unknown(WHERE, "type", v, types);
+            if (type_option(WHERE, v, &only_type))
+                return CLI_BAD_INPUT;
         } else if (!strcmp(o, "--data"))
             dir_option = v;
         else if (!strcmp(o, "--count")) {
@@ -113,13 +113,13 @@ int cmd_bench(int argc, char **argv)
         material_id_from_path(nk_file, nk_id);
         source.id = nk_id;
     }
-    if (scene_lut_spacing(&sc) == LUT_GRAZING_PL)
+    if (sc.spacing == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `make cross-count` "
                                      "times fresnel_lut_pl_u16_q15_fast");
     if (only_model && !scene_has_model(&sc, only_model)) {
         const char *names[SCENE_MAX_MODELS + 1];
         for (m = 0; m < sc.model_count; m++)
-            names[m] = sc.models[m];
+            names[m] = sc.models[m].name;
         names[m] = NULL;
         return cli_unknown(WHERE, "model (of the scene)", only_model, names);
     }
@@ -129,33 +129,28 @@ int cmd_bench(int argc, char **argv)
     }
     if ((status = gen_context_load(data_dir(dir_option), sc.space, g)))
         goto done;
-    g->gamut = scene_gamut(&sc);
+    g->gamut = sc.gamut;
     if ((status = derive_parameters(g, &source, sc.sigma, sc.n1, s, &p)))
         goto done;
     if (runs > 0)
         printf("model,type,ns_per_rgb_eval\n");
     for (m = 0; m < sc.model_count; m++) {
         scene_model sm;
-        report_prepared *q;
-        if (only_model && strcmp(only_model, sc.models[m]))
+        model_rgb q;
+        if (only_model && strcmp(only_model, sc.models[m].name))
             continue;
-        if ((status = scene_model_prepare(sc.models[m], scene_lut_spacing(&sc),
+        if ((status = scene_model_prepare(&sc.models[m], sc.spacing,
                                           s, g, &p, &sm)))
             goto done;
-        if (!(q = report_prepare(&sm, &p))) {
-            scene_model_free(&sm);
-            status = cli_oom(WHERE);
-            goto done;
-        }
-        for (t = 0; t < report_type_count; t++) {
+        q = scene_model_rgb(&sm);
+        for (t = 0; t < number_types_available; t++) {
             double ns;
-            if (only_type && strcmp(only_type, report_types[t].name))
+            if (only_type && only_type != &number_types[t])
                 continue;
-            ns = report_time(&report_types[t], q, count, runs);
+            ns = report_time(&number_types[t], &q, count, runs);
             if (runs > 0)
-                printf("%s,%s,%.3f\n", sc.models[m], report_types[t].name, ns);
+                printf("%s,%s,%.3f\n", sc.models[m].name, number_types[t].name, ns);
         }
-        report_prepared_free(q);
         scene_model_free(&sm);
     }
 done:

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "cli/material_options.h"
 #include "scene/scene.h"
 #include "scene/scene_eval.h"
@@ -25,25 +25,32 @@ int cmd_curve(int argc, char **argv)
     const char *model_list = model_curve_default;
     static const char *const options[] = {"--material", "--nk",      "--name",   "--format",      "--space",
                                           "--gamut",    "--sigma",    "--n1",      "--data",   "--samples",     "--models",
-                                          "--lut-spacing", "--help", NULL};
+                                          "--lut-spacing", "--type", "--help", NULL};
+    const number_type *type = &number_types[TYPE_F32];
     const char *val;
     int samples = 91, n_models = 0, i, r, status = 0;
     lut_spacing spacing = LUT_GRAZING;
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            int t;
             printf("usage: fresnel curve (--material ID | --nk FILE) [--space NAME] [--gamut map|clip|keep]\n"
                    "                     [--sigma S] [--samples N] [--models \"NAME ...\"]\n"
-                   "                     [--lut-spacing grazing|uniform] [--n1 X] [--data DIR]\n\n"
+                   "                     [--lut-spacing grazing|uniform] [--type T] [--n1 X] [--data DIR]\n\n"
                    "Prints CSV: theta_deg,cos,gt_r,gt_g,gt_b (the spectral ground truth under the\n"
                    "--gamut policy, which every model is derived from), unclipped_r,_g,_b (the\n"
                    "spectral ground truth itself, outside [0,1] where the colour leaves the space's\n"
-                   "gamut), then <model>_r,_g,_b for each model, evaluated by the binary32 runtime\n"
-                   "with the parameters `fresnel params` prints. N rows (default 91), theta\n"
-                   "uniform from 0 to 90 degrees.\n"
+                   "gamut), then <model>_r,_g,_b for each model, evaluated by the runtime of\n"
+                   "number type T (default f32) on the constants and tables `fresnel gen` writes\n"
+                   "for it (a Q1.15 result as code / 32768). N rows (default 91), theta uniform\n"
+                   "from 0 to 90 degrees.\n"
                    "Default models: %s\n\n%s"
-                   "  --samples N     rows, 2..100000\n",
+                   "  --samples N     rows, 2..100000\n"
+                   "  --type T        one of",
                    model_curve_default, material_options_help);
+            for (t = 0; t < number_types_available; t++)
+                printf(" %s", number_types[t].name);
+            printf("\n");
             return 0;
         }
         if (!cli_in_list(argv[i], options))
@@ -59,12 +66,15 @@ int cmd_curve(int argc, char **argv)
                     return cli_error(WHERE, "--samples expects an integer 2..100000, got '%s'", val);
             } else if (!strcmp(argv[i - 1], "--models")) {
                 model_list = val;
+            } else if (!strcmp(argv[i - 1], "--type")) {
+                if (type_option(WHERE, val, &type))
+                    return CLI_BAD_INPUT;
             } else {
                 static const char *const spacings[] = {"grazing", "uniform", NULL};
-                if (!strcmp(val, "uniform"))
-                    spacing = LUT_UNIFORM;
-                else if (strcmp(val, "grazing"))
+                int k = scene_choice(spacings, val);
+                if (k < 0)
                     return cli_unknown(WHERE, "--lut-spacing", val, spacings);
+                spacing = (lut_spacing)scene_choice(scene_lut_spacing_names, val);
             }
         }
     }
@@ -80,7 +90,7 @@ int cmd_curve(int argc, char **argv)
             status = cli_error(WHERE, "at most %d models", MAX_MODELS);
             goto done;
         }
-        if ((status = scene_model_prepare(tok, spacing, s, g, &p, &models[n_models])))
+        if ((status = scene_model_prepare_name(tok, spacing, s, g, &p, &models[n_models])))
             goto done;
         n_models++;
     }
@@ -96,8 +106,9 @@ int cmd_curve(int argc, char **argv)
         ground_truth(s, &g->cm, &g->cs, p.n1, c, raw);
         printf("%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", theta, c, gt[0], gt[1], gt[2], raw[0], raw[1], raw[2]);
         for (m = 0; m < n_models; m++) {
-            float v[3];
-            scene_model_eval(&models[m], &p, (float)c, v);
+            model_rgb q = scene_model_rgb(&models[m]);
+            double v[3];
+            type->eval(&q, c, v);
             printf(",%.9g,%.9g,%.9g", v[0], v[1], v[2]);
         }
         printf("\n");

@@ -3,11 +3,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
-#include "3_encode/fixed_params.h"
+#include "common/cli.h"
+#include "cli/material_options.h"
 #include "model/registry.h"
 
 #define WHERE "fresnel eval"
+#define REFERENCE_TYPE "f64" /* --type of the double reference, beside the runtime's number types */
 
 static void eval_usage(FILE *out)
 {
@@ -74,7 +75,8 @@ int cmd_eval(int argc, char **argv)
     static const char *const options[] = {"--model", "--type", "--n1", "--f90", "--p", "--help", NULL};
     static const char *const column[3] = {"eta", "kappa", "cos"};
     const model *m = NULL;
-    enum { T_NONE, T_F32, T_F64, T_FIXED, T_F16 } type = T_NONE;
+    const number_type *type = NULL; /* NULL with f64: the double reference */
+    int f64 = 0;
     int i, status = 0;
     double n1 = 1.0, f90 = 1.0, p = 5.0;
     char where[64];
@@ -101,17 +103,9 @@ int cmd_eval(int argc, char **argv)
                 return cli_unknown(WHERE, "model", val, names);
             }
         } else if (!strcmp(opt, "--type")) {
-            static const char *const types[] = {"f32", "f64", "q15", "f16", NULL};
-            if (!strcmp(val, "f32"))
-                type = T_F32;
-            else if (!strcmp(val, "f64"))
-                type = T_F64;
-            else if (!strcmp(val, "q15") || !strcmp(val, "fixed"))
-                type = T_FIXED;
-            else if (!strcmp(val, "f16"))
-                type = T_F16;
-            else
-                return cli_unknown(WHERE, "type", val, types);
+            type = NULL;
+            if (!(f64 = !strcmp(val, REFERENCE_TYPE)) && type_option(WHERE, val, &type))
+                return CLI_BAD_INPUT;
         } else if (!strcmp(opt, "--n1")) {
             if (cli_parse_double(val, &n1) || !(n1 > 0.0))
                 return cli_error(WHERE, "--n1 expects a positive number, got '%s'", val);
@@ -125,10 +119,16 @@ int cmd_eval(int argc, char **argv)
     }
     if (!m)
         return cli_error(WHERE, "--model is required (see fresnel eval --help)");
-    if (type == T_NONE)
-        return cli_error(WHERE, "--type is required: f32, f64, q15 or f16");
-    if (type == T_F16 && !m->f16)
-        return cli_error(WHERE, "--type f16: this build's compiler has no _Float16");
+    if (!type && !f64) {
+        char list[64] = "";
+        int t;
+        for (t = 0; t < number_types_available; t++)
+            snprintf(list + strlen(list), sizeof list - strlen(list), "%s%s", t ? ", " : "", number_types[t].name);
+        return cli_error(WHERE, "--type is required: a number type (%s) or %s, the double reference", list,
+                         REFERENCE_TYPE);
+    }
+    if (type && !type->has(m))
+        return cli_error(WHERE, "--model %s has no %s evaluator", m->name, type->name);
 
     /* Everything is evaluated before anything is printed, so bad input on
      * line 1000 leaves stdout empty rather than half-written. */
@@ -201,19 +201,11 @@ int cmd_eval(int argc, char **argv)
             }
             out = grown;
         }
-        if (type == T_F64) {
+        if (f64) {
             out[count++] = m->f64(&mp, v[2]);
-        } else if (type == T_F32) {
-            model_params_round_f32(&mp);
-            out[count++] = (double)m->f32(&mp, (float)v[2]);
-        } else if (type == T_FIXED) {
-            model_fixed mf;
-            model_params_round_fixed(&mp);
-            model_fixed_from_params(&mp, &mf);
-            out[count++] = m->q15(&mf, fixed_q15(v[2])) / 32768.0;
         } else {
-            model_params_round_f16(&mp);
-            out[count++] = m->f16(&mp, v[2]);
+            type->round(&mp);
+            out[count++] = type->eval_params(m, &mp, v[2]);
         }
         if (ch == EOF)
             break;
@@ -221,7 +213,7 @@ int cmd_eval(int argc, char **argv)
     {
         size_t j;
         for (j = 0; j < count; j++)
-            printf(type == T_F64 ? "%.17g\n" : "%.9g\n", out[j]);
+            printf(f64 ? "%.17g\n" : "%.9g\n", out[j]);
     }
 done:
     free(line);

@@ -2,7 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
 #include "3_encode/encode.h"
 #include "scene/scene.h"
@@ -41,8 +41,8 @@ static void gen_usage(FILE *out)
                  "  n1 = 1                    index of the incident medium\n"
                  "  types = f32               number types:",
             model_lut_patterns, SCENE_LUT_MIN, SCENE_LUT_MAX);
-    for (i = 0; scene_type_names[i]; i++)
-        fprintf(out, " %s", scene_type_names[i]);
+    for (i = 0; i < number_types_available; i++)
+        fprintf(out, " %s", number_types[i].name);
     fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_pl_u16_q15_fast)\n");
 }
 

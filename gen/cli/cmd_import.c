@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/spectral.h"
 
 #define WHERE "fresnel import"

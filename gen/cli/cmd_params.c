@@ -5,7 +5,7 @@
 
 #include "1_spectral/colour_difference.h"
 #include "2_derive/targets.h"
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "cli/material_options.h"
 #include "scene/scene.h"
 

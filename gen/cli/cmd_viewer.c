@@ -2,7 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "viewer/viewer.h"
 
 #define WHERE "fresnel viewer"

@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "scene/scene.h"
 
 const char material_options_help[] =
@@ -38,12 +38,21 @@ void material_options_init(material_options *o)
     o->gamut = GAMUT_MAP;
 }
 
+int type_option(const char *where, const char *val, const number_type **out)
+{
+    const char *names[NUMBER_TYPES + 1];
+    number_type_names(names, NUMBER_TYPES + 1);
+    if (!(*out = number_type_find(val)))
+        return cli_unknown(where, "type", val, names);
+    if (!(*out)->available)
+        return cli_error(where, "--type %s: this build's compiler has no _Float16", val);
+    return 0;
+}
+
 int gamut_option(const char *where, const char *val, gamut_policy *out)
 {
-    int i;
-    for (i = 0; gamut_policy_names[i] && strcmp(gamut_policy_names[i], val); i++)
-        ;
-    if (!gamut_policy_names[i])
+    int i = scene_choice(gamut_policy_names, val);
+    if (i < 0)
         return cli_unknown(where, "--gamut", val, gamut_policy_names);
     *out = (gamut_policy)i;
     return 0;

@@ -5,6 +5,7 @@
 #define FRESNEL_MATERIAL_OPTIONS_H
 
 #include "2_derive/derive.h"
+#include "model/number_type.h"
 
 typedef struct material_options {
     const char *material;
@@ -25,6 +26,9 @@ int material_option(const char *where, const char *opt, const char *val, materia
 extern const char material_options_help[];
 /* --gamut's value: 0, or CLI_BAD_INPUT after a message. */
 int gamut_option(const char *where, const char *val, gamut_policy *out);
+/* --type's value, a number type this build evaluates (number_type_find):
+ * 0, or CLI_BAD_INPUT after a message. */
+int type_option(const char *where, const char *val, const number_type **out);
 /* The shared options' names, NULL-terminated (with --help). */
 extern const char *const material_option_names[];
 

@@ -10,7 +10,7 @@
 #include "3_encode/fixed_params.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define F(x) ((float)(x))
 
@@ -167,160 +167,164 @@ static double h_internal(const model_params *m, double c)
 #endif
 
 
-/* ---- as scene models: one material's prepared parameters (model_rgb) */
+/* ---- as scene models: the encoder's values of one material (model_rgb) */
+#define M (q->mat)
+#define L (q->lut)
+#define E (q->def->eta)
+#define ETA(q) ((q)->mat->eta[(q)->def->eta])
+#define KAPPA(q) ((q)->mat->kappa[(q)->def->eta])
 static double ch3(fresnel_rgb v, int ch) { return ch == 0 ? v.r : (ch == 1 ? v.g : v.b); }
 
-static fresnel_rgb r_schlick(const model_rgb *q, float c) { return fresnel_schlick_rgb(q->f0, c); }
-static fresnel_rgb_q15 rq_schlick(const model_rgb *q, int32_t c) { return fresnel_schlick_q15_rgb(q->q_f0, c); }
-static double rr_schlick(const model_rgb *q, int ch, double c) { return ref_schlick(ch3(q->f0, ch), c); }
+static fresnel_rgb r_schlick(const model_rgb *q, float c) { return fresnel_schlick_rgb(M->f0, c); }
+static fresnel_rgb_q15 rq_schlick(const model_rgb *q, int32_t c) { return fresnel_schlick_q15_rgb(M->q_f0, c); }
+static double rr_schlick(const model_rgb *q, int ch, double c) { return ref_schlick(ch3(M->f0, ch), c); }
 
-static fresnel_rgb r_lsk(const model_rgb *q, float c) { return fresnel_lsk_rgb(q->eta, q->kappa, c); }
-/* Q15 LSK without compensation is the compensated form with a = alpha = 0 */
-static fresnel_rgb_q15 rq_lsk(const model_rgb *q, int32_t c) { return fresnel_lsk_comp_q15_rgb(q->q_lsk, c); }
-static double rr_lsk(const model_rgb *q, int ch, double c) { return ref_lsk(ch3(q->eta, ch), ch3(q->kappa, ch), c); }
+static fresnel_rgb r_lsk(const model_rgb *q, float c) { return fresnel_lsk_rgb(ETA(q), KAPPA(q), c); }
+static fresnel_rgb_q15 rq_lsk(const model_rgb *q, int32_t c) { return fresnel_lsk_q15_rgb(M->q_lsk, c); }
+static double rr_lsk(const model_rgb *q, int ch, double c) { return ref_lsk(ch3(ETA(q), ch), ch3(KAPPA(q), ch), c); }
 
 static fresnel_rgb r_lsk_comp(const model_rgb *q, float c)
 {
-    return fresnel_lsk_comp_rgb(q->eta, q->kappa, q->a, q->alpha, c);
+    return fresnel_lsk_comp_rgb(ETA(q), KAPPA(q), M->lsk_a, M->lsk_alpha, c);
 }
-#define rq_lsk_comp rq_lsk
+static fresnel_rgb_q15 rq_lsk_comp(const model_rgb *q, int32_t c) { return fresnel_lsk_comp_q15_rgb(M->q_lsk_comp, c); }
 static double rr_lsk_comp(const model_rgb *q, int ch, double c)
 {
-    return ref_lsk_comp(ch3(q->eta, ch), ch3(q->kappa, ch), ch3(q->a, ch), ch3(q->alpha, ch), c);
+    return ref_lsk_comp(ch3(ETA(q), ch), ch3(KAPPA(q), ch), ch3(M->lsk_a, ch), ch3(M->lsk_alpha, ch), c);
 }
 
-static fresnel_rgb r_f82(const model_rgb *q, float c) { return fresnel_f82_rgb(q->f0, q->f82, c); }
-static fresnel_rgb_q15 rq_f82(const model_rgb *q, int32_t c) { return fresnel_f82_q15_rgb(q->q_f0, q->q_f82, c); }
-static double rr_f82(const model_rgb *q, int ch, double c) { return ref_f82(ch3(q->f0, ch), ch3(q->f82, ch), c); }
+static fresnel_rgb r_f82(const model_rgb *q, float c) { return fresnel_f82_rgb(M->f0, M->f82, c); }
+static fresnel_rgb_q15 rq_f82(const model_rgb *q, int32_t c) { return fresnel_f82_q15_rgb(M->q_f0, M->q_f82, c); }
+static double rr_f82(const model_rgb *q, int ch, double c) { return ref_f82(ch3(M->f0, ch), ch3(M->f82, ch), c); }
 
-static fresnel_rgb r_gulbrandsen(const model_rgb *q, float c) { return fresnel_gulbrandsen_rgb(q->r, q->g, c); }
-static fresnel_rgb_q15 rq_gulbrandsen(const model_rgb *q, int32_t c) { return fresnel_gulbrandsen_q15_rgb(q->q_r, q->q_g, c); }
+static fresnel_rgb r_gulbrandsen(const model_rgb *q, float c) { return fresnel_gulbrandsen_rgb(M->gulb_r, M->gulb_g, c); }
+static fresnel_rgb_q15 rq_gulbrandsen(const model_rgb *q, int32_t c) { return fresnel_gulbrandsen_q15_rgb(M->q_gulb_r, M->q_gulb_g, c); }
 static double rr_gulbrandsen(const model_rgb *q, int ch, double c)
 {
-    return ref_gulbrandsen(ch3(q->r, ch), ch3(q->g, ch), c);
+    return ref_gulbrandsen(ch3(M->gulb_r, ch), ch3(M->gulb_g, ch), c);
 }
 
 static fresnel_rgb r_cook_torrance(const model_rgb *q, float c)
 {
-    return fresnel_cook_torrance_rgb(q->f0, q->ct_eta, q->ct_kappa, c);
+    return fresnel_cook_torrance_rgb(M->f0, M->ct_eta, M->ct_kappa, c);
 }
 static fresnel_rgb_q15 rq_cook_torrance(const model_rgb *q, int32_t c)
 {
-    return fresnel_cook_torrance_q15_rgb(q->q_f0, &q->q_ct, c);
+    return fresnel_cook_torrance_q15_rgb(M->q_f0, &M->q_ct, c);
 }
 static double rr_cook_torrance(const model_rgb *q, int ch, double c)
 {
-    return ref_cook_torrance(ch3(q->f0, ch), q->ct_eta, q->ct_kappa, c);
+    return ref_cook_torrance(ch3(M->f0, ch), M->ct_eta, M->ct_kappa, c);
 }
 
-static fresnel_rgb r_conductor(const model_rgb *q, float c) { return fresnel_conductor_rgb(q->eta, q->kappa, c); }
-static fresnel_rgb_q15 rq_conductor(const model_rgb *q, int32_t c) { return fresnel_conductor_q15_rgb(q->q_ior, c); }
+static fresnel_rgb r_conductor(const model_rgb *q, float c) { return fresnel_conductor_rgb(ETA(q), KAPPA(q), c); }
+static fresnel_rgb_q15 rq_conductor(const model_rgb *q, int32_t c) { return fresnel_conductor_q15_rgb(M->q_ior[E], c); }
 static double rr_conductor(const model_rgb *q, int ch, double c)
 {
-    return ref_conductor(ch3(q->eta, ch), ch3(q->kappa, ch), c);
+    return ref_conductor(ch3(ETA(q), ch), ch3(KAPPA(q), ch), c);
 }
 
-static fresnel_rgb r_approx(const model_rgb *q, float c) { return fresnel_approx_conductor_rgb(q->eta, q->kappa, c); }
-static fresnel_rgb_q15 rq_approx(const model_rgb *q, int32_t c) { return fresnel_approx_conductor_q15_rgb(q->q_nk, c); }
+static fresnel_rgb r_approx(const model_rgb *q, float c) { return fresnel_approx_conductor_rgb(ETA(q), KAPPA(q), c); }
+static fresnel_rgb_q15 rq_approx(const model_rgb *q, int32_t c) { return fresnel_approx_conductor_q15_rgb(M->q_nk, c); }
 static double rr_approx(const model_rgb *q, int ch, double c)
 {
-    return ref_approx_conductor(ch3(q->eta, ch), ch3(q->kappa, ch), c);
+    return ref_approx_conductor(ch3(ETA(q), ch), ch3(KAPPA(q), ch), c);
 }
 
 /* LUTs: the table as the runtime reads it; the reference interpolates the
  * binary32-rounded nodes in double. */
-static fresnel_rgb a_schlick(const model_rgb *q) { return fresnel_schlick_avg_rgb(q->f0); }
-static fresnel_rgb a_f82(const model_rgb *q) { return fresnel_f82_avg_rgb(q->f0, q->f82); }
-static fresnel_rgb a_lut(const model_rgb *q) { return fresnel_lut_avg_rgb(q->table, q->n); }
-static fresnel_rgb a_lut_lin(const model_rgb *q) { return fresnel_lut_linear_avg_rgb(q->table, q->n); }
-static fresnel_rgb a_lut_cubic(const model_rgb *q) { return fresnel_lut_cubic_avg_rgb(q->table, q->n); }
-static fresnel_rgb r_lut(const model_rgb *q, float c) { return fresnel_lut_rgb(q->table, q->n, c); }
-static fresnel_rgb r_lut_lin(const model_rgb *q, float c) { return fresnel_lut_linear_rgb(q->table, q->n, c); }
-static fresnel_rgb r_lut_res(const model_rgb *q, float c) { return fresnel_lut_residual_rgb(q->f0, q->table, q->n, c); }
+static fresnel_rgb a_schlick(const model_rgb *q) { return fresnel_schlick_avg_rgb(M->f0); }
+static fresnel_rgb a_f82(const model_rgb *q) { return fresnel_f82_avg_rgb(M->f0, M->f82); }
+static fresnel_rgb a_lut(const model_rgb *q) { return fresnel_lut_avg_rgb(L->f32, L->n); }
+static fresnel_rgb a_lut_lin(const model_rgb *q) { return fresnel_lut_linear_avg_rgb(L->f32, L->n); }
+static fresnel_rgb a_lut_cubic(const model_rgb *q) { return fresnel_lut_cubic_avg_rgb(L->f32, L->n); }
+static fresnel_rgb r_lut(const model_rgb *q, float c) { return fresnel_lut_rgb(L->f32, L->n, c); }
+static fresnel_rgb r_lut_lin(const model_rgb *q, float c) { return fresnel_lut_linear_rgb(L->f32, L->n, c); }
+static fresnel_rgb r_lut_res(const model_rgb *q, float c) { return fresnel_lut_residual_rgb(M->f0, L->f32, L->n, c); }
 static fresnel_rgb r_lut_lin_res(const model_rgb *q, float c)
 {
-    return fresnel_lut_linear_residual_rgb(q->f0, q->table, q->n, c);
+    return fresnel_lut_linear_residual_rgb(M->f0, L->f32, L->n, c);
 }
-static fresnel_rgb r_lut_cubic(const model_rgb *q, float c) { return fresnel_lut_cubic_rgb(q->table, q->n, c); }
-static fresnel_rgb_q15 rq_lut(const model_rgb *q, int32_t c) { return fresnel_lut_u16_q15_rgb(q->q_table, q->n, c); }
+static fresnel_rgb r_lut_cubic(const model_rgb *q, float c) { return fresnel_lut_cubic_rgb(L->f32, L->n, c); }
+static fresnel_rgb_q15 rq_lut(const model_rgb *q, int32_t c) { return fresnel_lut_u16_q15_rgb(L->q15, L->n, c); }
 static fresnel_rgb_q15 rq_lut_lin(const model_rgb *q, int32_t c)
 {
-    return fresnel_lut_linear_u16_q15_rgb(q->q_table, q->n, c);
+    return fresnel_lut_linear_u16_q15_rgb(L->q15, L->n, c);
 }
 static fresnel_rgb_q15 rq_lut_res(const model_rgb *q, int32_t c)
 {
-    return fresnel_lut_residual_s16_q15_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
+    return fresnel_lut_residual_s16_q15_rgb(M->q_f0, L->q15_res, L->n, L->frac, c);
 }
 static fresnel_rgb_q15 rq_lut_lin_res(const model_rgb *q, int32_t c)
 {
-    return fresnel_lut_linear_residual_s16_q15_rgb(q->q_f0, q->q_res, q->n, q->q_frac, c);
+    return fresnel_lut_linear_residual_s16_q15_rgb(M->q_f0, L->q15_res, L->n, L->frac, c);
 }
 static fresnel_rgb_q15 rq_lut_cubic(const model_rgb *q, int32_t c)
 {
-    return fresnel_lut_cubic_u16_q15_rgb(q->q_table, q->n, c);
+    return fresnel_lut_cubic_u16_q15_rgb(L->q15, L->n, c);
 }
 static double ref_nodes(const model_rgb *q, int ch, double x, int cubic)
 {
     double nodes[MODEL_LUT_NODES_MAX];
     int i;
-    for (i = 0; i < q->n; i++) /* at the float-rounded node values */
-        nodes[i] = q->table[ch * q->n + i];
-    return ref_lut(nodes, q->n, cubic, x);
+    for (i = 0; i < L->n; i++) /* at the float-rounded node values */
+        nodes[i] = L->f32[ch * L->n + i];
+    return ref_lut(nodes, L->n, cubic, x);
 }
 static double rr_lut(const model_rgb *q, int ch, double c) { return ref_nodes(q, ch, sqrt(c), 0); }
 static double rr_lut_lin(const model_rgb *q, int ch, double c) { return ref_nodes(q, ch, c, 0); }
 static double rr_lut_res(const model_rgb *q, int ch, double c)
 {
-    return ref_nodes(q, ch, sqrt(c), 0) + ref_schlick(ch3(q->f0, ch), c);
+    return ref_nodes(q, ch, sqrt(c), 0) + ref_schlick(ch3(M->f0, ch), c);
 }
 static double rr_lut_lin_res(const model_rgb *q, int ch, double c)
 {
-    return ref_nodes(q, ch, c, 0) + ref_schlick(ch3(q->f0, ch), c);
+    return ref_nodes(q, ch, c, 0) + ref_schlick(ch3(M->f0, ch), c);
 }
 static double rr_lut_cubic(const model_rgb *q, int ch, double c) { return ref_nodes(q, ch, sqrt(c), 1); }
 
 #if FRESNEL_HAS_F16
 /* binary16: scalar functions, channel by channel as a shader would */
 #define HC(fn_args) return (double)(fn_args)
-static double rh_schlick(const model_rgb *q, int ch, double c) { HC(fresnel_schlick_f16(q->h_f0[ch], H(c))); }
-static double rh_lsk(const model_rgb *q, int ch, double c) { HC(fresnel_lsk_f16(q->h_eta[ch], q->h_kappa[ch], H(c))); }
+static double rh_schlick(const model_rgb *q, int ch, double c) { HC(fresnel_schlick_f16(M->h_f0[ch], H(c))); }
+static double rh_lsk(const model_rgb *q, int ch, double c) { HC(fresnel_lsk_f16(M->h_eta[E][ch], M->h_kappa[E][ch], H(c))); }
 static double rh_lsk_comp(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_lsk_comp_f16(q->h_eta[ch], q->h_kappa[ch], q->h_a[ch], q->h_alpha[ch], H(c)));
+    HC(fresnel_lsk_comp_f16(M->h_eta[E][ch], M->h_kappa[E][ch], M->h_lsk_a[ch], M->h_lsk_alpha[ch], H(c)));
 }
-static double rh_f82(const model_rgb *q, int ch, double c) { HC(fresnel_f82_f16(q->h_f0[ch], q->h_f82[ch], H(c))); }
+static double rh_f82(const model_rgb *q, int ch, double c) { HC(fresnel_f82_f16(M->h_f0[ch], M->h_f82[ch], H(c))); }
 static double rh_gulbrandsen(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_gulbrandsen_f16(q->h_r[ch], q->h_g[ch], H(c)));
+    HC(fresnel_gulbrandsen_f16(M->h_gulb_r[ch], M->h_gulb_g[ch], H(c)));
 }
 static double rh_cook_torrance(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_cook_torrance_f16(q->h_f0[ch], q->h_ct_eta, q->h_ct_kappa, H(c)));
+    HC(fresnel_cook_torrance_f16(M->h_f0[ch], M->h_ct_eta, M->h_ct_kappa, H(c)));
 }
 static double rh_conductor(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_conductor_f16(q->h_eta[ch], q->h_kappa[ch], H(c)));
+    HC(fresnel_conductor_f16(M->h_eta[E][ch], M->h_kappa[E][ch], H(c)));
 }
 static double rh_approx(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_approx_conductor_f16(q->h_eta[ch], q->h_kappa[ch], H(c)));
+    HC(fresnel_approx_conductor_f16(M->h_eta[E][ch], M->h_kappa[E][ch], H(c)));
 }
-static double rh_lut(const model_rgb *q, int ch, double c) { HC(fresnel_lut_f16(q->h_table + ch * q->n, q->n, H(c))); }
+static double rh_lut(const model_rgb *q, int ch, double c) { HC(fresnel_lut_f16(L->f16 + ch * L->n, L->n, H(c))); }
 static double rh_lut_lin(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_lut_linear_f16(q->h_table + ch * q->n, q->n, H(c)));
+    HC(fresnel_lut_linear_f16(L->f16 + ch * L->n, L->n, H(c)));
 }
 static double rh_lut_res(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_lut_residual_f16(q->h_f0[ch], q->h_table + ch * q->n, q->n, H(c)));
+    HC(fresnel_lut_residual_f16(M->h_f0[ch], L->f16 + ch * L->n, L->n, H(c)));
 }
 static double rh_lut_lin_res(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_lut_linear_residual_f16(q->h_f0[ch], q->h_table + ch * q->n, q->n, H(c)));
+    HC(fresnel_lut_linear_residual_f16(M->h_f0[ch], L->f16 + ch * L->n, L->n, H(c)));
 }
 static double rh_lut_cubic(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_lut_cubic_f16(q->h_table + ch * q->n, q->n, H(c)));
+    HC(fresnel_lut_cubic_f16(L->f16 + ch * L->n, L->n, H(c)));
 }
 #endif
 
@@ -465,7 +469,8 @@ const model *model_find_offered(const char *name, unsigned offered)
 
 const model *model_find(const char *name) { return model_find_offered(name, MODEL_EVAL); }
 
-int model_lut_size(const char *name, int lo, int hi, lut_form *form)
+/* N for a LUT name (N in lo..hi), setting *form; 0 for every other string. */
+static int lut_size(const char *name, int lo, int hi, lut_form *form)
 {
     const char *p;
     int n = 0, digits = 0;
@@ -485,32 +490,33 @@ int model_lut_size(const char *name, int lo, int hi, lut_form *form)
     /* the rest must be a LUT row's name after its "lutN" */
     for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
         if (!strcmp(p, lut_table[i].name + 4)) {
-            if (form)
-                *form = lut_table[i].form;
+            *form = lut_table[i].form;
             return n;
         }
     return 0;
 }
 
-const model *model_scene_row(const char *name, lut_spacing spacing)
+const model *model_lut_row(lut_form form, lut_spacing spacing)
 {
-    lut_form form;
+    int uniform = spacing == LUT_UNIFORM;
     size_t i;
-    if (model_lut_size(name, 1, MODEL_LUT_NODES_MAX, &form)) {
-        int uniform = spacing == LUT_UNIFORM;
-        for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
-            if (lut_table[i].form == form && (lut_table[i].uniform == uniform || form == LUT_CUBIC))
-                return &lut_table[i];
-        return NULL;
-    }
-    return model_find_offered(name, MODEL_SCENE);
+    for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
+        if (lut_table[i].form == form && (lut_table[i].uniform == uniform || form == LUT_CUBIC))
+            return &lut_table[i];
+    return NULL;
 }
 
-const char *model_shader_lacks(const char *name, lut_spacing spacing)
+const model *model_scene_parse(const char *name, lut_spacing spacing, int lo, int hi, int *lut_n)
 {
-    const model *row = model_scene_row(name, spacing);
-    if (!row)
-        return "the model is unknown";
+    lut_form form;
+    *lut_n = lut_size(name, lo, hi, &form);
+    if (!name)
+        return NULL;
+    return *lut_n ? model_lut_row(form, spacing) : model_find_offered(name, MODEL_SCENE);
+}
+
+const char *model_shader_lacks(const model *row, lut_spacing spacing)
+{
     if (row->offered & MODEL_LUT)
         return spacing == LUT_GRAZING_PL ? "grazing-pl tables are read by fresnel_lut_pl_u16_q15_fast, which the "
                                            "shader ports do not have"
@@ -592,124 +598,5 @@ void model_params_round_f16(model_params *m)
         *fields[i] = (double)(fresnel_f16)*fields[i];
 #else
     (void)m;
-#endif
-}
-
-static fresnel_rgb rgb3(const double v[3])
-{
-    fresnel_rgb o;
-    o.r = (float)v[0];
-    o.g = (float)v[1];
-    o.b = (float)v[2];
-    return o;
-}
-
-static fresnel_rgb_q15 q15_3(const double v[3])
-{
-    fresnel_rgb_q15 o;
-    o.r = (fresnel_q15)fixed_q15(v[0]);
-    o.g = (fresnel_q15)fixed_q15(v[1]);
-    o.b = (fresnel_q15)fixed_q15(v[2]);
-    return o;
-}
-
-static const double *eta_of(const model *def, const material_params *p, int kappa)
-{
-    switch (def->eta) {
-    case ETA_GAUSS: return kappa ? p->kappa_gauss : p->eta_gauss;
-    case ETA_POINT: return kappa ? p->kappa_point : p->eta_point;
-    default: return kappa ? p->kappa_fit : p->eta_fit;
-    }
-}
-
-void model_rgb_prepare_f32(const model *def, const material_params *p, const float *table, int n,
-                           lut_spacing spacing, model_rgb *q)
-{
-    memset(q, 0, sizeof *q);
-    q->def = def;
-    q->n = n;
-    q->spacing = spacing;
-    q->f0 = rgb3(p->f0);
-    q->f82 = rgb3(p->f82);
-    q->eta = rgb3(eta_of(def, p, 0));
-    q->kappa = rgb3(eta_of(def, p, 1));
-    q->a = rgb3(p->lsk_a);
-    q->alpha = rgb3(p->lsk_alpha);
-    q->r = rgb3(p->gulb_r);
-    q->g = rgb3(p->gulb_g);
-    q->ct_eta = (float)p->ct_eta;
-    q->ct_kappa = (float)p->ct_kappa;
-    q->table = table;
-}
-
-int model_rgb_prepare(const model *def, const material_params *p, const float *table, const double *table_d, int n,
-                      lut_spacing spacing, model_rgb *q)
-{
-    const double *eta = eta_of(def, p, 0), *kappa = eta_of(def, p, 1);
-    int comp = (def->q15_reads & MQ_LSK_COMP) != 0, ch, i;
-    model_rgb_prepare_f32(def, p, table, n, spacing, q);
-    q->q_f0 = q15_3(p->f0);
-    q->q_f82 = q15_3(p->f82);
-    q->q_r = q15_3(p->gulb_r);
-    q->q_g = q15_3(p->gulb_g);
-    fixed_ior(p->ct_eta, p->ct_kappa, &q->q_ct);
-    for (ch = 0; ch < 3; ch++) {
-        fixed_ior(eta[ch], kappa[ch], &q->q_ior[ch]);
-        fixed_nk(eta[ch], kappa[ch], &q->q_nk[ch]);
-        fixed_lsk(eta[ch], kappa[ch], comp ? p->lsk_a[ch] : 0.0, comp ? p->lsk_alpha[ch] : 0.0, &q->q_lsk[ch]);
-    }
-    if (n) {
-        double big = 0.0;
-        q->q_table = malloc(3 * (size_t)n * sizeof *q->q_table);
-        q->q_res = malloc(3 * (size_t)n * sizeof *q->q_res);
-        if (!q->q_table || !q->q_res) {
-            model_rgb_free(q);
-            return -1;
-        }
-        for (i = 0; i < 3 * n; i++)
-            if (fabs(table_d[i]) > big)
-                big = fabs(table_d[i]);
-        /* residuals are small: as many fraction bits as int16 holds */
-        for (q->q_frac = 15; q->q_frac < 30 && big * ldexp(1.0, q->q_frac + 1) <= 32767.0; q->q_frac++)
-            ;
-        for (i = 0; i < 3 * n; i++) {
-            q->q_table[i] = (uint16_t)fixed_q15(table_d[i]);
-            q->q_res[i] = (int16_t)lround(table_d[i] * ldexp(1.0, q->q_frac));
-        }
-    }
-#if FRESNEL_HAS_F16
-    for (ch = 0; ch < 3; ch++) {
-        q->h_f0[ch] = (fresnel_f16)p->f0[ch];
-        q->h_f82[ch] = (fresnel_f16)p->f82[ch];
-        q->h_eta[ch] = (fresnel_f16)eta[ch];
-        q->h_kappa[ch] = (fresnel_f16)kappa[ch];
-        q->h_a[ch] = (fresnel_f16)p->lsk_a[ch];
-        q->h_alpha[ch] = (fresnel_f16)p->lsk_alpha[ch];
-        q->h_r[ch] = (fresnel_f16)p->gulb_r[ch];
-        q->h_g[ch] = (fresnel_f16)p->gulb_g[ch];
-    }
-    q->h_ct_eta = (fresnel_f16)p->ct_eta;
-    q->h_ct_kappa = (fresnel_f16)p->ct_kappa;
-    if (n) {
-        if (!(q->h_table = malloc(3 * (size_t)n * sizeof *q->h_table))) {
-            model_rgb_free(q);
-            return -1;
-        }
-        for (i = 0; i < 3 * n; i++)
-            q->h_table[i] = (fresnel_f16)table_d[i];
-    }
-#endif
-    return 0;
-}
-
-void model_rgb_free(model_rgb *q)
-{
-    free(q->q_table);
-    free(q->q_res);
-    q->q_table = NULL;
-    q->q_res = NULL;
-#if FRESNEL_HAS_F16
-    free(q->h_table);
-    q->h_table = NULL;
 #endif
 }

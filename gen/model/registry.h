@@ -47,9 +47,6 @@
 /* The most nodes a scene LUT has (scene.h: SCENE_LUT_MAX). */
 #define MODEL_LUT_NODES_MAX 256
 
-/* Which eta, kappa a scene model's exact or LSK forms read. */
-typedef enum model_eta { ETA_FIT, ETA_GAUSS, ETA_POINT } model_eta;
-
 /* Everything any model needs. eta and kappa are relative to the incident
  * medium; the rest are derived from them by the reference (model_derive). */
 typedef struct model_params {
@@ -70,28 +67,13 @@ typedef struct model_fixed {
     fresnel_lsk_prep_q15 lsk;
 } model_fixed;
 
-/* One material's scene parameters prepared for one model in every number
- * type (model_rgb_prepare): what the scene evaluators read. */
+/* One scene model of one material as the runtime sees it in every number
+ * type: the encoder's values (3_encode/encode.h), which are what `fresnel
+ * gen` writes; what the scene evaluators read. */
 typedef struct model_rgb {
     const struct model *def;
-    int n; /* LUT nodes; 0 for analytic models */
-    lut_spacing spacing;
-    /* binary32 */
-    fresnel_rgb f0, f82, eta, kappa, a, alpha, r, g;
-    float ct_eta, ct_kappa;
-    const float *table; /* 3n nodes */
-    /* Q1.15 */
-    fresnel_rgb_q15 q_f0, q_f82, q_r, q_g;
-    fresnel_ior_prep_q15 q_ior[3], q_ct;
-    fresnel_nk_prep_q15 q_nk[3];
-    fresnel_lsk_prep_q15 q_lsk[3];
-    uint16_t *q_table;
-    int16_t *q_res;
-    int q_frac;
-#if FRESNEL_HAS_F16
-    fresnel_f16 h_f0[3], h_f82[3], h_eta[3], h_kappa[3], h_a[3], h_alpha[3], h_r[3], h_g[3], h_ct_eta, h_ct_kappa;
-    fresnel_f16 *h_table;
-#endif
+    const encoded_material *mat;
+    const encoded_lut *lut; /* the LUT rows' table; NULL for the others */
 } model_rgb;
 
 /* A timed loop over n cosines (c for the float types, cq the same as Q15
@@ -120,7 +102,7 @@ typedef struct model {
     /* As a scene model (MODEL_SCENE) */
     unsigned reads;     /* MP_* */
     unsigned q15_reads; /* MQ_* */
-    model_eta eta;      /* which eta, kappa its exact or LSK forms read */
+    model_eta eta;      /* which eta, kappa its exact forms read (encode.h) */
     lut_form form;      /* MODEL_LUT rows */
     int uniform;        /* MODEL_LUT rows: 1 nodes uniform in c, 0 in sqrt(c) */
     /* Shader return expression (ports/glsl/fresnel.glsl, the one source of
@@ -148,17 +130,19 @@ extern const int model_count;
 const model *model_find_offered(const char *name, unsigned offered);
 /* The MODEL_EVAL row named name (fresnel eval); NULL if none. */
 const model *model_find(const char *name);
-/* The scene row for a manifest's model name (a LUT name: the row of its form
- * and spacing); NULL for an unknown name. */
-const model *model_scene_row(const char *name, lut_spacing spacing);
+/* A scene model's name read, the one place a name is: the row of a
+ * MODEL_SCENE name, or for "lutN", "lutN-residual", "lutN-cubic" (N in
+ * lo..hi, no leading zeros) the row of its form at `spacing` with N in
+ * *lut_n (0 for the others). NULL for any other string. */
+const model *model_scene_parse(const char *name, lut_spacing spacing, int lo, int hi, int *lut_n);
+/* The LUT row of form `form` at `spacing` (a manifest may set its spacing
+ * after its models). */
+const model *model_lut_row(lut_form form, lut_spacing spacing);
 /* Whether the shader ports (ports/glsl/fresnel.glsl, which
  * ports/hlsl/fresnel.hlsl includes, so one expression per row serves both)
- * express scene model name with tables spaced `spacing`: NULL, or what they
+ * express scene row `row` with tables spaced `spacing`: NULL, or what they
  * lack, for the back end's error message. */
-const char *model_shader_lacks(const char *name, lut_spacing spacing);
-/* N for "lutN", "lutN-residual" or "lutN-cubic" (N in lo..hi, no leading
- * zeros), setting *form (if not NULL); 0 for every other string. */
-int model_lut_size(const char *name, int lo, int hi, lut_form *form);
+const char *model_shader_lacks(const model *row, lut_spacing spacing);
 /* The rows offered as `offered`, without LUT rows, NULL-terminated: their
  * names for messages and --help. max includes the NULL. */
 int model_names(unsigned offered, const char **out, int max);
@@ -195,14 +179,5 @@ void model_params_round_fixed(model_params *m);
 void model_fixed_from_params(const model_params *m, model_fixed *out);
 /* And for binary16: every parameter rounded to binary16 (a no-op without _Float16). */
 void model_params_round_f16(model_params *m);
-
-/* A scene model's parameters for material p: the binary32 ones only (no
- * allocation; q->table = table), or every type (the LUT's Q15 and binary16
- * copies allocated from table_d: model_rgb_free). 0, or -1 when out of memory. */
-void model_rgb_prepare_f32(const model *def, const material_params *p, const float *table, int n,
-                           lut_spacing spacing, model_rgb *q);
-int model_rgb_prepare(const model *def, const material_params *p, const float *table, const double *table_d, int n,
-                      lut_spacing spacing, model_rgb *q);
-void model_rgb_free(model_rgb *q);
 
 #endif

@@ -12,7 +12,7 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 const extreme_case extreme_cases[] = {
     {"eta -> 0", 0.01, 0.0, 1.0, "F0 = 0.96"},
@@ -110,7 +110,6 @@ double extreme_f82_unclamped(double f0, double f82, double c)
 
 /* ---- number types: one evaluator each; every table has a row (or column) per type. */
 
-static int f32_has(const model *m) { return (m->offered & MODEL_EVAL) && m->f32 != NULL; }
 static void f32_prepare(const extreme_case *e, extreme_typed *t)
 {
     memset(t, 0, sizeof *t);
@@ -124,13 +123,11 @@ static int f32_eval(const model *m, const extreme_typed *t, double x, double *go
     *ref_c = c;
     return 1;
 }
-static double f32_bound(const model *m) { return m->bound; }
 
 /* Q15: cosines are codes; a finite c is round(c 32768) saturated to int32,
  * +-Inf the extreme codes; NaN has no code. The parameters are rounded to
  * the fixed-point formats and the reference sees them rounded
  * (model_params_round_fixed), as tests/test_fixed_bounds.c does. */
-static int q15_has(const model *m) { return (m->offered & MODEL_EVAL) && m->q15 != NULL; }
 static void q15_prepare(const extreme_case *e, extreme_typed *t)
 {
     memset(t, 0, sizeof *t);
@@ -160,13 +157,11 @@ static int q15_eval(const model *m, const extreme_typed *t, double x, double *go
     *ref_c = code / 32768.0;
     return 1;
 }
-static double q15_bound(const model *m) { return m->q15_bound / 32768.0; }
 
 #if FRESNEL_HAS_F16
 /* binary16: parameters rounded to half; eta and kappa outside the binary16
  * domain are clamped to it for the reference too (what the runtime
  * evaluates), and the case is marked out of domain. */
-static int f16_has(const model *m) { return (m->offered & MODEL_EVAL) && m->f16 != NULL; }
 static void f16_prepare(const extreme_case *e, extreme_typed *t)
 {
     double eta, kappa;
@@ -190,21 +185,20 @@ static int f16_eval(const model *m, const extreme_typed *t, double x, double *go
     *ref_c = (double)(fresnel_f16)x;
     return 1;
 }
-static double f16_bound(const model *m) { return m->f16_bound; }
 #endif
 
 const extreme_type extreme_types[] = {
-    {"f32", 0x1p-149, f32_has, f32_prepare, f32_eval, f32_bound},
-    {"q15", 0x1p-15, q15_has, q15_prepare, q15_eval, q15_bound},
+    {&number_types[TYPE_F32], f32_prepare, f32_eval},
+    {&number_types[TYPE_Q15], q15_prepare, q15_eval},
 #if FRESNEL_HAS_F16
-    {"f16", 0x1p-24, f16_has, f16_prepare, f16_eval, f16_bound},
+    {&number_types[TYPE_F16], f16_prepare, f16_eval},
 #endif
 };
 const int extreme_type_count = (int)(sizeof extreme_types / sizeof extreme_types[0]);
 
 double extreme_cos_input(const extreme_type *ty, const extreme_cos *x)
 {
-    return x->lsb ? ty->lsb : (double)x->c;
+    return x->lsb ? ty->type->lsb : (double)x->c;
 }
 
 #define GRID_MAX 2100
@@ -239,10 +233,10 @@ static void table_cosines(const extreme_case *e)
             const extreme_type *ty = &extreme_types[ti];
             double worst = 0.0;
             int bad = 0;
-            if (!ty->has(m))
+            if (!ty->type->has(m))
                 continue;
             ty->prepare(e, &t);
-            printf("| %s | %s |", m->name, ty->name);
+            printf("| %s | %s |", m->name, ty->type->name);
             for (ci = 0; ci < extreme_cosine_count; ci++) {
                 double got, ref_c, err;
                 if (!ty->eval(m, &t, extreme_cos_input(ty, &extreme_cosines[ci]), &got, &ref_c)) {
@@ -255,8 +249,8 @@ static void table_cosines(const extreme_case *e)
                     worst = err;
                 printf(" %.7g |", got);
             }
-            print_err(worst, ty->bound(m), bad, t.in_domain);
-            printf(" %.1e |\n", ty->bound(m));
+            print_err(worst, ty->type->bound(m), bad, t.in_domain);
+            printf(" %.1e |\n", ty->type->bound(m));
         }
     }
 }
@@ -311,29 +305,29 @@ static void table_cases(void)
             const extreme_type *ty = &extreme_types[ti];
             extreme_typed t;
             ty->prepare(e, &t);
-            printf("| %s | %g | %g | %g | %s |", e->name, e->eta, e->kappa, e->n1, ty->name);
+            printf("| %s | %g | %g | %g | %s |", e->name, e->eta, e->kappa, e->n1, ty->type->name);
             for (mi = 0; mi < model_count; mi++) {
                 const model *m = &model_table[mi];
                 int bad;
                 double worst;
                 if (!(m->offered & MODEL_EVAL))
                     continue;
-                if (!ty->has(m)) {
+                if (!ty->type->has(m)) {
                     printf(" |");
                     continue;
                 }
                 worst = extreme_max_err(m, ty, &t, &bad);
-                print_err(worst, ty->bound(m), bad, t.in_domain);
+                print_err(worst, ty->type->bound(m), bad, t.in_domain);
             }
             printf("\n");
         }
     }
     for (ti = 0; ti < extreme_type_count; ti++) {
-        printf("| bound | | | | %s |", extreme_types[ti].name);
+        printf("| bound | | | | %s |", extreme_types[ti].type->name);
         for (mi = 0; mi < model_count; mi++)
             if (model_table[mi].offered & MODEL_EVAL)
                 printf(" %.1e |",
-                       extreme_types[ti].has(&model_table[mi]) ? extreme_types[ti].bound(&model_table[mi]) : 0.0);
+                       extreme_types[ti].type->has(&model_table[mi]) ? extreme_types[ti].type->bound(&model_table[mi]) : 0.0);
         printf("\n");
     }
 }
@@ -365,12 +359,11 @@ static void table_exact(void)
  * no Q15 code. */
 static int direct_eval(int kind, int ti, float a, float b, float c, double *got)
 {
-    const char *name = extreme_types[ti].name;
-    if (!strcmp(name, "f32")) {
+    switch (extreme_types[ti].type->id) {
+    case TYPE_F32:
         *got = kind ? fresnel_gulbrandsen(a, b, c) : fresnel_f82(a, b, c);
         return 1;
-    }
-    if (!strcmp(name, "q15")) {
+    case TYPE_Q15: {
         int32_t qa, qb, qc;
         if (a != a || b != b)
             return 0;
@@ -378,35 +371,40 @@ static int direct_eval(int kind, int ti, float a, float b, float c, double *got)
         *got = (kind ? fresnel_gulbrandsen_q15(qa, qb, qc) : fresnel_f82_q15(qa, qb, qc)) / 32768.0;
         return 1;
     }
+    case TYPE_F16: {
 #if FRESNEL_HAS_F16
-    if (!strcmp(name, "f16")) {
         fresnel_f16 ha = (fresnel_f16)a, hb = (fresnel_f16)b, hc = (fresnel_f16)c;
         *got = (double)(kind ? fresnel_gulbrandsen_f16(ha, hb, hc) : fresnel_f82_f16(ha, hb, hc));
         return 1;
-    }
+#else
+        return 0;
 #endif
-    return 0;
+    }
+    default: return 0;
+    }
 }
 
 /* The inputs the reference sees for direct_eval's type. */
 static void direct_inputs(int kind, int ti, float *a, float *b, float *c)
 {
-    const char *name = extreme_types[ti].name;
-    if (!strcmp(name, "q15")) {
+    switch (extreme_types[ti].type->id) {
+    case TYPE_Q15:
         /* Gulbrandsen (kind 1): r clamped as the Q15 runtime clamps it. */
         *a = (float)(ref_clamp(extreme_q15_code(*a), 0.0, kind ? FRESNEL_GULBRANDSEN_R_MAX_Q15 : 32768.0) / 32768.0);
         *b = (float)(ref_clamp(extreme_q15_code(*b), 0.0, 32768.0) / 32768.0);
         *c = (float)(extreme_q15_code(*c) / 32768.0);
-    }
+        break;
+    case TYPE_F16:
 #if FRESNEL_HAS_F16
-    if (!strcmp(name, "f16")) {
         *a = (float)(fresnel_f16)*a;
         if (kind)
             *a = (float)ref_clamp(*a, 0.0, F16_GULBRANDSEN_R_MAX);
         *b = (float)(fresnel_f16)*b;
         *c = (float)(fresnel_f16)*c;
-    }
 #endif
+        break;
+    default: break;
+    }
 }
 
 double extreme_direct_max_err(int kind, int ti, float a0, float b0, int *bad, int *na)
@@ -424,7 +422,7 @@ double extreme_direct_max_err(int kind, int ti, float a0, float b0, int *bad, in
         }
         direct_inputs(kind, ti, &a, &b, &c);
         ref = kind ? ref_gulbrandsen(a, b, c) : ref_f82(a, b, c);
-        if (kind && !strcmp(extreme_types[ti].name, "f16")) {
+        if (kind && extreme_types[ti].type->id == TYPE_F16) {
             /* fresnel_gulbrandsen_f16 clamps n and k to the binary16 domain. */
             double n, kk;
             ref_gulbrandsen_nk(a, b, &n, &kk);
@@ -441,7 +439,7 @@ double extreme_direct_max_err(int kind, int ti, float a0, float b0, int *bad, in
 double extreme_direct_bound(int kind, int ti)
 {
     const model *m = kind ? model_gulbrandsen : model_f82;
-    return extreme_types[ti].bound(m);
+    return extreme_types[ti].type->bound(m);
 }
 
 static void print_direct_errs(int kind, float a, float b)
@@ -469,7 +467,7 @@ static void table_reflectances(void)
            "codes, so 1.04 is code 34079; NaN has no code).\n\n"
            "| F0, F82 | schlick c = 0 / 0.5 / 1 | f82 c = 0 | c = 1/7 | c = 0.5 | c = 1 | unclamped range |");
     for (ti = 0; ti < extreme_type_count; ti++)
-        printf(" err %s |", extreme_types[ti].name);
+        printf(" err %s |", extreme_types[ti].type->name);
     printf("\n|---|---|---:|---:|---:|---:|---|");
     for (ti = 0; ti < extreme_type_count; ti++)
         printf("---:|");
@@ -518,7 +516,7 @@ static void table_gulbrandsen(void)
            "| r, g | n | k | c = 0 | c = 0.5 | c = 0.9 | c = 1 |",
            (double)FRESNEL_GULBRANDSEN_R_MAX, FRESNEL_GULBRANDSEN_R_MAX_Q15);
     for (ti = 0; ti < extreme_type_count; ti++)
-        printf(" err %s |", extreme_types[ti].name);
+        printf(" err %s |", extreme_types[ti].type->name);
     printf("\n|---|---:|---:|---:|---:|---:|---:|");
     for (ti = 0; ti < extreme_type_count; ti++)
         printf("---:|");
@@ -545,7 +543,7 @@ void extremes_print(void)
            "Produced by `build/fresnel extremes`; tests/test_extremes.c asserts the properties.\n"
            "Every model in every number type (");
     for (i = 0; i < extreme_type_count; i++)
-        printf("%s%s", i ? ", " : "", extreme_types[i].name);
+        printf("%s%s", i ? ", " : "", extreme_types[i].type->name);
     printf(") against the double reference of the same\n"
            "model on the same rounded inputs. Parameters (F0, F82, LSK a and alpha,\n"
            "Gulbrandsen r and g) are derived from eta, kappa and n1 by the reference, as\n"

@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 
+#include "model/number_type.h"
 #include "model/registry.h"
 
 /* A material seen from an incident medium: eta + i kappa absolute, n1 real. */
@@ -59,15 +60,12 @@ typedef struct extreme_typed {
     int in_domain;   /* the documented bound applies */
 } extreme_typed;
 typedef struct extreme_type {
-    const char *name;
-    double lsb; /* smallest positive cosine */
-    int (*has)(const model *m);
+    const number_type *type; /* its row: name, smallest positive cosine, has, bound */
     void (*prepare)(const extreme_case *e, extreme_typed *t);
     /* The type's result at cosine x (converted to the type: rounded, or to a
      * Q15 code) and the cosine the reference sees; 0 if x has no
      * representation in the type (NaN in Q15). */
     int (*eval)(const model *m, const extreme_typed *t, double x, double *got, double *ref_c);
-    double (*bound)(const model *m); /* documented absolute bound */
 } extreme_type;
 extern const extreme_type extreme_types[];
 extern const int extreme_type_count;

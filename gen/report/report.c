@@ -9,10 +9,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "bench/bench.h"
 #include "bench/speed_targets.h"
-#include "model/reference.h"
+#include "common/reference.h"
 #include "model/registry.h"
 #include "report/report.h"
 #include "scene/scene.h"
@@ -104,32 +104,28 @@ static void write_gamut(report_run *r, FILE *f)
     for (i = 0; i < r->sc.material_count; i++)
         if (r->mats[i].out_of_gamut)
             for (m = 0; m < r->sc.model_count; m++)
-                for (t = 0; t < report_type_count; t++) {
+                for (t = 0; t < number_types_available; t++) {
                     const report_cell *c = report_cell_at(r, i, m, t);
-                    fprintf(f, "| %s | %s | %s | %.3f | %.3f |\n", r->mats[i].p.info.id, r->sc.models[m],
-                            report_types[t].name, c->raw_de_mean, c->raw_de_max);
+                    fprintf(f, "| %s | %s | %s | %.3f | %.3f |\n", r->mats[i].p.info.id, r->sc.models[m].name,
+                            number_types[t].name, c->raw_de_mean, c->raw_de_max);
                 }
 }
 
 static void write_average_closed_forms(report_run *r, FILE *f)
 {
-    int i, m, t32 = 0, header = 0;
-    for (t32 = 0; t32 < report_type_count && strcmp(report_types[t32].name, "f32"); t32++)
-        ;
+    int i, m, t32 = TYPE_F32, header = 0;
     for (m = 0; m < r->sc.model_count; m++) {
         double sum = 0.0, worst = 0.0, vs_curve = 0.0;
         for (i = 0; i < r->sc.material_count; i++) {
             const report_material *rm = &r->mats[i];
             const scene_model *sm = &rm->models[m];
             const report_cell *c = report_cell_at(r, i, m, t32);
-            model_rgb q;
+            model_rgb q = scene_model_rgb(sm);
             fresnel_rgb v;
             double e;
-            if (!sm->def->avg_f32 ||
-                model_rgb_prepare(sm->def, &rm->p, sm->table, sm->table_d, sm->lut_n, sm->spacing, &q))
+            if (!sm->def->avg_f32)
                 break;
             v = sm->def->avg_f32(&q);
-            model_rgb_free(&q);
 
             e = fmax(fabs(v.r - rm->p.f_avg[0]), fmax(fabs(v.g - rm->p.f_avg[1]), fabs(v.b - rm->p.f_avg[2])));
             sum += e;
@@ -148,7 +144,7 @@ static void write_average_closed_forms(report_run *r, FILE *f)
                        "| model | mean abs error | worst | max vs the integrated curve |\n"
                        "|---|---:|---:|---:|\n");
         header = 1;
-        fprintf(f, "| %s | %.2e | %.2e | %.1e |\n", r->sc.models[m], sum / r->sc.material_count, worst, vs_curve);
+        fprintf(f, "| %s | %.2e | %.2e | %.1e |\n", r->sc.models[m].name, sum / r->sc.material_count, worst, vs_curve);
     }
 }
 
@@ -165,7 +161,7 @@ static void write_average(report_run *r, FILE *f)
                "|---|---|---:|---:|---|\n",
             GEN_AVG_PANELS);
     for (m = 0; m < r->sc.model_count; m++)
-        for (t = 0; t < report_type_count; t++) {
+        for (t = 0; t < number_types_available; t++) {
             double sum = 0.0, worst = -1.0;
             const char *at = "";
             for (i = 0; i < r->sc.material_count; i++) {
@@ -179,7 +175,7 @@ static void write_average(report_run *r, FILE *f)
                     at = r->mats[i].p.info.id;
                 }
             }
-            fprintf(f, "| %s | %s | %.2e | %.2e | %s |\n", r->sc.models[m], report_types[t].name,
+            fprintf(f, "| %s | %s | %.2e | %.2e | %s |\n", r->sc.models[m].name, number_types[t].name,
                     sum / r->sc.material_count, worst, at);
         }
     write_average_closed_forms(r, f);
@@ -198,26 +194,26 @@ static void write_accuracy_tables(report_run *r, FILE *f)
                "|---|---|---:|---:|---:|---:|---:|\n",
             "report scene's", r->sc.space, r->mats[r->timed_material].p.info.id, bench_compiler());
     for (m = 0; m < r->sc.model_count; m++)
-        for (t = 0; t < report_type_count; t++) {
+        for (t = 0; t < number_types_available; t++) {
             double mean, worst, vs = 0.0;
             report_metal_summary(r, m, t, &mean, &worst);
             for (i = 0; i < r->sc.material_count; i++)
                 if (report_cell_at(r, i, m, t)->vs_ref_max > vs)
                     vs = report_cell_at(r, i, m, t)->vs_ref_max;
-            fprintf(f, "| %s | %s | ", r->sc.models[m], report_types[t].name);
+            fprintf(f, "| %s | %s | ", r->sc.models[m].name, number_types[t].name);
             if (isnan(mean)) /* a scene without metals: nothing to average */
                 fprintf(f, "no metals | - | ");
             else
                 fprintf(f, "%.3f | %.3f | ", mean, worst);
             fprintf(f, "%.1e | ", vs);
-            if (isnan(r->ns[m * report_type_count + t]))
+            if (isnan(r->ns[m * number_types_available + t]))
                 fprintf(f, "not measured | ");
             else
-                fprintf(f, "%.2f | ", r->ns[m * report_type_count + t]);
-            if (isnan(r->instr[m * report_type_count + t]))
+                fprintf(f, "%.2f | ", r->ns[m * number_types_available + t]);
+            if (isnan(r->instr[m * number_types_available + t]))
                 fprintf(f, "not measured |\n");
             else
-                fprintf(f, "%.0f |\n", r->instr[m * report_type_count + t]);
+                fprintf(f, "%.0f |\n", r->instr[m * number_types_available + t]);
         }
     fprintf(f, "\n## Every material, model and type\n\n"
                "CIEDE2000 against the ground truth under the gamut policy (mean, RMS, max over 91 angles); max |error| per "
@@ -226,10 +222,10 @@ static void write_accuracy_tables(report_run *r, FILE *f)
                "|---|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
     for (i = 0; i < r->sc.material_count; i++)
         for (m = 0; m < r->sc.model_count; m++)
-            for (t = 0; t < report_type_count; t++) {
+            for (t = 0; t < number_types_available; t++) {
                 report_cell *c = report_cell_at(r, i, m, t);
                 fprintf(f, "| %s | %s | %s | %.4f | %.4f | %.4f | %.2e | %.2e | %.2e | %.1e |\n", r->mats[i].p.info.id,
-                        r->sc.models[m], report_types[t].name, c->de_mean, c->de_rms, c->de_max, c->abs_max[0],
+                        r->sc.models[m].name, number_types[t].name, c->de_mean, c->de_rms, c->de_max, c->abs_max[0],
                         c->abs_max[1], c->abs_max[2], c->vs_ref_max);
             }
     write_gamut(r, f);
@@ -283,7 +279,7 @@ static int model_index(report_run *r, const char *name)
 {
     int m;
     for (m = 0; m < r->sc.model_count; m++)
-        if (!strcmp(r->sc.models[m], name))
+        if (!strcmp(r->sc.models[m].name, name))
             return m;
     return -1;
 }
@@ -450,7 +446,7 @@ static int write_speed(const report_run *r, FILE *f)
 
 static void write_budget(report_run *r, FILE *f)
 {
-    int n = r->sc.model_count * report_type_count, k, j, nf = 0, a, b, use_instr = 1;
+    int n = r->sc.model_count * number_types_available, k, j, nf = 0, a, b, use_instr = 1;
     int *front = malloc((size_t)n * sizeof *front);
     const double *cost;
     if (!front)
@@ -474,12 +470,12 @@ static void write_budget(report_run *r, FILE *f)
         int dominated = 0;
         if (isnan(cost[k]))
             continue;
-        report_metal_summary(r, k / report_type_count, k % report_type_count, &mean_k, &worst_k);
+        report_metal_summary(r, k / number_types_available, k % number_types_available, &mean_k, &worst_k);
         for (j = 0; j < n && !dominated; j++) {
             double mean_j, worst_j;
             if (j == k || isnan(cost[j]))
                 continue;
-            report_metal_summary(r, j / report_type_count, j % report_type_count, &mean_j, &worst_j);
+            report_metal_summary(r, j / number_types_available, j % number_types_available, &mean_j, &worst_j);
             dominated = cost[j] <= cost[k] && mean_j <= mean_k && (cost[j] < cost[k] || mean_j < mean_k);
         }
         if (!dominated)
@@ -499,14 +495,14 @@ static void write_budget(report_run *r, FILE *f)
     for (a = 0; a < nf; a++) {
         double mean, worst, pm, pw;
         int k0 = front[a];
-        report_metal_summary(r, k0 / report_type_count, k0 % report_type_count, &mean, &worst);
-        fprintf(f, "- **%s (%s)**: %.0f %s", r->sc.models[k0 / report_type_count], report_types[k0 % report_type_count].name,
+        report_metal_summary(r, k0 / number_types_available, k0 % number_types_available, &mean, &worst);
+        fprintf(f, "- **%s (%s)**: %.0f %s", r->sc.models[k0 / number_types_available].name, number_types[k0 % number_types_available].name,
                 cost[k0], use_instr ? "instructions" : "ns");
         if (use_instr && !isnan(r->ns[k0]))
             fprintf(f, ", %.2f ns", r->ns[k0]);
         fprintf(f, "; mean dE2000 %.3f, worst max %.3f", mean, worst);
         if (a > 0) {
-            report_metal_summary(r, front[a - 1] / report_type_count, front[a - 1] % report_type_count, &pm, &pw);
+            report_metal_summary(r, front[a - 1] / number_types_available, front[a - 1] % number_types_available, &pm, &pw);
             fprintf(f, " (%.1fx the cost of the previous, %.1fx lower mean error)", cost[k0] / cost[front[a - 1]],
                     mean > 0.0 ? pm / mean : INFINITY);
         }
@@ -561,14 +557,14 @@ int report_write(const report_options *o)
         return status;
     }
     r.timing = timing;
-    if (scene_lut_spacing(&r.sc) == LUT_GRAZING_PL)
+    if (r.sc.spacing == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only and the report measures every number "
                                      "type; its targets table measures them itself");
     r.g = malloc(sizeof *r.g);
     r.mats = calloc((size_t)r.sc.material_count, sizeof *r.mats);
-    r.cells = calloc((size_t)r.sc.material_count * r.sc.model_count * report_type_count, sizeof *r.cells);
-    r.ns = malloc((size_t)r.sc.model_count * report_type_count * sizeof *r.ns);
-    r.instr = malloc((size_t)r.sc.model_count * report_type_count * sizeof *r.instr);
+    r.cells = calloc((size_t)r.sc.material_count * r.sc.model_count * number_types_available, sizeof *r.cells);
+    r.ns = malloc((size_t)r.sc.model_count * number_types_available * sizeof *r.ns);
+    r.instr = malloc((size_t)r.sc.model_count * number_types_available * sizeof *r.instr);
     sig_de = calloc((size_t)r.sc.material_count, sizeof *sig_de);
     sig_err = calloc((size_t)r.sc.material_count, sizeof *sig_err);
     if (!r.g || !r.mats || !r.cells || !r.ns || !r.instr || !sig_de || !sig_err) {
@@ -577,7 +573,7 @@ int report_write(const report_options *o)
     }
     if ((status = gen_context_load(data_dir(o->data_dir), r.sc.space, r.g)))
         goto done;
-    r.g->gamut = o->gamut_given ? o->gamut : scene_gamut(&r.sc);
+    r.g->gamut = o->gamut_given ? o->gamut : r.sc.gamut;
     lab_space_init(&r.ls, &r.g->cs);
     for (i = 0; i < r.sc.material_count; i++) {
         report_material *rm = &r.mats[i];
@@ -586,8 +582,7 @@ int report_write(const report_options *o)
         snprintf(where, sizeof where, "%s:%d", scene_path, r.sc.material_line[i]);
         if (!source.path && (status = material_lookup(r.g->dir, r.sc.materials[i], &rm->p.info, where)))
             goto done;
-        if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models)) ||
-            !(rm->prepared = calloc((size_t)r.sc.model_count, sizeof *rm->prepared))) {
+        if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models))) {
             status = cli_oom(WHERE);
             goto done;
         }
@@ -595,18 +590,14 @@ int report_write(const report_options *o)
             goto done;
         report_ground_truth(r.g, &r.ls, rm);
         for (m = 0; m < r.sc.model_count; m++) {
-            lut_spacing sp = scene_lut_spacing(&r.sc);
-            if ((status = scene_model_prepare(r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
+            lut_spacing sp = r.sc.spacing;
+            if ((status = scene_model_prepare(&r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
                 goto done;
-            if (!(rm->prepared[m] = report_prepare(&rm->models[m], &rm->p))) {
-                status = cli_oom(WHERE);
-                goto done;
-            }
-            for (t = 0; t < report_type_count; t++)
-                report_measure(&r.ls, rm, m, &report_types[t], report_cell_at(&r, i, m, t));
+            for (t = 0; t < number_types_available; t++)
+                report_measure(&r.ls, rm, m, &number_types[t], report_cell_at(&r, i, m, t));
         }
     }
-    for (i = 0; i < r.sc.model_count * report_type_count; i++)
+    for (i = 0; i < r.sc.model_count * number_types_available; i++)
         r.ns[i] = r.instr[i] = NAN;
     /* Costs barely depend on the material: gold if the scene has it. */
     for (i = 0; i < r.sc.material_count; i++)
@@ -617,16 +608,17 @@ int report_write(const report_options *o)
         instructions = 0;
     }
     for (m = 0; m < r.sc.model_count; m++)
-        for (t = 0; t < report_type_count; t++) {
-            int k = m * report_type_count + t;
+        for (t = 0; t < number_types_available; t++) {
+            int k = m * number_types_available + t;
+            model_rgb q = scene_model_rgb(&r.mats[r.timed_material].models[m]);
             if (timing)
-                r.ns[k] = report_time(&report_types[t], r.mats[r.timed_material].prepared[m], 1 << 20, 5);
+                r.ns[k] = report_time(&number_types[t], &q, 1 << 20, 5);
             if (instructions)
-                r.instr[k] = callgrind_instructions(scene_path, r.mats[r.timed_material].p.info.id, r.sc.models[m],
-                                                    report_types[t].name);
+                r.instr[k] = callgrind_instructions(scene_path, r.mats[r.timed_material].p.info.id, r.sc.models[m].name,
+                                                    number_types[t].name);
             if (timing || instructions)
-                fprintf(stderr, "%s: %s %s: %.2f ns, %.0f instructions\n", WHERE, r.sc.models[m],
-                        report_types[t].name, r.ns[k], r.instr[k]);
+                fprintf(stderr, "%s: %s %s: %.2f ns, %.0f instructions\n", WHERE, r.sc.models[m].name,
+                        number_types[t].name, r.ns[k], r.instr[k]);
         }
     sigma_sweep(&r, sig_de, sig_err);
     if ((status = compute_hoffman(&r)))
@@ -682,14 +674,9 @@ done:
         rmdir(r.out_dir);
     if (r.mats)
         for (i = 0; i < r.sc.material_count; i++) {
-            for (m = 0; m < r.sc.model_count; m++) {
-                if (r.mats[i].models)
-                    scene_model_free(&r.mats[i].models[m]);
-                if (r.mats[i].prepared)
-                    report_prepared_free(r.mats[i].prepared[m]);
-            }
+            for (m = 0; r.mats[i].models && m < r.sc.model_count; m++)
+                scene_model_free(&r.mats[i].models[m]);
             free(r.mats[i].models);
-            free(r.mats[i].prepared);
             free(r.mats[i].s);
         }
     free(r.mats);

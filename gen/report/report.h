@@ -6,9 +6,10 @@
 
 #include <stdio.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/colour_difference.h"
 #include "2_derive/derive.h"
+#include "model/number_type.h"
 #include "scene/scene.h"
 #include "scene/scene_eval.h"
 
@@ -19,9 +20,6 @@
 
 double report_cos(int angle); /* cos of angle degrees; exactly 0 at 90 */
 
-/* A model prepared for one material in every number type (report_types.c). */
-typedef struct report_prepared report_prepared;
-
 typedef struct report_material {
     material_params p;
     spectrum *s;
@@ -31,23 +29,13 @@ typedef struct report_material {
     /* CIEDE2000 mean and max against gt_raw of each policy's own curve
      * (gamut_policy order: map, clip, keep). */
     double policy_de_mean[3], policy_de_max[3];
-    scene_model *models;             /* one per report model */
-    report_prepared **prepared;      /* the same, prepared for every type */
+    scene_model *models;             /* one per report model: the encoder's constants and tables */
 } report_material;
 
-report_prepared *report_prepare(const scene_model *m, const material_params *p); /* NULL: out of memory */
-void report_prepared_free(report_prepared *q);
-
-/* A number type the runtime offers: f32, q15 (Q1.15) and, where the compiler
- * has _Float16, f16. */
-typedef struct report_type {
-    const char *name;
-    void (*eval)(const report_prepared *q, double c, double rgb[3]);
-} report_type;
-extern const report_type report_types[];
-extern const int report_type_count;
-/* ns per RGB evaluation of q in type t (bench.c): median of runs batches of n. */
-double report_time(const report_type *t, const report_prepared *q, int n, int runs);
+/* The report measures every available number type (model/number_type.h:
+ * number_types[0 .. number_types_available - 1]). ns per RGB evaluation of
+ * q in type t (bench.c): median of runs batches of n. */
+double report_time(const number_type *t, const model_rgb *q, int n, int runs);
 /* The Cortex-M0 mean instructions per call of row `name` in a `make
  * cross-count` output file; NaN when the file or the row is missing. */
 double report_m0_count(const char *path, const char *name);
@@ -121,7 +109,7 @@ int report_plots(report_run *r, const double (*sigma_de)[REPORT_SIGMAS]);
 /* Ground truth and the clamp's cost for one material. */
 void report_ground_truth(const gen_context *g, const lab_space *ls, report_material *rm);
 /* Accuracy of one prepared model in one type. */
-void report_measure(const lab_space *ls, const report_material *rm, int model, const report_type *t,
+void report_measure(const lab_space *ls, const report_material *rm, int model, const number_type *t,
                     report_cell *out);
 /* Mean, RMS and max CIEDE2000 of a whole curve given per angle (rgb[REPORT_ANGLES][3]). */
 void report_curve_de(const lab_space *ls, const double (*gt)[3], const double (*rgb)[3], double *mean,

@@ -56,8 +56,8 @@ void report_ground_truth(const gen_context *g, const lab_space *ls, report_mater
 }
 
 typedef struct model_curve {
-    const report_prepared *q;
-    const report_type *t;
+    const model_rgb *q;
+    const number_type *t;
 } model_curve;
 
 static void model_at(const void *ctx, double mu, double rgb[3])
@@ -66,18 +66,19 @@ static void model_at(const void *ctx, double mu, double rgb[3])
     m->t->eval(m->q, mu, rgb);
 }
 
-void report_measure(const lab_space *ls, const report_material *rm, int model, const report_type *t,
+void report_measure(const lab_space *ls, const report_material *rm, int model, const number_type *t,
                     report_cell *out)
 {
     const scene_model *m = &rm->models[model];
+    model_rgb q = scene_model_rgb(m);
     double rgb[REPORT_ANGLES][3], rms;
     int a, ch;
     out->abs_max[0] = out->abs_max[1] = out->abs_max[2] = 0.0;
     out->vs_ref_max = 0.0;
     for (a = 0; a < REPORT_ANGLES; a++) {
         double ref[3];
-        t->eval(rm->prepared[model], report_cos(a), rgb[a]);
-        scene_model_eval_ref(m, &rm->p, report_cos(a), ref);
+        t->eval(&q, report_cos(a), rgb[a]);
+        scene_model_eval_ref(m, report_cos(a), ref);
         for (ch = 0; ch < 3; ch++) {
             double e = fabs(rgb[a][ch] - rm->gt[a][ch]), r = fabs(rgb[a][ch] - ref[ch]);
             if (e > out->abs_max[ch])
@@ -93,7 +94,7 @@ void report_measure(const lab_space *ls, const report_material *rm, int model, c
     {
         /* the model's F_avg in this type, by the rule the ground truth's uses */
         model_curve mc;
-        mc.q = rm->prepared[model];
+        mc.q = &q;
         mc.t = t;
         hemispherical_average(model_at, &mc, GEN_AVG_PANELS, out->avg);
     }

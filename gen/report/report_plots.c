@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "report/report.h"
 #include "report/svg.h"
 
@@ -24,14 +24,14 @@ static int write_pareto(report_run *r)
     svg_panel p;
     svg_axis xa = {0.1, 1000.0, SVG_LOG10, 0.0, "ns per RGB evaluation (this host)", NULL};
     svg_axis ya = {1e-4, 100.0, SVG_LOG10, 0.0, "mean CIEDE2000 over the metals (log)", NULL};
-    int n = r->sc.model_count * report_type_count, k, j, front[256], nf = 0, measured = 0;
+    int n = r->sc.model_count * number_types_available, k, j, front[256], nf = 0, measured = 0;
     if (!(f = report_out_open(r, "pareto.svg", &k)))
         return k;
     svg_begin(&d, f, 900, 620, "Fresnel models: error against run time");
     if (svg_panel_begin(&p, &d, 0, 0, 900, 620, &xa, &ya, "Error against run time; Pareto front in black") == 0) {
         for (k = 0; k < n && k < 256; k++) {
             double mean, worst, mj, wj;
-            int m = k / report_type_count, t = k % report_type_count, dominated = 0;
+            int m = k / number_types_available, t = k % number_types_available, dominated = 0;
             char label[64];
             if (isnan(r->ns[k]))
                 continue;
@@ -39,12 +39,12 @@ static int write_pareto(report_run *r)
             if (isnan(mean)) /* no metals in the scene: no error to plot */
                 continue;
             measured++;
-            snprintf(label, sizeof label, "%s %s", r->sc.models[m], report_types[t].name);
+            snprintf(label, sizeof label, "%s %s", r->sc.models[m].name, number_types[t].name);
             svg_point(&p, r->ns[k], mean, SVG_CIRCLE, 6, svg_palette(m), label, SVG_LABEL_RIGHT);
             for (j = 0; j < n && !dominated; j++) {
                 if (j == k || isnan(r->ns[j]))
                     continue;
-                report_metal_summary(r, j / report_type_count, j % report_type_count, &mj, &wj);
+                report_metal_summary(r, j / number_types_available, j % number_types_available, &mj, &wj);
                 dominated = r->ns[j] <= r->ns[k] && mj <= mean && (r->ns[j] < r->ns[k] || mj < mean);
             }
             if (!dominated)
@@ -62,7 +62,7 @@ static int write_pareto(report_run *r)
                     }
             for (a = 0; a < nf; a++) {
                 x[a] = r->ns[front[a]];
-                report_metal_summary(r, front[a] / report_type_count, front[a] % report_type_count, &y[a], &w);
+                report_metal_summary(r, front[a] / number_types_available, front[a] % number_types_available, &y[a], &w);
             }
             {
                 svg_style s = {"black", 1.5, NULL};
@@ -146,13 +146,14 @@ static int write_curves(report_run *r, int mi)
         svg_axis ya = {0.0, 1.0, SVG_LINEAR, 0.25, "reflectance", NULL};
         svg_panel p;
         char ptitle[96];
+        model_rgb q = scene_model_rgb(&rm->models[m]);
         for (a = 0; a < CURVE_N; a++)
-            report_types[0].eval(rm->prepared[m], a == CURVE_N - 1 ? 0.0 : cos(th[a] * 3.14159265358979323846 / 180.0),
+            number_types[0].eval(&q, a == CURVE_N - 1 ? 0.0 : cos(th[a] * 3.14159265358979323846 / 180.0),
                                  mv[a]);
         for (a = 0; a < ZOOM_N; a++)
-            report_types[0].eval(rm->prepared[m], a == ZOOM_N - 1 ? 0.0 : cos(zt[a] * 3.14159265358979323846 / 180.0),
+            number_types[0].eval(&q, a == ZOOM_N - 1 ? 0.0 : cos(zt[a] * 3.14159265358979323846 / 180.0),
                                  zv[a]);
-        snprintf(ptitle, sizeof ptitle, "%s (mean dE2000 %.3f)", r->sc.models[m],
+        snprintf(ptitle, sizeof ptitle, "%s (mean dE2000 %.3f)", r->sc.models[m].name,
                  report_cell_at(r, mi, m, 0)->de_mean);
         if (svg_panel_begin(&p, &d, 0, y0, 420, row_h - 40, &xa, &ya, ptitle) == 0)
             for (ch = 0; ch < 3; ch++) {
@@ -200,7 +201,7 @@ static int write_curves(report_run *r, int mi)
         }
         svg_text(&d, 735, y0 + 40, 11, SVG_START, "black", "ground truth, 0 -> 90 deg");
         svg_strip(&d, 735, y0 + 46, 215, 22, (const double(*)[3])gt, CURVE_N);
-        svg_text(&d, 735, y0 + 86, 11, SVG_START, "black", r->sc.models[m]);
+        svg_text(&d, 735, y0 + 86, 11, SVG_START, "black", r->sc.models[m].name);
         svg_strip(&d, 735, y0 + 92, 215, 22, (const double(*)[3])mv, CURVE_N);
         svg_text(&d, 735, y0 + 132, 11, SVG_START, "black", "80 -> 90 deg: ground truth, model");
         svg_strip(&d, 735, y0 + 138, 215, 14, (const double(*)[3])(zgt + 100), ZOOM_N - 100);

@@ -17,7 +17,7 @@ static int scene_model_index(const report_run *r, const model *def)
 {
     int m;
     for (m = 0; def && m < r->sc.model_count; m++)
-        if (!strcmp(r->sc.models[m], def->name))
+        if (r->sc.models[m].row == def)
             return m;
     return -1;
 }
@@ -108,7 +108,7 @@ void report_renderers(report_run *r, FILE *f)
         }
     }
     fprintf(f, "\n## How well each renderer shows each metal\n\n"
-               "Each renderer's own metal Fresnel formula (gen/model/reference_targets.c, transcribed from its "
+               "Each renderer's own metal Fresnel formula (gen/common/reference_targets.c, transcribed from its "
                "specification or source) with the parameters `fresnel params --material ID --for TARGET` prints: "
                "fitted to the ground truth under the gamut policy by mean CIEDE2000 over theta 0-90 deg in 1 deg "
                "steps, inside the ranges the renderer takes (MaterialX states none: the fit keeps its colours in "
@@ -136,7 +136,7 @@ void report_renderers(report_run *r, FILE *f)
         else
             fprintf(f, " - |");
         fprintf(f, " %.3f / %.3f (%s) |\n", report_cell_at(r, i, best, 0)->de_mean,
-                report_cell_at(r, i, best, 0)->de_max, r->sc.models[best]);
+                report_cell_at(r, i, best, 0)->de_max, r->sc.models[best].name);
     }
     fprintf(f, "\nThe naive conversion (F0 at normal incidence; an edge parameter from the curve at cos theta = "
                "1/7, \"82 degrees\", clamped to the renderer's range; Gulbrandsen's g from F0 and the fitted eta), "

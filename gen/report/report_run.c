@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "bench/bench.h"
 #include "report/report.h"
 
 /* Hoffman's "Schlick" and "Fitted eta, kappa" columns [Hof20, course notes,
@@ -19,6 +20,11 @@ const report_hoffman_row report_hoffman[REPORT_HOFFMAN] = {
     {"zn", "Zinc", 2.44, 0.08, 8.67},     {"cr", "Chromium", 2.90, 0.02, 0.36},
 };
 
+double report_time(const number_type *t, const model_rgb *q, int n, int runs)
+{
+    return bench_ns_per_eval(t->batch(q->def), q, n, runs);
+}
+
 int report_material_index(const report_run *r, const char *id)
 {
     int i;
@@ -30,7 +36,7 @@ int report_material_index(const report_run *r, const char *id)
 
 report_cell *report_cell_at(report_run *r, int mat, int model, int type)
 {
-    return &r->cells[((size_t)mat * r->sc.model_count + model) * report_type_count + type];
+    return &r->cells[((size_t)mat * r->sc.model_count + model) * number_types_available + type];
 }
 
 int report_is_metal(const report_material *rm) { return !strcmp(rm->p.info.kind, "metal"); }

@@ -19,7 +19,7 @@
 
 enum { MISS, PASS, UNMEASURED };
 
-static void target(FILE *f, const char *what, const char *goal, int status, const char *fmt, ...)
+static void goal_row(FILE *f, const char *what, const char *goal, int status, const char *fmt, ...)
 {
     va_list ap;
     fprintf(f, "| %s | %s | ", what, goal);
@@ -78,8 +78,7 @@ static int lut_metal(report_run *r, const report_material *rm, const lut_variant
             for (ch = 0; ch < 3; ch++)
                 table[ch * v->n + i] = gt[ch];
         }
-    for (i = 0; i < 3 * v->n; i++)
-        q[i] = (uint16_t)fixed_q15(table[i]);
+    encode_curve_q15(table, 3 * v->n, q);
     for (a = 0; a < REPORT_ANGLES; a++) {
         int32_t c = fixed_q15(report_cos(a));
         fresnel_rgb_q15 o;
@@ -137,9 +136,9 @@ static void lut_target(FILE *f, const char *what, const lut_result *o, double me
     char goal[64];
     snprintf(goal, sizeof goal, "<= %g mean, <= %g max dE2000, each metal", mean, max);
     if (!o->measured)
-        target(f, what, goal, UNMEASURED, "the scene lacks Hoffman's 14 metals");
+        goal_row(f, what, goal, UNMEASURED, "the scene lacks Hoffman's 14 metals");
     else
-        target(f, what, goal, o->worst_mean <= mean && o->worst_max <= max ? PASS : MISS,
+        goal_row(f, what, goal, o->worst_mean <= mean && o->worst_max <= max ? PASS : MISS,
                "worst mean %.4f (%s), worst max %.4f (%s)", o->worst_mean, o->worst_mean_at, o->worst_max,
                o->worst_max_at);
 }
@@ -161,7 +160,7 @@ static void hoffman_target(report_run *r, FILE *f)
         lo = fmin(lo, r->hoffman_rms[i][1]);
         hi = fmax(hi, r->hoffman_rms[i][1]);
     }
-    target(f, "Fitted RGB eta, kappa (exact Fresnel), RMS dE2000 in ACEScg",
+    goal_row(f, "Fitted RGB eta, kappa (exact Fresnel), RMS dE2000 in ACEScg",
            "<= Hoffman's \"Fitted\" column per metal with F0 in gamut (his two decimals: <= his + 0.005)", beaten == counted ? PASS : MISS,
            "%d of %d metals at or below his value (ours %.3f-%.3f, his 0.01-0.08)%s%s", beaten, counted, lo, hi,
            *misses ? "; above:" : "", misses);
@@ -224,7 +223,7 @@ static void host_speed_targets(const report_run *r, FILE *f)
     bench_target_row rows[BENCH_TARGET_ROWS];
     int n, t, k, i;
     if (!r->speed_count) {
-        target(f, "Host speed against Mitsuba 3's and pbrt-v4's algorithms, LUTs against Schlick", "", UNMEASURED,
+        goal_row(f, "Host speed against Mitsuba 3's and pbrt-v4's algorithms, LUTs against Schlick", "", UNMEASURED,
                "run through `make report` (--speed: the output of `make bench` at -O2 and -O3 -march=native)");
         return;
     }
@@ -276,7 +275,7 @@ static void host_speed_targets(const report_run *r, FILE *f)
                      g->num, en, g->den, ed);
         }
         snprintf(what, sizeof what, "Host speed: %s (rows %s / %s of `make bench`)", g->what, g->num, g->den);
-        target(f, what, goal, missed ? MISS : (measured == SPEED_FLAGSETS ? PASS : UNMEASURED), "%s", text);
+        goal_row(f, what, goal, missed ? MISS : (measured == SPEED_FLAGSETS ? PASS : UNMEASURED), "%s", text);
     }
 }
 
@@ -356,7 +355,7 @@ static void m0_targets(const report_run *r, FILE *f)
     long t, ro, mt, mr;
     int k;
     if (!r->cross_path) {
-        target(f, "Cortex-M0 instructions and sizes", "", UNMEASURED, "run through `make report` (--cross, --size)");
+        goal_row(f, "Cortex-M0 instructions and sizes", "", UNMEASURED, "run through `make report` (--cross, --size)");
         return;
     }
     for (k = 0; k < 5; k++) {
@@ -367,20 +366,20 @@ static void m0_targets(const report_run *r, FILE *f)
                  counts[k].what);
         snprintf(goal, sizeof goal, "<= %.0f", counts[k].goal);
         if (isnan(fast) && isnan(lib))
-            target(f, what, goal, UNMEASURED, "not in the cross-count output");
+            goal_row(f, what, goal, UNMEASURED, "not in the cross-count output");
         else if (isnan(fast))
-            target(f, what, goal, lib <= counts[k].goal ? PASS : MISS, "%.0f (library function; no fast path)", lib);
+            goal_row(f, what, goal, lib <= counts[k].goal ? PASS : MISS, "%.0f (library function; no fast path)", lib);
         else if (isnan(lib))
-            target(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (its only form)", fast);
+            goal_row(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (its only form)", fast);
         else
-            target(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (library function %.0f)",
+            goal_row(f, what, goal, fast <= counts[k].goal ? PASS : MISS, "%.0f inline fast path (library function %.0f)",
                    fast, lib);
     }
     { /* the exact conductor's fast path: its worst call, its cycles and its bound as well */
         const char *row = counts[4].row;
         double mx = m0_column(r->cross_path, row, 2);
         if (!isnan(mx))
-            target(f, "Cortex-M0 fixed point, exact conductor fast path: the slowest call, cycles, error",
+            goal_row(f, "Cortex-M0 fixed point, exact conductor fast path: the slowest call, cycles, error",
                    "<= 300 instructions at <= 4 LSB", mx <= 300 && FRESNEL_BOUND_CONDUCTOR_Q15_FAST <= 4 ? PASS : MISS,
                    "%.0f instructions at most; cycles mean %.0f (max %.0f) with a 1-cycle multiplier, %.0f (max %.0f) "
                    "with a 32-cycle one; error <= %.1f LSB (FRESNEL_BOUND_CONDUCTOR_Q15_FAST, tests/test_fixed_fast.c)",
@@ -390,15 +389,15 @@ static void m0_targets(const report_run *r, FILE *f)
     }
     size_line(r->size_path, "schlick-only fixed scene:", &t, &ro, &mt, &mr);
     if (t >= 0)
-        target(f, "Cortex-M0 -Os, a Schlick-only fixed scene, one channel per material", "<= 64 B .text, <= 8 B .rodata per material",
+        goal_row(f, "Cortex-M0 -Os, a Schlick-only fixed scene, one channel per material", "<= 64 B .text, <= 8 B .rodata per material",
                t <= 64 && mr <= 8 ? PASS : MISS, ".text %ld B; .rodata %ld B per further material", t, mr);
     size_line(r->size_path, "schlick-only fixed scene, RGB", &t, &ro, &mt, &mr);
     if (t >= 0)
-        target(f, "Cortex-M0 -Os, the same scene in RGB (an F0 triple per material)", "<= 64 B .text, <= 8 B .rodata per material",
+        goal_row(f, "Cortex-M0 -Os, the same scene in RGB (an F0 triple per material)", "<= 64 B .text, <= 8 B .rodata per material",
                t <= 64 && mr <= 8 ? PASS : MISS, ".text %ld B; .rodata %ld B per further material", t, mr);
     size_line(r->size_path, "whole fixed runtime", &t, &ro, &mt, &mr);
     if (t >= 0)
-        target(f, "Cortex-M0 -Os, the whole fixed-point runtime (every model's Q15 code)", "<= 2048 B .text",
+        goal_row(f, "Cortex-M0 -Os, the whole fixed-point runtime (every model's Q15 code)", "<= 2048 B .text",
                t <= 2048 ? PASS : MISS, ".text %ld B", t);
 }
 
@@ -417,7 +416,7 @@ void report_targets(report_run *r, FILE *f)
                &luts[V_LUT32_PL], 0.005, 0.03);
     hoffman_target(r, f);
     if (luts[V_LUT16_CUBIC].measured)
-        target(f, "Gold (red F0 1.04 in linear sRGB, out of gamut): the LUT targets against its curve under the gamut policy",
+        goal_row(f, "Gold (red F0 1.04 in linear sRGB, out of gamut): the LUT targets against its curve under the gamut policy",
                "lut16: <= 0.01 / 0.05; lut32: <= 0.005 / 0.03",
                luts[V_LUT16_CUBIC].gold_mean <= 0.01 && luts[V_LUT16_CUBIC].gold_max <= 0.05 &&
                        luts[V_LUT32].gold_mean <= 0.005 && luts[V_LUT32].gold_max <= 0.03

@@ -9,14 +9,12 @@
 #include <string.h>
 #include <sys/types.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "2_derive/targets.h"
 #include "3_encode/encode.h"
 #include "1_spectral/spectral.h"
 
-/* Number types the generator can emit; a new type is one more entry here. */
-const char *const scene_type_names[] = {"f32", "q15", NULL};
-const char *const scene_lut_spacing_names[] = {"uniform", "grazing", "grazing-pl", NULL};
+const char *const scene_lut_spacing_names[] = {"grazing", "uniform", "grazing-pl", NULL};
 const char *const scene_f_avg_names[] = {"no", "yes", NULL};
 const char *const gamut_policy_names[] = {"map", "clip", "keep", NULL};
 
@@ -144,18 +142,20 @@ static char *next_token(char **cursor)
     return start;
 }
 
-int scene_model_lut_size(const char *model, int *form)
-{
-    lut_form f = LUT_PLAIN;
-    int n = model_lut_size(model, SCENE_LUT_MIN, SCENE_LUT_MAX, &f);
-    if (n && form)
-        *form = (int)f;
-    return n;
-}
+int scene_choice(const char *const *names, const char *name) { return table_index(names, name); }
 
-int scene_model_known(const char *model)
+int scene_entry_parse(const char *name, lut_spacing spacing, scene_entry *e)
 {
-    return model != NULL && (model_find_offered(model, MODEL_SCENE) || scene_model_lut_size(model, NULL) > 0);
+    int i;
+    memset(e, 0, sizeof *e);
+    if (!name || strlen(name) >= sizeof e->name ||
+        !(e->row = model_scene_parse(name, spacing, SCENE_LUT_MIN, SCENE_LUT_MAX, &e->lut_n)))
+        return -1;
+    for (i = 0; name[i]; i++) {
+        e->name[i] = name[i];
+        e->ident[i] = name[i] == '-' ? '_' : name[i];
+    }
+    return 0;
 }
 
 static int material_id_ok(const char *id)
@@ -166,11 +166,11 @@ static int material_id_ok(const char *id)
     return 1;
 }
 
-static int find_in(char (*list)[SCENE_NAME_SIZE], int count, const char *s)
+static int find_model(const scene *s, const char *name)
 {
     int i;
-    for (i = 0; i < count; i++)
-        if (strcmp(list[i], s) == 0)
+    for (i = 0; i < s->model_count; i++)
+        if (strcmp(s->models[i].name, name) == 0)
             return i;
     return -1;
 }
@@ -225,7 +225,9 @@ static int parse_models(const char *path, int line, char *value, scene *s)
     const char *scene_models[SCENE_MAX_MODELS + 1];
     model_names(MODEL_SCENE, scene_models, SCENE_MAX_MODELS + 1);
     while ((model = next_token(&cursor)) != NULL) {
-        if (!scene_model_known(model)) {
+        scene_entry e;
+        /* the LUT rows are those of grazing spacing until scene_load knows the key */
+        if (scene_entry_parse(model, LUT_GRAZING, &e)) {
             if (strncmp(model, "lut", 3) == 0)
                 return report(path, line,
                               "expected lutN, lutN-residual or lutN-cubic with N an integer in %d..%d "
@@ -237,11 +239,11 @@ static int parse_models(const char *path, int line, char *value, scene *s)
                           table_list(scene_models, names, sizeof names), model,
                           hint(scene_models, model, near, sizeof near));
         }
-        if (find_in(s->models, s->model_count, model) >= 0)
+        if (find_model(s, model) >= 0)
             return report(path, line, "expected each model once, '%s' is listed twice", model);
         if (s->model_count == SCENE_MAX_MODELS)
             return report(path, line, "expected at most %d models", SCENE_MAX_MODELS);
-        strcpy(s->models[s->model_count++], model);
+        s->models[s->model_count++] = e;
     }
     return 0;
 }
@@ -249,21 +251,25 @@ static int parse_models(const char *path, int line, char *value, scene *s)
 static int parse_types(const char *path, int line, char *value, scene *s)
 {
     char *cursor = value, *type, names[256];
+    const char *available[NUMBER_TYPES + 1];
+    number_type_names(available, NUMBER_TYPES + 1);
     s->type_count = 0; /* replaces the default */
     while ((type = next_token(&cursor)) != NULL) {
         char near[SCENE_NAME_SIZE + 32];
-        if (strcmp(type, "fixed") == 0)
-            type = "q15"; /* the older name of the Q15 type */
-        if (table_index(scene_type_names, type) < 0)
+        const number_type *t = number_type_find(type);
+        int i;
+        if (!t)
             return report(path, line, "expected a number type (one of %s), got '%s'%s",
-                          table_list(scene_type_names, names, sizeof names), type,
-                          hint(scene_type_names, type, near, sizeof near));
-        if (find_in(s->types, s->type_count, type) >= 0)
-            return report(path, line, "expected each type once, '%s' is listed twice", type);
-        if (s->type_count == SCENE_MAX_TYPES)
-            return report(path, line, "expected at most %d types", SCENE_MAX_TYPES);
-        /* Bounded: the type table is meant to grow. */
-        snprintf(s->types[s->type_count++], SCENE_NAME_SIZE, "%s", type);
+                          table_list(available, names, sizeof names), type,
+                          hint(available, type, near, sizeof near));
+        if (!t->available)
+            return report(path, line, "expected a number type this build of fresnel writes (one of %s), got '%s': "
+                          "its compiler has no _Float16 (a gcc build has it)",
+                          table_list(available, names, sizeof names), type);
+        for (i = 0; i < s->type_count; i++)
+            if (s->types[i] == t)
+                return report(path, line, "expected each type once, '%s' is listed twice", t->name);
+        s->types[s->type_count++] = t;
     }
     return 0;
 }
@@ -273,31 +279,33 @@ static int parse_targets(const char *path, int line, char *value, scene *s)
 {
     const char *names[SCENE_MAX_TARGETS + 1];
     char *cursor = value, *name, list[256], near[SCENE_NAME_SIZE + 32];
+    const target *t;
+    int k;
     target_names(names, SCENE_MAX_TARGETS + 1);
     while ((name = next_token(&cursor)) != NULL) {
-        if (!target_find(name))
+        if (!(t = target_find(name)))
             return report(path, line, "expected a renderer target (one of %s), got '%s'%s",
                           table_list(names, list, sizeof list), name, hint(names, name, near, sizeof near));
-        if (find_in(s->targets, s->target_count, name) >= 0)
-            return report(path, line, "expected each target once, '%s' is listed twice", name);
+        for (k = 0; k < s->target_count; k++)
+            if (s->targets[k] == t)
+                return report(path, line, "expected each target once, '%s' is listed twice", name);
         if (s->target_count == SCENE_MAX_TARGETS)
             return report(path, line, "expected at most %d targets", SCENE_MAX_TARGETS);
-        snprintf(s->targets[s->target_count++], SCENE_NAME_SIZE, "%s", name);
+        s->targets[s->target_count++] = t;
     }
     return 0;
 }
 
-/* A value that must be one name of `table`, copied to dst. */
-static int parse_choice(const char *path, int line, const char *what,
-                        const char *const *table, const char *value, char *dst)
+/* A value that must be one name of `table`: its index in *index. */
+static int parse_choice(const char *path, int line, const char *what, const char *const *table, const char *value,
+                        int *index)
 {
     char names[256], near[SCENE_NAME_SIZE + 32];
     if (table == colour_space_ids && colour_space_find(value))
         value = colour_space_find(value); /* any case, common aliases */
-    if (table_index(table, value) < 0)
+    if ((*index = table_index(table, value)) < 0)
         return report(path, line, "expected a %s (one of %s), got '%s'%s", what,
                       table_list(table, names, sizeof names), value, hint(table, value, near, sizeof near));
-    snprintf(dst, SCENE_NAME_SIZE, "%s", value); /* dst is a SCENE_NAME_SIZE field */
     return 0;
 }
 
@@ -347,6 +355,7 @@ void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE])
 
 static int parse_value(const char *path, int line, int key, char *value, scene *s)
 {
+    int i;
     switch (key) {
     case KEY_MATERIALS: return parse_materials(path, line, value, s);
     case KEY_MODELS: return parse_models(path, line, value, s);
@@ -354,19 +363,22 @@ static int parse_value(const char *path, int line, int key, char *value, scene *
     case KEY_TARGETS: return parse_targets(path, line, value, s);
     case KEY_NAME: return parse_name(path, line, value, s);
     case KEY_SPACE:
-        return parse_choice(path, line, "colour space", colour_space_ids, value, s->space);
-    case KEY_LUT_SPACING:
-        return parse_choice(path, line, "LUT spacing", scene_lut_spacing_names, value,
-                            s->lut_spacing);
-    case KEY_GAMUT:
-        return parse_choice(path, line, "gamut policy", gamut_policy_names, value, s->gamut);
-    case KEY_F_AVG: {
-        char yes_no[SCENE_NAME_SIZE];
-        if (parse_choice(path, line, "f_avg value", scene_f_avg_names, value, yes_no))
+        if (parse_choice(path, line, "colour space", colour_space_ids, value, &i))
             return CLI_BAD_INPUT;
-        s->f_avg = !strcmp(yes_no, "yes");
+        snprintf(s->space, sizeof s->space, "%s", colour_space_ids[i]);
         return 0;
-    }
+    case KEY_LUT_SPACING:
+        if (parse_choice(path, line, "LUT spacing", scene_lut_spacing_names, value, &i))
+            return CLI_BAD_INPUT;
+        s->spacing = (lut_spacing)i;
+        return 0;
+    case KEY_GAMUT:
+        if (parse_choice(path, line, "gamut policy", gamut_policy_names, value, &i))
+            return CLI_BAD_INPUT;
+        s->gamut = (gamut_policy)i;
+        return 0;
+    case KEY_F_AVG:
+        return parse_choice(path, line, "f_avg value", scene_f_avg_names, value, &s->f_avg);
     case KEY_SIGMA: return parse_number(path, line, "sigma (nm)", value, 0.0, SIGMA_MAX, &s->sigma);
     default: return parse_number(path, line, "n1", value, N1_MIN, N1_MAX, &s->n1);
     }
@@ -376,9 +388,9 @@ static void set_defaults(scene *s)
 {
     memset(s, 0, sizeof *s);
     strcpy(s->space, "srgb");
-    strcpy(s->lut_spacing, "grazing");
-    strcpy(s->gamut, "map");
-    strcpy(s->types[0], "f32");
+    s->spacing = LUT_GRAZING;
+    s->gamut = GAMUT_MAP;
+    s->types[0] = &number_types[TYPE_F32];
     s->type_count = 1;
     s->sigma = 25.0;
     s->n1 = 1.0;
@@ -422,7 +434,7 @@ int scene_load(const char *path, scene *out)
     char *buf = NULL;
     size_t cap = 0;
     ssize_t len;
-    int line = 0, rc = 0, read_errno, errors = 0;
+    int line = 0, rc = 0, read_errno, errors = 0, m;
     set_defaults(out);
     if ((rc = cli_open_input(path, &f)))
         return rc;
@@ -478,27 +490,25 @@ int scene_load(const char *path, scene *out)
     if (out->models_line == 0)
         return report(path, line > 0 ? line : 1,
                       "expected a 'models = name ...' line, the required key is missing");
-    if (strcmp(out->lut_spacing, "grazing-pl") == 0) {
-        int m, form, n;
-        if (out->type_count != 1 || strcmp(out->types[0], "q15") != 0)
-            return report(path, out->lut_spacing_line ? out->lut_spacing_line : 1,
-                          "expected types = q15 with lut_spacing grazing-pl (its tables are for "
-                          "fresnel_lut_pl_u16_q15_fast only)");
-        for (m = 0; m < out->model_count; m++)
-            if ((n = scene_model_lut_size(out->models[m], &form)) && (form != LUT_PLAIN || n > 64))
-                return report(path, out->models_line,
-                              "expected lutN with N <= 64 and no -cubic or -residual with lut_spacing grazing-pl, "
-                              "got '%s'",
-                              out->models[m]);
-    }
-    if (strcmp(out->lut_spacing, "uniform") == 0) {
-        int m, form;
-        for (m = 0; m < out->model_count; m++)
-            if (scene_model_lut_size(out->models[m], &form) && form == LUT_CUBIC)
-                return report(path, out->models_line,
-                              "expected lut_spacing grazing with '%s' (the cubic reads nodes uniform in "
-                              "sqrt(cos theta)), lut_spacing is uniform at line %d",
-                              out->models[m], out->lut_spacing_line);
+    if (out->spacing == LUT_GRAZING_PL && (out->type_count != 1 || out->types[0]->id != TYPE_Q15))
+        return report(path, out->lut_spacing_line ? out->lut_spacing_line : 1,
+                      "expected types = q15 with lut_spacing grazing-pl (its tables are for "
+                      "fresnel_lut_pl_u16_q15_fast only)");
+    for (m = 0; m < out->model_count; m++) {
+        scene_entry *e = &out->models[m];
+        if (!e->lut_n)
+            continue;
+        if (out->spacing == LUT_GRAZING_PL && (e->row->form != LUT_PLAIN || e->lut_n > 64))
+            return report(path, out->models_line,
+                          "expected lutN with N <= 64 and no -cubic or -residual with lut_spacing grazing-pl, "
+                          "got '%s'",
+                          e->name);
+        if (out->spacing == LUT_UNIFORM && e->row->form == LUT_CUBIC)
+            return report(path, out->models_line,
+                          "expected lut_spacing grazing with '%s' (the cubic reads nodes uniform in "
+                          "sqrt(cos theta)), lut_spacing is uniform at line %d",
+                          e->name, out->lut_spacing_line);
+        e->row = model_lut_row(e->row->form, out->spacing);
     }
     return 0;
 }
@@ -516,11 +526,8 @@ unsigned scene_reads(const scene *sc, int q15)
 {
     unsigned reads = 0;
     int m;
-    for (m = 0; m < sc->model_count; m++) {
-        const model *row = model_scene_row(sc->models[m], scene_lut_spacing(sc));
-        if (row)
-            reads |= q15 ? row->q15_reads : row->reads;
-    }
+    for (m = 0; m < sc->model_count; m++)
+        reads |= q15 ? sc->models[m].row->q15_reads : sc->models[m].row->reads;
     return reads;
 }
 
@@ -528,28 +535,16 @@ int scene_has_model(const scene *sc, const char *model)
 {
     int i;
     for (i = 0; i < sc->model_count; i++)
-        if (!strcmp(sc->models[i], model))
+        if (!strcmp(sc->models[i].name, model))
             return 1;
     return 0;
 }
 
-gamut_policy scene_gamut(const scene *sc)
-{
-    int i = table_index(gamut_policy_names, sc->gamut);
-    return i < 0 ? GAMUT_MAP : (gamut_policy)i;
-}
-
-lut_spacing scene_lut_spacing(const scene *sc)
-{
-    return !strcmp(sc->lut_spacing, "uniform") ? LUT_UNIFORM
-                                                : (!strcmp(sc->lut_spacing, "grazing-pl") ? LUT_GRAZING_PL : LUT_GRAZING);
-}
-
-int scene_has_type(const scene *sc, const char *type)
+int scene_has_type(const scene *sc, number_type_id type)
 {
     int i;
     for (i = 0; i < sc->type_count; i++)
-        if (!strcmp(sc->types[i], type))
+        if (sc->types[i]->id == type)
             return 1;
     return 0;
 }

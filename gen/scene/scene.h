@@ -26,8 +26,9 @@
  *                lookup table `lutN` / `lutN-residual` / `lutN-cubic` with N an
  *                integer in SCENE_LUT_MIN..SCENE_LUT_MAX written without
  *                leading zeros (lut16, lut32-residual, lut16-cubic). At most
- *                SCENE_MAX_MODELS entries. lutN-cubic needs lut_spacing
- *                grazing (the runtime's cubic reads nodes uniform in sqrt(c)).
+ *                SCENE_MAX_MODELS entries; read into scene_entry values.
+ *                lutN-cubic needs lut_spacing grazing (the runtime's cubic
+ *                reads nodes uniform in sqrt(c)).
  *   space        optional, default srgb; one of colour_space_ids[] in
  *                spectral.h (srgb, display-p3, dci-p3, adobe-rgb, rec2020,
  *                acescg).
@@ -35,11 +36,13 @@
  *                number in [0, 200] (0 = point sampling).
  *   n1           optional, default 1; real index of the incident medium, a
  *                finite number in [1, 4].
- *   types        optional, default f32; whitespace-separated number types
- *                from scene_type_names[], no duplicates.
+ *   types        optional, default f32; whitespace-separated names of the
+ *                number type registry (model/number_type.c: f32, q15 or
+ *                its older name fixed, and f16 where the generator's
+ *                compiler has _Float16), no duplicates.
  *   lut_spacing  optional, default grazing; one of scene_lut_spacing_names[]:
- *                uniform (LUT nodes uniform in cos theta), grazing (nodes
- *                uniform in sqrt(cos theta), denser towards cos theta = 0) or
+ *                grazing (LUT nodes uniform in sqrt(cos theta), denser
+ *                towards cos theta = 0), uniform (nodes uniform in cos theta) or
  *                grazing-pl (uniform in a 64-piece linear stand-in for
  *                sqrt(cos theta), read by fresnel_lut_pl_u16_q15_fast
  *                without a square root: types = q15 only, lutN with N <= 64).
@@ -91,14 +94,15 @@
 #ifndef FRESNEL_SCENE_H
 #define FRESNEL_SCENE_H
 
+#include "2_derive/targets.h"
 #include "3_encode/encode.h"
+#include "model/number_type.h"
 #include "model/registry.h"
 
 #define SCENE_MAX_MATERIALS 64
 #define SCENE_ID_SIZE 32 /* material id, NUL included: matches material_info.id */
 #define SCENE_MAX_MODELS 64
 #define SCENE_NAME_SIZE 24 /* model, type, space or spacing name, NUL included */
-#define SCENE_MAX_TYPES 16
 #define SCENE_MAX_TARGETS 16
 #define SCENE_LUT_MIN 4
 #define SCENE_LUT_MAX MODEL_LUT_NODES_MAX
@@ -107,11 +111,26 @@
 
 /* The vocabulary, NULL-terminated, for reuse in --help text (colour spaces:
  * colour_space_ids in spectral.h; models: the registry's MODEL_SCENE rows,
- * model_names, and its LUT patterns). */
-extern const char *const scene_type_names[];
-extern const char *const scene_lut_spacing_names[];
-extern const char *const scene_f_avg_names[]; /* "no", "yes" */
-extern const char *const gamut_policy_names[]; /* "map", "clip", "keep", NULL: in gamut_policy's order */
+ * model_names, and its LUT patterns; number types: number_type_names). */
+extern const char *const scene_lut_spacing_names[]; /* in lut_spacing's order */
+extern const char *const scene_f_avg_names[];       /* "no", "yes" */
+extern const char *const gamut_policy_names[];      /* "map", "clip", "keep", NULL: in gamut_policy's order */
+/* The index of name in a NULL-terminated vocabulary above, or -1: the one
+ * reading of a spacing or policy name (manifests, --lut-spacing, --gamut). */
+int scene_choice(const char *const *names, const char *name);
+
+/* One model of a manifest, read once by the parser (the registry reads the
+ * name: model_scene_parse); nothing after the parser looks at the name but
+ * to print it. */
+typedef struct scene_entry {
+    char name[SCENE_NAME_SIZE];  /* as written: "lut16-residual" */
+    char ident[SCENE_NAME_SIZE]; /* the same as a C identifier part: "lut16_residual" */
+    const model *row;            /* its registry row; a LUT's: the row of its form at the scene's spacing */
+    int lut_n;                   /* a LUT's nodes per channel; 0 for the other models */
+} scene_entry;
+/* Read a model name (a manifest's or a command's) at spacing: 0, or -1 for a
+ * name no scene model answers to (no message). */
+int scene_entry_parse(const char *name, lut_spacing spacing, scene_entry *out);
 
 typedef struct scene {
     /* Line of the file where each key was set; 0 where the default applies. */
@@ -124,15 +143,15 @@ typedef struct scene {
     char material_file[SCENE_MAX_MATERIALS][SCENE_PATH_SIZE]; /* "" for the data pack's */
     int material_line[SCENE_MAX_MATERIALS];
     int model_count;
-    char models[SCENE_MAX_MODELS][SCENE_NAME_SIZE];
+    scene_entry models[SCENE_MAX_MODELS];
     int type_count;
-    char types[SCENE_MAX_TYPES][SCENE_NAME_SIZE];
-    char space[SCENE_NAME_SIZE];
-    char lut_spacing[SCENE_NAME_SIZE];
-    char gamut[SCENE_NAME_SIZE]; /* a gamut_policy_names entry */
-    int f_avg;                   /* 1: emit each material's F_avg */
-    int target_count;            /* other renderers, in the file's order (2_derive/targets.h) */
-    char targets[SCENE_MAX_TARGETS][SCENE_NAME_SIZE];
+    const number_type *types[NUMBER_TYPES]; /* in the file's order */
+    char space[SCENE_NAME_SIZE]; /* a colour_space_ids entry */
+    lut_spacing spacing;
+    gamut_policy gamut;
+    int f_avg; /* 1: emit each material's F_avg */
+    int target_count; /* other renderers (2_derive/targets.h), in the file's order */
+    const target *targets[SCENE_MAX_TARGETS];
     double sigma; /* nm */
     double n1;
 } scene;
@@ -142,31 +161,19 @@ typedef struct scene {
  * keep the file's order. */
 int scene_load(const char *path, scene *out);
 
-/* N for "lutN", "lutN-residual" or "lutN-cubic" (N in
- * SCENE_LUT_MIN..SCENE_LUT_MAX, no leading zeros), setting *form (if not
- * NULL) to its lut_form (3_encode/encode.h: LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC); 0 for every other string. */
-int scene_model_lut_size(const char *model, int *form);
-
 /* 1 if name is a valid value of the name key, else 0. */
 int scene_name_ok(const char *name);
 /* The scene name derived from a manifest's path, as FORMAT describes. */
 void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE]);
 
-/* 1 if the model name is one the manifest accepts, else 0. */
-int scene_model_known(const char *model);
-
 /* Material i as derive_parameters takes it (pointing into sc). */
 material_source scene_material(const scene *sc, int i);
 
-/* 1 if the loaded scene names this model / number type, else 0. */
+/* 1 if the loaded scene names this model (as written) / number type, else 0. */
 int scene_has_model(const scene *sc, const char *model);
+int scene_has_type(const scene *sc, number_type_id type);
 /* What the scene's models read: the union of their registry rows' MP_* bits
  * (q15 0) or MQ_* bits (q15 1). */
 unsigned scene_reads(const scene *sc, int q15);
-int scene_has_type(const scene *sc, const char *type);
-/* The loaded scene's LUT spacing. */
-lut_spacing scene_lut_spacing(const scene *sc);
-/* The policy of the gamut key (GAMUT_MAP by default). */
-gamut_policy scene_gamut(const scene *sc);
 
 #endif

@@ -18,7 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "4_emit/emit.h"
 #include "4_emit/emit_glsl.h"
 #include "bench/bench.h"
@@ -91,14 +91,6 @@ static void put_script_text(FILE *f, const char *s)
     }
 }
 
-static void model_ident(const char *model, char *out, size_t size)
-{
-    size_t i;
-    for (i = 0; model[i] && i + 1 < size; i++)
-        out[i] = model[i] == '-' ? '_' : model[i];
-    out[i] = '\0';
-}
-
 /* vec3 fresnel_select(int mat, int model, float c): the scene's functions
  * by index, in the scene's order of materials and models; with
  * FRESNEL_VIEWER_MATERIAL defined, only that material's (WebGL 1). */
@@ -109,12 +101,9 @@ static void write_select(FILE *f, const emit_loaded *l)
     for (i = 0; i < l->sc->material_count; i++) {
         fprintf(f, "#if !defined(FRESNEL_VIEWER_MATERIAL) || FRESNEL_VIEWER_MATERIAL == %d\n", i);
         fprintf(f, "    if (mat == %d) {\n", i);
-        for (m = 0; m < l->sc->model_count; m++) {
-            char id[SCENE_NAME_SIZE];
-            model_ident(l->sc->models[m], id, sizeof id);
+        for (m = 0; m < l->sc->model_count; m++)
             fprintf(f, "        if (model == %d)\n            return fresnel_%s_%s_%s_rgb(c);\n", m, l->name,
-                    l->sc->materials[i], id);
-        }
+                    l->sc->materials[i], l->sc->models[m].ident);
         fprintf(f, "    }\n#endif\n");
     }
     fprintf(f, "    return vec3(0.0);\n}\n");
@@ -150,16 +139,10 @@ static int write_matrix(FILE *f, const gen_context *g, const lab_space *ls, cons
 static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_path)
 {
     scene_model sm;
-    report_prepared *q;
-    int t;
     double ns = NAN, m0 = NAN;
-    for (t = 0; t < report_type_count && strcmp(report_types[t].name, "f32"); t++)
-        ;
-    if (!scene_model_prepare(l->sc->models[m], scene_lut_spacing(l->sc), l->spectra[0], l->g, &l->params[0], &sm)) {
-        if ((q = report_prepare(&sm, &l->params[0]))) {
-            ns = report_time(&report_types[t], q, 1 << 16, 3);
-            report_prepared_free(q);
-        }
+    if (!scene_model_prepare(&l->sc->models[m], l->sc->spacing, l->spectra[0], l->g, &l->params[0], &sm)) {
+        model_rgb q = scene_model_rgb(&sm);
+        ns = report_time(&number_types[TYPE_F32], &q, 1 << 16, 3);
         if (cross_path && sm.def->cross_row)
             m0 = report_m0_count(cross_path, sm.def->cross_row);
         scene_model_free(&sm);
@@ -209,7 +192,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
     fputs(",\"space\":", f);
     put_json_string(f, sc->space);
     fputs(",\"gamut\":", f);
-    put_json_string(f, sc->gamut);
+    put_json_string(f, gamut_policy_names[sc->gamut]);
     fprintf(f, ",\"refN\":%d,\n\"materials\":[", VIEWER_REF_NODES);
     for (i = 0; i < sc->material_count; i++) {
         fprintf(f, "%s{\"id\":", i ? "," : "");
@@ -221,7 +204,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
     fprintf(f, "],\n\"models\":[");
     for (m = 0; m < sc->model_count; m++) {
         fputs(m ? "," : "", f);
-        put_json_string(f, sc->models[m]);
+        put_json_string(f, sc->models[m].name);
     }
     fprintf(f, "],\n\"theta\":[");
     for (k = 0; k < VIEWER_ANGLES; k++)
@@ -252,13 +235,13 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
         fprintf(f, "%s[", i ? "," : "");
         for (m = 0; m < sc->model_count; m++) {
             scene_model sm;
-            if (scene_model_prepare(sc->models[m], scene_lut_spacing(sc), l->spectra[i], g, &l->params[i], &sm))
+            if (scene_model_prepare(&sc->models[m], sc->spacing, l->spectra[i], g, &l->params[i], &sm))
                 return CLI_BAD_INPUT;
             fprintf(f, "%s[", m ? "," : "");
             for (k = 0; k < VIEWER_ANGLES; k++) {
                 float v[3];
                 double d[3];
-                scene_model_eval(&sm, &l->params[i], (float)viewer_cos(k), v);
+                scene_model_eval(&sm, (float)viewer_cos(k), v);
                 d[0] = v[0];
                 d[1] = v[1];
                 d[2] = v[2];
@@ -280,13 +263,13 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
             double mean, rms, max, raw_mean, raw_max;
             scene_model sm;
             int a;
-            if (scene_model_prepare(sc->models[m], scene_lut_spacing(sc), l->spectra[i], g, &l->params[i], &sm))
+            if (scene_model_prepare(&sc->models[m], sc->spacing, l->spectra[i], g, &l->params[i], &sm))
                 return CLI_BAD_INPUT;
             for (a = 0; a < REPORT_ANGLES; a++) {
                 float rgb[3];
                 ground_truth_gamut(l->spectra[i], g, &l->params[i], report_cos(a), gt[a]);
                 ground_truth(l->spectra[i], &g->cm, &g->cs, l->params[i].n1, report_cos(a), raw[a]);
-                scene_model_eval(&sm, &l->params[i], (float)report_cos(a), rgb);
+                scene_model_eval(&sm, (float)report_cos(a), rgb);
                 v[a][0] = rgb[0];
                 v[a][1] = rgb[1];
                 v[a][2] = rgb[2];
@@ -337,7 +320,7 @@ static int write_page(FILE *f, const emit_loaded *l, const char *glsl_scene, con
         if (len == 5 && !strncmp(slot + 2, "TITLE", len)) {
             char title[256];
             snprintf(title, sizeof title, "Fresnel viewer: scene %s, %s, gamut %s", l->name, l->sc->space,
-                     l->sc->gamut);
+                     gamut_policy_names[l->sc->gamut]);
             put_html_text(f, title);
         } else if (len == 9 && !strncmp(slot + 2, "GLSL_PORT", len))
             put_script_text(f, (const char *)viewer_glsl_port);
@@ -372,7 +355,7 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
         status = cli_oom(WHERE);
         goto done;
     }
-    for (m = 0; m < l.sc->model_count && !scene_model_lut_size(l.sc->models[m], NULL); m++)
+    for (m = 0; m < l.sc->model_count && !l.sc->models[m].lut_n; m++)
         ;
     status = emit_glsl(mem, m < l.sc->model_count ? tex_mem : NULL, &l.in); /* a texture only with tables */
     if ((fclose(mem) | fclose(tex_mem)) && !status)

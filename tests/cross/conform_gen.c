@@ -9,7 +9,7 @@
 #include "fixed_materials.h"
 #include "3_encode/fixed_params.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 static void qf(const char *name, fresnel_qf v) { printf(" .%s = {%uu, %d},", name, (unsigned)v.m, (int)v.e); }
 

@@ -1,5 +1,5 @@
 /* Differential fuzzing of the binary16 runtime (fresnel_f16.h) against the
- * double reference (gen/model/reference.c).
+ * double reference (gen/common/reference.c).
  *
  * Needs _Float16, which clang 14 on x86-64 lacks: `make fuzz` compiles this
  * file and src/f16/\*.c with gcc (ASan, UBSan and gcc's comparison tracing,
@@ -24,7 +24,7 @@
 #include "fuzz.h"
 
 #include "fresnel_f16.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #if FRESNEL_HAS_F16
 

@@ -1,5 +1,5 @@
 /* Differential fuzzing of the Q15 fixed-point runtime (fresnel_fixed.h)
- * against the double reference (gen/model/reference.c).
+ * against the double reference (gen/common/reference.c).
  *
  * Inputs: cosine and reflectance codes as arbitrary int32 (the API takes
  * int32 so that a signed dot product can be passed), Q16.16 eta, kappa, p,
@@ -23,7 +23,7 @@
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
 #include "model/registry.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 #define LSB (1.0 / 32768.0)
 

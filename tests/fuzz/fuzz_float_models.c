@@ -1,5 +1,5 @@
 /* Differential fuzzing of every binary32 runtime function against the double
- * reference (gen/model/reference.c).
+ * reference (gen/common/reference.c).
  *
  * Oracle, for every input including NaN, +-Inf and subnormals:
  *   - the result is in [0, 1] and not NaN (fresnel.h CONVENTIONS);
@@ -15,7 +15,7 @@
 #include "fuzz.h"
 
 #include "fresnel.h"
-#include "model/reference.h"
+#include "common/reference.h"
 
 /* Findings of this fuzzer that are in the runtime, not in the tests. Each entry replaces ONE documented bound in
  * ONE region by the error measured there, so the fuzzer keeps checking the

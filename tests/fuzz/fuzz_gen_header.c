@@ -23,7 +23,7 @@
 #define PATH_MAX 4096
 #endif
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "../header_check.h"
 
 static char data_dir_path[300], scene_path[300], csv_path[400], out_path[300], materials_path[400];

@@ -15,7 +15,7 @@
  *     anything printed is a "path:N: warning:" line. */
 #include "fuzz_parser.h"
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "1_spectral/spectral.h"
 
 static spectrum spec;

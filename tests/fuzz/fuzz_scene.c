@@ -9,7 +9,7 @@
  *     one message "path:N: ..." naming a line of the file. */
 #include "fuzz_parser.h"
 
-#include "cli/cli.h"
+#include "common/cli.h"
 #include "scene/scene.h"
 #include "1_spectral/spectral.h"
 
@@ -40,7 +40,7 @@ static void check_scene(const scene *s)
         FUZZ_FAIL("material_count %d", s->material_count);
     if (!(s->model_count >= 1 && s->model_count <= SCENE_MAX_MODELS))
         FUZZ_FAIL("model_count %d", s->model_count);
-    if (!(s->type_count >= 1 && s->type_count <= SCENE_MAX_TYPES))
+    if (!(s->type_count >= 1 && s->type_count <= NUMBER_TYPES))
         FUZZ_FAIL("type_count %d", s->type_count);
     for (i = 0; i < s->material_count && i < SCENE_MAX_MATERIALS; i++) {
         if (memchr(s->materials[i], '\0', SCENE_ID_SIZE) == NULL || !valid_id(s->materials[i]))
@@ -50,20 +50,22 @@ static void check_scene(const scene *s)
                 FUZZ_FAIL("material '%s' accepted twice", s->materials[i]);
     }
     for (i = 0; i < s->model_count && i < SCENE_MAX_MODELS; i++) {
-        if (memchr(s->models[i], '\0', SCENE_NAME_SIZE) == NULL || !scene_model_known(s->models[i]))
-            FUZZ_FAIL("model %d: unknown '%.30s'", i, s->models[i]);
+        const scene_entry *e = &s->models[i];
+        scene_entry again;
+        if (memchr(e->name, '\0', SCENE_NAME_SIZE) == NULL || scene_entry_parse(e->name, s->spacing, &again) ||
+            again.row != e->row || again.lut_n != e->lut_n || strcmp(again.ident, e->ident))
+            FUZZ_FAIL("model %d: '%.30s' unknown or typed wrongly", i, e->name);
         for (j = 0; j < i; j++)
-            if (!strcmp(s->models[i], s->models[j]))
-                FUZZ_FAIL("model '%s' accepted twice", s->models[i]);
+            if (!strcmp(e->name, s->models[j].name))
+                FUZZ_FAIL("model '%s' accepted twice", e->name);
     }
-    for (i = 0; i < s->type_count && i < SCENE_MAX_TYPES; i++)
-        if (memchr(s->types[i], '\0', SCENE_NAME_SIZE) == NULL || !in_table(scene_type_names, s->types[i]))
-            FUZZ_FAIL("type %d: unknown '%.30s'", i, s->types[i]);
+    for (i = 0; i < s->type_count && i < NUMBER_TYPES; i++)
+        if (!s->types[i] || s->types[i] != number_type_find(s->types[i]->name) || !s->types[i]->available)
+            FUZZ_FAIL("type %d: not an available row of the number type registry", i);
     if (memchr(s->space, '\0', SCENE_NAME_SIZE) == NULL || !in_table(colour_space_ids, s->space))
         FUZZ_FAIL("unknown space accepted");
-    if (memchr(s->lut_spacing, '\0', SCENE_NAME_SIZE) == NULL ||
-        !in_table(scene_lut_spacing_names, s->lut_spacing))
-        FUZZ_FAIL("unknown LUT spacing accepted");
+    if (!((unsigned)s->spacing <= LUT_GRAZING_PL) || !((unsigned)s->gamut <= GAMUT_KEEP))
+        FUZZ_FAIL("LUT spacing %d or gamut policy %d out of range", (int)s->spacing, (int)s->gamut);
     if (!(s->sigma >= 0.0 && s->sigma <= 200.0))
         FUZZ_FAIL("sigma %g accepted", s->sigma);
     if (!(s->n1 >= 1.0 && s->n1 <= 4.0))

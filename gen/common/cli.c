@@ -1,6 +1,6 @@
 /* Error reporting, number parsing, option values, name suggestions and safe
  * output for the CLI. */
-#include "cli/cli.h"
+#include "common/cli.h"
 
 #include <ctype.h>
 #include <errno.h>

@@ -1,7 +1,7 @@
 /* Renderers' metal Fresnel formulas (reference.h). Facts from each
  * renderer's specification or source text, transcribed with their
  * citation; no renderer's code. */
-#include "model/reference.h"
+#include "common/reference.h"
 
 #include <math.h>
 

@@ -1,5 +1,5 @@
 /* Double-precision reference of every model (see reference.h). */
-#include "model/reference.h"
+#include "common/reference.h"
 
 #include <complex.h>
 #include <math.h>

@@ -1,0 +1,196 @@
+/* Stage 3, encode: a material's constants and a LUT's nodes in every number
+ * type, the one conversion both the header and every evaluation read
+ * (encode.h, THE ENCODER). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "3_encode/encode.h"
+#include "3_encode/fixed_params.h"
+
+static fresnel_rgb f32_rgb(const double v[3])
+{
+    fresnel_rgb o;
+    o.r = (float)v[0];
+    o.g = (float)v[1];
+    o.b = (float)v[2];
+    return o;
+}
+
+static fresnel_rgb_q15 q15_rgb(const double v[3])
+{
+    fresnel_rgb_q15 o;
+    o.r = (fresnel_q15)fixed_q15(v[0]);
+    o.g = (fresnel_q15)fixed_q15(v[1]);
+    o.b = (fresnel_q15)fixed_q15(v[2]);
+    return o;
+}
+
+static const double *eta_source(const material_params *p, int source, int kappa)
+{
+    switch (source) {
+    case ETA_GAUSS: return kappa ? p->kappa_gauss : p->eta_gauss;
+    case ETA_POINT: return kappa ? p->kappa_point : p->eta_point;
+    default: return kappa ? p->kappa_fit : p->eta_fit;
+    }
+}
+
+#if FRESNEL_HAS_F16
+static void f16_3(const double v[3], fresnel_f16 out[3])
+{
+    int ch;
+    for (ch = 0; ch < 3; ch++)
+        out[ch] = (fresnel_f16)v[ch];
+}
+#endif
+
+void encode_material(const material_params *p, encoded_material *e)
+{
+    int src, ch;
+    memset(e, 0, sizeof *e);
+    e->f0 = f32_rgb(p->f0);
+    e->f_avg = f32_rgb(p->f_avg);
+    e->f82 = f32_rgb(p->f82);
+    e->lsk_a = f32_rgb(p->lsk_a);
+    e->lsk_alpha = f32_rgb(p->lsk_alpha);
+    e->gulb_r = f32_rgb(p->gulb_r);
+    e->gulb_g = f32_rgb(p->gulb_g);
+    e->ct_eta = (float)p->ct_eta;
+    e->ct_kappa = (float)p->ct_kappa;
+    for (src = 0; src < ETA_SOURCES; src++) {
+        e->eta[src] = f32_rgb(eta_source(p, src, 0));
+        e->kappa[src] = f32_rgb(eta_source(p, src, 1));
+    }
+
+    {
+        double f0[3];
+        for (ch = 0; ch < 3; ch++) {
+            f0[ch] = p->f0[ch] > 1.0 ? 1.0 : p->f0[ch];
+            e->q_f0_held |= p->f0[ch] > 1.0;
+        }
+        e->q_f0 = q15_rgb(f0);
+    }
+    e->q_f_avg = q15_rgb(p->f_avg);
+    e->q_f82 = q15_rgb(p->f82);
+    e->q_gulb_r = q15_rgb(p->gulb_r);
+    e->q_gulb_g = q15_rgb(p->gulb_g);
+    fixed_ior(p->ct_eta, p->ct_kappa, &e->q_ct);
+    e->q_ior_fast_out = -1;
+    for (ch = 0; ch < 3; ch++) {
+        e->q_f82_a[ch] = fixed_f82_a_q12(fixed_q15(p->f0[ch]), fixed_q15(p->f82[ch]));
+        fixed_lsk(p->eta_fit[ch], p->kappa_fit[ch], 0.0, 0.0, &e->q_lsk[ch]);
+        fixed_lsk(p->eta_fit[ch], p->kappa_fit[ch], p->lsk_a[ch], p->lsk_alpha[ch], &e->q_lsk_comp[ch]);
+        fixed_nk(p->eta_fit[ch], p->kappa_fit[ch], &e->q_nk[ch]);
+        for (src = 0; src < ETA_SOURCES; src++)
+            fixed_ior(eta_source(p, src, 0)[ch], eta_source(p, src, 1)[ch], &e->q_ior[src][ch]);
+        if (e->q_ior_fast_out < 0 && !fixed_conductor_fast_in_domain(p->eta_fit[ch], p->kappa_fit[ch]))
+            e->q_ior_fast_out = ch;
+    }
+    if (e->q_ior_fast_out < 0)
+        for (ch = 0; ch < 3; ch++)
+            fixed_conductor_fast(p->eta_fit[ch], p->kappa_fit[ch], &e->q_ior_fast[ch]);
+
+#if FRESNEL_HAS_F16
+    f16_3(p->f0, e->h_f0);
+    f16_3(p->f_avg, e->h_f_avg);
+    f16_3(p->f82, e->h_f82);
+    f16_3(p->lsk_a, e->h_lsk_a);
+    f16_3(p->lsk_alpha, e->h_lsk_alpha);
+    f16_3(p->gulb_r, e->h_gulb_r);
+    f16_3(p->gulb_g, e->h_gulb_g);
+    for (src = 0; src < ETA_SOURCES; src++) {
+        f16_3(eta_source(p, src, 0), e->h_eta[src]);
+        f16_3(eta_source(p, src, 1), e->h_kappa[src]);
+    }
+    e->h_ct_eta = (fresnel_f16)p->ct_eta;
+    e->h_ct_kappa = (fresnel_f16)p->ct_kappa;
+#endif
+}
+
+void encode_curve_q15(const double *nodes, int count, uint16_t *codes)
+{
+    int i;
+    for (i = 0; i < count; i++)
+        codes[i] = (uint16_t)fixed_q15(nodes[i]);
+}
+
+/* round(v 2^frac) in int16_t, or 0 where it is not a number there. */
+static int residual_code(double v, int frac, int16_t *code)
+{
+    double x = floor(v * ldexp(1.0, frac) + 0.5);
+    if (!(x >= -32768.0 && x <= 32767.0)) {
+        *code = 0;
+        return -1;
+    }
+    *code = (int16_t)x;
+    return 0;
+}
+
+void encoded_lut_free(encoded_lut *t)
+{
+    free(t->nodes);
+    free(t->f32);
+    free(t->q15);
+    free(t->q15_res);
+#if FRESNEL_HAS_F16
+    free(t->f16);
+#endif
+    memset(t, 0, sizeof *t);
+    t->bad = -1;
+}
+
+int encode_table(const spectrum *s, const gen_context *g, const material_params *p, lut_spacing spacing, int n,
+                 lut_form form, encoded_lut *t)
+{
+    int count = 3 * n, i, residual = form == LUT_RESIDUAL;
+    int16_t code;
+    memset(t, 0, sizeof *t);
+    t->n = n;
+    t->form = form;
+    t->spacing = spacing;
+    t->bad = -1;
+    t->nodes = malloc((size_t)count * sizeof *t->nodes);
+    t->f32 = malloc((size_t)count * sizeof *t->f32);
+    if (residual)
+        t->q15_res = malloc((size_t)count * sizeof *t->q15_res);
+    else
+        t->q15 = malloc((size_t)count * sizeof *t->q15);
+#if FRESNEL_HAS_F16
+    t->f16 = malloc((size_t)count * sizeof *t->f16);
+    if (!t->f16) {
+        encoded_lut_free(t);
+        return -1;
+    }
+#endif
+    if (!t->nodes || !t->f32 || !(t->q15 || t->q15_res) || encode_lut(s, g, p, spacing, n, form, t->nodes)) {
+        encoded_lut_free(t);
+        return -1;
+    }
+    for (i = 0; i < count; i++) {
+        double v = t->nodes[i];
+        t->f32[i] = (float)v;
+#if FRESNEL_HAS_F16
+        t->f16[i] = (fresnel_f16)v;
+#endif
+        if (t->bad < 0 && (!isfinite(v) || (residual ? residual_code(v, 14, &code) != 0
+                                                     : !(floor(v * 32768.0 + 0.5) >= 0.0 &&
+                                                         floor(v * 32768.0 + 0.5) <= 65535.0))))
+            t->bad = i;
+    }
+    if (!residual) {
+        encode_curve_q15(t->nodes, count, t->q15);
+        return 0;
+    }
+    /* the most fraction bits, in fresnel_fixed.h's [14, 30], that keep every
+     * rounded node inside int16_t; encode_lut holds the nodes to [-1, 1],
+     * which frac 14 always holds */
+    for (t->frac = 30; t->frac > 14; t->frac--) {
+        for (i = 0; i < count && residual_code(t->nodes[i], t->frac, &code) == 0; i++)
+            ;
+        if (i == count)
+            break;
+    }
+    for (i = 0; i < count; i++)
+        residual_code(t->nodes[i], t->frac, &t->q15_res[i]);
+    return 0;
+}

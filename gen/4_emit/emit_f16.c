@@ -1,0 +1,96 @@
+/* Stage 4, emit, binary16: a material's constants and tables for the scalar
+ * functions of include/fresnel_f16.h, per channel, as the encoder rounded
+ * them (3_encode/encode.h), inside #if FRESNEL_HAS_F16 so that the header
+ * still compiles where the compiler has no _Float16. */
+#include <math.h>
+#include <stdio.h>
+
+#include "common/cli.h"
+#include "4_emit/emit.h"
+
+#if FRESNEL_HAS_F16
+static void f16_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
+{
+    fprintf(f, "/* %s, binary16 (r, g, b) */\nstatic const fresnel_f16 %s_%s_f16[3] FRESNEL_GEN_UNUSED = {", why, prefix,
+            name);
+    emit_c_float(f, v[0]);
+    fputs(", ", f);
+    emit_c_float(f, v[1]);
+    fputs(", ", f);
+    emit_c_float(f, v[2]);
+    fputs("};\n", f);
+}
+
+static void f16_scalar(FILE *f, const char *prefix, const char *name, double v, const char *why)
+{
+    fprintf(f, "/* %s, binary16 */\nstatic const fresnel_f16 %s_%s_f16 FRESNEL_GEN_UNUSED = ", why, prefix, name);
+    emit_c_float(f, v);
+    fputs(";\n", f);
+}
+
+static void h3(const fresnel_f16 h[3], double out[3])
+{
+    out[0] = (double)h[0];
+    out[1] = (double)h[1];
+    out[2] = (double)h[2];
+}
+
+static void emit_lut_f16(FILE *f, const emit_input *in, const char *prefix, const scene_entry *e, const encoded_lut *t)
+{
+    int i, n = t->n;
+    const char *call = t->form == LUT_CUBIC ? "cubic_f16(" : (t->form == LUT_RESIDUAL ? "residual_f16(f0[ch], " : "f16(");
+    fprintf(f, "/* %s in binary16: %d nodes per channel (red, then green, then blue). Evaluate channel\n"
+               " * ch with fresnel_lut_%s%stable + ch * %d, %d, c). */\n"
+               "static const fresnel_f16 %s_%s_f16[%d] FRESNEL_GEN_UNUSED = {",
+            e->name, n, in->sc->spacing == LUT_UNIFORM ? "linear_" : "", call, n, n, prefix, e->ident, 3 * n);
+    for (i = 0; i < 3 * n; i++) {
+        fputs(i % 6 == 0 ? "\n    " : " ", f);
+        emit_c_float(f, (double)t->f16[i]);
+        if (i + 1 < 3 * n)
+            fputc(',', f);
+    }
+    fputs("\n};\n", f);
+}
+#endif
+
+int emit_f16_material(FILE *f, const emit_input *in, int mi, const char *prefix, const encoded_lut *luts)
+{
+#if FRESNEL_HAS_F16
+    const encoded_material *e = &in->enc[mi];
+    emit_floats v;
+    const double *all = &v.f0[0];
+    size_t i, count = sizeof v / sizeof v.f0[0];
+    int src, m;
+    h3(e->h_f0, v.f0);
+    h3(e->h_f_avg, v.f_avg);
+    h3(e->h_f82, v.f82);
+    h3(e->h_lsk_a, v.lsk_a);
+    h3(e->h_lsk_alpha, v.lsk_alpha);
+    h3(e->h_gulb_r, v.gulb_r);
+    h3(e->h_gulb_g, v.gulb_g);
+    for (src = 0; src < ETA_SOURCES; src++) {
+        h3(e->h_eta[src], v.eta[src]);
+        h3(e->h_kappa[src], v.kappa[src]);
+    }
+    v.ct_eta = (double)e->h_ct_eta;
+    v.ct_kappa = (double)e->h_ct_kappa;
+    /* a parameter beyond 65504 rounds to an infinity, which no literal holds
+     * (emit_floats is all doubles: one array) */
+    for (i = 0; i < count; i++)
+        if (!isfinite(all[i])) {
+            char where[1100];
+            snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->types_line);
+            return cli_error(where, "%s: a parameter does not fit binary16 (largest 65504); no header written", prefix);
+        }
+    fputs("#if FRESNEL_HAS_F16\n", f);
+    emit_float_params(f, in->sc, &v, prefix, f16_rgb, f16_scalar);
+    for (m = 0; m < in->sc->model_count; m++)
+        if (luts[m].n)
+            emit_lut_f16(f, in, prefix, &in->sc->models[m], &luts[m]);
+    fputs("#endif\n", f);
+    return 0;
+#else
+    (void)f, (void)in, (void)mi, (void)prefix, (void)luts;
+    return 0; /* never asked: the registry's f16 row is not available here */
+#endif
+}
