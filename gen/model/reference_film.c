@@ -1,0 +1,73 @@
+/* The thin film's optics in double precision (reference_film.h). */
+#include "model/reference_film.h"
+
+#include <math.h>
+
+double complex ref_complex(double re, double im)
+{
+    double complex z;
+    ((double *)&z)[0] = re;
+    ((double *)&z)[1] = im;
+    return z;
+}
+
+/* sqrt(N^2 - sigma) on the decaying branch: Im(N^2) = 2 n k >= 0 (+0 for
+ * k = 0), so the principal root has Re, Im >= 0. */
+static double complex normal_component(double complex n, double sigma)
+{
+    double re = creal(n), im = cimag(n);
+    return csqrt(ref_complex((re - im) * (re + im) - sigma, 2.0 * re * im));
+}
+
+/* Both denominators vanish only where xi_i = xi_j = 0 (two media both at
+ * grazing propagation): no interface to reflect from. */
+static double complex ratio(double complex num, double complex den)
+{
+    return den == 0.0 ? 0.0 : num / den;
+}
+
+static void interface(double complex ni, double complex xi_i, double complex nj,
+                      double complex xi_j, double complex r[2])
+{
+    double complex ni2 = ni * ni, nj2 = nj * nj;
+    r[0] = ratio(xi_i - xi_j, xi_i + xi_j);
+    r[1] = ratio(nj2 * xi_i - ni2 * xi_j, nj2 * xi_i + ni2 * xi_j);
+}
+
+void ref_film_optics_at(double n1, double complex n_film, double complex n_sub, double c,
+                        ref_film_optics *o)
+{
+    double sigma = n1 * n1 * ((1.0 - c) * (1.0 + c));
+    double complex xi1 = n1 * c, xi3;
+    o->xi_f = normal_component(n_film, sigma);
+    xi3 = normal_component(n_sub, sigma);
+    interface(n1, xi1, n_film, o->xi_f, o->r12);
+    interface(n_film, o->xi_f, n_sub, xi3, o->r23);
+    interface(n1, xi1, n_sub, xi3, o->r13);
+}
+
+double ref_film_airy(const ref_film_optics *o, double d_nm, double lambda_nm)
+{
+    const double two_pi = 6.283185307179586476925;
+    double complex z = cexp(2.0 * I * (two_pi * d_nm / lambda_nm) * o->xi_f);
+    double sum = 0.0;
+    int pol;
+    for (pol = 0; pol < 2; pol++) {
+        double complex r = ratio(o->r12[pol] + o->r23[pol] * z, 1.0 + o->r12[pol] * o->r23[pol] * z);
+        sum += creal(r) * creal(r) + cimag(r) * cimag(r);
+    }
+    return 0.5 * sum;
+}
+
+void ref_film_series(double complex r12, double complex r23, double *a0, double complex *kappa,
+                     double complex *q)
+{
+    double complex b = (1.0 - r12 * r12) * r23;
+    double q2, b2, tail;
+    *q = -r12 * r23;
+    q2 = creal(*q) * creal(*q) + cimag(*q) * cimag(*q);
+    b2 = creal(b) * creal(b) + cimag(b) * cimag(b);
+    tail = q2 < 1.0 ? b2 / (1.0 - q2) : 0.0;
+    *a0 = creal(r12) * creal(r12) + cimag(r12) * cimag(r12) + tail;
+    *kappa = b * conj(r12) + tail * *q;
+}

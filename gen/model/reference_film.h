@@ -1,0 +1,62 @@
+/* Double-precision optics of a thin film: the spectral truth's reflectance
+ * at one wavelength (film_truth.c integrates it), the quantities the
+ * generator fits the run-time constants from (2_derive/film_fit.c), and the
+ * double evaluation of the run-time model (the yardstick of the runtime's
+ * error bounds, as reference.c is for the other models). Host only.
+ *
+ * THE STACK: incident medium of real index n1 | film of complex index
+ * Nf = nf + i kf, thickness d | substrate N3 = n3 + i k3 (semi-infinite).
+ * c is the cosine of the angle of incidence in the incident medium.
+ *
+ * FORMULAS [Born & Wolf, Principles of Optics, 7th ed., sections 1.5-1.6;
+ * Heavens, Optical Properties of Thin Solid Films, 1955, ch. 4], time
+ * dependence exp(-i w t), absorbing indices with k >= 0:
+ *   sigma = n1^2 (1 - c^2)                 (n sin(theta), the same in every layer)
+ *   xi_j = N_j cos(theta_j) = sqrt(N_j^2 - sigma),  the root with Im >= 0 (the
+ *          wave decays away from the interface; a real negative radicand is
+ *          total internal reflection)
+ *   r_ij,s = (xi_i - xi_j) / (xi_i + xi_j)
+ *   r_ij,p = (N_j^2 xi_i - N_i^2 xi_j) / (N_j^2 xi_i + N_i^2 xi_j)
+ *   beta   = 2 pi d xi_f / lambda              (the film's phase thickness)
+ *   r      = (r12 + r23 e^(2 i beta)) / (1 + r12 r23 e^(2 i beta))   (Airy's sum
+ *            of the multiply reflected waves)
+ *   R      = (|r_s|^2 + |r_p|^2) / 2          (unpolarised light)
+ * d = 0 gives r = r13 (the bare interface); Nf = n1 gives r12 = 0 and
+ * |r| = |r23| (a lossless film adds only phase); an interface between two
+ * media with xi_i = xi_j = 0 (grazing light in a film of the incident
+ * medium's index) has r = 0.
+ *
+ * THE FOURIER FORM used by the run-time model (fresnel_film.h): for a real
+ * phase (Im xi_f = 0), z = e^(2 i beta), q = -r12 r23 and
+ * b = (1 - r12^2) r23, r = r12 + b z sum_{j>=0} (q z)^j, so
+ *   R_pol = a0 + 2 Re sum_{m>=1} a_m z^m,
+ *   a0  = |r12|^2 + |b|^2 / (1 - |q|^2)          (the incoherent sum)
+ *   a_m = kappa q^(m-1),  kappa = b conj(r12) + |b|^2 q / (1 - |q|^2).
+ * z^m = exp(2 pi i m X / lambda) with X = 2 d Re(xi_f), the optical path
+ * difference of one round trip. */
+#ifndef FRESNEL_REFERENCE_FILM_H
+#define FRESNEL_REFERENCE_FILM_H
+
+#include <complex.h>
+
+/* The interface amplitudes of one wavelength, [0] s and [1] p, and xi_f. */
+typedef struct ref_film_optics {
+    double complex r12[2], r23[2], r13[2];
+    double complex xi_f;
+} ref_film_optics;
+void ref_film_optics_at(double n1, double complex n_film, double complex n_sub, double c,
+                        ref_film_optics *o);
+
+/* Airy reflectance R of the stack at wavelength lambda_nm, thickness d_nm. */
+double ref_film_airy(const ref_film_optics *o, double d_nm, double lambda_nm);
+
+/* The Fourier coefficients above for one polarisation (Im xi_f = 0 assumed
+ * by the series, not by the function): a0 and a_1 = kappa, and q. */
+void ref_film_series(double complex r12, double complex r23, double *a0, double complex *kappa,
+                     double complex *q);
+
+/* C99 has no CMPLX: a complex from its parts with the sign of a zero
+ * imaginary part kept (it decides csqrt's branch on the negative axis). */
+double complex ref_complex(double re, double im);
+
+#endif
