@@ -209,5 +209,14 @@ typedef struct film_stack {
  * NaN gives 0). d = 0 and a film matching n1 give ground_truth's result. */
 void film_truth(const film_stack *f, const colorimetry *cm, const colour_space *cs, double c,
                 double d_nm, double rgb[3]);
+/* The same for many thicknesses at one cosine: the interface amplitudes at
+ * every CMF wavelength, computed once (film_truth_prepare; malloc'd, NULL
+ * when out of memory; free()), then film_truth_at per thickness. */
+typedef struct film_optics_table film_optics_table;
+film_optics_table *film_truth_prepare(const film_stack *f, double c);
+void film_truth_at(const film_optics_table *t, const colorimetry *cm, const colour_space *cs, double d_nm,
+                   double rgb[3]);
+/* The stack's n, k at CMF sample j (360 + j nm): film and substrate. */
+void film_stack_index(const film_stack *f, int j, double n_film[2], double n_sub[2]);
 
 #endif

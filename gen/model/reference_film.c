@@ -44,6 +44,22 @@ void ref_film_optics_at(double n1, double complex n_film, double complex n_sub, 
     interface(n1, xi1, n_film, o->xi_f, o->r12);
     interface(n_film, o->xi_f, n_sub, xi3, o->r23);
     interface(n1, xi1, n_sub, xi3, o->r13);
+    o->z1[0] = xi1;
+    o->z3[0] = xi3;
+    o->z1[1] = xi1 / (n1 * n1);
+    o->z3[1] = xi3 / (n_sub * n_sub);
+    o->n_film2 = n_film * n_film;
+}
+
+/* xi_f = 0: with r_ij = (Z_i - Z_j) / (Z_i + Z_j) for Z = xi (s) or
+ * xi / N^2 (p), Z_f = e -> 0 and z = exp(2 i k e N_f^2) (p; k = 2 pi d /
+ * lambda; s without N_f^2), numerator and denominator of the sum are both
+ * 2 e (...) + O(e^2):
+ *   r -> (Z1 - Z3 - i k' Z1 Z3) / (Z1 + Z3 - i k' Z1 Z3),  k' = k (s), k N_f^2 (p). */
+static double complex critical_limit(const ref_film_optics *o, int pol, double k)
+{
+    double complex kk = pol ? k * o->n_film2 : k, t = I * kk * o->z1[pol] * o->z3[pol];
+    return ratio(o->z1[pol] - o->z3[pol] - t, o->z1[pol] + o->z3[pol] - t);
 }
 
 double ref_film_airy(const ref_film_optics *o, double d_nm, double lambda_nm)
@@ -53,7 +69,9 @@ double ref_film_airy(const ref_film_optics *o, double d_nm, double lambda_nm)
     double sum = 0.0;
     int pol;
     for (pol = 0; pol < 2; pol++) {
-        double complex r = ratio(o->r12[pol] + o->r23[pol] * z, 1.0 + o->r12[pol] * o->r23[pol] * z);
+        double complex r = o->xi_f == 0.0
+                               ? critical_limit(o, pol, two_pi * d_nm / lambda_nm)
+                               : ratio(o->r12[pol] + o->r23[pol] * z, 1.0 + o->r12[pol] * o->r23[pol] * z);
         sum += creal(r) * creal(r) + cimag(r) * cimag(r);
     }
     return 0.5 * sum;

@@ -24,7 +24,9 @@
  * d = 0 gives r = r13 (the bare interface); Nf = n1 gives r12 = 0 and
  * |r| = |r23| (a lossless film adds only phase); an interface between two
  * media with xi_i = xi_j = 0 (grazing light in a film of the incident
- * medium's index) has r = 0.
+ * medium's index) has r = 0. At a film's critical angle (xi_f = 0, a film
+ * less dense than the incident medium) r12 and r23 are +-1 and the sum is
+ * 0/0; its limit is taken there (reference_film.c).
  *
  * THE FOURIER FORM used by the run-time model (fresnel_film.h): for a real
  * phase (Im xi_f = 0), z = e^(2 i beta), q = -r12 r23 and
@@ -43,6 +45,9 @@
 typedef struct ref_film_optics {
     double complex r12[2], r23[2], r13[2];
     double complex xi_f;
+    /* for the critical-angle limit: the s and p "impedances" of media 1
+     * and 3 (xi and xi / N^2) and the film's N^2 */
+    double complex z1[2], z3[2], n_film2;
 } ref_film_optics;
 void ref_film_optics_at(double n1, double complex n_film, double complex n_sub, double c,
                         ref_film_optics *o);
