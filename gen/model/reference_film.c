@@ -89,3 +89,38 @@ void ref_film_series(double complex r12, double complex r23, double *a0, double 
     *a0 = creal(r12) * creal(r12) + cimag(r12) * cimag(r12) + tail;
     *kappa = b * conj(r12) + tail * *q;
 }
+
+void ref_film_model(const film_model *m, double c, double d_nm, int clamp, double rgb[3])
+{
+    const double two_pi = 6.283185307179586476925;
+    const int last = FRESNEL_FILM_NODES - 1;
+    double pos, t, a0[3], opd, decay;
+    int i, j, pol, ch;
+    c = c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
+    d_nm = d_nm > 0.0 ? (d_nm < FRESNEL_FILM_D_MAX ? d_nm : FRESNEL_FILM_D_MAX) : 0.0;
+    pos = c * last;
+    i = (int)pos;
+    if (i > last - 1)
+        i = last - 1;
+    t = pos - i;
+    for (ch = 0; ch < 3; ch++)
+        a0[ch] = (1.0 - t) * m->a0[i][ch] + t * m->a0[i + 1][ch];
+    opd = (1.0 - t) * m->opd[i] + t * m->opd[i + 1];
+    decay = (1.0 - t) * m->decay[i] + t * m->decay[i + 1];
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = a0[ch];
+    for (j = 0; j < FRESNEL_FILM_POLES; j++) {
+        double complex path = d_nm * (opd + I * decay), p = m->nu[j] + I * m->gamma[j];
+        double complex zeta = cexp(I * two_pi * path * p), f = 0.0;
+        for (pol = 0; pol < 2; pol++) {
+            double complex kappa = (1.0 - t) * m->kappa[i][j][pol] + t * m->kappa[i + 1][j][pol];
+            double complex q = (1.0 - t) * m->q[i][j][pol] + t * m->q[i + 1][j][pol];
+            f += kappa * zeta / (1.0 - q * zeta);
+        }
+        for (ch = 0; ch < 3; ch++)
+            rgb[ch] += 2.0 * creal(m->weight[ch][j] * f);
+    }
+    if (clamp)
+        for (ch = 0; ch < 3; ch++)
+            rgb[ch] = rgb[ch] > 0.0 ? (rgb[ch] < 1.0 ? rgb[ch] : 1.0) : 0.0;
+}

@@ -41,6 +41,8 @@
 
 #include <complex.h>
 
+#include "fresnel_film.h"
+
 /* The interface amplitudes of one wavelength, [0] s and [1] p, and xi_f. */
 typedef struct ref_film_optics {
     double complex r12[2], r23[2], r13[2];
@@ -59,6 +61,33 @@ double ref_film_airy(const ref_film_optics *o, double d_nm, double lambda_nm);
  * by the series, not by the function): a0 and a_1 = kappa, and q. */
 void ref_film_series(double complex r12, double complex r23, double *a0, double complex *kappa,
                      double complex *q);
+
+/* ---- the run-time model (fresnel_film.h) in double precision.
+ * Poles p_j = nu_j + i gamma_j (cycles per nm of optical path) and weights
+ * c_ch,j fit each channel's spectral sensitivity as
+ *   S_ch(x) = sum_lambda w_ch(lambda) exp(2 pi i x / lambda)
+ *           ~ sum_j c_ch,j exp(2 pi i x p_j),   x >= 0
+ * (2_derive/film_fit.c). Then, for the Fourier form above,
+ *   R_ch = a0_ch + 2 Re sum_j c_ch,j sum_pol kappa_j,pol zeta_j / (1 - q_j,pol zeta_j),
+ *   zeta_j = exp(2 pi i d (opd + i decay) p_j),
+ * the sum over every order m in closed form. a0_ch is the incoherent
+ * reflectance integrated exactly; kappa, q are the Fourier coefficients
+ * continued to the complex frequency p_j (then kappa refitted), tabulated at
+ * FRESNEL_FILM_NODES cosines c_k = k / (nodes - 1) and interpolated linearly
+ * in c; opd + i decay = 2 xi_f, the optical path per nm of thickness (decay
+ * > 0 only in total reflection inside the film). */
+typedef struct film_model {
+    double nu[FRESNEL_FILM_POLES], gamma[FRESNEL_FILM_POLES];
+    double complex weight[3][FRESNEL_FILM_POLES];
+    double a0[FRESNEL_FILM_NODES][3];
+    double opd[FRESNEL_FILM_NODES], decay[FRESNEL_FILM_NODES];
+    double complex kappa[FRESNEL_FILM_NODES][FRESNEL_FILM_POLES][2];
+    double complex q[FRESNEL_FILM_NODES][FRESNEL_FILM_POLES][2];
+} film_model;
+/* R at cosine c and thickness d nm, with the runtime's clamps (c to [0, 1],
+ * d to [0, FRESNEL_FILM_D_MAX], NaN to 0) and the result clamped to [0, 1]
+ * (clamp = 0: unclamped, for fitting). */
+void ref_film_model(const film_model *m, double c, double d_nm, int clamp, double rgb[3]);
 
 /* C99 has no CMPLX: a complex from its parts with the sign of a zero
  * imaginary part kept (it decides csqrt's branch on the negative axis). */
