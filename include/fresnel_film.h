@@ -17,11 +17,12 @@ extern "C" {
 #define FRESNEL_FILM_NODES 32
 #define FRESNEL_FILM_D_MAX 5000.0f
 
+#define FRESNEL_FILM_TERMS (2 * FRESNEL_FILM_POLES)
 typedef struct fresnel_film_node {
     float a0[3];
     float opd, decay;
-    float kappa[FRESNEL_FILM_POLES][2][2];
-    float q[FRESNEL_FILM_POLES][2][2];
+    float kappa_re[FRESNEL_FILM_TERMS], kappa_im[FRESNEL_FILM_TERMS];
+    float q_re[FRESNEL_FILM_TERMS], q_im[FRESNEL_FILM_TERMS];
 } fresnel_film_node;
 
 typedef struct fresnel_film {
@@ -33,6 +34,23 @@ typedef struct fresnel_film {
 
 #if FRESNEL_HAS_FLOAT
 fresnel_rgb fresnel_film_rgb(const fresnel_film *m, float c, float d_nm);
+#endif
+
+#define FRESNEL_FILM_D_MAX_Q16 (5000 * 65536)
+typedef struct fresnel_film_node_q15 {
+    int16_t a0[3];
+    uint16_t opd, decay;
+    int16_t kappa_re[FRESNEL_FILM_TERMS], kappa_im[FRESNEL_FILM_TERMS];
+    int16_t q_re[FRESNEL_FILM_TERMS], q_im[FRESNEL_FILM_TERMS];
+} fresnel_film_node_q15;
+typedef struct fresnel_film_q15 {
+    uint32_t turn_nu[FRESNEL_FILM_POLES], turn_gamma[FRESNEL_FILM_POLES];
+    uint32_t octave_nu[FRESNEL_FILM_POLES], octave_gamma[FRESNEL_FILM_POLES];
+    int16_t weight[3][FRESNEL_FILM_POLES][2];
+    fresnel_film_node_q15 node[FRESNEL_FILM_NODES];
+} fresnel_film_q15;
+#if FRESNEL_HAS_FIXED
+fresnel_rgb_q15 fresnel_film_q15_rgb(const fresnel_film_q15 *m, int32_t c, fresnel_q16 d_nm);
 #endif
 
 #ifdef __cplusplus

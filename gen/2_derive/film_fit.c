@@ -530,7 +530,7 @@ int film_fit_material(const film_stack *f, const colorimetry *cm, const colour_s
         goto done;
     *out = *m;
     for (k = 0; k < NODES; k++) {
-        double c = (double)k / (NODES - 1), sigma = f->n1 * f->n1 * ((1.0 - c) * (1.0 + c));
+        double x = (double)k / (NODES - 1), c = x * x, sigma = f->n1 * f->n1 * ((1.0 - c) * (1.0 + c));
         int tir = f->film_n * f->film_n < sigma;
         film_optics_table *truth = film_truth_prepare(f, c);
         double complex kappa[J][2], q[J][2], xi_f = 0.0;

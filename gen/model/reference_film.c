@@ -98,7 +98,7 @@ void ref_film_model(const film_model *m, double c, double d_nm, int clamp, doubl
     int i, j, pol, ch;
     c = c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
     d_nm = d_nm > 0.0 ? (d_nm < FRESNEL_FILM_D_MAX ? d_nm : FRESNEL_FILM_D_MAX) : 0.0;
-    pos = c * last;
+    pos = sqrt(c) * last;
     i = (int)pos;
     if (i > last - 1)
         i = last - 1;

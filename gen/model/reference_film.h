@@ -72,9 +72,10 @@ void ref_film_series(double complex r12, double complex r23, double *a0, double 
  *   zeta_j = exp(2 pi i d (opd + i decay) p_j),
  * the sum over every order m in closed form. a0_ch is the incoherent
  * reflectance integrated exactly; kappa, q are the Fourier coefficients
- * continued to the complex frequency p_j (then kappa refitted), tabulated at
- * FRESNEL_FILM_NODES cosines c_k = k / (nodes - 1) and interpolated linearly
- * in c; opd + i decay = 2 xi_f, the optical path per nm of thickness (decay
+ * continued to the complex frequency p_j (then refitted), tabulated at
+ * FRESNEL_FILM_NODES cosines c_k = (k / (nodes - 1))^2 and interpolated
+ * linearly in sqrt(c) (nodes dense at grazing incidence, where the fringes
+ * stay deep up to the last degree while the reflectance goes to 1); opd + i decay = 2 xi_f, the optical path per nm of thickness (decay
  * > 0 only in total reflection inside the film). */
 typedef struct film_model {
     double nu[FRESNEL_FILM_POLES], gamma[FRESNEL_FILM_POLES];
