@@ -17,12 +17,12 @@ extern "C" {
 #define FRESNEL_FILM_NODES 32
 #define FRESNEL_FILM_D_MAX 5000.0f
 
-#define FRESNEL_FILM_TERMS (2 * FRESNEL_FILM_POLES)
 typedef struct fresnel_film_node {
     float a0[3];
     float opd, decay;
-    float kappa_re[FRESNEL_FILM_TERMS], kappa_im[FRESNEL_FILM_TERMS];
-    float q_re[FRESNEL_FILM_TERMS], q_im[FRESNEL_FILM_TERMS];
+    /* per pole: A, B, P, Q, real and imaginary parts */
+    float a_re[FRESNEL_FILM_POLES], a_im[FRESNEL_FILM_POLES], b_re[FRESNEL_FILM_POLES], b_im[FRESNEL_FILM_POLES];
+    float p_re[FRESNEL_FILM_POLES], p_im[FRESNEL_FILM_POLES], q_re[FRESNEL_FILM_POLES], q_im[FRESNEL_FILM_POLES];
 } fresnel_film_node;
 
 typedef struct fresnel_film {
@@ -40,8 +40,8 @@ fresnel_rgb fresnel_film_rgb(const fresnel_film *m, float c, float d_nm);
 typedef struct fresnel_film_node_q15 {
     int16_t a0[3];
     uint16_t opd, decay;
-    int16_t kappa_re[FRESNEL_FILM_TERMS], kappa_im[FRESNEL_FILM_TERMS];
-    int16_t q_re[FRESNEL_FILM_TERMS], q_im[FRESNEL_FILM_TERMS];
+    int16_t a_re[FRESNEL_FILM_POLES], a_im[FRESNEL_FILM_POLES], b_re[FRESNEL_FILM_POLES], b_im[FRESNEL_FILM_POLES];
+    int16_t p_re[FRESNEL_FILM_POLES], p_im[FRESNEL_FILM_POLES], q_re[FRESNEL_FILM_POLES], q_im[FRESNEL_FILM_POLES];
 } fresnel_film_node_q15;
 typedef struct fresnel_film_q15 {
     uint32_t turn_nu[FRESNEL_FILM_POLES], turn_gamma[FRESNEL_FILM_POLES];

@@ -540,9 +540,9 @@ int film_fit_material(const film_stack *f, const colorimetry *cm, const colour_s
             goto done;
         for (l = 0; l < CMF_N; l++) {
             ref_film_optics o;
-            double nf[2], ns[2];
-            film_stack_index(f, l, nf, ns);
-            ref_film_optics_at(f->n1, ref_complex(nf[0], nf[1]), ref_complex(ns[0], ns[1]), c, &o);
+            double n_film[2], n_sub[2];
+            film_stack_index(f, l, n_film, n_sub);
+            ref_film_optics_at(f->n1, ref_complex(n_film[0], n_film[1]), ref_complex(n_sub[0], n_sub[1]), c, &o);
             terms_at(&o, tir, &t[l]);
             xi_f = o.xi_f;
         }
@@ -554,8 +554,8 @@ int film_fit_material(const film_stack *f, const colorimetry *cm, const colour_s
         out->decay[k] = 2.0 * cimag(xi_f);
         for (j = 0; j < J; j++)
             for (pol = 0; pol < 2; pol++) {
-                out->kappa[k][j][pol] = continued(t, pol, 0, out->nu[j], out->gamma[j]);
-                out->q[k][j][pol] = q_inside(continued(t, pol, 1, out->nu[j], out->gamma[j]));
+                nf->kappa0[j][pol] = continued(t, pol, 0, out->nu[j], out->gamma[j]);
+                nf->q0[j][pol] = q_inside(continued(t, pol, 1, out->nu[j], out->gamma[j]));
             }
         nf->m = out;
         nf->node = k;
@@ -565,12 +565,10 @@ int film_fit_material(const film_stack *f, const colorimetry *cm, const colour_s
                 nf->zeta[l][j] = cexp(I * two_pi * (l * FIT_D_STEP) * (out->opd[k] + I * out->decay[k]) *
                                       (out->nu[j] + I * out->gamma[j]));
         }
-        memcpy(nf->kappa0, out->kappa[k], sizeof nf->kappa0);
-        memcpy(nf->q0, out->q[k], sizeof nf->q0);
-        memcpy(q, out->q[k], sizeof q);
+        memcpy(q, nf->q0, sizeof q);
         refine_q(nf, q, kappa);
-        memcpy(out->kappa[k], kappa, sizeof kappa);
-        memcpy(out->q[k], q, sizeof q);
+        for (j = 0; j < J; j++)
+            film_pole_terms(kappa[j], q[j], out->term[k][j]);
         free(truth);
     }
     *m = *out;

@@ -9,7 +9,7 @@
 
 void film_encode_f32(const film_model *m, fresnel_film *out)
 {
-    int j, k, ch, pol;
+    int j, k, ch;
     for (j = 0; j < J; j++) {
         out->freq[j] = (float)m->nu[j];
         out->damp[j] = (float)m->gamma[j];
@@ -24,19 +24,23 @@ void film_encode_f32(const film_model *m, fresnel_film *out)
             n->a0[ch] = (float)m->a0[k][ch];
         n->opd = (float)m->opd[k];
         n->decay = (float)m->decay[k];
-        for (j = 0; j < J; j++)
-            for (pol = 0; pol < 2; pol++) {
-                n->kappa_re[pol * J + j] = (float)creal(m->kappa[k][j][pol]);
-                n->kappa_im[pol * J + j] = (float)cimag(m->kappa[k][j][pol]);
-                n->q_re[pol * J + j] = (float)creal(m->q[k][j][pol]);
-                n->q_im[pol * J + j] = (float)cimag(m->q[k][j][pol]);
-            }
+        for (j = 0; j < J; j++) {
+            const double complex *v = m->term[k][j];
+            n->a_re[j] = (float)creal(v[0]);
+            n->a_im[j] = (float)cimag(v[0]);
+            n->b_re[j] = (float)creal(v[1]);
+            n->b_im[j] = (float)cimag(v[1]);
+            n->p_re[j] = (float)creal(v[2]);
+            n->p_im[j] = (float)cimag(v[2]);
+            n->q_re[j] = (float)creal(v[3]);
+            n->q_im[j] = (float)cimag(v[3]);
+        }
     }
 }
 
 void film_decode_f32(const fresnel_film *in, film_model *m)
 {
-    int j, k, ch, pol;
+    int j, k, ch;
     for (j = 0; j < J; j++) {
         m->nu[j] = in->freq[j];
         m->gamma[j] = in->damp[j];
@@ -49,11 +53,12 @@ void film_decode_f32(const fresnel_film *in, film_model *m)
             m->a0[k][ch] = n->a0[ch];
         m->opd[k] = n->opd;
         m->decay[k] = n->decay;
-        for (j = 0; j < J; j++)
-            for (pol = 0; pol < 2; pol++) {
-                m->kappa[k][j][pol] = ref_complex(n->kappa_re[pol * J + j], n->kappa_im[pol * J + j]);
-                m->q[k][j][pol] = ref_complex(n->q_re[pol * J + j], n->q_im[pol * J + j]);
-            }
+        for (j = 0; j < J; j++) {
+            m->term[k][j][0] = ref_complex(n->a_re[j], n->a_im[j]);
+            m->term[k][j][1] = ref_complex(n->b_re[j], n->b_im[j]);
+            m->term[k][j][2] = ref_complex(n->p_re[j], n->p_im[j]);
+            m->term[k][j][3] = ref_complex(n->q_re[j], n->q_im[j]);
+        }
     }
 }
 
@@ -71,10 +76,13 @@ static int q_code(double v, double scale, double lo, double hi, int32_t *out)
     return 0;
 }
 
+/* Q15 for A, B, Q; Q14 for P (|P| < 2) */
+static const double term_scale[4] = {32768.0, 32768.0, 16384.0, 32768.0};
+
 int film_encode_q15(const film_model *m, fresnel_film_q15 *out)
 {
-    int j, k, ch, pol, bad = 0;
-    int32_t v = 0;
+    int j, k, ch, bad = 0;
+    int32_t v = 0, v32 = 0;
     for (j = 0; j < J; j++) {
         out->turn_nu[j] = (uint32_t)floor(m->nu[j] * 4294967296.0 + 0.5);
         out->turn_gamma[j] = (uint32_t)floor(m->gamma[j] * 4294967296.0 + 0.5);
@@ -98,27 +106,28 @@ int film_encode_q15(const film_model *m, fresnel_film_q15 *out)
         n->opd = (uint16_t)v;
         bad |= q_code(m->decay[k], 4096.0, 0.0, 65535.0, &v);
         n->decay = (uint16_t)v;
-        for (j = 0; j < J; j++)
-            for (pol = 0; pol < 2; pol++) {
-                double complex kappa = m->kappa[k][j][pol], q = m->q[k][j][pol];
-                int l = pol * J + j;
-                bad |= !(cabs(kappa) < 1.0 && cabs(kappa) <= 256.0 * (1.0 - cabs(q)));
-                bad |= q_code(creal(kappa), 32768.0, -32767.0, 32767.0, &v);
-                n->kappa_re[l] = (int16_t)v;
-                bad |= q_code(cimag(kappa), 32768.0, -32767.0, 32767.0, &v);
-                n->kappa_im[l] = (int16_t)v;
-                bad |= q_code(creal(q), 32768.0, -32767.0, 32767.0, &v);
-                n->q_re[l] = (int16_t)v;
-                bad |= q_code(cimag(q), 32768.0, -32767.0, 32767.0, &v);
-                n->q_im[l] = (int16_t)v;
+        for (j = 0; j < J; j++) {
+            const double complex *t = m->term[k][j];
+            int16_t *dst[8];
+            int x;
+            dst[0] = &n->a_re[j], dst[1] = &n->a_im[j], dst[2] = &n->b_re[j], dst[3] = &n->b_im[j];
+            dst[4] = &n->p_re[j], dst[5] = &n->p_im[j], dst[6] = &n->q_re[j], dst[7] = &n->q_im[j];
+            for (x = 0; x < 8; x++) {
+                double v = x % 2 ? cimag(t[x / 2]) : creal(t[x / 2]);
+                bad |= q_code(v, term_scale[x / 2], -32767.0, 32767.0, &v32);
+                *dst[x] = (int16_t)v32;
             }
+            /* the runtime's ranges: |A + B zeta| < 1 and |den| in [2^-10, 4) */
+            bad |= !(cabs(t[0]) + cabs(t[1]) < 1.0);
+            bad |= !(cabs(t[2]) < 2.0 && cabs(t[3]) < 1.0);
+        }
     }
     return bad ? -1 : 0;
 }
 
 void film_decode_q15(const fresnel_film_q15 *in, film_model *m)
 {
-    int j, k, ch, pol;
+    int j, k, ch;
     for (j = 0; j < J; j++) {
         m->nu[j] = in->turn_nu[j] / 4294967296.0;
         m->gamma[j] = in->turn_gamma[j] / 4294967296.0;
@@ -131,11 +140,11 @@ void film_decode_q15(const fresnel_film_q15 *in, film_model *m)
             m->a0[k][ch] = n->a0[ch] / 16384.0;
         m->opd[k] = n->opd / 4096.0;
         m->decay[k] = n->decay / 4096.0;
-        for (j = 0; j < J; j++)
-            for (pol = 0; pol < 2; pol++) {
-                int l = pol * J + j;
-                m->kappa[k][j][pol] = ref_complex(n->kappa_re[l] / 32768.0, n->kappa_im[l] / 32768.0);
-                m->q[k][j][pol] = ref_complex(n->q_re[l] / 32768.0, n->q_im[l] / 32768.0);
-            }
+        for (j = 0; j < J; j++) {
+            m->term[k][j][0] = ref_complex(n->a_re[j] / term_scale[0], n->a_im[j] / term_scale[0]);
+            m->term[k][j][1] = ref_complex(n->b_re[j] / term_scale[1], n->b_im[j] / term_scale[1]);
+            m->term[k][j][2] = ref_complex(n->p_re[j] / term_scale[2], n->p_im[j] / term_scale[2]);
+            m->term[k][j][3] = ref_complex(n->q_re[j] / term_scale[3], n->q_im[j] / term_scale[3]);
+        }
     }
 }

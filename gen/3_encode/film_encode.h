@@ -8,8 +8,9 @@
 
 void film_encode_f32(const film_model *m, fresnel_film *out);
 void film_decode_f32(const fresnel_film *in, film_model *m);
-/* 0, or -1 when a value lies outside the Q15 layout's range (|kappa| < 1,
- * |kappa| / (1 - |q|) <= 256, a0 in [-2, 2), opd and decay < 16). */
+/* 0, or -1 when a value lies outside the Q15 layout's range (a0 in
+ * [-2, 2), opd and decay < 16, |A| + |B| < 1, |P| < 2, |Q| < 1; the
+ * weights |2 c| < 8). */
 int film_encode_q15(const film_model *m, fresnel_film_q15 *out);
 void film_decode_q15(const fresnel_film_q15 *in, film_model *m);
 

@@ -90,12 +90,20 @@ void ref_film_series(double complex r12, double complex r23, double *a0, double 
     *kappa = b * conj(r12) + tail * *q;
 }
 
+void film_pole_terms(const double complex k[2], const double complex q[2], double complex abpq[4])
+{
+    abpq[0] = k[0] + k[1];
+    abpq[1] = -(k[0] * q[1] + k[1] * q[0]);
+    abpq[2] = q[0] + q[1];
+    abpq[3] = q[0] * q[1];
+}
+
 void ref_film_model(const film_model *m, double c, double d_nm, int clamp, double rgb[3])
 {
     const double two_pi = 6.283185307179586476925;
     const int last = FRESNEL_FILM_NODES - 1;
-    double pos, t, a0[3], opd, decay;
-    int i, j, pol, ch;
+    double pos, t, opd, decay;
+    int i, j, n, ch;
     c = c > 0.0 ? (c < 1.0 ? c : 1.0) : 0.0;
     d_nm = d_nm > 0.0 ? (d_nm < FRESNEL_FILM_D_MAX ? d_nm : FRESNEL_FILM_D_MAX) : 0.0;
     pos = sqrt(c) * last;
@@ -104,19 +112,15 @@ void ref_film_model(const film_model *m, double c, double d_nm, int clamp, doubl
         i = last - 1;
     t = pos - i;
     for (ch = 0; ch < 3; ch++)
-        a0[ch] = (1.0 - t) * m->a0[i][ch] + t * m->a0[i + 1][ch];
+        rgb[ch] = (1.0 - t) * m->a0[i][ch] + t * m->a0[i + 1][ch];
     opd = (1.0 - t) * m->opd[i] + t * m->opd[i + 1];
     decay = (1.0 - t) * m->decay[i] + t * m->decay[i + 1];
-    for (ch = 0; ch < 3; ch++)
-        rgb[ch] = a0[ch];
     for (j = 0; j < FRESNEL_FILM_POLES; j++) {
         double complex path = d_nm * (opd + I * decay), p = m->nu[j] + I * m->gamma[j];
-        double complex zeta = cexp(I * two_pi * path * p), f = 0.0;
-        for (pol = 0; pol < 2; pol++) {
-            double complex kappa = (1.0 - t) * m->kappa[i][j][pol] + t * m->kappa[i + 1][j][pol];
-            double complex q = (1.0 - t) * m->q[i][j][pol] + t * m->q[i + 1][j][pol];
-            f += kappa * zeta / (1.0 - q * zeta);
-        }
+        double complex zeta = cexp(I * two_pi * path * p), v[4], f;
+        for (n = 0; n < 4; n++)
+            v[n] = (1.0 - t) * m->term[i][j][n] + t * m->term[i + 1][j][n];
+        f = zeta * (v[0] + v[1] * zeta) / (1.0 - v[2] * zeta + v[3] * zeta * zeta);
         for (ch = 0; ch < 3; ch++)
             rgb[ch] += 2.0 * creal(m->weight[ch][j] * f);
     }

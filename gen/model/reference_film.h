@@ -72,23 +72,29 @@ void ref_film_series(double complex r12, double complex r23, double *a0, double 
  *   zeta_j = exp(2 pi i d (opd + i decay) p_j),
  * the sum over every order m in closed form. a0_ch is the incoherent
  * reflectance integrated exactly; kappa, q are the Fourier coefficients
- * continued to the complex frequency p_j (then refitted), tabulated at
- * FRESNEL_FILM_NODES cosines c_k = (k / (nodes - 1))^2 and interpolated
- * linearly in sqrt(c) (nodes dense at grazing incidence, where the fringes
- * stay deep up to the last degree while the reflectance goes to 1); opd + i decay = 2 xi_f, the optical path per nm of thickness (decay
- * > 0 only in total reflection inside the film). */
+ * continued to the complex frequency p_j (then refitted), at
+ * FRESNEL_FILM_NODES cosines c_k = (k / (nodes - 1))^2; opd + i decay = 2 xi_f,
+ * the optical path per nm of thickness (decay > 0 only in total reflection
+ * inside the film). The two polarisations of pole j share one denominator,
+ *   sum_pol kappa zeta / (1 - q zeta) = zeta (A + B zeta) / (1 - P zeta + Q zeta^2),
+ *   A = kappa_s + kappa_p, B = -(kappa_s q_p + kappa_p q_s), P = q_s + q_p, Q = q_s q_p,
+ * (one reciprocal per pole instead of two), and a0, opd, decay, A, B, P, Q
+ * are what is interpolated, linearly in sqrt(c): nodes dense at grazing
+ * incidence, where the fringes stay deep up to the last degree while the
+ * reflectance goes to 1. */
 typedef struct film_model {
     double nu[FRESNEL_FILM_POLES], gamma[FRESNEL_FILM_POLES];
     double complex weight[3][FRESNEL_FILM_POLES];
     double a0[FRESNEL_FILM_NODES][3];
     double opd[FRESNEL_FILM_NODES], decay[FRESNEL_FILM_NODES];
-    double complex kappa[FRESNEL_FILM_NODES][FRESNEL_FILM_POLES][2];
-    double complex q[FRESNEL_FILM_NODES][FRESNEL_FILM_POLES][2];
+    double complex term[FRESNEL_FILM_NODES][FRESNEL_FILM_POLES][4]; /* A, B, P, Q */
 } film_model;
 /* R at cosine c and thickness d nm, with the runtime's clamps (c to [0, 1],
  * d to [0, FRESNEL_FILM_D_MAX], NaN to 0) and the result clamped to [0, 1]
  * (clamp = 0: unclamped, for fitting). */
 void ref_film_model(const film_model *m, double c, double d_nm, int clamp, double rgb[3]);
+/* A, B, P, Q (above) from kappa and q of the s [0] and p [1] polarisations. */
+void film_pole_terms(const double complex kappa[2], const double complex q[2], double complex abpq[4]);
 
 /* C99 has no CMPLX: a complex from its parts with the sign of a zero
  * imaginary part kept (it decides csqrt's branch on the negative axis). */

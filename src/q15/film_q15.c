@@ -4,26 +4,37 @@
  * (the two 64-bit products are formed from 16-bit halves), no libm.
  *
  * Formats (the generator fills the table in them, gen/3_encode/film_encode.c):
- * c Q15, d Q16.16 nm; node values a0 Q14, opd and decay Q12, kappa and q
- * Q15 (|kappa|, |q| < 1); poles' turn_* 2^32 turns per nm of path,
+ * c Q15, d Q16.16 nm; node values a0 Q14, opd and decay Q12, A, B
+ * Q15 (|A| + |B| < 1), P Q14 (|P| < 2), Q Q15 (|Q| < 1); poles' turn_*
+ * 2^32 turns per nm of path,
  * octave_* 2^32 octaves of decay per nm (2 pi log2(e) nu, gamma); weights
- * Q12. Products of signed values are shifted with fresnel_i_film_asr (no
- * right shift of a negative number: implementation-defined in C99). */
+ * Q12. Products of signed values are shifted with fresnel_i_film_asr. */
 #include "internal.h"
 #include "fresnel_film.h"
 
 #if FRESNEL_HAS_FIXED
 
-/* floor(x / 2^s), 1 <= s <= 31, for every int32 x: x + 2^31 as uint32 is
- * monotonic, its shift exact, and 2^(31-s) is subtracted back. */
-static inline int32_t fresnel_i_film_asr(int32_t x, int s)
+/* floor(x / 2^s), 0 <= s <= 31: the arithmetic shift. C99 leaves the
+ * right shift of a negative number to the implementation; gcc and clang
+ * define it as this (their manuals, "Integers implementation"), and the
+ * check below stops a build where a compiler does otherwise. One ASRS on
+ * a Cortex-M0, where the portable form (a bias of 2^31 added and taken
+ * away again) costs five instructions and this file shifts about 150
+ * signed values per call. */
+typedef char fresnel_i_film_asr_check[((-5) >> 1) == -3 && ((int32_t)-1 >> 31) == -1 ? 1 : -1];
+#if defined(__GNUC__)
+#define FRESNEL_I_FILM_INLINE static inline __attribute__((always_inline))
+#else
+#define FRESNEL_I_FILM_INLINE static inline
+#endif
+FRESNEL_I_FILM_INLINE int32_t fresnel_i_film_asr(int32_t x, int s)
 {
-    return (int32_t)(((uint32_t)x + 0x80000000u) >> s) - (int32_t)(0x80000000u >> s);
+    return x >> s;
 }
 
 /* a + (b - a) t / 2^15, rounded, t in [0, 2^15]. R: |b - a| <= 65535,
  * times t <= 2^15 plus 2^14 < 2^31. */
-static inline int32_t fresnel_i_film_lerp(int32_t a, int32_t b, int32_t t)
+FRESNEL_I_FILM_INLINE int32_t fresnel_i_film_lerp(int32_t a, int32_t b, int32_t t)
 {
     return a + fresnel_i_film_asr((b - a) * t + (1 << 14), 15);
 }
@@ -120,7 +131,7 @@ fresnel_rgb_q15 fresnel_film_q15_rgb(const fresnel_film_q15 *m, int32_t c_in, fr
     uint32_t c = fresnel_i_q15_arg(c_in), pos, d, x, y, opd, decay;
     int32_t t, zc[FRESNEL_FILM_POLES], zs[FRESNEL_FILM_POLES], acc[3];
     int32_t fr[FRESNEL_FILM_POLES], fi[FRESNEL_FILM_POLES];
-    int i, j, l, ch;
+    int i, j, ch;
     fresnel_rgb_q15 out;
     d = d_in <= 0 ? 0u : (d_in >= FRESNEL_FILM_D_MAX_Q16 ? (uint32_t)FRESNEL_FILM_D_MAX_Q16 : (uint32_t)d_in);
     /* nodes uniform in sqrt(c): sqrt(c) Q30 (lut_q15.c's exact root) to Q15 */
@@ -172,72 +183,105 @@ fresnel_rgb_q15 fresnel_film_q15_rgb(const fresnel_film_q15 *m, int32_t c_in, fr
         zs[j] = fresnel_i_film_asr(sn * mag + (1 << 14), 15);
     }
 
-    for (j = 0; j < FRESNEL_FILM_POLES; j++)
+    for (j = 0; j < FRESNEL_FILM_POLES; j++) {
+        /* F = zeta (A + B zeta) / (1 - P zeta + Q zeta^2) in Q20 */
+        int32_t a = zc[j], b = zs[j], ar, ai, br, bi, pr, pi, qr, qi, z2r, z2i, dr, di, sr, si, nr, ni;
+        int32_t mag, sh, e2, r, xr, xi, out_r, out_i;
+        uint32_t dd, ad, bd;
         fr[j] = fi[j] = 0;
-    for (l = 0; l < FRESNEL_FILM_TERMS; l++) {
-        int jj = l < FRESNEL_FILM_POLES ? l : l - FRESNEL_FILM_POLES;
-        int32_t a = zc[jj], b = zs[jj], kr, ki, qr, qi, dr, di, kzr, kzi, hr, hi_, dsq, r, e, s;
-        uint32_t mm;
         if ((a | b) == 0)
             continue;
-        kr = fresnel_i_film_lerp(lo->kappa_re[l], hi->kappa_re[l], t);
-        ki = fresnel_i_film_lerp(lo->kappa_im[l], hi->kappa_im[l], t);
-        qr = fresnel_i_film_lerp(lo->q_re[l], hi->q_re[l], t);
-        qi = fresnel_i_film_lerp(lo->q_im[l], hi->q_im[l], t);
-        /* den = 1 - q zeta in Q14 (|den| <= 2). R: |q zeta| < 1, each part
-         * of the product below 2^30 in magnitude. */
-        dr = (1 << 14) - fresnel_i_film_asr(qr * a - qi * b, 16);
-        di = -fresnel_i_film_asr(qr * b + qi * a, 16);
-        /* kappa zeta in Q15 (|kappa zeta| < 1), then h = kappa zeta conj(den)
-         * in Q29 (|h| < 2) */
-        kzr = fresnel_i_film_asr(kr * a - ki * b, 15);
-        kzi = fresnel_i_film_asr(kr * b + ki * a, 15);
-        hr = kzr * dr + kzi * di;
-        hi_ = kzi * dr - kzr * di;
-        /* |den|^2 in Q28 (>= 2^8 for |q| <= 1 - 2^-10), normalised to mm in
-         * [2^29, 2^30) by s left shifts; 1/|den|^2 = r 2^(s-1), r = 1/v in
-         * Q15, v = mm / 2^29 in [1, 2) */
-        dsq = dr * dr + di * di;
-        mm = (uint32_t)dsq;
-        s = 0;
-        if (mm < (1u << 14)) { mm <<= 16; s += 16; }
-        if (mm < (1u << 22)) { mm <<= 8; s += 8; }
-        if (mm < (1u << 26)) { mm <<= 4; s += 4; }
-        if (mm < (1u << 28)) { mm <<= 2; s += 2; }
-        if (mm < (1u << 29)) { mm <<= 1; s += 1; }
-        e = (int32_t)((mm >> 21) & 255u);
-        {
-            int32_t g = (int32_t)((mm >> 13) & 255u), ra = fresnel_i_film_recip_q15[e];
-            r = ra - fresnel_i_film_asr((ra - fresnel_i_film_recip_q15[e + 1]) * g + 128, 8);
+        ar = fresnel_i_film_lerp(lo->a_re[j], hi->a_re[j], t);
+        ai = fresnel_i_film_lerp(lo->a_im[j], hi->a_im[j], t);
+        br = fresnel_i_film_lerp(lo->b_re[j], hi->b_re[j], t);
+        bi = fresnel_i_film_lerp(lo->b_im[j], hi->b_im[j], t);
+        pr = fresnel_i_film_lerp(lo->p_re[j], hi->p_re[j], t);
+        pi = fresnel_i_film_lerp(lo->p_im[j], hi->p_im[j], t);
+        qr = fresnel_i_film_lerp(lo->q_re[j], hi->q_re[j], t);
+        qi = fresnel_i_film_lerp(lo->q_im[j], hi->q_im[j], t);
+        /* zeta^2 in Q15. R: |zeta| <= 1, each part below 2^30 */
+        z2r = fresnel_i_film_asr(a * a - b * b + (1 << 14), 15);
+        z2i = fresnel_i_film_asr(a * b + (1 << 13), 14);
+        /* den = 1 - P zeta + Q zeta^2 in Q28: P zeta Q29 (P Q14, |P| < 2),
+         * Q zeta^2 Q30; |den| < 4 */
+        dr = (1 << 28) - fresnel_i_film_asr(pr * a - pi * b, 1) + fresnel_i_film_asr(qr * z2r - qi * z2i, 2);
+        di = -fresnel_i_film_asr(pr * b + pi * a, 1) + fresnel_i_film_asr(qr * z2i + qi * z2r, 2);
+        /* num = zeta (A + B zeta) in Q15 (|A| + |B| < 1) */
+        sr = ar + fresnel_i_film_asr(br * a - bi * b + (1 << 14), 15);
+        si = ai + fresnel_i_film_asr(br * b + bi * a + (1 << 14), 15);
+        nr = fresnel_i_film_asr(a * sr - b * si + (1 << 14), 15);
+        ni = fresnel_i_film_asr(a * si + b * sr + (1 << 14), 15);
+        /* den to 15 bits: den >> sh, the larger part in [2^14, 2^15) */
+        ad = (uint32_t)(dr < 0 ? -dr : dr);
+        bd = (uint32_t)(di < 0 ? -di : di);
+        dd = ad | bd;
+        sh = 0;
+        if (dd >= (1u << 23)) { dd >>= 8; sh += 8; }
+        if (dd >= (1u << 19)) { dd >>= 4; sh += 4; }
+        if (dd >= (1u << 17)) { dd >>= 2; sh += 2; }
+        if (dd >= (1u << 15)) { dd >>= 1; sh += 1; }
+        if (dd >= (1u << 15)) { dd >>= 1; sh += 1; }
+        if (dd < (1u << 7)) { dd <<= 8; sh -= 8; }
+        if (dd < (1u << 11)) { dd <<= 4; sh -= 4; }
+        if (dd < (1u << 13)) { dd <<= 2; sh -= 2; }
+        if (dd < (1u << 14)) { dd <<= 1; sh -= 1; }
+        if (sh > 0) {
+            dr = fresnel_i_film_asr(dr, sh);
+            di = fresnel_i_film_asr(di, sh);
+        } else {
+            dr *= 1 << -sh;
+            di *= 1 << -sh;
         }
-        /* F = h r 2^(s-1) in Q20: h r / 2^15 from h's 15-bit halves (Q29),
-         * then 2^(s - 1 - 9) */
+        /* |den_n|^2 in [2^28, 2^31), to [2^29, 2^30) by e2; r = 2^44 / that, Q15 of 1/v */
+        dd = (uint32_t)(dr * dr) + (uint32_t)(di * di);
+        e2 = 0;
+        if (dd >= (1u << 30)) { dd >>= 1; e2 = 1; }
+        if (dd < (1u << 29)) { dd <<= 1; e2 = -1; }
         {
-            int32_t pr = fresnel_i_film_asr(hr, 15) * r + fresnel_i_film_asr((hr & 0x7fff) * r, 15);
-            int32_t pi = fresnel_i_film_asr(hi_, 15) * r + fresnel_i_film_asr((hi_ & 0x7fff) * r, 15);
-            if (s >= 10) {
-                pr <<= (s - 10);
-                pi <<= (s - 10);
-            } else {
-                pr = fresnel_i_film_asr(pr, 10 - s);
-                pi = fresnel_i_film_asr(pi, 10 - s);
-            }
-            fr[jj] += pr;
-            fi[jj] += pi;
+            int32_t g = (int32_t)((dd >> 13) & 255u), x = (int32_t)((dd >> 21) & 255u);
+            int32_t ra = fresnel_i_film_recip_q15[x];
+            r = ra - fresnel_i_film_asr((ra - fresnel_i_film_recip_q15[x + 1]) * g + 128, 8);
+        }
+        /* num conj(den_n) (|.| < 2^30.5), times r / 2^15 from 15-bit halves;
+         * F = that 2^(4 - e2 - sh) in Q20 */
+        xr = nr * dr + ni * di;
+        xi = ni * dr - nr * di;
+        out_r = fresnel_i_film_asr(xr, 15) * r + fresnel_i_film_asr((xr & 0x7fff) * r, 15);
+        out_i = fresnel_i_film_asr(xi, 15) * r + fresnel_i_film_asr((xi & 0x7fff) * r, 15);
+        mag = 4 - e2 - sh;
+        if (mag >= 0) {
+            /* saturate: |F| is below 2^10 for the generator's tables */
+            int32_t lim = 0x3fffffff >> mag;
+            out_r = out_r > lim ? lim : (out_r < -lim ? -lim : out_r);
+            out_i = out_i > lim ? lim : (out_i < -lim ? -lim : out_i);
+            fr[j] = out_r * (1 << mag);
+            fi[j] = out_i * (1 << mag);
+        } else {
+            fr[j] = fresnel_i_film_asr(out_r, -mag);
+            fi[j] = fresnel_i_film_asr(out_i, -mag);
         }
     }
 
-    /* R = a0 + sum_j Re(w_j F_j): w Q12 times F Q20 from F's 15-bit halves,
-     * Q17 */
-    for (ch = 0; ch < 3; ch++) {
-        int32_t sum = fresnel_i_film_lerp(lo->a0[ch], hi->a0[ch], t) * 8;
+    /* R = a0 + sum_j Re(w_j F_j): w Q12 times F Q20, F split into its top
+     * bits (F >> 15, below 2^15) and low 15 bits, whose products with w
+     * (below 2^30) are summed at 2^-3 of their scale; Q17 */
+    for (ch = 0; ch < 3; ch++)
+        acc[ch] = fresnel_i_film_lerp(lo->a0[ch], hi->a0[ch], t) * 8;
+    {
+        int32_t low[3] = {0, 0, 0};
         for (j = 0; j < FRESNEL_FILM_POLES; j++) {
-            int32_t wr = m->weight[ch][j][0], wi = m->weight[ch][j][1];
-            sum += fresnel_i_film_asr(fr[j], 15) * wr + fresnel_i_film_asr((fr[j] & 0x7fff) * wr, 15);
-            sum -= fresnel_i_film_asr(fi[j], 15) * wi + fresnel_i_film_asr((fi[j] & 0x7fff) * wi, 15);
+            int32_t rh = fresnel_i_film_asr(fr[j], 15), rl = fr[j] & 0x7fff;
+            int32_t ih = fresnel_i_film_asr(fi[j], 15), il = fi[j] & 0x7fff;
+            for (ch = 0; ch < 3; ch++) {
+                int32_t wr = m->weight[ch][j][0], wi = m->weight[ch][j][1];
+                acc[ch] += rh * wr - ih * wi;
+                low[ch] += fresnel_i_film_asr(rl * wr - il * wi, 3);
+            }
         }
-        acc[ch] = fresnel_i_film_asr(sum + 2, 2);
-        acc[ch] = acc[ch] < 0 ? 0 : (acc[ch] > 32768 ? 32768 : acc[ch]);
+        for (ch = 0; ch < 3; ch++) {
+            acc[ch] = fresnel_i_film_asr(acc[ch] + fresnel_i_film_asr(low[ch], 12) + 2, 2);
+            acc[ch] = acc[ch] < 0 ? 0 : (acc[ch] > 32768 ? 32768 : acc[ch]);
+        }
     }
     out.r = (fresnel_q15)acc[0];
     out.g = (fresnel_q15)acc[1];
