@@ -53,6 +53,24 @@ typedef struct fresnel_film_q15 {
 fresnel_rgb_q15 fresnel_film_q15_rgb(const fresnel_film_q15 *m, int32_t c, fresnel_q16 d_nm);
 #endif
 
+#if FRESNEL_HAS_F16
+typedef struct fresnel_rgb_f16 {
+    fresnel_f16 r, g, b;
+} fresnel_rgb_f16;
+typedef struct fresnel_film_node_f16 {
+    fresnel_f16 a0[3];
+    fresnel_f16 opd, decay;
+    fresnel_f16 a_re[FRESNEL_FILM_POLES], a_im[FRESNEL_FILM_POLES], b_re[FRESNEL_FILM_POLES], b_im[FRESNEL_FILM_POLES];
+    fresnel_f16 p_re[FRESNEL_FILM_POLES], p_im[FRESNEL_FILM_POLES], q_re[FRESNEL_FILM_POLES], q_im[FRESNEL_FILM_POLES];
+} fresnel_film_node_f16;
+typedef struct fresnel_film_f16 {
+    fresnel_f16 freq[FRESNEL_FILM_POLES], damp[FRESNEL_FILM_POLES];
+    fresnel_f16 weight[3][FRESNEL_FILM_POLES][2];
+    fresnel_film_node_f16 node[FRESNEL_FILM_NODES];
+} fresnel_film_f16;
+fresnel_rgb_f16 fresnel_film_f16_rgb(const fresnel_film_f16 *m, fresnel_f16 c, fresnel_f16 d_nm);
+#endif
+
 #ifdef __cplusplus
 }
 #endif

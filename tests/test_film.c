@@ -43,8 +43,8 @@ static void de_add(de_stats *s, double de, const char *sub, double nf, double th
 
 static double clamp01(double x) { return x > 0.0 ? (x < 1.0 ? x : 1.0) : 0.0; }
 
-enum { T_MODEL, T_F32, T_Q15, T_TYPES };
-static const char *const type_names[] = {"double model", "binary32", "Q1.15"};
+enum { T_MODEL, T_F32, T_Q15, T_F16, T_TYPES };
+static const char *const type_names[] = {"double model", "binary32", "Q1.15", "binary16"};
 
 static void de_matrix(const gen_context *g, const film_model *poles, spectrum *const *s, int full)
 {
@@ -54,6 +54,9 @@ static void de_matrix(const gen_context *g, const film_model *poles, spectrum *c
     film_model *m = malloc(sizeof *m), *m32 = malloc(sizeof *m32);
     fresnel_film *f32 = malloc(sizeof *f32);
     fresnel_film_q15 *q15 = malloc(sizeof *q15);
+#if FRESNEL_HAS_F16
+    fresnel_film_f16 *f16 = malloc(sizeof *f16);
+#endif
     int n_films = full ? 14 : 5, theta_step = full ? 1 : 5, i, a, k, ty;
     double d_step = full ? 5.0 : 10.0;
     memset(st, 0, sizeof st);
@@ -75,6 +78,9 @@ static void de_matrix(const gen_context *g, const film_model *poles, spectrum *c
                 continue;
             }
             film_encode_f32(m, f32);
+#if FRESNEL_HAS_F16
+            film_encode_f16(m, f16);
+#endif
             for (a = 0; a <= 89; a = a == 85 ? 89 : a + theta_step) {
                 double c = cos(a * 3.14159265358979323846 / 180.0);
                 film_optics_table *t = film_truth_prepare(&f, c);
@@ -94,6 +100,16 @@ static void de_matrix(const gen_context *g, const film_model *poles, spectrum *c
                     rgb[T_Q15][0] = rq.r / 32768.0;
                     rgb[T_Q15][1] = rq.g / 32768.0;
                     rgb[T_Q15][2] = rq.b / 32768.0;
+#if FRESNEL_HAS_F16
+                    {
+                        fresnel_rgb_f16 rh = fresnel_film_f16_rgb(f16, (fresnel_f16)c, (fresnel_f16)d);
+                        rgb[T_F16][0] = (double)rh.r;
+                        rgb[T_F16][1] = (double)rh.g;
+                        rgb[T_F16][2] = (double)rh.b;
+                    }
+#else
+                    memcpy(rgb[T_F16], rgb[T_MODEL], sizeof rgb[T_F16]);
+#endif
                     lab_space_lab(&ls, truth, lab0);
                     for (ty = 0; ty < T_TYPES; ty++) {
                         lab_space_lab(&ls, rgb[ty], lab);
@@ -110,6 +126,10 @@ static void de_matrix(const gen_context *g, const film_model *poles, spectrum *c
     CHECK("film binary32: CIEDE2000 mean <= 0.5 and max <= 2.0 against the spectral truth",
           st[T_F32].sum / st[T_F32].n <= 0.5 && st[T_F32].max <= 2.0, "mean %.3f max %.3f",
           st[T_F32].sum / st[T_F32].n, st[T_F32].max);
+#if FRESNEL_HAS_F16
+    CHECK("film binary16: CIEDE2000 mean <= 1.0 against the spectral truth", st[T_F16].sum / st[T_F16].n <= 1.0,
+          "mean %.3f", st[T_F16].sum / st[T_F16].n);
+#endif
     CHECK("film Q1.15: CIEDE2000 mean <= 0.6 and max <= 2.5 against the spectral truth",
           st[T_Q15].sum / st[T_Q15].n <= 0.6 && st[T_Q15].max <= 2.5, "mean %.3f max %.3f",
           st[T_Q15].sum / st[T_Q15].n, st[T_Q15].max);
@@ -117,6 +137,9 @@ static void de_matrix(const gen_context *g, const film_model *poles, spectrum *c
     free(m32);
     free(f32);
     free(q15);
+#if FRESNEL_HAS_F16
+    free(f16);
+#endif
 }
 
 int main(void)

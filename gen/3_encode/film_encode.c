@@ -3,6 +3,7 @@
 
 #include <complex.h>
 #include <math.h>
+#include <stddef.h>
 
 #define J FRESNEL_FILM_POLES
 #define NODES FRESNEL_FILM_NODES
@@ -148,3 +149,32 @@ void film_decode_q15(const fresnel_film_q15 *in, film_model *m)
         }
     }
 }
+
+#if FRESNEL_HAS_F16
+/* The binary32 constants rounded to half, field by field (the layouts are
+ * the same). */
+void film_encode_f16(const film_model *m, fresnel_film_f16 *out)
+{
+    fresnel_film f;
+    const float *src;
+    fresnel_f16 *dst = (fresnel_f16 *)out;
+    size_t i, n = sizeof f / sizeof(float);
+    typedef char same_layout[sizeof(fresnel_film_f16) * 2 == sizeof(fresnel_film) ? 1 : -1];
+    (void)sizeof(same_layout);
+    film_encode_f32(m, &f);
+    src = (const float *)&f;
+    for (i = 0; i < n; i++)
+        dst[i] = (fresnel_f16)src[i];
+}
+
+void film_decode_f16(const fresnel_film_f16 *in, film_model *m)
+{
+    fresnel_film f;
+    float *dst = (float *)&f;
+    const fresnel_f16 *src = (const fresnel_f16 *)in;
+    size_t i, n = sizeof f / sizeof(float);
+    for (i = 0; i < n; i++)
+        dst[i] = (float)src[i];
+    film_decode_f32(&f, m);
+}
+#endif

@@ -13,5 +13,9 @@ void film_decode_f32(const fresnel_film *in, film_model *m);
  * weights |2 c| < 8). */
 int film_encode_q15(const film_model *m, fresnel_film_q15 *out);
 void film_decode_q15(const fresnel_film_q15 *in, film_model *m);
+#if FRESNEL_HAS_F16
+void film_encode_f16(const film_model *m, fresnel_film_f16 *out);
+void film_decode_f16(const fresnel_film_f16 *in, film_model *m);
+#endif
 
 #endif
