@@ -16,6 +16,9 @@ extern "C" {
 #define FRESNEL_FILM_POLES 6
 #define FRESNEL_FILM_NODES 32
 #define FRESNEL_FILM_D_MAX 5000.0f
+#define FRESNEL_BOUND_FILM 1.5e-6f
+#define FRESNEL_BOUND_FILM_Q15 24.0
+#define FRESNEL_BOUND_FILM_F16 8e-3
 
 typedef struct fresnel_film_node {
     float a0[3];
