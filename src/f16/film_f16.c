@@ -1,14 +1,32 @@
 /* Thin-film iridescence in binary16 (fresnel_film.h): the algorithm of
  * src/f32/film.c with every operation rounded to half (the helpers of
- * internal.h), as a mediump shader evaluates it; cos, sin and exp are
- * sinf, cosf and expf of the half value, rounded to half (a GPU's
- * built-ins). The phase is d (opd nu) - d (decay gamma) turns, its
- * fraction taken in half: a film of 1000 nm at n_f 2.5 is 12 turns, where
- * binary16 keeps 2^-7 of a turn. */
+ * internal.h), as a mediump shader evaluates it; cos and sin of the half
+ * angle and exp are evaluated in binary32 and rounded to half (a GPU's
+ * built-ins): cos, sin by the quarter-turn reduction and Taylor
+ * polynomials of src/f32/film.c (this folder is self-contained), exp by
+ * expf. The phase is d (opd nu) - d (decay gamma) turns, its fraction
+ * taken in half: a film of 1000 nm at n_f 2.5 is 12 turns, where binary16
+ * keeps 2^-7 of a turn. */
 #include "internal.h"
 #include "fresnel_film.h"
 
 #if FRESNEL_HAS_F16
+
+/* cos, sin of 2 pi r for r in [0, 1), in binary32 (errors below 4e-7) */
+static void fresnel_i_film_cis_h(float r, float *co, float *si)
+{
+    float q4 = r * 4.0f;
+    int32_t q = (int32_t)(q4 + 0.5f);
+    float x = 6.28318530718f * (r - 0.25f * (float)q), x2 = x * x;
+    float s = x * (1.0f - x2 * (1.0f / 6.0f - x2 * (1.0f / 120.0f - x2 * (1.0f / 5040.0f))));
+    float c = 1.0f - x2 * (0.5f - x2 * (1.0f / 24.0f - x2 * (1.0f / 720.0f - x2 * (1.0f / 40320.0f))));
+    switch ((uint32_t)q & 3u) {
+    case 0: *co = c; *si = s; break;
+    case 1: *co = -s; *si = c; break;
+    case 2: *co = -c; *si = -s; break;
+    default: *co = s; *si = -c; break;
+    }
+}
 
 fresnel_rgb_f16 fresnel_film_f16_rgb(const fresnel_film_f16 *m, fresnel_f16 c_in, fresnel_f16 d_in)
 {
@@ -33,13 +51,15 @@ fresnel_rgb_f16 fresnel_film_f16_rgb(const fresnel_film_f16 *m, fresnel_f16 c_in
     for (j = 0; j < FRESNEL_FILM_POLES; j++) {
         fresnel_i_h nu = m->freq[j], ga = m->damp[j];
         fresnel_i_h turns = fresnel_i_hsub(fresnel_i_hmul(d, fresnel_i_hmul(opd, nu)), fresnel_i_hmul(d, fresnel_i_hmul(decay, ga)));
-        fresnel_i_h frac = fresnel_i_hsub(turns, (fresnel_i_h)floorf((float)turns));
-        fresnel_i_h angle = fresnel_i_hmul(fresnel_i_hc(6.28318530718f), frac);
+        float whole = (float)(int32_t)(float)turns, cos_a, sin_a;
+        fresnel_i_h frac = fresnel_i_hsub(turns, (fresnel_i_h)(whole > (float)turns ? whole - 1.0f : whole));
         fresnel_i_h w = fresnel_i_hmul(fresnel_i_hc(6.28318530718f),
                                        fresnel_i_hmul(d, fresnel_i_hadd(fresnel_i_hmul(opd, ga), fresnel_i_hmul(decay, nu))));
         fresnel_i_h mag = (fresnel_i_h)expf(-(float)w);
-        fresnel_i_h a = fresnel_i_hmul(mag, (fresnel_i_h)cosf((float)angle));
-        fresnel_i_h b = fresnel_i_hmul(mag, (fresnel_i_h)sinf((float)angle));
+        fresnel_i_h a, b;
+        fresnel_i_film_cis_h((float)frac, &cos_a, &sin_a);
+        a = fresnel_i_hmul(mag, (fresnel_i_h)cos_a);
+        b = fresnel_i_hmul(mag, (fresnel_i_h)sin_a);
         fresnel_i_h ar = FRESNEL_I_FILM_LERP(a_re[j]), ai = FRESNEL_I_FILM_LERP(a_im[j]);
         fresnel_i_h br = FRESNEL_I_FILM_LERP(b_re[j]), bi = FRESNEL_I_FILM_LERP(b_im[j]);
         fresnel_i_h pr = FRESNEL_I_FILM_LERP(p_re[j]), pi = FRESNEL_I_FILM_LERP(p_im[j]);
