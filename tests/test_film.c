@@ -405,10 +405,15 @@ static void test_outside_goal(const gen_context *g, const film_model *poles, spe
         if (pass < 2)
             NOTE("film %s under a %.1f film, d 1000-5000 nm, theta 0-85: CIEDE2000 mean %.3f max %.3f (double model)",
                  substrates[pass == 1 ? 5 : 0], f.film_n, sum / cnt, max);
-        else
+        else {
+            fresnel_film_q15 *q15 = malloc(sizeof *q15);
             NOTE("film gold under a 1.2 film in glass (1.52; critical angle %.1f deg), d 0-1000 nm: CIEDE2000 mean "
                  "%.3f max %.3f; more than 10 deg from the critical angle mean %.3f max %.3f (double model)",
                  theta_c, sum / cnt, max, sum_far / cnt_far, max_far);
+            CHECK("film Q1.15 layout refuses the table of a film in total reflection (its A, B leave [-1, 1])",
+                  q15 && film_encode_q15(m, q15) == -1, "encoded");
+            free(q15);
+        }
     }
     free(m);
 }
