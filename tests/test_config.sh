@@ -89,7 +89,7 @@ C
     # binary32 symbols: public fresnel_* without _q15/_f16, and internal
     # helpers other than the fixed-point ones (fresnel_i_qf*, the log2/exp2
     # tables) and the binary16 ones (*_h)
-    float_defs=$(printf '%s\n' $defs | grep '^fresnel_' | grep -v -e '_q15' -e '_f16$' -e '^fresnel_i_.*_h$' \
+    float_defs=$(printf '%s\n' $defs | grep '^fresnel_' | grep -v -e '_q15' -e '_f16$' -e '_f16_rgb$' -e '^fresnel_i_.*_h$' \
         -e '^fresnel_i_\(qf\|a_qf\|exp2_t$\|log2_r$\|log2_t$\|range_fail$\)' \
         -e '^fresnel_isqrt_u32$' -e '^fresnel_udiv_frac_u32$' -e '^fresnel_recip_q16$' | tr '\n' ' ')
     if [ -z "$errs" ] && [ -z "$float_defs" ] && printf '%s\n' $defs | grep -qx fresnel_schlick_q15 &&

@@ -10,6 +10,7 @@
  *   dominant_wavelength.c  white->primary ray meets the spectral locus
  *   gaussian_window.c      RGB eta', kappa' around the dominant wavelengths
  *   ground_truth.c         spectral Fresnel x illuminant x CMFs -> RGB
+ *   film_truth.c           the same for a thin film on a substrate (Airy)
  *   fit.c                  black-box RGB eta, kappa fit to the ground truth
  *
  * Host only (stdio, libm, malloc allowed). Errors are printed as
@@ -184,5 +185,38 @@ void gaussian_window(const spectrum *s, const double nm[3], double sigma, double
 /* ---- ground_truth.c: RGB reflectance at cosine c, incident medium of index n1. */
 void ground_truth(const spectrum *s, const colorimetry *cm, const colour_space *cs, double n1,
                   double c, double rgb[3]);
+/* The integration itself, for any spectral reflectance: reflectance(ctx,
+ * node, nm) at the 0.1 nm grid node `node` (a whole nanometre, nm), summed
+ * against D65 and the CMFs at 1 nm and mapped to cs's RGB. ground_truth is
+ * this with the bare interface's exact Fresnel, film_truth (film_truth.c)
+ * with a thin film's. */
+typedef double spectral_reflectance(const void *ctx, int node, double nm);
+void ground_truth_of(spectral_reflectance *reflectance, const void *ctx, const colorimetry *cm,
+                     const colour_space *cs, double rgb[3]);
+
+/* ---- film_truth.c: a thin film between the incident medium and a
+ * substrate (film_truth.c's opening comment gives the optics). */
+typedef struct film_stack {
+    double n1;                 /* incident medium, real index */
+    const spectrum *film;      /* the film's n, k per node, or NULL: film_n below */
+    double film_n;             /* a non-dispersive, non-absorbing film (film == NULL) */
+    const spectrum *substrate; /* any material: metal or dielectric */
+} film_stack;
+/* The largest thickness the spectral truth resolves (film_truth.c). */
+#define FILM_TRUTH_D_MAX_NM 5000.0
+/* RGB reflectance of the stack at cosine c (in the incident medium, clamped
+ * to [0, 1]) and film thickness d nm (clamped to [0, FILM_TRUTH_D_MAX_NM];
+ * NaN gives 0). d = 0 and a film matching n1 give ground_truth's result. */
+void film_truth(const film_stack *f, const colorimetry *cm, const colour_space *cs, double c,
+                double d_nm, double rgb[3]);
+/* The same for many thicknesses at one cosine: the interface amplitudes at
+ * every CMF wavelength, computed once (film_truth_prepare; malloc'd, NULL
+ * when out of memory; free()), then film_truth_at per thickness. */
+typedef struct film_optics_table film_optics_table;
+film_optics_table *film_truth_prepare(const film_stack *f, double c);
+void film_truth_at(const film_optics_table *t, const colorimetry *cm, const colour_space *cs, double d_nm,
+                   double rgb[3]);
+/* The stack's n, k at CMF sample j (360 + j nm): film and substrate. */
+void film_stack_index(const film_stack *f, int j, double n_film[2], double n_sub[2]);
 
 #endif

@@ -37,6 +37,11 @@ FRESNEL_I_HIDDEN fresnel_qf fresnel_i_a_qf(const fresnel_ior_prep_q15 *m, uint32
 /* 1 - exact Fresnel of m at c (exact_q15.c), in qf: Cook-Torrance's T(c). */
 FRESNEL_I_HIDDEN fresnel_qf fresnel_i_conductor_transmittance_q15(const fresnel_ior_prep_q15 *m, uint32_t c);
 
+/* The thin film's tables (film_q15.c), exposed for their test. */
+FRESNEL_I_HIDDEN extern const uint16_t fresnel_i_film_sin_q15[257];
+FRESNEL_I_HIDDEN extern const uint16_t fresnel_i_film_exp2_q15[65];
+FRESNEL_I_HIDDEN extern const uint16_t fresnel_i_film_recip_q15[257];
+
 #define FRESNEL_I_RGB_Q15(expr_r, expr_g, expr_b) \
     do { fresnel_rgb_q15 out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
 

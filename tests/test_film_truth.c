@@ -1,0 +1,295 @@
+/* The thin film's spectral truth (gen/1_spectral/film_truth.c): its
+ * identities with today's ground truth, an independent evaluation by the
+ * characteristic-matrix method, total internal reflection inside the film,
+ * the film's critical angle, grazing light, extreme and hostile
+ * thicknesses. */
+#include <complex.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "2_derive/derive.h"
+#include "common/reference_film.h"
+#include "1_spectral/spectral.h"
+
+static const char *const substrates[] = {"au", "cu", "al", "ti", "fe", "bk7"};
+#define N_SUB 6
+
+static double max_diff3(const double a[3], const double b[3])
+{
+    double m = 0.0;
+    int ch;
+    for (ch = 0; ch < 3; ch++)
+        if (!(fabs(a[ch] - b[ch]) <= m))
+            m = fabs(a[ch] - b[ch]);
+    return m;
+}
+
+/* ---- an independent film: the characteristic matrix of the layer
+ * [Born & Wolf 1.6.2; Macleod, Thin-Film Optical Filters, ch. 2], written
+ * for this project's exp(-i w t), N = n + i k (Macleod's exp(i w t),
+ * N = n - i k form conjugated, which leaves |r|^2 as it is):
+ *   [B; C] = [[cos d, -i sin d / y_f], [-i y_f sin d, cos d]] [1; y_3],
+ *   r = (y_1 B - C) / (y_1 B + C),
+ * d = 2 pi t N_f cos(theta_f) / lambda, tilted admittances y = N cos(theta)
+ * (s) and N / cos(theta) (p), each cos(theta) from Snell's law as
+ * sqrt(1 - (n1 sin(theta_1) / N)^2) on the decaying branch. No Fresnel
+ * coefficient and no Airy sum appear. Valid away from xi = 0 (the p
+ * admittance is infinite there): the checks below keep c > 0 and avoid
+ * the film's critical angle. */
+static double complex cos_in(double complex n, double n1, double c)
+{
+    double complex sin_t = n1 * sqrt((1.0 - c) * (1.0 + c)) / n;
+    double complex w = csqrt(1.0 - sin_t * sin_t);
+    /* decaying branch: Im(n cos) >= 0 */
+    if (cimag(n * w) < 0.0 || (cimag(n * w) == 0.0 && creal(n * w) < 0.0))
+        w = -w;
+    return w;
+}
+
+static double matrix_reflectance(double n1, double complex nf, double complex n3, double c, double t,
+                                 double lambda)
+{
+    double complex cf = cos_in(nf, n1, c), c3 = cos_in(n3, n1, c);
+    double complex delta = 2.0 * 3.14159265358979323846 * t * nf * cf / lambda;
+    double sum = 0.0;
+    int pol;
+    for (pol = 0; pol < 2; pol++) {
+        double complex y1 = pol ? n1 / c : n1 * c;
+        double complex yf = pol ? nf / cf : nf * cf;
+        double complex y3 = pol ? n3 / c3 : n3 * c3;
+        double complex b = ccos(delta) - I * csin(delta) / yf * y3;
+        double complex cc = -I * yf * csin(delta) + ccos(delta) * y3;
+        double complex r = (y1 * b - cc) / (y1 * b + cc);
+        sum += creal(r * conj(r));
+    }
+    return 0.5 * sum;
+}
+
+static void matrix_truth(const film_stack *f, const gen_context *g, double c, double t, double rgb[3])
+{
+    double x = 0.0, y = 0.0, z = 0.0, norm = 0.0;
+    int j, ch;
+    for (j = 0; j < CMF_N; j++) {
+        double nf[2], ns[2], r;
+        film_stack_index(f, j, nf, ns);
+        r = matrix_reflectance(f->n1, nf[0] + I * nf[1], ns[0] + I * ns[1], c, t, 360.0 + j);
+        x += r * g->cm.d65[j] * g->cm.xbar[j];
+        y += r * g->cm.d65[j] * g->cm.ybar[j];
+        z += r * g->cm.d65[j] * g->cm.zbar[j];
+        norm += g->cm.d65[j] * g->cm.ybar[j];
+    }
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = (g->cs.xyz_to_rgb[ch][0] * x + g->cs.xyz_to_rgb[ch][1] * y + g->cs.xyz_to_rgb[ch][2] * z) / norm;
+}
+
+static void test_identities(const gen_context *g, spectrum *const *s)
+{
+    static const double n1s[] = {1.0, 1.333, 1.52};
+    static const double nfs[] = {1.2, 1.5, 2.5};
+    static const double cosines[] = {0.0, 0.017452, 0.1, 0.5, 0.8660254, 1.0};
+    static const double thick[] = {1.0, 100.0, 777.7, 5000.0};
+    double worst_d0 = 0.0, worst_match = 0.0;
+    int i, a, b, k, n;
+    for (i = 0; i < N_SUB; i++)
+        for (a = 0; a < 3; a++)
+            for (k = 0; k < 6; k++) {
+                double gt[3], rgb[3];
+                film_stack f;
+                ground_truth(s[i], &g->cm, &g->cs, n1s[a], cosines[k], gt);
+                f.n1 = n1s[a];
+                f.film = NULL;
+                f.substrate = s[i];
+                for (b = 0; b < 3; b++) {
+                    f.film_n = nfs[b];
+                    film_truth(&f, &g->cm, &g->cs, cosines[k], 0.0, rgb);
+                    if (!(max_diff3(rgb, gt) <= worst_d0))
+                        worst_d0 = max_diff3(rgb, gt);
+                }
+                f.film_n = n1s[a];
+                for (n = 0; n < 4; n++) {
+                    film_truth(&f, &g->cm, &g->cs, cosines[k], thick[n], rgb);
+                    if (!(max_diff3(rgb, gt) <= worst_match))
+                        worst_match = max_diff3(rgb, gt);
+                }
+            }
+    CHECK("film truth: d = 0 is ground_truth (6 substrates, 3 ambients, 3 films, 6 cosines)", worst_d0 <= 1e-12,
+          "worst %.3g", worst_d0);
+    CHECK("film truth: a film of the ambient's index is ground_truth at every d", worst_match <= 1e-12,
+          "worst %.3g", worst_match);
+}
+
+static void test_independent(const gen_context *g, spectrum *const *s, const spectrum *dispersive)
+{
+    static const double nfs[] = {1.2, 1.38, 1.8, 2.5};
+    static const double cosines[] = {0.017452, 0.2, 0.6, 1.0};
+    static const double thick[] = {0.0, 35.0, 310.0, 1000.0, 4000.0};
+    double worst = 0.0;
+    int i, b, k, n, count = 0;
+    for (i = 0; i <= N_SUB; i++)
+        for (b = 0; b < 4; b++)
+            for (k = 0; k < 4; k++)
+                for (n = 0; n < 5; n++) {
+                    film_stack f;
+                    double a[3], m[3];
+                    f.n1 = b == 1 ? 1.333 : 1.0;
+                    f.film = i == N_SUB ? dispersive : NULL; /* a dispersive film on gold */
+                    f.film_n = nfs[b];
+                    f.substrate = i == N_SUB ? s[0] : s[i];
+                    film_truth(&f, &g->cm, &g->cs, cosines[k], thick[n], a);
+                    matrix_truth(&f, g, cosines[k], thick[n], m);
+                    if (!(max_diff3(a, m) <= worst))
+                        worst = max_diff3(a, m);
+                    count++;
+                }
+    CHECK("film truth = characteristic-matrix film within 1e-6 per channel (Airy vs matrix, 560 stacks)",
+          worst <= 1e-6, "worst %.3g over %d", worst, count);
+    NOTE("film truth vs characteristic matrix: largest difference %.3g over %d stacks", worst, count);
+}
+
+/* A film less dense than the incident medium: past its critical angle the
+ * wave in the film is evanescent. Thick, nothing tunnels to the substrate
+ * and the film reflects everything; thin, the substrate is reached
+ * (frustrated total reflection). Gold under a low-index gap in glass is the
+ * Otto configuration: the tunnelling light meets gold's surface plasmon. */
+static void test_total_reflection(const gen_context *g, spectrum *const *s)
+{
+    film_stack f;
+    double rgb[3], m[3], one[3] = {1.0, 1.0, 1.0}, worst_thick = 0.0, worst_matrix = 0.0;
+    double c_crit, c, sigma, nf;
+    int i, k;
+    f.n1 = 1.52;
+    f.film = NULL;
+    f.film_n = 1.2;
+    c_crit = sqrt(1.0 - (1.2 / 1.52) * (1.2 / 1.52));
+    for (i = 0; i < N_SUB; i++) {
+        f.substrate = s[i];
+        for (k = 0; k < 8; k++) {
+            c = c_crit * k / 9.0;
+            film_truth(&f, &g->cm, &g->cs, c, 5000.0, rgb);
+            if (!(max_diff3(rgb, one) <= worst_thick))
+                worst_thick = max_diff3(rgb, one);
+            film_truth(&f, &g->cm, &g->cs, c, 150.0, rgb);
+            matrix_truth(&f, g, c > 0.0 ? c : 1e-9, 150.0, m);
+            if (c > 0.0 && !(max_diff3(rgb, m) <= worst_matrix))
+                worst_matrix = max_diff3(rgb, m);
+        }
+    }
+    CHECK("film truth, total reflection in the film: a 5 um film reflects 1 past the critical angle",
+          worst_thick <= 1e-9, "worst |R - 1| %.3g", worst_thick);
+    CHECK("film truth, frustrated total reflection (150 nm) = characteristic matrix within 1e-6",
+          worst_matrix <= 1e-6, "worst %.3g", worst_matrix);
+    /* Otto: gold behind 30 nm of the film, just past the critical angle,
+     * takes light that the thick film reflects: red below 1. */
+    f.substrate = s[0];
+    film_truth(&f, &g->cm, &g->cs, c_crit * 0.9, 30.0, rgb);
+    CHECK("film truth, frustrated total reflection: light tunnels through 30 nm of film to gold",
+          rgb[0] < 1.0 - 1e-3, "red %.6f", rgb[0]);
+
+    /* The film's critical angle itself (xi_f = 0 exactly): a film index
+     * whose square is sigma in binary64, so the 0/0 limit is taken; the
+     * truth there is continuous with its neighbours. */
+    /* A stack where xi_f is exactly 0: n1 = 2, dyadic cosines c (so that
+     * sigma = 4 (1 - c)(1 + c) is exact) and nf the root of sigma, until
+     * nf^2 rounds to sigma itself. */
+    f.n1 = 2.0;
+    sigma = 0.0;
+    nf = 0.0;
+    for (k = 0; k < 512; k++) {
+        c = 0.5 + k / 1024.0;
+        sigma = 4.0 * ((1.0 - c) * (1.0 + c));
+        nf = sqrt(sigma);
+        if (nf * nf == sigma)
+            break;
+    }
+    f.film_n = nf;
+    {
+        ref_film_optics o;
+        double near[3], lo = 0.0, d_max = 0.0;
+        ref_film_optics_at(f.n1, ref_complex(nf, 0.0), ref_complex(s[0]->n[2000], s[0]->k[2000]), c, &o);
+        for (k = 0; k < 3; k++) {
+            double d = k == 0 ? 0.0 : (k == 1 ? 40.0 : 900.0);
+            film_truth(&f, &g->cm, &g->cs, c, d, rgb);
+            film_truth(&f, &g->cm, &g->cs, c + 1e-9, d, near);
+            lo = max_diff3(rgb, near);
+            if (!(lo <= d_max))
+                d_max = lo;
+        }
+        CHECK("film truth at the film's critical angle (xi_f = 0 exactly): finite and continuous (1e-6)",
+              sigma == nf * nf && o.xi_f == 0.0 && d_max <= 1e-6, "xi_f %g, jump %.3g", cabs(o.xi_f), d_max);
+    }
+}
+
+static void test_grazing_and_extremes(const gen_context *g, spectrum *const *s)
+{
+    static const double thick[] = {0.0, 1e-9, 0.5, 1000.0, 5000.0};
+    film_stack f;
+    double rgb[3], ref[3], one[3] = {1.0, 1.0, 1.0}, worst_grazing = 0.0, worst_tiny = 0.0;
+    double gt[3], worst_clamp = 0.0;
+    int i, n;
+    f.n1 = 1.0;
+    f.film = NULL;
+    f.film_n = 1.8;
+    for (i = 0; i < N_SUB; i++) {
+        f.substrate = s[i];
+        for (n = 0; n < 5; n++) {
+            film_truth(&f, &g->cm, &g->cs, 0.0, thick[n], rgb);
+            if (!(max_diff3(rgb, one) <= worst_grazing))
+                worst_grazing = max_diff3(rgb, one);
+        }
+        ground_truth(s[i], &g->cm, &g->cs, 1.0, 0.7, gt);
+        film_truth(&f, &g->cm, &g->cs, 0.7, 1e-9, rgb);
+        if (!(max_diff3(rgb, gt) <= worst_tiny))
+            worst_tiny = max_diff3(rgb, gt);
+        /* hostile thicknesses: the documented clamps */
+        film_truth(&f, &g->cm, &g->cs, 0.7, 0.0, gt);
+        film_truth(&f, &g->cm, &g->cs, 0.7, -5.0, rgb);
+        worst_clamp = fmax(worst_clamp, max_diff3(rgb, gt));
+        film_truth(&f, &g->cm, &g->cs, 0.7, NAN, rgb);
+        worst_clamp = fmax(worst_clamp, max_diff3(rgb, gt));
+        film_truth(&f, &g->cm, &g->cs, 0.7, FILM_TRUTH_D_MAX_NM, ref);
+        film_truth(&f, &g->cm, &g->cs, 0.7, 1e300, rgb);
+        worst_clamp = fmax(worst_clamp, max_diff3(rgb, ref));
+        film_truth(&f, &g->cm, &g->cs, 0.7, INFINITY, rgb);
+        worst_clamp = fmax(worst_clamp, max_diff3(rgb, ref));
+        film_truth(&f, &g->cm, &g->cs, NAN, 300.0, rgb);
+        film_truth(&f, &g->cm, &g->cs, 0.0, 300.0, ref);
+        worst_clamp = fmax(worst_clamp, max_diff3(rgb, ref));
+    }
+    CHECK("film truth at grazing incidence (c = 0) is (1,1,1) at every thickness", worst_grazing <= 1e-12,
+          "worst %.3g", worst_grazing);
+    CHECK("film truth: a 1e-9 nm film is the bare substrate within 1e-9", worst_tiny <= 1e-9, "worst %.3g",
+          worst_tiny);
+    CHECK("film truth clamps: d < 0 and NaN as 0, d > FILM_TRUTH_D_MAX_NM and Inf as the maximum, c NaN as 0",
+          worst_clamp == 0.0, "worst %.3g", worst_clamp);
+}
+
+int main(void)
+{
+    gen_context *g = malloc(sizeof *g);
+    spectrum *s[N_SUB], *dispersive = malloc(sizeof *dispersive);
+    int i, ok = g && dispersive;
+    for (i = 0; i < N_SUB; i++) {
+        s[i] = malloc(sizeof *s[i]);
+        ok = ok && s[i];
+    }
+    if (!ok || gen_context_load(data_dir(NULL), "srgb", g) || spectrum_load(data_dir(NULL), "sf11", dispersive)) {
+        CHECK("film truth: data loads", 0, "colorimetry or materials missing");
+        return harness_exit();
+    }
+    for (i = 0; i < N_SUB; i++)
+        if (spectrum_load(data_dir(NULL), substrates[i], s[i])) {
+            CHECK("film truth: substrates load", 0, "%s", substrates[i]);
+            return harness_exit();
+        }
+    test_identities(g, s);
+    test_independent(g, s, dispersive);
+    test_total_reflection(g, s);
+    test_grazing_and_extremes(g, s);
+    for (i = 0; i < N_SUB; i++)
+        free(s[i]);
+    free(dispersive);
+    free(g);
+    return harness_exit();
+}
