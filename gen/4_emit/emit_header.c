@@ -210,9 +210,13 @@ int emit_header(FILE *f, const emit_input *in)
         fprintf(f, " %s", sc->types[m]);
     fprintf(f, ".\n");
     emit_material_list(f, in);
-    fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n", guard, guard);
+    fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n", guard, guard);
+    /* The runtime headers of the scene's types only, each skipped where it
+     * is already in (a single-file runtime, ports/single.sh, holds it). */
+    if (scene_has_type(sc, "f32"))
+        fprintf(f, "#ifndef FRESNEL_H\n#include \"fresnel.h\"\n#endif\n");
     if (scene_has_type(sc, "q15"))
-        fprintf(f, "#include \"fresnel_fixed.h\"\n");
+        fprintf(f, "#ifndef FRESNEL_FIXED_H\n#include \"fresnel_fixed.h\"\n#endif\n");
     fputc('\n', f);
     fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
                "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");
