@@ -55,7 +55,7 @@ all: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(SINGLE) $(BUILD)/scene_example
 single: $(SINGLE)
 $(BUILD)/single/fresnel_single_%.h: ports/single.sh $(wildcard include/*.h) $(wildcard src/*/*)
 	@mkdir -p $(@D)
-	sh ports/single.sh $* > $@
+	sh ports/single.sh $* > $@.tmp && mv $@.tmp $@
 
 # The default scene: its generated header and a program built against it.
 SCENE := data/scenes/default.scene
@@ -121,7 +121,7 @@ $(BUILD)/tests/gen_matrix_check: tests/gen_matrix_check.c $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(BUILD)/libfresnel.a $(LDLIBS)
 
-test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
+test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
            $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit \
            $(BUILD)/vulkan/vulkan_test
 

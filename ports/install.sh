@@ -7,7 +7,7 @@
 #   lib/cmake/fresnel/fresnelConfig.cmake + fresnelConfigVersion.cmake
 #   (imported target fresnel::fresnel), bin/fresnel, share/fresnel/data/ (the
 #   data pack, which the installed bin/fresnel finds without --data),
-#   share/fresnel/glsl/ (the GLSL port), share/fresnel/LICENSE,
+#   share/fresnel/glsl/ and hlsl/ (the shader ports), share/fresnel/LICENSE,
 # and share/fresnel/install_manifest.txt: one line per installed file
 # ("f PATH") and per directory the install created ("d PATH"), relative to
 # DESTDIR/PREFIX. uninstall removes exactly those files, then those
@@ -131,6 +131,7 @@ uninstall() {
 
 if [ "$action" = uninstall ]; then
     uninstall
+    echo "uninstalled fresnel from $root: every file and directory its install_manifest.txt listed"
     exit 0
 fi
 if [ "$action" != install ]; then
@@ -199,9 +200,22 @@ for f in $(cd data && find . -type f | sed 's|^\./||' | sort); do
     put 644 "share/fresnel/data/$(dirname "$f" | sed 's|^\.$||;s|^\./||')" "data/$f"
 done
 for f in ports/glsl/*.glsl ports/glsl/README.md; do put 644 share/fresnel/glsl "$f"; done
+for f in ports/hlsl/*.hlsl ports/hlsl/README.md; do put 644 share/fresnel/hlsl "$f"; done
 put 644 share/fresnel LICENSE
 echo "f $manifest_rel" >>"$list"
 {
     [ -f "$list.old" ] && cat "$list.old"
     cat "$list"
 } | sed 's|/$||;s|//*|/|g' | awk '!seen[$0]++' >"$manifest.tmp" && mv "$manifest.tmp" "$manifest"
+
+# what went where, and how a build finds it
+cat <<EOF
+installed fresnel $version in $root ($(grep -c '^f ' "$manifest") files, listed in $manifest_rel):
+  include/            $(cd include && ls *.h | tr '\n' ' ')
+  lib/                libfresnel.a; pkgconfig/fresnel.pc; cmake/fresnel/ (target fresnel::fresnel)
+  bin/fresnel         the generator, which reads share/fresnel/data/
+  share/fresnel/      data/ (the data pack), glsl/ and hlsl/ (the shader ports), LICENSE
+use it: pkg-config --cflags --libs fresnel   (PKG_CONFIG_PATH=$prefix/lib/pkgconfig)
+        find_package(fresnel)                (CMAKE_PREFIX_PATH=$prefix)
+undo:   make uninstall PREFIX=$prefix${destdir:+ DESTDIR=$destdir}
+EOF
