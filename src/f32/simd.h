@@ -77,7 +77,6 @@ static inline void fresnel_i_store3_256(float *p, __m256 r, __m256 g, __m256 b)
 }
 #endif
 
-
 #if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD
 
 #if defined(__AVX512F__)
