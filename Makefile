@@ -1,5 +1,6 @@
 # Fresnel reflectance library: runtime (src/, include/), host tools (gen/), tests.
-#   make          build the library and build/fresnel, run the main job
+#   make          build the library, the single-file runtimes, build/fresnel
+#                 and the default scene's example, then say what is where
 #   make test     installs missing tools (tests/deps.sh), unit and error-bound
 #                 tests, again under ASan+UBSan, and again built by the other
 #                 compiler (clang when CC is gcc, else gcc)
@@ -35,15 +36,26 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/embed/viewer_assets.o
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all main-job test test-bins install uninstall deps clean report bench bench-run viewer
+.PHONY: all single test test-bins install uninstall deps clean report bench bench-run viewer
 .DELETE_ON_ERROR:
 
-all: $(BUILD)/libfresnel.a $(BUILD)/fresnel
-	@$(MAKE) --no-print-directory main-job
+# A first build ends with what it made and where (tests/test_make_summary.sh).
+SINGLE := $(BUILD)/single/fresnel_single_f32.h $(BUILD)/single/fresnel_single_q15.h $(BUILD)/single/fresnel_single_f16.h
+all: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(SINGLE) $(BUILD)/scene_example
+	@echo "built, in $(BUILD)/:"
+	@echo "  libfresnel.a     the runtime, every number type (headers: include/)"
+	@echo "  single/          fresnel_single_f32.h, _q15.h, _f16.h: one type's runtime in one file"
+	@echo "  fresnel          the generator: constants and tables for a scene ($(BUILD)/fresnel help)"
+	@echo "  scene_example    a program on $(SCENE)'s header, scene_default.h: gold by angle"
+	@echo "next: make test; make report for the error, time and instructions of every model"
+	@echo "      ($(BUILD)/report/report.md; the last one made is data/report/report.md)"
 
-main-job: $(BUILD)/fresnel $(BUILD)/scene_example
-	$(BUILD)/fresnel accuracy
-	$(BUILD)/scene_example
+# The single-file runtimes: one stb-style header per number type, made from
+# include/ and src/TYPE/ by ports/single.sh.
+single: $(SINGLE)
+$(BUILD)/single/fresnel_single_%.h: ports/single.sh $(wildcard include/*.h) $(wildcard src/*/*)
+	@mkdir -p $(@D)
+	sh ports/single.sh $* > $@.tmp && mv $@.tmp $@
 
 # The default scene: its generated header and a program built against it.
 SCENE := data/scenes/default.scene
@@ -106,7 +118,7 @@ $(BUILD)/tests/viewer_lit: tests/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
-test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
+test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
            $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit \
            $(BUILD)/vulkan/vulkan_test $(BUILD)/hlsl/fresnel.hlsl
 

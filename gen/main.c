@@ -18,7 +18,7 @@ static const struct command commands[] = {
     {"wavelengths", cmd_wavelengths, "dominant wavelengths of a colour space's primaries"},
     {"materials", cmd_materials, "list the materials in data/ and their measured ranges"},
     {"import", cmd_import, "convert your own n,k file (refractiveindex.info, SOPRA, .spd) to the data pack's CSV"},
-    {"gen", cmd_gen, "write a scene's C header from its manifest"},
+    {"gen", cmd_gen, "write a scene's constants and tables as a C, GLSL or HLSL header"},
     {"params", cmd_params, "every parameter derived for one material in a colour space"},
     {"curve", cmd_curve, "ground truth and every model over angle for one material (CSV)"},
     {"bench", cmd_bench, "time per evaluation of every model and number type (make bench)"},
@@ -62,6 +62,12 @@ int main(int argc, char **argv)
         return cli_finish_stdout("fresnel");
     }
     if (!strcmp(argv[1], "--version") || !strcmp(argv[1], "version")) {
+        if (argc == 3 && (!strcmp(argv[2], "--help") || !strcmp(argv[2], "-h"))) {
+            printf("usage: fresnel version   (or fresnel --version)\n\n"
+                   "Prints \"fresnel X.Y.Z\": the version of the tool and of the runtime it was\n"
+                   "built with (FRESNEL_VERSION in include/fresnel.h).\n");
+            return cli_finish_stdout("fresnel version");
+        }
         if (argc > 2)
             return cli_error("fresnel version", "unexpected argument '%s'", argv[2]);
         printf("fresnel %s\n", FRESNEL_VERSION);

@@ -132,6 +132,7 @@ uninstall() {
 
 if [ "$action" = uninstall ]; then
     uninstall
+    echo "uninstalled fresnel from $root: every file and directory its install_manifest.txt listed"
     exit 0
 fi
 if [ "$action" != install ]; then
@@ -201,9 +202,22 @@ for f in $(cd data && find . -type f | sed 's|^\./||' | sort); do
 done
 for f in ports/glsl/*.glsl ports/glsl/README.md; do put 644 share/fresnel/glsl "$f"; done
 put 644 share/fresnel/hlsl "$build/hlsl/fresnel.hlsl"
+put 644 share/fresnel/hlsl ports/hlsl/README.md
 put 644 share/fresnel LICENSE
 echo "f $manifest_rel" >>"$list"
 {
     [ -f "$list.old" ] && cat "$list.old"
     cat "$list"
 } | sed 's|/$||;s|//*|/|g' | awk '!seen[$0]++' >"$manifest.tmp" && mv "$manifest.tmp" "$manifest"
+
+# what went where, and how a build finds it
+cat <<EOF
+installed fresnel $version in $root ($(grep -c '^f ' "$manifest") files, listed in $manifest_rel):
+  include/            $(cd include && ls *.h | tr '\n' ' ')
+  lib/                libfresnel.a; pkgconfig/fresnel.pc; cmake/fresnel/ (target fresnel::fresnel)
+  bin/fresnel         the generator, which reads share/fresnel/data/
+  share/fresnel/      data/ (the data pack), glsl/ and hlsl/ (the shader ports), LICENSE
+use it: pkg-config --cflags --libs fresnel   (PKG_CONFIG_PATH=$prefix/lib/pkgconfig)
+        find_package(fresnel)                (CMAKE_PREFIX_PATH=$prefix)
+undo:   make uninstall PREFIX=$prefix${destdir:+ DESTDIR=$destdir}
+EOF

@@ -25,19 +25,11 @@
 #include <string.h>
 
 #include "fresnel.h"
-/* The C binary16 path of the fixed-point issue, where the tree has it and
- * the compiler has _Float16: the mediump results are also compared with it
- * (NOTE lines only; its domain and LUT layout are its own). */
-#if defined(__has_include)
-#if __has_include("fresnel_f16.h")
+/* The C binary16 runtime, where the compiler has _Float16: the mediump
+ * results are also compared with it (NOTE lines only; its domain and LUT
+ * layout are its own). */
 #include "fresnel_f16.h"
-#endif
-#endif
-#if defined(FRESNEL_HAS_F16)
 #define HAVE_F16 FRESNEL_HAS_F16
-#else
-#define HAVE_F16 0
-#endif
 #include "glctx.h"
 #include "harness.h"
 #include "png.h"

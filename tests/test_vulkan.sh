@@ -7,10 +7,16 @@
 # runtime on every cosine step of 1/1024. Then the bad inputs of --hlsl.
 # Missing tools are a FAIL, not a skip (make test installs them: tests/deps.sh).
 #
-# The table of ports/README.md:
+# VULKAN_DEVICE picks the device (vulkan_test --device): cpu, lavapipe, by
+# default (the loader then sees lavapipe's driver alone); gpu, the first GPU
+# (every installed driver visible); or an index into the loader's list.
+#
+# The table of ports/README.md, after the device it was measured on:
 #   BUILD=build sh tests/test_vulkan.sh | sed -n 's/^NOTE table //p'
+#   VULKAN_DEVICE=gpu BUILD=build sh tests/test_vulkan.sh | sed -n 's/^NOTE table //p'
 BUILD=${BUILD:-build}
 out="$BUILD/vulkan/test"
+device=${VULKAN_DEVICE:-cpu}
 icd=$(ls /usr/share/vulkan/icd.d/lvp_icd.*.json 2>/dev/null | head -1)
 for tool in glslangValidator spirv-val; do
     if ! command -v $tool >/dev/null 2>&1; then
@@ -41,7 +47,13 @@ models = lut4 lut4-residual
 lut_spacing = uniform
 SCENE
 status=0
-# Only lavapipe (the loader sees no other driver); its LLVM optimisation off
+# vulkan_test's environment: for the CPU device, lavapipe alone
+if [ "$device" = cpu ]; then
+    vk() { VK_ICD_FILENAMES="$icd" VK_DRIVER_FILES="$icd" "$@"; }
+else
+    vk() { "$@"; }
+fi
+# Only lavapipe (the loader sees no other driver) unless VULKAN_DEVICE says otherwise; its LLVM optimisation off
 # (GALLIVM_PERF=nopt): the generated const-array tables take seconds per
 # pipeline to optimise, and the arithmetic is the same IEEE binary32. The
 # shader cache in build/ lets the later passes of make test reuse the code.
@@ -56,9 +68,34 @@ for manifest in data/scenes/default.scene "$out/vk_models.scene" "$out/vk_unifor
         status=1
         continue
     fi
-    VK_ICD_FILENAMES="$icd" VK_DRIVER_FILES="$icd" GALLIVM_PERF=nopt \
-        MESA_SHADER_CACHE_DIR="${BUILD%%/*}/mesa-shader-cache" ASAN_OPTIONS=detect_leaks=0 \
-        "$BUILD/vulkan/vulkan_test" "$out" "$manifest" "$ident" "$out/$ident.glsl" "$out/$ident.hlsl" || status=1
+    vk env GALLIVM_PERF=nopt MESA_SHADER_CACHE_DIR="${BUILD%%/*}/mesa-shader-cache" ASAN_OPTIONS=detect_leaks=0 \
+        "$BUILD/vulkan/vulkan_test" --device "$device" "$out" "$manifest" "$ident" "$out/$ident.glsl" \
+        "$out/$ident.hlsl" || status=1
+done
+
+# The device choice: a malformed one is a usage error; one the loader does
+# not list (a GPU where lavapipe is the only driver, an index past the end)
+# fails, naming the devices there are.
+m=data/scenes/default.scene
+if "$BUILD/vulkan/vulkan_test" --device fast "$out" $m default "$out/default.glsl" "$out/default.hlsl" >"$out/dev.out" 2>&1; then
+    echo "FAIL vulkan: vulkan_test --device fast accepted"
+    status=1
+elif [ $? -eq 2 ] && grep -q "cpu, gpu or a device index" "$out/dev.out"; then
+    echo "PASS vulkan: vulkan_test --device fast: exit 2, $(head -1 "$out/dev.out")"
+else
+    echo "FAIL vulkan: vulkan_test --device fast: $(head -2 "$out/dev.out")"
+    status=1
+fi
+for absent in gpu 9; do
+    VK_ICD_FILENAMES="$icd" VK_DRIVER_FILES="$icd" ASAN_OPTIONS=detect_leaks=0 "$BUILD/vulkan/vulkan_test" \
+        --device $absent "$out" $m default "$out/default.glsl" "$out/default.hlsl" >"$out/dev.out" 2>&1
+    st=$?
+    if [ $st -ne 0 ] && grep -q "no Vulkan device '$absent' among the 1 the loader lists: 0 = .*(cpu)" "$out/dev.out"; then
+        echo "PASS vulkan: --device $absent with lavapipe alone fails, naming the one device there is"
+    else
+        echo "FAIL vulkan: --device $absent with lavapipe alone: exit $st, $(grep -m2 -e FAIL -e device "$out/dev.out")"
+        status=1
+    fi
 done
 
 # Every committed scene's --hlsl output compiles (glslangValidator's HLSL

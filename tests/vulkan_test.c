@@ -29,9 +29,11 @@
  * run at full precision, within 1e-5. The table at the end
  * (NOTE table lines) is ports/README.md's.
  *
- * Usage: vulkan_test OUT_DIR MANIFEST IDENT SCENE.glsl SCENE.hlsl
+ * Usage: vulkan_test [--device cpu|gpu|INDEX] OUT_DIR MANIFEST IDENT SCENE.glsl SCENE.hlsl
  * (tests/test_vulkan.sh; OUT_DIR receives the shader sources, SPIR-V and
- * tool logs). */
+ * tool logs). --device: the CPU device by default (lavapipe), "gpu" the
+ * first GPU, INDEX a device of the loader's list (ports/vulkan/vkrun.h); a
+ * NOTE names the device, and the table's lines carry its name. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -292,8 +294,19 @@ int main(int argc, char **argv)
     size_t nout;
     vkrun v;
     int i, m, k, vi, nmat;
+    const char *device = "cpu";
+    if (argc > 1 && !strcmp(argv[1], "--device")) {
+        if (argc < 3 || !vkrun_device_valid(argv[2])) {
+            fprintf(stderr, "vulkan_test: --device takes cpu, gpu or a device index, got '%s'\n",
+                    argc < 3 ? "" : argv[2]);
+            return 2;
+        }
+        device = argv[2];
+        argc -= 2;
+        argv += 2;
+    }
     if (argc != 6) {
-        fprintf(stderr, "usage: vulkan_test OUT_DIR MANIFEST IDENT SCENE.glsl SCENE.hlsl\n");
+        fprintf(stderr, "usage: vulkan_test [--device cpu|gpu|INDEX] OUT_DIR MANIFEST IDENT SCENE.glsl SCENE.hlsl\n");
         return 2;
     }
     dir = argv[1];
@@ -335,11 +348,11 @@ int main(int argc, char **argv)
                                          "(run from the top of the tree)");
         return harness_exit();
     }
-    if (vkrun_open(&v, err, sizeof err)) {
-        CHECK("vulkan: a Vulkan CPU device (lavapipe)", 0, "%s", err);
+    if (vkrun_open(&v, device, err, sizeof err)) {
+        CHECK("vulkan: the Vulkan device asked for (--device)", 0, "%s", err);
         return harness_exit();
     }
-    NOTE("vulkan: %s: device %s", ident, v.device_name);
+    NOTE("vulkan: %s: device %s (%s)", ident, v.device_name, v.device_info);
 
     for (vi = 0; vi < NVARIANTS; vi++) {
         const struct variant *va = &variants[vi];
@@ -440,7 +453,8 @@ int main(int argc, char **argv)
     }
     if (!strcmp(ident, "default"))
         run_funcs(&v, dir, src, cosines);
-    /* The table of ports/README.md. */
+    /* The table of ports/README.md, after the device it was measured on. */
+    NOTE("table device: %s (%s)", v.device_name, v.device_info);
     NOTE("table | %s | model | GLSL 4.50 highp | GLSL mediump | HLSL float | HLSL min16float | fresnel_f16.h bound |",
          ident);
     for (m = 0; m < sc.model_count; m++) {

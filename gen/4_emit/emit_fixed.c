@@ -136,8 +136,8 @@ static void emit_ior_fast3(fx_out *o, const char *prefix, const double *eta, con
                 id, channel[ch], eta[ch], kappa[ch]);
         return;
     }
-    fprintf(o->f, "/* the same eta, kappa for fresnel_conductor_q15_fast (fresnel_fixed_fast.h), one\n"
-                  " * channel per call; fields a0, a0_lo, shift, b1, b2, bm, be, span */\n"
+    fprintf(o->f, "/* the same eta, kappa for fresnel_conductor_q15_rgb_fast (fresnel_fixed_fast.h; one\n"
+                  " * channel: fresnel_conductor_q15_fast); fields a0, a0_lo, shift, b1, b2, bm, be, span */\n"
                   "static const fresnel_conductor_prep_q15 %s[3] FRESNEL_GEN_UNUSED = {\n",
             id);
     for (ch = 0; ch < 3; ch++) {
@@ -258,7 +258,7 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
             a[ch] = fx_check(&o, (double)e->q_f82_a[ch], -73000.0, 73000.0, "a_q12 [-73000, 73000]", "F82's a", id);
         }
         fprintf(f, "/* F82's a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) times 4096, from the Q1.15 F0 and F82\n"
-                   " * (fresnel_f82_q15_fast(f0.r, a[0], c)) */\n"
+                   " * (fresnel_f82_q15_rgb_fast(f0, a, c) in fresnel_fixed_fast.h) */\n"
                    "static const int32_t %s[3] FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
                 id, a[0], a[1], a[2]);
     }

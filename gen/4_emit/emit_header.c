@@ -162,6 +162,17 @@ static int encode_luts(const emit_input *in, int i, const char *prefix, encoded_
     return 0;
 }
 
+/* #include "name" unless its guard (FRESNEL_FIXED_H for fresnel_fixed.h)
+ * is defined already. */
+static void include_guarded(FILE *f, const char *name)
+{
+    const char *c;
+    fputs("#ifndef ", f);
+    for (c = name; *c; c++)
+        fputc(*c == '.' ? '_' : toupper((unsigned char)*c), f);
+    fprintf(f, "\n#include \"%s\"\n#endif\n", name);
+}
+
 int emit_header(FILE *f, const emit_input *in)
 {
     const scene *sc = in->sc;
@@ -191,10 +202,12 @@ int emit_header(FILE *f, const emit_input *in)
         fprintf(f, " %s", sc->types[m]->name);
     fprintf(f, ".\n");
     emit_material_list(f, in);
-    fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n#include \"fresnel.h\"\n", guard, guard);
+    fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n", guard, guard);
+    /* The runtime headers of the scene's types only, each skipped where it
+     * is already in (a single-file runtime, ports/single.sh, holds it). */
     for (k = 0; k < NUMBER_TYPES; k++)
-        if (scene_has_type(sc, emit_types[k].type) && strcmp(number_types[emit_types[k].type].header, "fresnel.h"))
-            fprintf(f, "#include \"%s\"\n", number_types[emit_types[k].type].header);
+        if (scene_has_type(sc, emit_types[k].type))
+            include_guarded(f, number_types[emit_types[k].type].header);
     fputc('\n', f);
     fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
                "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");

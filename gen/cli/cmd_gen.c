@@ -4,6 +4,7 @@
 
 #include "common/cli.h"
 #include "4_emit/emit.h"
+#include "2_derive/targets.h"
 #include "3_encode/encode.h"
 #include "scene/scene.h"
 
@@ -14,8 +15,9 @@ static void gen_usage(FILE *out)
     const char *names[SCENE_MAX_MODELS + 1];
     int i;
     fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--glsl [--glsl-texture OUT_TEX.h] | --hlsl] [--data DIR]\n\n"
-                 "Reads the scene manifest SCENE and writes a C header with static const\n"
-                 "constants and tables for exactly its materials, models and number types.\n"
+                 "Reads the scene manifest SCENE and writes a C header (or, with --glsl or\n"
+                 "--hlsl, a shader source) with the constants and tables of exactly its\n"
+                 "materials, models and number types: static const in C.\n"
                  "--glsl writes the same constants as GLSL instead (const vec3, float arrays)\n"
                  "for use after ports/glsl/fresnel.glsl, with vec3 fresnel_<scene>_<material>_<model>_rgb(c)\n"
                  "per material and model, in every dialect the port supports; lut_spacing\n"
@@ -28,8 +30,13 @@ static void gen_usage(FILE *out)
                  "(an existing file keeps its mode; a symlink's target is replaced): on any\n"
                  "error OUT.h (and OUT_TEX.h) is left as it was. -o - writes to stdout; a device\n"
                  "or FIFO is written in place. Identical input gives byte-identical output.\n\n"
-                 "Manifest format: `key = value` lines, # comments (see gen/scene/scene.h):\n"
-                 "  materials = au cu al      required; ids from `fresnel materials`\n"
+                 "Manifest format: `key = value` lines, # comments, each key once (the reference:\n"
+                 "gen/scene/scene.h). At least one material, from either or both of:\n"
+                 "  materials = au cu al      ids from `fresnel materials` (the data pack)\n"
+                 "  material tin = TiN.yml    your own n,k file as material 'tin', in any format\n"
+                 "                            `fresnel import` reads, relative to SCENE; one\n"
+                 "                            line per material\n"
+                 "and:\n"
                  "  models = schlick f82 lut32 required; one or more of:");
     model_names(MODEL_SCENE, names, SCENE_MAX_MODELS + 1);
     for (i = 0; names[i]; i++)
@@ -43,7 +50,26 @@ static void gen_usage(FILE *out)
             model_lut_patterns, SCENE_LUT_MIN, SCENE_LUT_MAX);
     for (i = 0; i < number_types_available; i++)
         fprintf(out, " %s", number_types[i].name);
-    fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_pl_u16_q15_fast)\n");
+    fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_pl_u16_q15_fast)\n"
+                 "  gamut = map               where a colour leaves the space:");
+    for (i = 0; gamut_policy_names[i]; i++)
+        fprintf(out, " %s", gamut_policy_names[i]);
+    fprintf(out, "\n"
+                 "                            (map: the nearest in-gamut colour; clip: per channel;\n"
+                 "                            keep: values above 1 stay, for HDR pipelines)\n"
+                 "  f_avg = no                yes: each material's hemispherical average too\n"
+                 "  targets = openpbr blender other renderers' parameters (`fresnel params --for`)\n"
+                 "                            in a comment per material; any of:");
+    {
+        const char *targets[32];
+        int n = target_names(targets, 32);
+        for (i = 0; i < n; i++)
+            fprintf(out, " %s", targets[i]);
+    }
+    fprintf(out, "\n"
+                 "  name = metals             the scene's part of every identifier (default: from\n"
+                 "                            SCENE's file name)\n"
+                 "The GLSL and HLSL output does not depend on types.\n");
 }
 
 int cmd_gen(int argc, char **argv)

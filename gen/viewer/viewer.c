@@ -193,6 +193,11 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
     put_json_string(f, sc->space);
     fputs(",\"gamut\":", f);
     put_json_string(f, gamut_policy_names[sc->gamut]);
+    /* The page opens on the user's own material (the first `material ID =
+     * FILE` line), else on the first. */
+    for (i = 0; i < sc->material_count && !sc->material_file[i][0]; i++)
+        ;
+    fprintf(f, ",\"start\":%d", i < sc->material_count ? i : 0);
     fprintf(f, ",\"refN\":%d,\n\"materials\":[", VIEWER_REF_NODES);
     for (i = 0; i < sc->material_count; i++) {
         fprintf(f, "%s{\"id\":", i ? "," : "");

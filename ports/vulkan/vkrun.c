@@ -27,18 +27,68 @@ static int fail(char *err, size_t errsize, const char *fmt, ...)
         }                                                                                          \
     } while (0)
 
-int vkrun_open(vkrun *v, char *err, size_t errsize)
+static const char *type_name(VkPhysicalDeviceType t)
+{
+    switch (t) {
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated gpu";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual gpu";
+    default: return "other";
+    }
+}
+
+/* Which of devs[0..n-1] the choice names, or -1: "cpu" the first CPU
+ * device, "gpu" the first discrete GPU, else the first integrated or
+ * virtual one, a decimal number that index. */
+static int choose(const VkPhysicalDeviceProperties *pr, uint32_t n, const char *device)
+{
+    static const VkPhysicalDeviceType gpus[] = {VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU,
+                                                VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU,
+                                                VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU};
+    uint32_t i, k;
+    char *end;
+    long index;
+    if (!strcmp(device, "cpu")) {
+        for (i = 0; i < n; i++)
+            if (pr[i].deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU)
+                return (int)i;
+        return -1;
+    }
+    if (!strcmp(device, "gpu")) {
+        for (k = 0; k < sizeof gpus / sizeof gpus[0]; k++)
+            for (i = 0; i < n; i++)
+                if (pr[i].deviceType == gpus[k])
+                    return (int)i;
+        return -1;
+    }
+    index = strtol(device, &end, 10);
+    return *device && !*end && index >= 0 && index < (long)n ? (int)index : -1;
+}
+
+int vkrun_device_valid(const char *device)
+{
+    const char *p = device;
+    if (!strcmp(device, "cpu") || !strcmp(device, "gpu"))
+        return 1;
+    while (*p >= '0' && *p <= '9')
+        p++;
+    return p != device && !*p && p - device <= 4;
+}
+
+int vkrun_open(vkrun *v, const char *device, char *err, size_t errsize)
 {
     VkApplicationInfo app;
     VkInstanceCreateInfo ici;
     VkPhysicalDevice devs[16];
+    VkPhysicalDeviceProperties props[16];
     uint32_t ndev = 16, i, nq = 0;
     VkQueueFamilyProperties qf[16];
     float prio = 1.0f;
     VkDeviceQueueCreateInfo qci;
     VkDeviceCreateInfo dci;
     VkCommandPoolCreateInfo pci;
-    int found = -1;
+    int found;
     memset(v, 0, sizeof *v);
     memset(&app, 0, sizeof app);
     app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
@@ -55,21 +105,25 @@ int vkrun_open(vkrun *v, char *err, size_t errsize)
             goto done;
         }
     }
-    /* The CPU device (lavapipe): results must not depend on which GPU a
-     * machine happens to have. */
-    for (i = 0; i < ndev && found < 0; i++) {
-        VkPhysicalDeviceProperties pr;
-        vkGetPhysicalDeviceProperties(devs[i], &pr);
-        if (pr.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) {
-            found = (int)i;
-            snprintf(v->device_name, sizeof v->device_name, "%s", pr.deviceName);
-        }
-    }
+    for (i = 0; i < ndev; i++)
+        vkGetPhysicalDeviceProperties(devs[i], &props[i]);
+    found = choose(props, ndev, device);
     if (found < 0) {
-        fail(err, errsize, "no Vulkan CPU device among %u devices: install Debian's mesa-vulkan-drivers (lavapipe)",
-             ndev);
+        /* the devices there are, so that the message says what to pick */
+        size_t len;
+        fail(err, errsize, "no Vulkan device '%s' among the %u the loader lists:", device, ndev);
+        for (i = 0; i < ndev && (len = strlen(err)) + 1 < errsize; i++)
+            snprintf(err + len, errsize - len, " %u = %s (%s);", i, props[i].deviceName,
+                     type_name(props[i].deviceType));
+        if (!strcmp(device, "cpu") && (len = strlen(err)) + 1 < errsize)
+            snprintf(err + len, errsize - len, " install Debian's mesa-vulkan-drivers (lavapipe)");
         goto done;
     }
+    snprintf(v->device_name, sizeof v->device_name, "%s", props[found].deviceName);
+    snprintf(v->device_info, sizeof v->device_info,
+             "device %d of %u, %s, vendor 0x%04x, driver version 0x%08x, Vulkan %u.%u.%u", found, ndev, type_name(props[found].deviceType), props[found].vendorID, props[found].driverVersion,
+             VK_VERSION_MAJOR(props[found].apiVersion), VK_VERSION_MINOR(props[found].apiVersion),
+             VK_VERSION_PATCH(props[found].apiVersion));
     v->phys = devs[found];
     vkGetPhysicalDeviceQueueFamilyProperties(v->phys, &nq, NULL);
     if (nq > 16)

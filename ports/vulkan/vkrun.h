@@ -1,7 +1,7 @@
-/* vkrun: a compute shader (SPIR-V) run once on a Vulkan CPU device, no
- * window, no display: Mesa's lavapipe (Debian mesa-vulkan-drivers) when the
- * loader is pointed at its ICD (VK_ICD_FILENAMES=.../lvp_icd.x86_64.json;
- * tests/test_vulkan.sh does). Used by tests/vulkan_test.c for the GLSL 4.50
+/* vkrun: a compute shader (SPIR-V) run once on a Vulkan device, no window,
+ * no display: by default the CPU device, Mesa's lavapipe (Debian
+ * mesa-vulkan-drivers; tests/test_vulkan.sh points the loader at its ICD
+ * alone), or on request a GPU. Used by tests/vulkan_test.c for the GLSL 4.50
  * and HLSL ports.
  *
  * The shader's interface: descriptor set 0, binding 0 a storage buffer read
@@ -12,7 +12,7 @@
  * computes: the driver compiles only the branch they select.
  *
  *   vkrun v;
- *   vkrun_open(&v, err, sizeof err);                 instance, CPU device, compute queue
+ *   vkrun_open(&v, "cpu", err, sizeof err);          instance, device, compute queue
  *   vkrun_pipeline(&v, words, nbytes, spec, nspec, push_bytes, &p, err, sizeof err);
  *   vkrun_dispatch(&v, &p, push, in, nin, out, nout, groups, err, sizeof err);
  *   vkrun_pipeline_free(&v, &p);
@@ -34,7 +34,7 @@ typedef struct vkrun {
     uint32_t queue_family;
     VkCommandPool pool;
     char device_name[VK_MAX_PHYSICAL_DEVICE_NAME_SIZE];
-    char driver_info[VK_MAX_DRIVER_INFO_SIZE];
+    char device_info[160]; /* index, type, vendor, driver version, Vulkan version */
 } vkrun;
 
 typedef struct vkrun_pipe {
@@ -45,7 +45,12 @@ typedef struct vkrun_pipe {
     uint32_t push_bytes;
 } vkrun_pipe;
 
-int vkrun_open(vkrun *v, char *err, size_t errsize);
+/* device: "cpu" (the first CPU device), "gpu" (the first discrete GPU, else
+ * the first integrated or virtual one) or the index of a device in the
+ * loader's list; a device that is not there fails with err listing those
+ * that are. vkrun_device_valid: whether a string is one of these forms. */
+int vkrun_open(vkrun *v, const char *device, char *err, size_t errsize);
+int vkrun_device_valid(const char *device);
 void vkrun_close(vkrun *v);
 
 /* A compute pipeline from nbytes of SPIR-V (entry point "main"), with

@@ -187,7 +187,8 @@ FRESNEL_I_VBATCH(fresnel_i_batch_diel, FRESNEL_I_DIEL)
 FRESNEL_I_VBATCH(fresnel_i_batch_cond1, FRESNEL_I_COND1)
 FRESNEL_I_VBATCH(fresnel_i_batch_cond2, FRESNEL_I_COND2)
 
-void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *restrict c, float *restrict out, int n)
+void fresnel_conductor_batch(const fresnel_conductor_prep *p, const float *FRESNEL_I_RESTRICT c, float *FRESNEL_I_RESTRICT out,
+                             int n)
 {
     int i;
 #if FRESNEL_I_AVX_DISPATCH
@@ -223,8 +224,8 @@ FRESNEL_I_VBATCH_RGB(fresnel_i_rgb_batch_cond2, FRESNEL_I_COND2)
  * channel's batch over a block of cosines, then the block interleaved into
  * out. */
 #define FRESNEL_I_RGB_BLOCK 64
-void fresnel_conductor_rgb_batch(const fresnel_conductor_prep p[3], const float *restrict c, fresnel_rgb *restrict out,
-                                 int n)
+void fresnel_conductor_rgb_batch(const fresnel_conductor_prep p[3], const float *FRESNEL_I_RESTRICT c,
+                                 fresnel_rgb *FRESNEL_I_RESTRICT out, int n)
 {
     float r[FRESNEL_I_RGB_BLOCK], g[FRESNEL_I_RGB_BLOCK], b[FRESNEL_I_RGB_BLOCK];
     int i, j, k;

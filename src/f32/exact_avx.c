@@ -6,6 +6,38 @@
 #if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD && defined(__x86_64__) && defined(__SSE2__) && !defined(__AVX__) && \
     defined(__GNUC__) && (!defined(FRESNEL_I_SIMD_DISPATCH) || FRESNEL_I_SIMD_DISPATCH)
 #define FRESNEL_I_FORCE_AVX 1
+/* simd.h's and exact_batch.h's vector names, for this kernel: suffixed, so
+ * that it can share a translation unit with exact.c's kernel at the build's
+ * own width (simd.h). */
+#define fresnel_i_store3_256 fresnel_i_store3_256_avx
+#define fresnel_i_vabs fresnel_i_vabs_avx
+#define fresnel_i_vadd fresnel_i_vadd_avx
+#define fresnel_i_vcos fresnel_i_vcos_avx
+#define fresnel_i_vcos_terms fresnel_i_vcos_terms_avx
+#define fresnel_i_vdiv fresnel_i_vdiv_avx
+#define fresnel_i_vexact fresnel_i_vexact_avx
+#define fresnel_i_vexact_terms fresnel_i_vexact_terms_avx
+#define fresnel_i_vf fresnel_i_vf_avx
+#define fresnel_i_vfms fresnel_i_vfms_avx
+#define fresnel_i_vge fresnel_i_vge_avx
+#define fresnel_i_vhi256 fresnel_i_vhi256_avx
+#define fresnel_i_vload fresnel_i_vload_avx
+#define fresnel_i_vm fresnel_i_vm_avx
+#define fresnel_i_vmax fresnel_i_vmax_avx
+#define fresnel_i_vmin fresnel_i_vmin_avx
+#define fresnel_i_vmul fresnel_i_vmul_avx
+#define fresnel_i_vprep fresnel_i_vprep_avx
+#define fresnel_i_vprep_set fresnel_i_vprep_set_avx
+#define fresnel_i_vsel fresnel_i_vsel_avx
+#define fresnel_i_vsel_nonneg fresnel_i_vsel_nonneg_avx
+#define fresnel_i_vset fresnel_i_vset_avx
+#define fresnel_i_vsplit_hi fresnel_i_vsplit_hi_avx
+#define fresnel_i_vsqrt fresnel_i_vsqrt_avx
+#define fresnel_i_vsquare_lo fresnel_i_vsquare_lo_avx
+#define fresnel_i_vstore fresnel_i_vstore_avx
+#define fresnel_i_vstore3 fresnel_i_vstore3_avx
+#define fresnel_i_vsub fresnel_i_vsub_avx
+#define fresnel_i_vunit fresnel_i_vunit_avx
 #ifdef __clang__
 #pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
 #else

@@ -1,12 +1,12 @@
 /* The conductor batch kernel shared by exact.c and exact_avx.c (not
  * public): the forms of fresnel_conductor_prep and, where simd.h has a
  * vector type, the kernel at its width. */
+#include "simd.h"
+
 #ifndef FRESNEL_EXACT_BATCH_H
 #define FRESNEL_EXACT_BATCH_H
 
 #include <stddef.h>
-
-#include "simd.h"
 
 #if FRESNEL_HAS_FLOAT
 /* fresnel_conductor_prep.kind (exact.c) */
@@ -29,7 +29,20 @@ FRESNEL_I_HIDDEN void fresnel_i_conductor_rgb_batch_avx(const fresnel_conductor_
 #define FRESNEL_I_AVX_DISPATCH 0
 #endif
 
-#if FRESNEL_I_VW
+#endif /* FRESNEL_HAS_FLOAT */
+#endif /* FRESNEL_EXACT_BATCH_H */
+
+/* The kernel, at simd.h's width: once per inclusion of simd.h's vector
+ * part (twice in a translation unit that holds exact.c and exact_avx.c). */
+#if FRESNEL_HAS_FLOAT && FRESNEL_I_VW && \
+    (defined(FRESNEL_I_FORCE_AVX) ? !defined(FRESNEL_EXACT_BATCH_AVX_PART) : !defined(FRESNEL_EXACT_BATCH_PART))
+#ifdef FRESNEL_I_FORCE_AVX
+#define FRESNEL_EXACT_BATCH_AVX_PART
+#else
+#define FRESNEL_EXACT_BATCH_PART
+#endif
+#undef FRESNEL_I_VBATCH
+#undef FRESNEL_I_VBATCH_RGB
 /* The batch: the same operations in the same order on FRESNEL_I_VW lanes
  * (simd.h), two vectors per step for independent work between the square
  * roots and the divide; the last n mod VW cosines go through one vector
@@ -169,6 +182,4 @@ static inline void fresnel_i_vprep_set(struct fresnel_i_vprep *q, const fresnel_
                 out[3 * (size_t)i + j] = buf[FRESNEL_I_VW + j];                                        \
         }                                                                                              \
     }
-#endif /* FRESNEL_I_VW */
-#endif /* FRESNEL_HAS_FLOAT */
-#endif
+#endif /* the kernel */

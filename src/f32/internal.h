@@ -148,6 +148,14 @@ static inline float fresnel_i_pow_one_minus(float c, float p)
     return e + e * lo;
 }
 
+/* C99's restrict; C++, which compiles these files in a unity build (the
+ * single-file runtime included from a .cpp), spells it __restrict. */
+#ifdef __cplusplus
+#define FRESNEL_I_RESTRICT __restrict
+#else
+#define FRESNEL_I_RESTRICT restrict
+#endif
+
 /* Apply a scalar model channel by channel. */
 #define FRESNEL_I_RGB(expr_r, expr_g, expr_b) \
     do { fresnel_rgb out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)

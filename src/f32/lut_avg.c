@@ -224,7 +224,7 @@ static float fresnel_i_avg(const float *table, int n, int form)
     for (i = 0; i < n; i++) {
         float a = fabsf(table[i]);
         uint32_t t = (uint32_t)((a < FLT_MAX ? a : FLT_MAX) * scale), v = (uint32_t)i;
-        const int16_t small[4] = {f->cubic && n <= 3 ? fresnel_i_avg_cubic_small[n - 2][i] : 0, 0, 0, 0};
+        const int16_t small[4] = {(int16_t)(f->cubic && n <= 3 ? fresnel_i_avg_cubic_small[n - 2][i] : 0), 0, 0, 0};
         const int16_t *c = f->interior;
         fresnel_i_big *pos = table[i] < 0.0f ? &minus : &plus, *neg = table[i] < 0.0f ? &plus : &minus;
         if (f->cubic && n <= 3)

@@ -42,6 +42,25 @@ static inline void fresnel_i_store3_128(float *p, __m128 r, __m128 g, __m128 b)
     _mm_storeu_ps(p + 8, _mm_shuffle_ps(br_hi, gb_hi, _MM_SHUFFLE(3, 2, 2, 0))); /* b2 r3 g3 b3 */
 }
 #endif
+#endif /* FRESNEL_SIMD_H */
+
+/* The vector part: once at the build's width and, where exact_avx.c
+ * compiles the 8-lane kernel (FRESNEL_I_FORCE_AVX, which gives its names an
+ * _avx suffix), once more at 8 lanes, so that both kernels can share one
+ * translation unit (a unity build; the single-file runtime of
+ * ports/single.sh). */
+#if defined(FRESNEL_I_FORCE_AVX) && !defined(FRESNEL_SIMD_AVX_PART)
+#define FRESNEL_SIMD_AVX_PART
+#define FRESNEL_I_SIMD_PART 1
+#elif !defined(FRESNEL_I_FORCE_AVX) && !defined(FRESNEL_SIMD_PART)
+#define FRESNEL_SIMD_PART
+#define FRESNEL_I_SIMD_PART 1
+#else
+#define FRESNEL_I_SIMD_PART 0
+#endif
+#if FRESNEL_I_SIMD_PART
+#undef FRESNEL_I_VW
+#undef FRESNEL_I_VSEL_SIGN
 #if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD && (defined(__AVX2__) || defined(FRESNEL_I_FORCE_AVX))
 #include <immintrin.h>
 /* The same for 8 lanes: each vector's lanes permuted to the positions they
@@ -244,4 +263,5 @@ static inline fresnel_i_vf fresnel_i_vsquare_lo(fresnel_i_vf x, fresnel_i_vf hi)
 }
 #endif
 
-#endif
+#endif /* FRESNEL_I_SIMD_PART */
+#undef FRESNEL_I_SIMD_PART

@@ -25,10 +25,10 @@
  * as FRESNEL_I_LUT_N_MAX (so only entries the caller's table has are read), n <= 0
  * as 0, for which the callers read no entry at all. */
 #define FRESNEL_I_LUT_N_MAX 32768
-static int fresnel_i_lut_n(int n) { return n <= 0 ? 0 : (n > FRESNEL_I_LUT_N_MAX ? FRESNEL_I_LUT_N_MAX : n); }
+static int fresnel_i_qlut_n(int n) { return n <= 0 ? 0 : (n > FRESNEL_I_LUT_N_MAX ? FRESNEL_I_LUT_N_MAX : n); }
 
 /* Position of x (Q30, [0, 2^30]) along n nodes (1 <= n <= FRESNEL_I_LUT_N_MAX, as
- * fresnel_i_lut_n gives it and the callers have checked n != 0),
+ * fresnel_i_qlut_n gives it and the callers have checked n != 0),
  * as the node i before it (FRESNEL_I_NEXT the one after) and a 15-bit fraction, rounded to
  * nearest (a floor would cost up to one LSB on a steep two-node table).
  * R: n - 1 <= 2^15 - 1: (x >> 15)(n-1) < 2^30, (x & 0x7fff)(n-1) + 2^14 <
@@ -168,7 +168,7 @@ static fresnel_q15 fresnel_i_curve_q15(uint32_t v, uint32_t a, uint32_t b)
 }
 
 /* Channel ch (0 for the scalar forms) of a table of n nodes per channel,
- * n as fresnel_i_lut_n gives it: 0 reads nothing. */
+ * n as fresnel_i_qlut_n gives it: 0 reads nothing. */
 static fresnel_q15 fresnel_i_lut_u16(const uint16_t *table, int n, int ch, uint32_t x)
 {
     fresnel_i_pos p;
@@ -294,7 +294,7 @@ static fresnel_q15 fresnel_i_cubic_u16(const uint16_t *table, int n, int ch, fre
 
 fresnel_q15 fresnel_lut_cubic_u16_q15(const uint16_t *table, int n_in, int32_t c)
 {
-    int n = fresnel_i_lut_n(n_in);
+    int n = fresnel_i_qlut_n(n_in);
     fresnel_i_pos p;
     if (n == 0)
         return 0;
@@ -304,7 +304,7 @@ fresnel_q15 fresnel_lut_cubic_u16_q15(const uint16_t *table, int n_in, int32_t c
 
 fresnel_rgb_q15 fresnel_lut_cubic_u16_q15_rgb(const uint16_t *table, int n_in, int32_t c)
 {
-    int n = fresnel_i_lut_n(n_in);
+    int n = fresnel_i_qlut_n(n_in);
     fresnel_i_pos p;
     fresnel_i_cubic_w w;
     if (n == 0)
@@ -316,67 +316,67 @@ fresnel_rgb_q15 fresnel_lut_cubic_u16_q15_rgb(const uint16_t *table, int n_in, i
 
 fresnel_q15 fresnel_lut_u16_q15(const uint16_t *table, int n, int32_t c)
 {
-    return fresnel_i_lut_u16(table, fresnel_i_lut_n(n), 0, fresnel_i_sqrt_w(c));
+    return fresnel_i_lut_u16(table, fresnel_i_qlut_n(n), 0, fresnel_i_sqrt_w(c));
 }
 fresnel_q15 fresnel_lut_linear_u16_q15(const uint16_t *table, int n, int32_t c)
 {
-    return fresnel_i_lut_u16(table, fresnel_i_lut_n(n), 0, fresnel_i_linear_w(c));
+    return fresnel_i_lut_u16(table, fresnel_i_qlut_n(n), 0, fresnel_i_linear_w(c));
 }
 fresnel_q15 fresnel_lut_u8_q15(const uint8_t *table, int n, int32_t c)
 {
-    return fresnel_i_lut_u8(table, fresnel_i_lut_n(n), 0, fresnel_i_sqrt_w(c));
+    return fresnel_i_lut_u8(table, fresnel_i_qlut_n(n), 0, fresnel_i_sqrt_w(c));
 }
 fresnel_q15 fresnel_lut_linear_u8_q15(const uint8_t *table, int n, int32_t c)
 {
-    return fresnel_i_lut_u8(table, fresnel_i_lut_n(n), 0, fresnel_i_linear_w(c));
+    return fresnel_i_lut_u8(table, fresnel_i_qlut_n(n), 0, fresnel_i_linear_w(c));
 }
 fresnel_q15 fresnel_lut_residual_s16_q15(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
-    return fresnel_i_lut_s16(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_sqrt_w(c), c);
+    return fresnel_i_lut_s16(f0, table, fresnel_i_qlut_n(n), 0, frac, fresnel_i_sqrt_w(c), c);
 }
 fresnel_q15 fresnel_lut_linear_residual_s16_q15(int32_t f0, const int16_t *table, int n, int frac, int32_t c)
 {
-    return fresnel_i_lut_s16(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_linear_w(c), c);
+    return fresnel_i_lut_s16(f0, table, fresnel_i_qlut_n(n), 0, frac, fresnel_i_linear_w(c), c);
 }
 fresnel_q15 fresnel_lut_residual_s8_q15(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
-    return fresnel_i_lut_s8(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_sqrt_w(c), c);
+    return fresnel_i_lut_s8(f0, table, fresnel_i_qlut_n(n), 0, frac, fresnel_i_sqrt_w(c), c);
 }
 fresnel_q15 fresnel_lut_linear_residual_s8_q15(int32_t f0, const int8_t *table, int n, int frac, int32_t c)
 {
-    return fresnel_i_lut_s8(f0, table, fresnel_i_lut_n(n), 0, frac, fresnel_i_linear_w(c), c);
+    return fresnel_i_lut_s8(f0, table, fresnel_i_qlut_n(n), 0, frac, fresnel_i_linear_w(c), c);
 }
 
-/* RGB: n red nodes, then n green, then n blue (n as fresnel_i_lut_n gives it). */
+/* RGB: n red nodes, then n green, then n blue (n as fresnel_i_qlut_n gives it). */
 fresnel_rgb_q15 fresnel_lut_u16_q15_rgb(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x = fresnel_i_sqrt_w(c);
-    n = fresnel_i_lut_n(n);
+    n = fresnel_i_qlut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_u16(table, n, 0, x), fresnel_i_lut_u16(table, n, 1, x), fresnel_i_lut_u16(table, n, 2, x));
 }
 fresnel_rgb_q15 fresnel_lut_linear_u16_q15_rgb(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x = fresnel_i_linear_w(c);
-    n = fresnel_i_lut_n(n);
+    n = fresnel_i_qlut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_u16(table, n, 0, x), fresnel_i_lut_u16(table, n, 1, x), fresnel_i_lut_u16(table, n, 2, x));
 }
 fresnel_rgb_q15 fresnel_lut_u8_q15_rgb(const uint8_t *table, int n, int32_t c)
 {
     uint32_t x = fresnel_i_sqrt_w(c);
-    n = fresnel_i_lut_n(n);
+    n = fresnel_i_qlut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_u8(table, n, 0, x), fresnel_i_lut_u8(table, n, 1, x), fresnel_i_lut_u8(table, n, 2, x));
 }
 fresnel_rgb_q15 fresnel_lut_linear_u8_q15_rgb(const uint8_t *table, int n, int32_t c)
 {
     uint32_t x = fresnel_i_linear_w(c);
-    n = fresnel_i_lut_n(n);
+    n = fresnel_i_qlut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_u8(table, n, 0, x), fresnel_i_lut_u8(table, n, 1, x), fresnel_i_lut_u8(table, n, 2, x));
 }
 fresnel_rgb_q15 fresnel_lut_residual_s16_q15_rgb(fresnel_rgb_q15 f0, const int16_t *table, int n, int frac,
                                                  int32_t c)
 {
     uint32_t x = fresnel_i_sqrt_w(c);
-    n = fresnel_i_lut_n(n);
+    n = fresnel_i_qlut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_s16(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s16(f0.g, table, n, 1, frac, x, c),
                 fresnel_i_lut_s16(f0.b, table, n, 2, frac, x, c));
 }
@@ -384,7 +384,7 @@ fresnel_rgb_q15 fresnel_lut_linear_residual_s16_q15_rgb(fresnel_rgb_q15 f0, cons
                                                         int frac, int32_t c)
 {
     uint32_t x = fresnel_i_linear_w(c);
-    n = fresnel_i_lut_n(n);
+    n = fresnel_i_qlut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_s16(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s16(f0.g, table, n, 1, frac, x, c),
                 fresnel_i_lut_s16(f0.b, table, n, 2, frac, x, c));
 }
@@ -392,7 +392,7 @@ fresnel_rgb_q15 fresnel_lut_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const int8_t
                                                 int32_t c)
 {
     uint32_t x = fresnel_i_sqrt_w(c);
-    n = fresnel_i_lut_n(n);
+    n = fresnel_i_qlut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_s8(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s8(f0.g, table, n, 1, frac, x, c),
                 fresnel_i_lut_s8(f0.b, table, n, 2, frac, x, c));
 }
@@ -400,7 +400,7 @@ fresnel_rgb_q15 fresnel_lut_linear_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const
                                                        int frac, int32_t c)
 {
     uint32_t x = fresnel_i_linear_w(c);
-    n = fresnel_i_lut_n(n);
+    n = fresnel_i_qlut_n(n);
     FRESNEL_I_RGB_Q15(fresnel_i_lut_s8(f0.r, table, n, 0, frac, x, c), fresnel_i_lut_s8(f0.g, table, n, 1, frac, x, c),
                 fresnel_i_lut_s8(f0.b, table, n, 2, frac, x, c));
 }

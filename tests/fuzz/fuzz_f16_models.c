@@ -45,8 +45,7 @@
  *       and the product rounded to half, ulp 1/8 at positions >= 128) is off
  *       by a large part of a segment across a total-reflection edge (0.059
  *       at n 220 with nodes uniform in sqrt(c), 0.029 at n 185 uniform in c,
- *       in 150 s of fuzzing; it was 0.275 at n 250 with the old nodes
- *       uniform in the Schlick weight);
+ *       in 150 s of fuzzing);
  *   and small excesses elsewhere (Schlick, LSK, F0, F0 in medium,
  *   approximate conductor: see `make fuzz`'s output).
  * So here, unlike the other targets, a result beyond its documented bound

@@ -39,8 +39,8 @@ static int measured_kappa(float k)
 
 /* LSK's a is 2n from the host's fit (fresnel.h), so the measured eta range
  * gives a <= 200. The documented domain goes on to FRESNEL_A_MAX = 1e6,
- * where the error grows with a (finding F3: 6.8e-7 at a <= 2000, 1.2e-6 at
- * a near 1e6): outside a <= 200 only the range is checked. */
+ * where the error grows with a (6.8e-7 at a <= 2000, 1.2e-6 at a near
+ * 1e6): outside a <= 200 only the range is checked. */
 static int measured_a(float a)
 {
     return ref_clamp(a, 0.0, FRESNEL_A_MAX) <= 200.0;
