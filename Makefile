@@ -277,9 +277,11 @@ $(BUILD)/tests/test_fixed_bounds: tests/test_fixed_bounds.c $(FIXED_RC_OBJ) $(GE
 # Cross builds (ports/, ports/cross.sh): the fixed-point conformance program
 # run under qemu on a Cortex-M0, a Cortex-M4F and an RV32IMC, compared bit for
 # bit with the host; symbol checks of the fixed-point-only Cortex-M0 build;
-# instructions per call; code size per model, type and target.
+# instructions per call (and on AArch64 Linux, the mobile toolchains' target,
+# the binary32 runtime's); code size per model, type and target.
 #   make cross-test    what tests/test_cross.sh runs (PASS/FAIL lines)
-#   make cross-count   instructions per call (qemu -singlestep traces), Cortex-M0 cycles
+#   make cross-count   instructions per call (qemu -singlestep traces), Cortex-M0 cycles;
+#                      AArch64 binary32 and its NEON batches, gcc and clang at -O2, -O3
 #   make size          .text/.rodata per model and type, Cortex-M0/M4F, RV32IMC
 # cross-deps installs the missing Debian packages of tests/deps.sh's cross rows.
 .PHONY: cross-deps cross-data cross-test cross-count size
@@ -313,6 +315,11 @@ cross-count: cross-deps cross-data
 	    BUILD=$(BUILD) sh ports/cross.sh count $$t float | awk -F'\t' '{ printf "%-28s %6d %6d %6d", $$1, $$2, $$3, $$4; \
 	        if (NF >= 10) printf "   %6d %6d %6d   %6d %6d %6d", $$5, $$6, $$7, $$8, $$9, $$10; printf "\n" }' || exit 1; \
 	done
+	@for cc in gcc clang; do for opt in -O2 -O3; do \
+	    echo "== a64 binary32, AArch64 NEON, $$cc $$opt (qemu-aarch64 user mode, static glibc libm), copper at 550 nm, 33 cosines:" \
+	        "instructions mean min max; the batches per cosine, in calls of 256 cosines"; \
+	    BUILD=$(BUILD) sh ports/cross.sh count a64 $$cc $$opt | awk -F'\t' '{ printf "%-28s %6s %6s %6s\n", $$1, $$2, $$3, $$4 }' || exit 1; \
+	done; done
 
 size: cross-deps cross-data
 	@BUILD=$(BUILD) sh ports/cross.sh size
