@@ -208,16 +208,9 @@ static double row_error(const bench_target_row *rows, int n, const char *speed_n
     return NAN;
 }
 
-/* The last --speed file at canonical flag set k, or NULL. */
-static const speed_file *speed_at(const report_run *r, int k)
-{
-    const speed_file *f = NULL;
-    int i;
-    for (i = 0; i < r->speed_count; i++)
-        if (speed_flagset(r->speed[i]->opt) == k)
-            f = r->speed[i];
-    return f;
-}
+/* The compiler of a --speed file as its header names it ("gcc 12.2.0",
+ * "Debian Clang 14.0.6"), or "?" when the file has no compiler line. */
+static const char *speed_compiler(const speed_file *sf) { return *sf->compiler ? sf->compiler : "?"; }
 
 static void host_speed_targets(const report_run *r, FILE *f)
 {
@@ -231,40 +224,50 @@ static void host_speed_targets(const report_run *r, FILE *f)
     n = bench_target_errors(rows, BENCH_TARGET_ROWS);
     for (t = 0; t < speed_target_count; t++) {
         const speed_target *g = &speed_targets[t];
-        char goal[96], text[2048] = "", what[256];
-        int measured = 0, missed = 0;
+        char goal[96], text[4096] = "", what[256];
+        int covered[SPEED_FLAGSETS] = {0}, measured = 0, missed = 0;
         double en = row_error(rows, n, g->num), ed = row_error(rows, n, g->den);
         snprintf(goal, sizeof goal, "<= %gx at %s, <= %gx at %s (one process, median over interleaved rounds)",
                  g->goal[0], speed_flagset_names[0], g->goal[1], speed_flagset_names[1]);
-        for (k = 0; k < SPEED_FLAGSETS; k++) {
-            const speed_file *sf = speed_at(r, k);
-            const speed_ratio *q = sf ? speed_file_target(sf, g->id) : NULL;
-            const speed_row *a = sf ? speed_file_row(sf, g->num) : NULL, *b = sf ? speed_file_row(sf, g->den) : NULL;
+        /* every file at a flag set with a goal, in the order given (each compiler's) */
+        for (i = 0; i < r->speed_count; i++) {
+            const speed_file *sf = r->speed[i];
+            const speed_ratio *q = speed_file_target(sf, g->id);
+            const speed_row *a = speed_file_row(sf, g->num), *b = speed_file_row(sf, g->den);
             size_t len = strlen(text);
+            if ((k = speed_flagset(sf->opt)) < 0)
+                continue;
             if (!q || !a || !b) {
-                snprintf(text + len, sizeof text - len, "%s%s: not measured", *text ? "; " : "",
-                         speed_flagset_names[k]);
+                snprintf(text + len, sizeof text - len, "%s%s %s: not measured", *text ? "; " : "",
+                         speed_compiler(sf), speed_flagset_names[k]);
                 continue;
             }
-            measured++;
+            covered[k] = 1;
             if (q->med <= g->goal[k])
-                snprintf(text + len, sizeof text - len, "%s%s: %.2fx (quartiles %.2f-%.2f) pass", *text ? "; " : "",
-                         speed_flagset_names[k], q->med, q->q1, q->q3);
+                snprintf(text + len, sizeof text - len, "%s%s %s: %.2fx (quartiles %.2f-%.2f) pass", *text ? "; " : "",
+                         speed_compiler(sf), speed_flagset_names[k], q->med, q->q1, q->q3);
             else {
                 missed++;
                 snprintf(text + len, sizeof text - len,
-                         "%s%s: %.2fx (quartiles %.2f-%.2f) MISS: %s takes %.2fx the time of %s, goal %gx "
+                         "%s%s %s: %.2fx (quartiles %.2f-%.2f) MISS: %s takes %.2fx the time of %s, goal %gx "
                          "(%.2f ns against %.2f ns per evaluation)",
-                         *text ? "; " : "", speed_flagset_names[k], q->med, q->q1, q->q3, g->num, q->med, g->den,
-                         g->goal[k], a->ns[2], b->ns[2]);
+                         *text ? "; " : "", speed_compiler(sf), speed_flagset_names[k], q->med, q->q1, q->q3, g->num,
+                         q->med, g->den, g->goal[k], a->ns[2], b->ns[2]);
             }
+        }
+        for (k = 0; k < SPEED_FLAGSETS; k++) {
+            size_t len = strlen(text);
+            measured += covered[k];
+            if (!covered[k])
+                snprintf(text + len, sizeof text - len, "%s%s: not measured", *text ? "; " : "",
+                         speed_flagset_names[k]);
         }
         for (i = 0; i < r->speed_count; i++) { /* other flag sets: their ratio, no goal */
             const speed_ratio *q = speed_flagset(r->speed[i]->opt) < 0 ? speed_file_target(r->speed[i], g->id) : NULL;
             size_t len = strlen(text);
             if (q)
-                snprintf(text + len, sizeof text - len, "; %s: %.2fx (no goal at this flag set)", r->speed[i]->opt,
-                         q->med);
+                snprintf(text + len, sizeof text - len, "; %s %s: %.2fx (no goal at this flag set)",
+                         speed_compiler(r->speed[i]), r->speed[i]->opt, q->med);
         }
         if (missed && g->tried) {
             size_t len = strlen(text);
