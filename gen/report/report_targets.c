@@ -50,6 +50,11 @@ static const lut_variant lut_variants[] = {
     {"32 nodes uniform in sqrt(c), fitted values, Catmull-Rom (lut32-cubic)", 32, LUT_GRAZING, 1, 1},
     {"16 nodes uniform in a piecewise-linear sqrt(c), fitted, linear (lut16, grazing-pl)", 16, LUT_GRAZING_PL, 1, 0},
     {"32 nodes uniform in a piecewise-linear sqrt(c), fitted, linear (lut32, grazing-pl)", 32, LUT_GRAZING_PL, 1, 0},
+    {"16 nodes uniform in a piecewise-linear sqrt(c), fitted, Catmull-Rom (interpolated in double)", 16,
+     LUT_GRAZING_PL, 1, 1},
+    {"16 nodes uniform in c (2 - c), fitted, Catmull-Rom (no root; interpolated in double)", 16, LUT_WARP2, 1, 1},
+    {"16 nodes uniform in (1 + c - (1 - c)^16)/2, fitted, Catmull-Rom (no root; interpolated in double)", 16,
+     LUT_WARP16, 1, 1},
 };
 #define N_VARIANTS ((int)(sizeof lut_variants / sizeof lut_variants[0]))
 #define V_LUT16_CUBIC 5
@@ -61,6 +66,27 @@ typedef struct lut_result {
     double worst_mean, worst_max, gold_mean, gold_max;
     const char *worst_mean_at, *worst_max_at;
 } lut_result;
+
+/* Channel ch of Q1.15 table q (n nodes per channel) at cos code c, by the
+ * generator's own position and Catmull-Rom in double, rounded to a code:
+ * the warps no runtime function reads. */
+static fresnel_q15 lut_double_cubic(const uint16_t *q, int n, lut_spacing spacing, int32_t c)
+{
+    double pos = lut_position(spacing, c / 32768.0) * (n - 1), t, p0, p1, p2, p3, d, m1, m2, v;
+    int j = (int)pos;
+    if (j >= n - 1)
+        j = n - 2;
+    t = pos - j;
+    p0 = q[j > 0 ? j - 1 : 0];
+    p1 = q[j];
+    p2 = q[j + 1];
+    p3 = q[j + 2 < n ? j + 2 : n - 1];
+    d = p2 - p1;
+    m1 = 0.5 * (p2 - p0);
+    m2 = 0.5 * (p3 - p1);
+    v = floor(p1 + t * (m1 + t * ((3.0 * d - 2.0 * m1 - m2) + t * (m1 + m2 - 2.0 * d))) + 0.5);
+    return (fresnel_q15)(v < 0.0 ? 0.0 : (v > 65535.0 ? 65535.0 : v));
+}
 
 /* One metal through one variant in Q1.15: mean and max CIEDE2000. */
 static int lut_metal(report_run *r, const report_material *rm, const lut_variant *v, double *mean, double *max)
@@ -83,7 +109,11 @@ static int lut_metal(report_run *r, const report_material *rm, const lut_variant
     for (a = 0; a < REPORT_ANGLES; a++) {
         int32_t c = fixed_q15(report_cos(a));
         fresnel_rgb_q15 o;
-        if (v->spacing == LUT_GRAZING_PL) { /* the Cortex-M0 fast path, channel by channel */
+        if (v->cubic && v->spacing != LUT_GRAZING) { /* no runtime function: in double */
+            o.r = lut_double_cubic(q, v->n, v->spacing, c);
+            o.g = lut_double_cubic(q + v->n, v->n, v->spacing, c);
+            o.b = lut_double_cubic(q + 2 * v->n, v->n, v->spacing, c);
+        } else if (v->spacing == LUT_GRAZING_PL) { /* the Cortex-M0 fast path, channel by channel */
             o.r = fresnel_lut_pl_u16_q15_fast(q, v->n, c);
             o.g = fresnel_lut_pl_u16_q15_fast(q + v->n, v->n, c);
             o.b = fresnel_lut_pl_u16_q15_fast(q + 2 * v->n, v->n, c);
