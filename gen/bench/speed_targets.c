@@ -40,14 +40,23 @@ const speed_target speed_targets[] = {
      "the outer nodes by index arithmetic instead of branches (same results, no measurable change) was kept; a "
      "reordered polynomial (3%, other last bits) was not. The call is a chain: square root, position to integer "
      "and back, four loads, a three-step Horner polynomial and the clamp to the nodes' range, against Schlick's "
-     "five products; linear interpolation through the same position (lut32-f32) costs about 1.4x"},
+     "five products; linear interpolation through the same position (lut32-f32) costs about 1.4x. Nodes uniform "
+     "in a root-free warp (the generator fits them; the report's LUT table) were not kept: the root is about 3% of "
+     "the call (c (2 - c) in its place measured 2.91x against 3.00x, gcc -O2, AMD Zen 4), and at equal size the "
+     "warps lose accuracy (16 nodes, worst max dE2000 0.45 for c (2 - c), 0.063 for (1 + c - (1 - c)^16)/2, "
+     "against 0.0155): the time is the cubic's own, four loads, the index arithmetic and the clamp to its two "
+     "nodes around the Catmull-Rom sum"},
     {"lut32-q15-vs-schlick-q15", "lut32-q15", "schlick-q15",
      "fresnel_lut_u16_q15, 32 nodes, against fresnel_schlick_q15", {3.0, 3.0}, NULL},
     {"lut16-cubic-q15-vs-schlick-q15", "lut16-cubic-q15", "schlick-q15",
      "fresnel_lut_cubic_u16_q15, 16 nodes, against fresnel_schlick_q15", {3.0, 3.0},
      "sqrt(c) from two chord tables instead of 30 digit steps (bit-identical) was kept (from about 24x); every "
      "helper inlined (6%, twice the Cortex-M0 code) and a branch-free four-tap sum (no gain) were not. Without any "
-     "root (nodes uniform in c) the Q1.15 Catmull-Rom alone costs about 2x Q1.15 Schlick"},
+     "root (nodes uniform in c) the Q1.15 Catmull-Rom alone costs about 2x Q1.15 Schlick. Nodes uniform in the "
+     "root-free warp c (2 - c) (one product for the root) measured 2.19x at -O2 and 2.07x at -O3 -march=native "
+     "(gcc, AMD Zen 4), within the goal, but at equal size its worst max dE2000 is 0.45 against sqrt(c)'s 0.0155, "
+     "and (1 + c - (1 - c)^16)/2 reaches 0.063, four times sqrt(c)'s and above the lut16 target's 0.05 (the "
+     "report's LUT table), so sqrt(c) stays: its exact root is the half of the call above the goal"},
     {"lut16-linear-q15-vs-schlick-q15", "lut16-linear-q15", "schlick-q15",
      "fresnel_lut_linear_u16_q15, 16 nodes, against fresnel_schlick_q15", {3.0, 3.0}, NULL},
 };
