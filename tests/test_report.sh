@@ -70,6 +70,30 @@ if "$F" report --scene "$t/one.scene" -o "$t/sp" --no-timing --no-instructions -
 else
     echo "FAIL report --speed: $(tail -3 "$t/log")"
 fi
+# The Cortex-M0 targets read their rows by name from `make cross-count`'s
+# m0 section: a row whose name begins another's ("lut u16", "lut u16 fast")
+# is itself, and a miss says where its instructions go.
+{
+    echo "== m0 fixed point: per call (synthetic)"
+    echo "schlick                          92     86     92      154    150    155      433    429    434"
+    echo "lut u16                         187     90    201      276    172    294      604    296    635"
+    echo "schlick fast                     20     20     20       27     27     27      151    151    151"
+    echo "f82 fast                         35     35     35       51     51     51      268    268    268"
+    echo "lut u16 fast                     58      7     76       83     22    114      229     22    269"
+    echo "lut u16 pl fast                  29     29     33       37     37     39      130    130    132"
+    echo "== m4f fixed point: per call (synthetic)"
+    echo "lut u16                          99     64    145"
+} >"$t/cross.txt"
+if "$F" report --scene "$t/one.scene" -o "$t/cr" --no-timing --no-instructions --cross "$t/cross.txt" >"$t/log" 2>&1; then
+    lut=$(grep '^| Cortex-M0 fixed point, LUT (u16, 64 nodes, nodes uniform in sqrt(c))' "$t/cr/report.md")
+    case "$lut" in
+    *"| 58 inline fast path (library function 187); the square root of the position"*"| **MISS** |")
+        echo "PASS report: the Cortex-M0 LUT row reads 'lut u16' itself, not the longer 'lut u16 fast', and its miss says where the instructions go" ;;
+    *) echo "FAIL report Cortex-M0 LUT row: $lut" ;;
+    esac
+else
+    echo "FAIL report --cross: $(tail -3 "$t/log")"
+fi
 "$F" report --scene "$t/one.scene" -o "$t/sp0" --no-timing --no-instructions >/dev/null 2>&1
 grep -q '^| Host speed against .* | not measured |$' "$t/sp0/report.md" &&
     echo "PASS report: without --speed the host speed targets are 'not measured'" ||
