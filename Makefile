@@ -141,26 +141,31 @@ test: deps
 
 # Benchmarks, never tests: `make report` writes build/report/ (accuracy against
 # the spectral ground truth, time and instructions per evaluation, plots, and
-# the speed targets from `make bench` at -O2 and -O3 -march=native, saved as
-# build/report/speed-*.txt), `make bench` prints time per evaluation against
-# the peers' algorithms (below).
+# the speed targets from `make bench` by gcc and clang at -O2 and -O3
+# -march=native, saved as build/report/speed-COMPILER-*.txt), `make bench`
+# prints time per evaluation against the peers' algorithms (below).
 report: $(BUILD)/fresnel
 	@mkdir -p $(BUILD)/report
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) cross-count > $(BUILD)/report/cross-count.txt
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) size > $(BUILD)/report/size.txt
-	$(MAKE) -s --no-print-directory BUILD=$(BUILD) OPT=-O2 bench-run > $(BUILD)/report/speed-O2.txt
-	$(MAKE) -s --no-print-directory BUILD=$(BUILD) OPT='-O3 -march=native' bench-run > $(BUILD)/report/speed-O3-native.txt
+	for cc in $(BENCH_CCS); do \
+	    $(MAKE) -s --no-print-directory BUILD=$(BUILD) CC=$$cc OPT=-O2 bench-run > $(BUILD)/report/speed-$$cc-O2.txt && \
+	    $(MAKE) -s --no-print-directory BUILD=$(BUILD) CC=$$cc OPT='-O3 -march=native' bench-run \
+	        > $(BUILD)/report/speed-$$cc-O3-native.txt || exit 1; \
+	done
 	$(BUILD)/fresnel report -o $(BUILD)/report --cross $(BUILD)/report/cross-count.txt --size $(BUILD)/report/size.txt \
-	    --speed $(BUILD)/report/speed-O2.txt --speed $(BUILD)/report/speed-O3-native.txt
+	    $(foreach cc,$(BENCH_CCS),--speed $(BUILD)/report/speed-$(cc)-O2.txt --speed $(BUILD)/report/speed-$(cc)-O3-native.txt)
 	@echo "make report: build/report/report.md (targets, accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/"
 
 # `make bench` times the library against the peers' algorithms and floor
-# loops (tests/speed/speed.c; the file format is in gen/bench/speed_targets.h) at
-# -O2 and at -O3 -march=native, or only at the flag set given
+# loops (tests/speed/speed.c; the file format is in gen/bench/speed_targets.h),
+# built by gcc and by clang (or only by the CC given: `make bench CC=clang`)
+# at -O2 and at -O3 -march=native, or only at the flag set given
 # (`make bench OPT='-O3 -march=native'`). Each compiler and flag set builds
 # the program, the runtime's sources and the peers in its own directory,
 # with $(OPT) $(MATH_FLAGS), so no object of another flag set is reused.
 # SPEED_ARGS='--rounds R' sets the number of interleaved rounds (default 41).
+BENCH_CCS := $(if $(filter command line environment,$(origin CC)),$(CC),gcc clang)
 SPEED_DIR := $(BUILD)/bench/$(notdir $(firstword $(CC)))$(subst =,-,$(subst $() ,,$(OPT)))
 SPEED_SRC := tests/speed/speed.c tests/speed/kernels.c gen/bench/bench_compare.c gen/bench/speed_targets.c \
              $(wildcard src/f32/*.c src/q15/*.c)
@@ -174,10 +179,12 @@ bench-run: $(SPEED_DIR)/speed
 
 bench:
 ifeq ($(origin OPT),file)
-	@$(MAKE) --no-print-directory BUILD=$(BUILD) OPT=-O2 bench-run
-	@$(MAKE) --no-print-directory BUILD=$(BUILD) OPT='-O3 -march=native' bench-run
+	@for cc in $(BENCH_CCS); do \
+	    $(MAKE) --no-print-directory BUILD=$(BUILD) CC=$$cc OPT=-O2 bench-run && \
+	    $(MAKE) --no-print-directory BUILD=$(BUILD) CC=$$cc OPT='-O3 -march=native' bench-run || exit 1; \
+	done
 else
-	@$(MAKE) --no-print-directory BUILD=$(BUILD) bench-run
+	@for cc in $(BENCH_CCS); do $(MAKE) --no-print-directory BUILD=$(BUILD) CC=$$cc bench-run || exit 1; done
 endif
 
 # `make viewer`: the viewer's scene as one page, build/viewer/index.html
@@ -287,9 +294,11 @@ $(BUILD)/tests/test_fixed_bounds: tests/test_fixed_bounds.c $(FIXED_RC_OBJ) $(GE
 # Cross builds (ports/, ports/cross.sh): the fixed-point conformance program
 # run under qemu on a Cortex-M0, a Cortex-M4F and an RV32IMC, compared bit for
 # bit with the host; symbol checks of the fixed-point-only Cortex-M0 build;
-# instructions per call; code size per model, type and target.
+# instructions per call (and on AArch64 Linux, the mobile toolchains' target,
+# the binary32 runtime's); code size per model, type and target.
 #   make cross-test    what tests/test_cross.sh runs (PASS/FAIL lines)
-#   make cross-count   instructions per call (qemu -singlestep traces), Cortex-M0 cycles
+#   make cross-count   instructions per call (qemu -singlestep traces), Cortex-M0 cycles;
+#                      AArch64 binary32 and its NEON batches, gcc and clang at -O2, -O3
 #   make size          .text/.rodata per model and type, Cortex-M0/M4F, RV32IMC
 # cross-deps installs the missing Debian packages of tests/deps.sh's cross rows.
 .PHONY: cross-deps cross-data cross-test cross-count size
@@ -323,6 +332,11 @@ cross-count: cross-deps cross-data
 	    BUILD=$(BUILD) sh ports/cross.sh count $$t float | awk -F'\t' '{ printf "%-28s %6d %6d %6d", $$1, $$2, $$3, $$4; \
 	        if (NF >= 10) printf "   %6d %6d %6d   %6d %6d %6d", $$5, $$6, $$7, $$8, $$9, $$10; printf "\n" }' || exit 1; \
 	done
+	@for cc in gcc clang; do for opt in -O2 -O3; do \
+	    echo "== a64 binary32, AArch64 NEON, $$cc $$opt (qemu-aarch64 user mode, static glibc libm), copper at 550 nm, 33 cosines:" \
+	        "instructions mean min max; the batches per cosine, in calls of 256 cosines"; \
+	    BUILD=$(BUILD) sh ports/cross.sh count a64 $$cc $$opt | awk -F'\t' '{ printf "%-28s %6s %6s %6s\n", $$1, $$2, $$3, $$4 }' || exit 1; \
+	done; done
 
 size: cross-deps cross-data
 	@BUILD=$(BUILD) sh ports/cross.sh size

@@ -92,8 +92,8 @@
  * THREAD SAFETY
  *   No global state, no allocation, no stdio, no errno: every function is
  *   reentrant. <math.h> is used: sqrtf everywhere, expf and log1pf
- *   (generalized Schlick with p != 5, LSK compensation), fmaf only where the compiler
- *   says it is fast (FP_FAST_FMAF).
+ *   (generalized Schlick with p != 5, LSK compensation), fmaf only where the target
+ *   has the instruction (FP_FAST_FMAF, __FMA__, __ARM_FEATURE_FMA).
  *   Build src/ without -ffast-math, -ffinite-math-only, -fassociative-math
  *   and -Ofast: the NaN policy needs NaN comparisons, and the exact forms
  *   (critical angles) need IEEE rounding. src/f32/internal.h stops the build
@@ -340,7 +340,7 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  * SIMD, chosen at compile time from the target: AVX-512F 16 lanes (compiled
  * by the tests, run only on a CPU that has it), AVX/AVX2 8, SSE2 4, AArch64
  * NEON 4; an x86-64 build without AVX (the -O2 default) has the AVX2 kernel
- * too and takes it where the CPU has AVX2 (gcc, clang); portable C
+ * too and takes it where the CPU has AVX2 and FMA (gcc, clang); portable C
  * elsewhere and with FRESNEL_CFG_NO_SIMD (fresnel_config.h).
  * Error <= FRESNEL_BOUND_CONDUCTOR_PREPARED.
  * rgb_batch, three channels of one form (the forms: kappa = 0, eta != 1;

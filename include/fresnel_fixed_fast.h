@@ -49,7 +49,7 @@
 #endif
 
 #define FRESNEL_BOUND_SCHLICK_Q15_FAST 2.9
-#define FRESNEL_BOUND_F82_Q15_FAST 5.8
+#define FRESNEL_BOUND_F82_Q15_FAST 5.2
 #define FRESNEL_BOUND_LUT_Q15_FAST 1.0         /* 2 <= n <= 64 */
 #define FRESNEL_BOUND_LUT_Q15_FAST_1024 2.8    /* n <= 1024 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST 3.4      /* n <= 64 */
@@ -115,24 +115,24 @@ FRESNEL_FAST_INLINE fresnel_rgb_q15 fresnel_schlick_q15_rgb_fast(fresnel_rgb_q15
  * [-38849, 72300]). Domain: f0 and c as PRECONDITIONS says, a_q12 in
  * [FRESNEL_F82_A_MIN_Q15_FAST, FRESNEL_F82_A_MAX_Q15_FAST].
  * Error <= FRESNEL_BOUND_F82_Q15_FAST LSB against fresnel_f82 at the
- * unrounded a, reached only at unphysical corners (F0 = 1, F82 = 0:
- * a = 17.7). Cost: 7 mul. */
+ * unrounded a, reached only at unphysical corners (F0 = 0, F82 = 1:
+ * a = -9.5). Cost: 7 mul. */
 #define FRESNEL_F82_A_MIN_Q15_FAST (-72296)
 #define FRESNEL_F82_A_MAX_Q15_FAST 144592
 FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
-    /* Schlick as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
+    /* x^5 as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
      * error matters: a c multiplies it), c x^6 in Q18 (at most 14852, at
      * c = 4654, so F0 = one with a_q12 below -72296 would overflow int32),
-     * the sum in units of 2^-30 (|a_q12 c x^6| < 2^30.1, Schlick 2^30). */
+     * Schlick's blend and the sum in units of 2^-30 (|a_q12 c x^6| < 2^30.1,
+     * the blend <= 2^30), truncated once; below 0 is 0 as in
+     * fresnel_i_fast_c, without a branch. */
     uint32_t cu = fresnel_i_fast_c(c), x = 32768u - cu;
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15, x5 = (x4 * x) >> 15;
     uint32_t cx6 = (cu * ((x2 * x4) >> 12)) >> 15; /* c x^6 <= 0.0567: c x6_q18 < 2^29 */
-    int32_t v = (int32_t)(fresnel_i_fast_blend((uint32_t)f0, x5) << 15) - a_q12 * (int32_t)cx6;
-    uint32_t r = (uint32_t)v >> 15;
-    if (v <= 0)
-        return 0;
-    return (fresnel_q15)(r > 32768u ? 32768u : r);
+    int32_t v = (int32_t)(((uint32_t)f0 << 15) + (32768u - (uint32_t)f0) * x5) - a_q12 * (int32_t)cx6;
+    uint32_t r = fresnel_i_fast_c(v) >> 15;
+    return (fresnel_q15)(r < 32768u ? r : 32768u);
 }
 
 /* The same for three channels, on the constants `fresnel gen` emits for a

@@ -8,7 +8,9 @@
 # before it (a function that returns its argument through the same loop) is
 # subtracted call by call. (row starts at 0: an uninitialised awk variable is
 # the empty string as an array subscript, which kept the loop row apart from
-# row 0.)
+# row 0.) A name line may carry, after a tab, the number of evaluations one
+# call of its row makes (the batches): that row is reported per
+# evaluation, to one decimal.
 #
 # Cycles (with OBJDUMP, Arm targets): each executed instruction costs its
 # Cortex-M0 time, from the Cortex-M0 Technical Reference Manual (Arm DDI
@@ -49,7 +51,10 @@ fi
 awk -v mark="/$mark/" -v names="$trace.names" -v isa="$trace.isa" -v per="$per" '
 function hexval(s,    i, v) { v = 0; s = tolower(s); for (i = 1; i <= length(s); i++) v = v * 16 + index("0123456789abcdef", substr(s, i, 1)) - 1; return v }
 BEGIN {
-    while ((getline line < names) > 0) name[nrow++] = line
+    nrow = 0
+    while ((getline line < names) > 0) {
+        nf = split(line, parts, "\t"); name[nrow] = parts[1]; each[nrow] = nf > 1 ? parts[2] + 0 : 1; nrow++
+    }
     ncyc = 0
     while ((getline line < isa) > 0) {
         split(line, f, "\t"); m = f[3]; sub(/\.[nw]$/, "", m); ops = f[4]
@@ -103,6 +108,8 @@ END {
         }
         if (ncyc)
             printf "%s\t%.0f\t%d\t%d\t%.0f\t%d\t%d\t%.0f\t%d\t%d\n", name[r], s / (per - 1), lo, hi, s1 / (per - 1), lo1, hi1, s32 / (per - 1), lo32, hi32
+        else if (each[r] > 1)
+            printf "%s\t%.1f\t%.1f\t%.1f\n", name[r], s / (per - 1) / each[r], lo / each[r], hi / each[r]
         else
             printf "%s\t%.0f\t%d\t%d\n", name[r], s / (per - 1), lo, hi
     }

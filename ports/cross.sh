@@ -10,10 +10,14 @@
 #   cross.sh conform TARGET STRIDE     conformance run vs the host, bit for bit
 #   cross.sh count TARGET              instructions per call (qemu trace); on
 #                                      m0 also cycles (1- and 32-cycle MULS)
+#   cross.sh count a64 gcc|clang OPT   the binary32 runtime on AArch64 Linux
+#                                      (NEON batches), built by that compiler
+#                                      at OPT, instructions per call
 #   cross.sh size                      .text/.rodata per model, type and target
 #
 # TARGET is m0 (qemu -M microbit, Cortex-M0), m4f (qemu -M mps2-an386,
-# Cortex-M4F) or rv32 (qemu-riscv32 user mode, RV32IMC).
+# Cortex-M4F) or rv32 (qemu-riscv32 user mode, RV32IMC); for count also a64
+# (qemu-aarch64 user mode, AArch64 Linux, static glibc).
 set -u
 BUILD=${BUILD:-build}
 OUT=$BUILD/cross
@@ -161,8 +165,34 @@ cmd_nm() {
     fi
 }
 
+# The binary32 runtime (tests/cross/bench_float.c with its batch rows, no
+# binary16) on AArch64 Linux, built by gcc or clang at OPT with the
+# runtime's math flags (the Makefile's MATH_FLAGS), counted under
+# qemu-aarch64 user mode: the phones' and tablets' toolchains and NEON.
+cmd_count_a64() { # gcc|clang OPT
+    case $1 in
+    gcc) cc="aarch64-linux-gnu-gcc" ;;
+    clang) cc="clang --target=aarch64-linux-gnu" ;;
+    *) echo "cross.sh: count a64 takes gcc or clang, not '$1'" >&2; exit 2 ;;
+    esac
+    need aarch64-linux-gnu-gcc
+    need qemu-aarch64-static
+    d=$OUT/a64/$1$(echo "$2" | tr -d ' =')
+    mkdir -p "$d"
+    $cc $W $2 -fno-math-errno -fno-trapping-math -static -DFRESNEL_CONFIG=FRESNEL_CFG_NO_F16 -DBENCH_BATCH_N=256 \
+        $INC tests/cross/bench_float.c "$OUT/conform_data.c" ports/common/port_print.c ports/host/port.c \
+        $F32_SRC -lm -o "$d/bench.elf" || exit 1
+    qemu-aarch64-static -singlestep -d exec,nochain -D "$d/trace.log" "$d/bench.elf" >"$d/bench.txt" || exit 1
+    sh ports/count.sh aarch64-linux-gnu-nm "$d/bench.elf" "$d/trace.log" "$d/bench.txt"
+    rm -f "$d/trace.log" "$d/trace.log.names" "$d/trace.log.isa"
+}
+
 cmd_count() { # target [float]: name<TAB>mean<TAB>min<TAB>max on stdout (m0: + cycles, ports/count.sh)
     t=$1
+    if [ "$t" = a64 ]; then
+        cmd_count_a64 "${2:-}" "${3:-}"
+        return
+    fi
     if [ "${2:-}" = float ]; then
         # binary32 and binary16 runtimes with newlib's libm (Cortex-M only)
         target "$t"
@@ -298,7 +328,7 @@ case ${1:-} in
 check) cmd_check ;;
 nm) cmd_check && cmd_nm ;;
 conform) cmd_check && cmd_conform "$2" "$3" ;;
-count) cmd_check && cmd_count "$2" "${3:-}" ;;
+count) [ "$2" = a64 ] || cmd_check; cmd_count "$2" "${3:-}" "${4:-}" ;;
 size) cmd_check && cmd_size ;;
 *) sed -n '2,17p' "$0"; exit 2 ;;
 esac

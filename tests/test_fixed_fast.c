@@ -91,6 +91,18 @@ static void check_f82(const test_material *mat, int nmat)
         }
     }
     check_bound("f82, test materials", &w, FRESNEL_BOUND_F82_Q15_FAST, bad);
+    /* the ends of a_q12's domain (no F0, F82 gives them) with F0 at 0, one
+     * half and one, c over every code the preconditions allow: the sum's
+     * int32 range (UBSan in the sanitizer pass) and the clamp to [0, one] */
+    bad = 0;
+    for (a = 0; a < 2; a++)
+        for (b = 0; b <= 2; b++)
+            for (c = -2; c <= FRESNEL_C_MAX_Q15_FAST; c++) {
+                int32_t got = fresnel_f82_q15_fast(b * (ONE / 2), a ? FRESNEL_F82_A_MAX_Q15_FAST : FRESNEL_F82_A_MIN_Q15_FAST, c);
+                bad += got < 0 || got > ONE;
+            }
+    CHECK("fixed fast f82: a_q12 at both ends of its domain, F0 0, one half, one, every c code: results in [0, one]",
+          bad == 0, "%ld results outside", bad);
 }
 
 /* The position's root on every code: |S 2^-22 - sqrt(c 2^-15)|. */

@@ -162,6 +162,21 @@ int main(void)
         CHECK("LUT nodes: increasing from c = 0 to 1; runtime index matches generator nodes", ok, "mismatch");
     }
     {
+        /* the root-free warps: node i sits where the position is i/(n-1) */
+        static const lut_spacing warps[] = {LUT_GRAZING, LUT_WARP2, LUT_WARP16};
+        double worst = 0.0;
+        int ok = 1, k, w;
+        for (w = 0; w < 3; w++)
+            for (k = 0; k < 16; k++) {
+                double c = lut_node_cos(warps[w], k, 16);
+                worst = fmax(worst, fabs(lut_position(warps[w], c) * 15.0 - k));
+                ok &= c >= 0.0 && c <= 1.0 && (k == 0 || c > lut_node_cos(warps[w], k - 1, 16));
+            }
+        ok &= lut_node_cos(LUT_WARP16, 0, 16) == 0.0 && lut_node_cos(LUT_WARP16, 15, 16) == 1.0;
+        CHECK("LUT warps c(2-c), (1+c-(1-c)^16)/2: nodes increasing from 0 to 1, each at its position", ok && worst < 1e-12,
+              "position off by %.3g nodes", worst);
+    }
+    {
         /* Gold's red leaves the sRGB gamut: the policy keeps it visible in
          * params (unclamped) and clamps what the runtime gets. */
         derive_parameters(g, &(material_source){"au", NULL, NK_FORMAT_AUTO}, 25.0, 1.0, s, &p);

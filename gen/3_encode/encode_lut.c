@@ -29,15 +29,39 @@ static double pl_position(double c)
     return (fresnel_lut_pl_knots_q15[k] + (fresnel_lut_pl_knots_q15[k + 1] - fresnel_lut_pl_knots_q15[k]) * (u - k)) / 32768.0;
 }
 
-static double lut_position(lut_spacing spacing, double c)
+static double warp16(double c)
 {
-    return spacing == LUT_UNIFORM ? c : (spacing == LUT_GRAZING ? sqrt(c) : pl_position(c));
+    double m = 1.0 - c, m2 = m * m, m4 = m2 * m2, m8 = m4 * m4;
+    return 0.5 * (1.0 + c - m8 * m8);
+}
+
+double lut_position(lut_spacing spacing, double c)
+{
+    switch (spacing) {
+    case LUT_UNIFORM: return c;
+    case LUT_GRAZING_PL: return pl_position(c);
+    case LUT_WARP2: return c * (2.0 - c);
+    case LUT_WARP16: return warp16(c);
+    default: return sqrt(c);
+    }
 }
 
 double lut_node_cos(lut_spacing spacing, int i, int n)
 {
-    double w = (double)i / (n - 1), y = w * 32768.0;
+    double w = (double)i / (n - 1), y = w * 32768.0, lo = 0.0, hi = 1.0;
     int k = 0;
+    if (spacing == LUT_WARP2)
+        return 1.0 - sqrt(1.0 - w);
+    if (spacing == LUT_WARP16) { /* increasing: bisection to the last bit */
+        for (k = 0; k < 64; k++) {
+            double mid = 0.5 * (lo + hi);
+            if (warp16(mid) < w)
+                lo = mid;
+            else
+                hi = mid;
+        }
+        return i == n - 1 ? 1.0 : lo;
+    }
     if (spacing != LUT_GRAZING_PL)
         return spacing == LUT_UNIFORM ? w : w * w; /* grazing: uniform in sqrt(c) */
     if (i == n - 1)

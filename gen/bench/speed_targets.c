@@ -11,31 +11,59 @@ const char *const speed_flagset_names[SPEED_FLAGSETS] = {"-O2", "-O3 -march=nati
 /* Row names are those of tests/speed/kernels.c. */
 const speed_target speed_targets[] = {
     {"batch-vs-mitsuba-inline", "conductor-batch", "mitsuba-inline",
-     "fresnel_conductor_batch against Mitsuba 3's fresnel_conductor inlined in an array loop (x86-64 host)", {0.5, 0.8}, NULL},
+     "fresnel_conductor_batch against Mitsuba 3's fresnel_conductor inlined in an array loop (x86-64 host)", {0.5, 0.8},
+     "fused multiply-adds in the scalar and the vector code alike where the target has them (clang 14 does not "
+     "define FP_FAST_FMAF, so its kernels had taken Dekker's split: clang -O3 -march=native on AVX-512 from 1.03x "
+     "to 0.87x), and FMA for the exact c^2 in the run-time AVX2 kernel of -O2 builds (clang -O2 from 0.59x to "
+     "0.49x) were kept; four vectors per step instead of two (no change) was not. Per cosine the batch needs two "
+     "correctly rounded square roots and a division, Mitsuba's form two and two, and one unit, not pipelined, "
+     "executes them: rows sqrt2-div1 and sqrt2-div2 (those operations alone, chained, at the run's width) are the "
+     "floor of each, and the batch runs about 10% above its own. Where the compiler brings Mitsuba's loop near "
+     "its floor (clang contracts it into FMAs: on an AMD Zen 4 with AVX-512, 0.57 ns against a floor of 0.54 ns "
+     "per cosine), 0.8x asks the batch to come within 3% of its floor (0.44 ns)"},
     {"rgb-batch-vs-mitsuba-inline", "conductor-rgb-batch", "mitsuba-inline-rgb",
      "fresnel_conductor_rgb_batch (three channels of one material) against Mitsuba 3's fresnel_conductor inlined "
      "per channel in an array loop",
-     {0.5, 0.8}, NULL},
+     {0.5, 0.8},
+     "the one-channel kernel per channel with the cosine terms shared and two vectors of cosines per step (one "
+     "per step: no change); the same floor as the one-channel batch, three times (rows sqrt2-div1 and "
+     "sqrt2-div2), and the interleaving of the three channels into rows on top"},
     {"conductor-vs-mitsuba-call", "conductor-call", "mitsuba-call",
      "fresnel_conductor against Mitsuba 3's fresnel_conductor, both out-of-line calls", {1.0, 1.0},
      "A = eta^2 - kappa^2 - sin^2 from exact squares in binary64 where the target has it in hardware (from 1.85x at "
      "-O2), one body for every form, one division (the Np-free ratio) were kept; computing every form and "
      "selecting, SSE min/max clamps, binary64 throughout, and prepare plus prepared inlined were slower or no "
      "better. The rest is the input clamps and the choice of form (with both removed the call measured 1.01x at "
-     "-O2), which buy the bound: 2.9e-7 against the textbook form's 3.6e-5"},
+     "-O2), which buy the bound: 2.9e-7 against the textbook form's 3.6e-5. Fused multiply-adds where the target "
+     "has them were kept (gcc -O3 -march=native from 1.20x to 1.14x, AMD Zen 4). A documented fast variant was "
+     "measured there and not shipped: without the input clamps and the choice of form (one body; eta kappa = 0 "
+     "or >= 2^-30 required) it took 1.07x (gcc -O2), 1.16x (clang -O2), 1.20x (gcc -O3 -march=native), 1.04x "
+     "(clang -O3 -march=native); only with A formed in binary32 as Mitsuba forms it did it beat the call (0.91x "
+     "gcc -O2, 1.02x clang -O2), at an error of 8.1e-5 over the Q15 fast path's domain and 0.023 beside a "
+     "dielectric's critical angle, far above 1e-5. The accurate form's floor is its binary64 A, about 1.2 ns of "
+     "the 9.2 ns call at gcc -O2, and the clamps"},
     {"lut16-cubic-vs-schlick", "lut16-cubic-f32", "schlick-f32",
      "fresnel_lut_cubic, 16 nodes, against fresnel_schlick (binary32 calls)", {1.5, 1.5},
      "the outer nodes by index arithmetic instead of branches (same results, no measurable change) was kept; a "
      "reordered polynomial (3%, other last bits) was not. The call is a chain: square root, position to integer "
      "and back, four loads, a three-step Horner polynomial and the clamp to the nodes' range, against Schlick's "
-     "five products; linear interpolation through the same position (lut32-f32) costs about 1.4x"},
+     "five products; linear interpolation through the same position (lut32-f32) costs about 1.4x. Nodes uniform "
+     "in a root-free warp (the generator fits them; the report's LUT table) were not kept: the root is about 3% of "
+     "the call (c (2 - c) in its place measured 2.91x against 3.00x, gcc -O2, AMD Zen 4), and at equal size the "
+     "warps lose accuracy (16 nodes, worst max dE2000 0.45 for c (2 - c), 0.063 for (1 + c - (1 - c)^16)/2, "
+     "against 0.0155): the time is the cubic's own, four loads, the index arithmetic and the clamp to its two "
+     "nodes around the Catmull-Rom sum"},
     {"lut32-q15-vs-schlick-q15", "lut32-q15", "schlick-q15",
      "fresnel_lut_u16_q15, 32 nodes, against fresnel_schlick_q15", {3.0, 3.0}, NULL},
     {"lut16-cubic-q15-vs-schlick-q15", "lut16-cubic-q15", "schlick-q15",
      "fresnel_lut_cubic_u16_q15, 16 nodes, against fresnel_schlick_q15", {3.0, 3.0},
      "sqrt(c) from two chord tables instead of 30 digit steps (bit-identical) was kept (from about 24x); every "
      "helper inlined (6%, twice the Cortex-M0 code) and a branch-free four-tap sum (no gain) were not. Without any "
-     "root (nodes uniform in c) the Q1.15 Catmull-Rom alone costs about 2x Q1.15 Schlick"},
+     "root (nodes uniform in c) the Q1.15 Catmull-Rom alone costs about 2x Q1.15 Schlick. Nodes uniform in the "
+     "root-free warp c (2 - c) (one product for the root) measured 2.19x at -O2 and 2.07x at -O3 -march=native "
+     "(gcc, AMD Zen 4), within the goal, but at equal size its worst max dE2000 is 0.45 against sqrt(c)'s 0.0155, "
+     "and (1 + c - (1 - c)^16)/2 reaches 0.063, four times sqrt(c)'s and above the lut16 target's 0.05 (the "
+     "report's LUT table), so sqrt(c) stays: its exact root is the half of the call above the goal"},
     {"lut16-linear-q15-vs-schlick-q15", "lut16-linear-q15", "schlick-q15",
      "fresnel_lut_linear_u16_q15, 16 nodes, against fresnel_schlick_q15", {3.0, 3.0}, NULL},
 };

@@ -405,7 +405,7 @@ static int write_cross(const report_run *r, FILE *f)
 {
     int status;
     if (r->cross_path) {
-        fputs("\n## Cortex-M0, Cortex-M4F and RV32IMC: instructions per call\n\n"
+        fputs("\n## Cortex-M0, Cortex-M4F, RV32IMC and AArch64: instructions per call\n\n"
               "From qemu instruction traces (`make cross-count`; ports/README.md explains the method), and on the "
               "Cortex-M0 cycles from its timings; each section's header names its materials, cosines and columns."
               "\n\n```\n", f);
@@ -428,7 +428,8 @@ static int write_speed(const report_run *r, FILE *f)
     if (!r->speed_count)
         return 0;
     fputs("\n## Host speed against other renderers' algorithms\n\n"
-          "The output of `make bench` at each flag set (speed/speed.c; format in gen/bench/speed_targets.h), from "
+          "The output of `make bench` for each compiler and flag set (speed/speed.c; format in "
+          "gen/bench/speed_targets.h), from "
           "which the targets table's speed rows come: ns per evaluation, one channel, and the time over the "
           "schlick-f32 row of the same round. The mitsuba-* and pbrt-* rows are this project's binary32 "
           "transcriptions (gen/bench/peers.h), no code of theirs, of Mitsuba 3's fresnel_conductor "
@@ -436,7 +437,8 @@ static int write_speed(const report_run *r, FILE *f)
           "an out-of-line call and inlined into the array loop.\n",
           f);
     for (i = 0; i < r->speed_count; i++) {
-        fprintf(f, "\n`make bench OPT='%s'`:\n\n```\n", r->speed[i]->opt);
+        fprintf(f, "\n`make bench OPT='%s'`, %s:\n\n```\n", r->speed[i]->opt,
+                *r->speed[i]->compiler ? r->speed[i]->compiler : "compiler not named");
         if ((status = copy_file(f, r->speed_paths[i])))
             return status;
         fputs("```\n", f);

@@ -16,7 +16,7 @@
 #define REPORT_ANGLES 91 /* theta = 0, 1, ..., 90 degrees */
 #define REPORT_MAX_TYPES 4
 #define REPORT_HOFFMAN 14 /* metals in Hoffman's table */
-#define REPORT_MAX_SPEED 4 /* --speed files */
+#define REPORT_MAX_SPEED 8 /* --speed files: gcc and clang at each flag set, and more */
 
 double report_cos(int angle); /* cos of angle degrees; exactly 0 at 90 */
 

@@ -1,10 +1,14 @@
 /* fresnel_conductor_batch's 8-lane kernel for x86-64 builds whose target
- * has no AVX (exact_batch.h): the same kernel source, compiled for AVX2 by
- * a target pragma and called only where the CPU has AVX2. */
+ * has no AVX (exact_batch.h): the same kernel source, compiled for AVX2 and
+ * FMA by a target pragma and called only where the CPU has both. The
+ * formula stays the build's own (internal.h is read before the pragma, so
+ * FRESNEL_I_FAST_FMA is the target's, 0): FMA forms only the exact low
+ * part of c^2, which Dekker's split gives the scalar code bit for bit. */
 #include "fresnel_config.h"
 
 #if FRESNEL_HAS_FLOAT && FRESNEL_HAS_SIMD && defined(__x86_64__) && defined(__SSE2__) && !defined(__AVX__) && \
     defined(__GNUC__) && (!defined(FRESNEL_I_SIMD_DISPATCH) || FRESNEL_I_SIMD_DISPATCH)
+#include "internal.h"
 #define FRESNEL_I_FORCE_AVX 1
 /* simd.h's and exact_batch.h's vector names, for this kernel: suffixed, so
  * that it can share a translation unit with exact.c's kernel at the build's
@@ -39,10 +43,10 @@
 #define fresnel_i_vsub fresnel_i_vsub_avx
 #define fresnel_i_vunit fresnel_i_vunit_avx
 #ifdef __clang__
-#pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
+#pragma clang attribute push(__attribute__((target("avx2,fma"))), apply_to = function)
 #else
 #pragma GCC push_options
-#pragma GCC target("avx2")
+#pragma GCC target("avx2,fma")
 #endif
 #include "exact_batch.h"
 

@@ -13,8 +13,8 @@
 enum { FRESNEL_I_MATCHED, FRESNEL_I_DIEL, FRESNEL_I_COND1, FRESNEL_I_COND2 };
 
 /* x86-64 builds for a target without AVX (the SSE2 baseline) carry the
- * batch's 8-lane kernel as well (exact_avx.c, compiled for AVX2 by a target
- * pragma) and take it where the CPU reports AVX2 (__builtin_cpu_supports,
+ * batch's 8-lane kernel as well (exact_avx.c, compiled for AVX2 and FMA by a
+ * target pragma) and take it where the CPU reports both (__builtin_cpu_supports,
  * which reads the feature word the compiler's runtime fills in once at
  * start-up; the library keeps no state of its own). */
 #if FRESNEL_I_SIMD_DISPATCH && FRESNEL_HAS_SIMD && defined(__x86_64__) && defined(__SSE2__) && \
@@ -51,9 +51,13 @@ struct fresnel_i_vprep {
     fresnel_i_vf a0, a0_lo, ek, ek4;
 };
 
-/* The terms of the cosine that do not depend on the material. */
+/* The terms of the cosine that do not depend on the material (cl, the low
+ * part of c^2, only where A is not formed by a fused multiply-add). */
 struct fresnel_i_vcos {
-    fresnel_i_vf c, ch, cl, s2, s4, c2;
+    fresnel_i_vf c, ch, s2, s4, c2;
+#if !FRESNEL_I_FAST_FMA
+    fresnel_i_vf cl;
+#endif
 };
 
 static inline struct fresnel_i_vcos fresnel_i_vcos_terms(fresnel_i_vf c)
@@ -62,8 +66,12 @@ static inline struct fresnel_i_vcos fresnel_i_vcos_terms(fresnel_i_vf c)
     struct fresnel_i_vcos t;
     t.c = fresnel_i_vunit(c);
     t.ch = fresnel_i_vmul(t.c, t.c);
+#if FRESNEL_I_FAST_FMA
+    t.s2 = fresnel_i_vfnma(t.c, t.c, one);
+#else
     t.cl = fresnel_i_vsquare_lo(t.c, t.ch);
     t.s2 = fresnel_i_vmul(fresnel_i_vsub(one, t.c), fresnel_i_vadd(one, t.c));
+#endif
     t.s4 = fresnel_i_vmul(t.s2, t.s2);
     t.c2 = fresnel_i_vadd(t.c, t.c);
     return t;
@@ -74,12 +82,20 @@ static inline fresnel_i_vf fresnel_i_vexact_terms(const struct fresnel_i_vprep *
 {
     const fresnel_i_vf one = fresnel_i_vset(1.0f);
     fresnel_i_vf a, m, tt, b, x, y, c2y, xs, xq, ns, ds, dp, f;
+#if FRESNEL_I_FAST_FMA
+    a = fresnel_i_vadd(fresnel_i_vfma(t->c, t->c, q->a0), q->a0_lo);
+#else
     a = fresnel_i_vadd(fresnel_i_vadd(q->a0, t->ch), fresnel_i_vadd(q->a0_lo, t->cl));
+#endif
     if (kind == FRESNEL_I_DIEL) {
         m = fresnel_i_vabs(a);
         tt = m;
     } else {
+#if FRESNEL_I_FAST_FMA
+        m = fresnel_i_vsqrt(fresnel_i_vfma(a, a, q->ek4));
+#else
         m = fresnel_i_vsqrt(fresnel_i_vadd(fresnel_i_vmul(a, a), q->ek4));
+#endif
         tt = fresnel_i_vmul(fresnel_i_vset(0.5f), fresnel_i_vadd(m, fresnel_i_vabs(a)));
     }
     b = fresnel_i_vsqrt(tt);
@@ -88,10 +104,18 @@ static inline fresnel_i_vf fresnel_i_vexact_terms(const struct fresnel_i_vprep *
     y = fresnel_i_vsel_nonneg(a, b, q->ek);
     c2y = fresnel_i_vmul(t->c2, y);
     xs = fresnel_i_vmul(x, fresnel_i_vadd(m, t->ch));
+#if FRESNEL_I_FAST_FMA
+    xq = fresnel_i_vmul(x, fresnel_i_vfma(t->ch, m, t->s4));
+#else
     xq = fresnel_i_vmul(x, fresnel_i_vadd(fresnel_i_vmul(t->ch, m), t->s4));
+#endif
     ns = fresnel_i_vsub(xs, c2y);
     ds = fresnel_i_vadd(xs, c2y);
+#if FRESNEL_I_FAST_FMA
+    dp = fresnel_i_vfma(c2y, t->s2, xq);
+#else
     dp = fresnel_i_vadd(xq, fresnel_i_vmul(c2y, t->s2));
+#endif
     if (kind == FRESNEL_I_COND2)
         f = fresnel_i_vmul(fresnel_i_vdiv(ns, ds), fresnel_i_vdiv(xq, dp));
     else

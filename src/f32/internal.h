@@ -61,11 +61,23 @@ static inline float fresnel_i_pow5(float x)
     return x2 * x2 * x;
 }
 
-/* x*x = hi + lo exactly (Dekker). The split keeps the top 12 significand bits
- * by masking, which no compiler contraction or reassociation can disturb. */
+/* The target has a fused multiply-add instruction, so fmaf is one
+ * instruction: gcc says so by FP_FAST_FMAF (math.h, from its
+ * __FP_FAST_FMAF), clang 14 only by the instruction set's own macro (x86
+ * FMA, Arm's __ARM_FEATURE_FMA: AArch64, FPv4 and later). */
+#if defined(FP_FAST_FMAF) || defined(__FMA__) || defined(__ARM_FEATURE_FMA)
+#define FRESNEL_I_FAST_FMA 1
+#else
+#define FRESNEL_I_FAST_FMA 0
+#endif
+
+/* x*x = hi + lo exactly: by a fused multiply-add where the target has one,
+ * else by Dekker's split, which keeps the top 12 significand bits by
+ * masking, so that no compiler contraction or reassociation can disturb it.
+ * Both give the exact lo, so the same hi + lo. */
 static inline void fresnel_i_square_exact(float x, float *hi, float *lo)
 {
-#ifdef FP_FAST_FMAF
+#if FRESNEL_I_FAST_FMA
     *hi = x * x;
     *lo = fmaf(x, x, -*hi);
 #else

@@ -3,17 +3,17 @@
  * compiler's target macros, so a kernel is written once and built at the
  * width the target has:
  *   __AVX512F__  16 lanes    __AVX__ 8 lanes    __SSE2__ 4 lanes
- *   (FRESNEL_I_FORCE_AVX: the AVX2 kernel that exact_avx.c compiles for
- *   run-time selection in an SSE2 build)
+ *   (FRESNEL_I_FORCE_AVX: the AVX2 kernel that exact_avx.c compiles, with
+ *   FMA for the exact square only, for run-time selection in an SSE2 build)
  *   __ARM_NEON on AArch64 (which has vector sqrt and divide) 4 lanes.
  * FRESNEL_CFG_NO_SIMD, or none of these, gives FRESNEL_I_VW 0 and the
  * kernels' scalar loops. Every operation is the IEEE one of the scalar code
  * (sqrt and divide correctly rounded, no contraction), so a lane gives the
  * scalar function's result bit for bit; fresnel_i_vfms (a b - c, one
- * rounding) only where the scalar
- * code uses fmaf (FP_FAST_FMAF). fresnel_i_vstore3 writes three vectors as
- * rows of three floats (fresnel_rgb): shuffles (SSE2, AVX), lane
- * permutations and blends (AVX2, AVX-512 by halves), vst3q (NEON). */
+ * rounding) only where the scalar code uses fmaf (FRESNEL_I_FAST_FMA,
+ * internal.h). fresnel_i_vstore3 writes three vectors as rows of three
+ * floats (fresnel_rgb): shuffles (SSE2, AVX), lane permutations and blends
+ * (AVX2, AVX-512 by halves), vst3q (NEON). */
 #ifndef FRESNEL_SIMD_H
 #define FRESNEL_SIMD_H
 
@@ -111,8 +111,10 @@ static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, f
     fresnel_i_store3_256(p, _mm512_castps512_ps256(r), _mm512_castps512_ps256(g), _mm512_castps512_ps256(b));
     fresnel_i_store3_256(p + 24, fresnel_i_vhi256(r), fresnel_i_vhi256(g), fresnel_i_vhi256(b));
 }
-#ifdef FP_FAST_FMAF
+#if FRESNEL_I_FAST_FMA
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm512_fmsub_ps(a, b, c); }
+static inline fresnel_i_vf fresnel_i_vfma(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm512_fmadd_ps(a, b, c); }
+static inline fresnel_i_vf fresnel_i_vfnma(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm512_fnmadd_ps(a, b, c); }
 #endif
 
 #elif defined(__AVX__) || defined(FRESNEL_I_FORCE_AVX)
@@ -153,8 +155,12 @@ static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, f
                          _mm256_extractf128_ps(b, 1));
 #endif
 }
-#ifdef FP_FAST_FMAF
+#if FRESNEL_I_FAST_FMA || defined(FRESNEL_I_FORCE_AVX)
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm256_fmsub_ps(a, b, c); }
+#endif
+#if FRESNEL_I_FAST_FMA
+static inline fresnel_i_vf fresnel_i_vfma(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm256_fmadd_ps(a, b, c); }
+static inline fresnel_i_vf fresnel_i_vfnma(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm256_fnmadd_ps(a, b, c); }
 #endif
 
 #elif defined(__SSE2__)
@@ -186,9 +192,11 @@ static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, f
 {
     fresnel_i_store3_128(p, r, g, b);
 }
-#ifdef FP_FAST_FMAF
+#if FRESNEL_I_FAST_FMA
 #include <immintrin.h>
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm_fmsub_ps(a, b, c); }
+static inline fresnel_i_vf fresnel_i_vfma(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm_fmadd_ps(a, b, c); }
+static inline fresnel_i_vf fresnel_i_vfnma(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return _mm_fnmadd_ps(a, b, c); }
 #endif
 
 #elif defined(__ARM_NEON) && defined(__aarch64__)
@@ -222,8 +230,10 @@ static inline void fresnel_i_vstore3(float *p, fresnel_i_vf r, fresnel_i_vf g, f
     v.val[2] = b;
     vst3q_f32(p, v);
 }
-#ifdef FP_FAST_FMAF
+#if FRESNEL_I_FAST_FMA
 static inline fresnel_i_vf fresnel_i_vfms(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return vnegq_f32(vfmsq_f32(c, a, b)); }
+static inline fresnel_i_vf fresnel_i_vfma(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return vfmaq_f32(c, a, b); }
+static inline fresnel_i_vf fresnel_i_vfnma(fresnel_i_vf a, fresnel_i_vf b, fresnel_i_vf c) { return vfmsq_f32(c, a, b); }
 #endif
 
 #endif
@@ -248,10 +258,13 @@ static inline fresnel_i_vf fresnel_i_vunit(fresnel_i_vf x)
     return fresnel_i_vmin(fresnel_i_vmax(x, fresnel_i_vset(0.0f)), fresnel_i_vset(1.0f));
 }
 
-/* x*x = hi + lo exactly, as fresnel_i_square_exact. */
+#if !FRESNEL_I_FAST_FMA
+/* x*x = hi + lo exactly, as fresnel_i_square_exact: the same lo by a fused
+ * multiply-add in the run-time AVX2 kernel (exact_avx.c, compiled for AVX2
+ * and FMA) as by the split in the scalar code of the build around it. */
 static inline fresnel_i_vf fresnel_i_vsquare_lo(fresnel_i_vf x, fresnel_i_vf hi)
 {
-#ifdef FP_FAST_FMAF
+#ifdef FRESNEL_I_FORCE_AVX
     return fresnel_i_vfms(x, x, hi);
 #else
     fresnel_i_vf xh = fresnel_i_vsplit_hi(x);
@@ -261,6 +274,7 @@ static inline fresnel_i_vf fresnel_i_vsquare_lo(fresnel_i_vf x, fresnel_i_vf hi)
     return fresnel_i_vadd(t, fresnel_i_vmul(xl, xl));
 #endif
 }
+#endif
 #endif
 
 #endif /* FRESNEL_I_SIMD_PART */

@@ -2,7 +2,11 @@
  * (fresnel_f16.h) runtimes on a target, as tests/cross/bench.c does for the
  * fixed-point one: same markers, same 33 cosines, copper at 550 nm. On the
  * Cortex-M0 both run on libgcc's soft-float and newlib's libm; on the
- * Cortex-M4F binary32 is the FPU and binary16 converts in hardware. */
+ * Cortex-M4F binary32 is the FPU and binary16 converts in hardware.
+ * With BENCH_BATCH_N (the AArch64 build, ports/cross.sh) the conductor
+ * batches join the binary32 rows: each call covers BENCH_BATCH_N cosines
+ * uniform in [0, 1], and the row's name line carries that number after a
+ * tab, so that ports/count.sh reports instructions per cosine. */
 #include "conform.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
@@ -11,7 +15,7 @@
 #define BENCH_CODES 33
 
 volatile float bench_sink;
-static float lut[CONFORM_LUT_N], residual[CONFORM_LUT_N];
+static float lut[CONFORM_LUT_N], lut_linear[CONFORM_LUT_N], residual[CONFORM_LUT_N];
 
 typedef float (*f32_eval)(const float *m, float c);
 static float e_none(const float *m, float c) { return m[0] + c; }
@@ -27,7 +31,31 @@ static float e_dielectric(const float *m, float c) { return fresnel_dielectric(m
 static float e_approx(const float *m, float c) { return fresnel_approx_conductor(m[0], m[1], c); }
 static float e_internal(const float *m, float c) { return fresnel_schlick_internal(m[2], m[0], c); }
 static float e_lut(const float *m, float c) { (void)m; return fresnel_lut(lut, CONFORM_LUT_N, c); }
+static float e_lut_cubic(const float *m, float c) { (void)m; return fresnel_lut_cubic(lut, CONFORM_LUT_N, c); }
+static float e_lut_linear(const float *m, float c) { (void)m; return fresnel_lut_linear(lut_linear, CONFORM_LUT_N, c); }
 static float e_lut_residual(const float *m, float c) { return fresnel_lut_residual(m[2], residual, CONFORM_LUT_N, c); }
+
+#ifdef BENCH_BATCH_N
+/* copper at 550 nm prepared once, in each of the three channels */
+static fresnel_conductor_prep prep[3];
+static float batch_cos[BENCH_BATCH_N], batch_out[BENCH_BATCH_N];
+static fresnel_rgb batch_rgb[BENCH_BATCH_N];
+static float e_prepared(const float *m, float c) { (void)m; return fresnel_conductor_prepared(&prep[0], c); }
+static float e_batch(const float *m, float c)
+{
+    (void)m, (void)c;
+    fresnel_conductor_batch(&prep[0], batch_cos, batch_out, BENCH_BATCH_N);
+    return batch_out[0];
+}
+static float e_rgb_batch(const float *m, float c)
+{
+    (void)m, (void)c;
+    fresnel_conductor_rgb_batch(prep, batch_cos, batch_rgb, BENCH_BATCH_N);
+    return batch_rgb[0].r;
+}
+#define BENCH_STR_(x) #x
+#define BENCH_STR(x) BENCH_STR_(x)
+#endif
 
 static const struct {
     const char *name;
@@ -45,7 +73,14 @@ static const struct {
     {"f32 approx-conductor", e_approx},
     {"f32 schlick-internal", e_internal},
     {"f32 lut", e_lut},
+    {"f32 lut-cubic", e_lut_cubic},
+    {"f32 lut-linear", e_lut_linear},
     {"f32 lut-residual", e_lut_residual},
+#ifdef BENCH_BATCH_N
+    {"f32 exact-conductor prepared", e_prepared},
+    {"f32 conductor-batch\t" BENCH_STR(BENCH_BATCH_N), e_batch},
+    {"f32 conductor-rgb-batch\t" BENCH_STR(BENCH_BATCH_N), e_rgb_batch},
+#endif
 };
 
 static void run32(const char *name, f32_eval fn, const float *cs)
@@ -62,7 +97,7 @@ static void run32(const char *name, f32_eval fn, const float *cs)
 
 #if FRESNEL_HAS_F16
 typedef fresnel_f16 (*f16_eval)(const fresnel_f16 *m, fresnel_f16 c);
-static fresnel_f16 m16[8], lut16[CONFORM_LUT_N], residual16[CONFORM_LUT_N];
+static fresnel_f16 m16[8], lut16[CONFORM_LUT_N], lut_linear16[CONFORM_LUT_N], residual16[CONFORM_LUT_N];
 static fresnel_f16 h_none(const fresnel_f16 *m, fresnel_f16 c) { (void)m; return c; }
 static fresnel_f16 h_schlick(const fresnel_f16 *m, fresnel_f16 c) { return fresnel_schlick_f16(m[2], c); }
 static fresnel_f16 h_schlick_gen(const fresnel_f16 *m, fresnel_f16 c)
@@ -79,6 +114,16 @@ static fresnel_f16 h_dielectric(const fresnel_f16 *m, fresnel_f16 c) { return fr
 static fresnel_f16 h_approx(const fresnel_f16 *m, fresnel_f16 c) { return fresnel_approx_conductor_f16(m[0], m[1], c); }
 static fresnel_f16 h_internal(const fresnel_f16 *m, fresnel_f16 c) { return fresnel_schlick_internal_f16(m[2], m[0], c); }
 static fresnel_f16 h_lut(const fresnel_f16 *m, fresnel_f16 c) { (void)m; return fresnel_lut_f16(lut16, CONFORM_LUT_N, c); }
+static fresnel_f16 h_lut_cubic(const fresnel_f16 *m, fresnel_f16 c)
+{
+    (void)m;
+    return fresnel_lut_cubic_f16(lut16, CONFORM_LUT_N, c);
+}
+static fresnel_f16 h_lut_linear(const fresnel_f16 *m, fresnel_f16 c)
+{
+    (void)m;
+    return fresnel_lut_linear_f16(lut_linear16, CONFORM_LUT_N, c);
+}
 static fresnel_f16 h_lut_residual(const fresnel_f16 *m, fresnel_f16 c)
 {
     return fresnel_lut_residual_f16(m[2], residual16, CONFORM_LUT_N, c);
@@ -100,6 +145,8 @@ static const struct {
     {"f16 approx-conductor", h_approx},
     {"f16 schlick-internal", h_internal},
     {"f16 lut", h_lut},
+    {"f16 lut-cubic", h_lut_cubic},
+    {"f16 lut-linear", h_lut_linear},
     {"f16 lut-residual", h_lut_residual},
 };
 
@@ -126,8 +173,15 @@ int main(void)
         cs[k] = (float)k / 32.0f;
     for (k = 0; k < CONFORM_LUT_N; k++) {
         lut[k] = conform_lut_u16[0][k] / 32768.0f;
+        lut_linear[k] = conform_lut_u16[1][k] / 32768.0f;
         residual[k] = conform_lut_s16[0][k] / (float)(1L << conform_lut_frac16);
     }
+#ifdef BENCH_BATCH_N
+    for (k = 0; k < 3; k++)
+        prep[k] = fresnel_conductor_prepare(conform_bench_float[0], conform_bench_float[1]);
+    for (k = 0; k < BENCH_BATCH_N; k++)
+        batch_cos[k] = (float)k / (float)(BENCH_BATCH_N - 1);
+#endif
     port_puts("BENCH\n");
     run32("(loop f32)", e_none, cs);
     for (k = 0; k < (int)(sizeof f32_rows / sizeof f32_rows[0]); k++)
@@ -139,6 +193,7 @@ int main(void)
             m16[k] = (fresnel_f16)conform_bench_float[k];
         for (k = 0; k < CONFORM_LUT_N; k++) {
             lut16[k] = (fresnel_f16)lut[k];
+            lut_linear16[k] = (fresnel_f16)lut_linear[k];
             residual16[k] = (fresnel_f16)residual[k];
         }
         for (k = 0; k < BENCH_CODES; k++)

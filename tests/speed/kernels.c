@@ -43,7 +43,25 @@ static inline float schlick_minimal(float f0, float c)
     return f0 + (1.0f - f0) * (m2 * m2 * m);
 }
 
+/* The square roots and divisions of the exact forms alone, chained as
+ * there: the conductor batch needs two roots and one division per cosine,
+ * Mitsuba's form two and two. Where one unit executes them (not
+ * pipelined), these loops are the floor of each, whatever else the loop
+ * does. Both results in [0, 1]. */
+static inline float roots_div(float c)
+{
+    float a = sqrtf(c + 1.0f), b = sqrtf(a + c);
+    return c / b;
+}
+static inline float roots_div_div(float c)
+{
+    float a = sqrtf(c + 1.0f), b = sqrtf(a + c);
+    return (c / b) / a;
+}
+
 LOOP(k_copy, c[i])
+LOOP(k_roots_div, roots_div(c[i]))
+LOOP(k_roots_div_div, roots_div_div(c[i]))
 LOOP(k_schlick_inline, schlick_minimal(f0, c[i]))
 LOOP(k_schlick, fresnel_schlick(f0, c[i]))
 LOOP_Q15(k_schlick_q15, fresnel_schlick_q15(f0q, cq[i]))
@@ -95,6 +113,8 @@ static void k_mitsuba_inline_rgb(const speed_ctx *x, const float *c, const int32
 const speed_kernel_def speed_kernels[] = {
     {"copy", "floor", k_copy, 0, 0},
     {"schlick-inline", "floor", k_schlick_inline, 0, 0},
+    {"sqrt2-div1", "floor", k_roots_div, 0, 0},
+    {"sqrt2-div2", "floor", k_roots_div_div, 0, 0},
     {"schlick-f32", "call", k_schlick, 0, 0},
     {"schlick-q15", "call", k_schlick_q15, 1, 0},
     {"schlick-q15-fast", "inline", k_schlick_q15_fast, 1, 0},

@@ -223,7 +223,9 @@ int main(int argc, char **argv)
            "(src/pbrt/util/scattering.h), no code of theirs\n"
            "# rows *-rgb: three channels of one material per cosine (copper), ns per cosine\n"
            "# forms: call = an out-of-line function per cosine; inline = a header's static function inlined into "
-           "the array loop; batch = the library's array function; floor = copy loop and minimal inline Schlick\n"
+           "the array loop; batch = the library's array function; floor = copy loop, minimal inline Schlick, and "
+           "the square roots and divisions of the exact forms alone (sqrt2-div1: the batch's two roots and one "
+           "division per cosine; sqrt2-div2: Mitsuba's two and two)\n"
            "#\n# row NAME FORM  ns per evaluation: min q1 median q3 max  time / schlick-f32 in the same round: "
            "median q1 q3\n",
            N, reps, rounds);
