@@ -107,7 +107,7 @@ static const struct material dielectrics[] = {
 
 /* LUT tables per metal and variant, each LUT_W = 3 LUT_N floats (r, g, b):
  * the exact conductor (or its difference from Schlick) at the nodes of
- * src/lut.c, uniform in sqrt(c) or in c. */
+ * src/f32/lut.c, uniform in sqrt(c) or in c. */
 static float lut_tables[NMETALS][LUT_VARIANTS][LUT_W];
 
 static void build_luts(void)

@@ -22,7 +22,7 @@
  *   enum NAME_frac        a residual table's fraction bits, [14, 30]
  * and each initialiser has exactly as many values as its type and length
  * need. Any other declared type is an error, so a new emitted type must be
- * added here. Used by tests/test_gen_matrix.c and the fuzz target
+ * added here. Used by tests/gen_matrix_check.c and the fuzz target
  * tests/fuzz/fuzz_gen_header.c. Host only. */
 #ifndef FRESNEL_HEADER_CHECK_H
 #define FRESNEL_HEADER_CHECK_H

@@ -29,7 +29,7 @@
  *  (fuzz finding F2 found this case above the first bound, 4e-7, measured on a
  *      coarser grid; the bound is now measured near F0 = 1: 5e-7.)
  *
- * Why the runtime does not lose them (see src/exact.c, src/internal.h):
+ * Why the runtime does not lose them (see src/f32/exact.c, src/f32/internal.h):
  *   - eta^2 - kappa^2 - sin^2 is (eta^2 + c^2 - 1) - kappa^2 with eta^2 and
  *     c^2 formed exactly and their sum's rounding carried: no 1 - c^2, and
  *     correct to a rounding of itself near the critical angle and at eta ~ 1;

@@ -1,5 +1,5 @@
 /* Stage 3 of the generator: LUT node positions and values for the runtime's
- * table models (include/fresnel.h, src/lut.c), fitted to the ground truth,
+ * table models (include/fresnel.h, src/f32/lut.c), fitted to the ground truth,
  * and every constant and table of a scene in each number type the runtime
  * reads (encode_constants.c). */
 #ifndef FRESNEL_ENCODE_H

@@ -100,7 +100,7 @@ static fresnel_rgb rgb3(float r, float g, float b)
     return x;
 }
 
-/* Linear interpolation in double on the same nodes as src/lut.c. */
+/* Linear interpolation in double on the same nodes as src/f32/lut.c. */
 static double ref_interp(const float *t, int n, double x)
 {
     double pos = x * (n - 1);
