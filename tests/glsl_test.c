@@ -25,19 +25,10 @@
 #include <string.h>
 
 #include "fresnel.h"
-/* The C binary16 path of the fixed-point issue, where the tree has it and
- * the compiler has _Float16: the mediump results are also compared with it
- * (NOTE lines only; its domain and LUT layout are its own). */
-#if defined(__has_include)
-#if __has_include("fresnel_f16.h")
+/* The C binary16 runtime, where the compiler has _Float16: the mediump
+ * results are also compared with it (NOTE lines only; its domain and LUT
+ * layout are its own). */
 #include "fresnel_f16.h"
-#endif
-#endif
-#if defined(FRESNEL_HAS_F16)
-#define HAVE_F16 FRESNEL_HAS_F16
-#else
-#define HAVE_F16 0
-#endif
 #include "glctx.h"
 #include "harness.h"
 #include "png.h"
@@ -535,7 +526,7 @@ static struct summary summaries[64];
 
 /* The C binary16 function of a scalar case, on the same binary16 inputs. */
 typedef float (*eval16_fn)(const struct row *r, float c);
-#if HAVE_F16
+#if FRESNEL_HAS_F16
 #define H(x) ((fresnel_f16)(x))
 static float h_schlick(const struct row *r, float c) { return (float)fresnel_schlick_f16(H(P(0, 1)), H(c)); }
 static float h_schlick_gen(const struct row *r, float c)
@@ -578,7 +569,7 @@ static const struct {
 
 static eval16_fn eval16_of(const char *name)
 {
-#if HAVE_F16
+#if FRESNEL_HAS_F16
     size_t i;
     for (i = 0; i < sizeof evals16 / sizeof evals16[0]; i++)
         if (!strcmp(evals16[i].name, name))
@@ -969,7 +960,7 @@ int main(int argc, char **argv)
     tex_lut = glctx_r32f_texture(LUT_W, NMETALS * LUT_VARIANTS, lut_tex);
     free(lut_tex);
 
-    if (!HAVE_F16)
+    if (!FRESNEL_HAS_F16)
         NOTE("the C binary16 path (include/fresnel_f16.h with _Float16) is not available to this build");
     check_png();
     probe_context();

@@ -17,7 +17,7 @@
 # begin with one of our folder names (pbrt's src/pbrt/, Mitsuba's
 # include/mitsuba/: `foreign` below).
 [ "$BUILD" = build ] || [ -z "$BUILD" ] || exit 0 # the same in every build
-foreign='^(src/pbrt|include/mitsuba)/'
+foreign='^(src/pbrt|include/mitsuba)(/|$)'
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 sh tests/text_files.sh -a >"$t/tree"

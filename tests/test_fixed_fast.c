@@ -348,11 +348,11 @@ static void check_conductor(const test_material *mat, int nmat)
     }
 }
 
-/* Materials once reported above the bound, every code: two whose
+/* Materials at the edges of the fast path's forms, every code: two whose
  * constants take one word everywhere (span 0) while a0 + c^2 is -32767 at
  * one code (4815, 25616), two conductors and three low-index dielectrics
  * near their critical angle near normal incidence. */
-static void check_conductor_reported(void)
+static void check_conductor_edges(void)
 {
     static const double m[][2] = {{1.7668102256209994, 1.4640124426721695}, {6.552184082229366, 6.5225902857269098},
                                   {7.4082362219860336, 8.7293341103153441}, {4.09, 12.23},
@@ -364,10 +364,10 @@ static void check_conductor_reported(void)
     memset(&w, 0, sizeof w);
     for (i = 0; i < (int)(sizeof m / sizeof m[0]); i++) {
         in &= conductor_in_domain(m[i][0], m[i][1]);
-        conductor_codes(&w, &bad, m[i][0], m[i][1], 0, ONE, "reported");
+        conductor_codes(&w, &bad, m[i][0], m[i][1], 0, ONE, "edge");
     }
-    CHECK("fixed fast exact conductor: the reported materials lie in the domain", in, "one does not");
-    check_bound("exact conductor, reported materials, every code", &w, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+    CHECK("fixed fast exact conductor: the edge materials lie in the domain", in, "one does not");
+    check_bound("exact conductor, edge materials, every code", &w, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
 }
 
 static uint64_t conductor_rng = 0x9e3779b97f4a7c15ull;
@@ -628,7 +628,7 @@ int main(void)
     check_lut_pl(mat, nmat);
     check_conductor_helpers();
     check_conductor(mat, nmat);
-    check_conductor_reported();
+    check_conductor_edges();
     check_conductor_boundaries();
     check_conductor_random();
     return harness_exit();

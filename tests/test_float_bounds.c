@@ -66,7 +66,7 @@ static void check_f0_helpers(void)
     }
     NOTE("f0_from_ior max|err| %.3g, f0_in_medium max|err| %.3g", w_ior, w_med);
     {
-        /* Gulbrandsen near r = 1, where n reaches 4e4: the region of fuzz finding F1 */
+        /* Gulbrandsen near r = 1, where n reaches 4e4 and sqrt(r) - 1 cancels */
         double w_g = 0.0;
         int ir, ig, ic;
         for (ir = 0; ir <= 200; ir++)

@@ -16,7 +16,7 @@
  *   - where eta and kappa (after the binary16 domain's clamps) lie in the
  *     range the bounds were measured on (eta in [0.01, 16], kappa <= 16),
  *     |result - reference| is measured against FRESNEL_BOUND_*_F16 (see
- *     Findings below for why it is measured, not asserted), the reference evaluated
+ *     below for why it is measured, not asserted), the reference evaluated
  *     at the binary16 values with the runtime's documented clamps (eta to
  *     [2^-10, 16], kappa to [0, 16], p to [2^-10, 64], LSK a and alpha to
  *     [0, 64], Gulbrandsen r to the largest half below 1 and its n, k to the
@@ -28,25 +28,23 @@
 
 #if FRESNEL_HAS_F16
 
-/* Findings. The documented binary16 bounds
+/* The documented binary16 bounds FRESNEL_BOUND_*_F16
  * are maxima over tests/test_f16_bounds.c's material set; for arbitrary
  * binary16 inputs inside the domain the fuzzer exceeds most of them, some
  * by far:
- *   F4  exact forms, Cook-Torrance and Schlick internal of a dielectric seen
- *       from inside with eta below ~0.15: (eta-1)(eta+1) + c^2 in binary16
- *       decides total reflection where there is none (up to 1.0: Cook-
- *       Torrance at eta 0.15, c 0.989 gives 1 against 0; the conductor form
- *       at eta 0.01, c = 1 gives 0.5 against 0.961);
- *   F6  F82 model with F0, F82 far apart: 3.95e-3 (documented 3.5e-3);
- *   F14 Gulbrandsen with r -> 1, g -> 0+: 4 (1-g) s nmax / (1-r) overflows
- *       65504 and k is clamped to 16 instead of ~2 (0.147);
- *   F15 LUTs with steep tables (near-matched index, total reflection) and
- *       many nodes: the binary16 node position (sqrt(c) (n-1) with the root
- *       and the product rounded to half, ulp 1/8 at positions >= 128) is off
- *       by a large part of a segment across a total-reflection edge (0.059
- *       at n 220 with nodes uniform in sqrt(c), 0.029 at n 185 uniform in c,
- *       in 150 s of fuzzing; it was 0.275 at n 250 with the old nodes
- *       uniform in the Schlick weight);
+ *   - exact forms, Cook-Torrance and Schlick internal of a dielectric seen
+ *     from inside with eta below ~0.15: (eta-1)(eta+1) + c^2 in binary16
+ *     decides total reflection where there is none (up to 1.0: Cook-
+ *     Torrance at eta 0.15, c 0.989 gives 1 against 0; the conductor form
+ *     at eta 0.01, c = 1 gives 0.5 against 0.961);
+ *   - Gulbrandsen with r -> 1, g -> 0+: 4 (1-g) s nmax / (1-r) overflows
+ *     65504 and k is clamped to 16 instead of ~2 (0.147);
+ *   - LUTs with steep tables (near-matched index, total reflection) and
+ *     many nodes: the binary16 node position (sqrt(c) (n-1) with the root
+ *     and the product rounded to half, ulp 1/8 at positions >= 128) is off
+ *     by a large part of a segment across a total-reflection edge (0.059
+ *     at n 220 with nodes uniform in sqrt(c), 0.029 at n 185 uniform in c,
+ *     in 150 s of fuzzing);
  *   and small excesses elsewhere (Schlick, LSK, F0, F0 in medium,
  *   approximate conductor: see `make fuzz`'s output).
  * So here, unlike the other targets, a result beyond its documented bound
