@@ -70,7 +70,7 @@
 /* Error bounds on the material set (see ERROR BOUNDS). The exact models,
  * Cook-Torrance and Schlick internal have no bound near a dielectric's
  * critical angle (eta < 1, kappa 0): there the bound is 1, and
- * FRESNEL_BOUND_NONCRITICAL_F16 holds for every model at least 1/64 in c
+ * FRESNEL_BOUND_F16_NONCRITICAL holds for every model at least 1/64 in c
  * away from a critical angle. */
 #define FRESNEL_BOUND_SCHLICK_F16 2.6e-3 /* also every binary16 F0 */
 #define FRESNEL_BOUND_SCHLICK_GEN_F16 2.6e-3
@@ -87,7 +87,7 @@
 #define FRESNEL_BOUND_DIELECTRIC_F16 1.0 /* critical angle */
 #define FRESNEL_BOUND_LUT_CUBIC_F16 9.0e-4 /* reflectance curves, n <= 256 */
 #define FRESNEL_BOUND_LUT_F16 1.7e-2 /* tables with a total-reflection edge included */
-#define FRESNEL_BOUND_NONCRITICAL_F16 4.5e-3
+#define FRESNEL_BOUND_F16_NONCRITICAL 4.5e-3
 /* Error bounds over the whole domain of CONVENTIONS (eta in [2^-10, 16],
  * kappa 0 or in [1e-3, 16], F0, r, g in [0, 1], a and alpha in
  * [2^-10, 64]), larger than the above for tiny eta with tiny c

@@ -324,7 +324,7 @@ static void f16_cases(void)
         }
         /* A conductor has no critical angle: the binary16 bound away from one applies. */
         snprintf(where, sizeof where, "f16 conductor %g+%gi, every half c", (double)eta, (double)kappa);
-        report(where, &m, FRESNEL_BOUND_NONCRITICAL_F16, "FRESNEL_BOUND_NONCRITICAL_F16");
+        report(where, &m, FRESNEL_BOUND_F16_NONCRITICAL, "FRESNEL_BOUND_F16_NONCRITICAL");
     }
     for (i = 0; i < 3; i++) {
         const float eta = i == 0 ? 0.2f : i == 1 ? 0.05f : 0.01f, kappa = 16.0f;
@@ -342,7 +342,7 @@ static void f16_cases(void)
          * under kappa 16 would pass through binary16's subnormals if formed
          * left to right (1.1e-2 and 3.2e-2). */
         snprintf(where, sizeof where, "f16 Cook-Torrance 1 - F'(1) -> 0: %g+%gi", (double)eta, (double)kappa);
-        report(where, &m, FRESNEL_BOUND_NONCRITICAL_F16, "FRESNEL_BOUND_NONCRITICAL_F16");
+        report(where, &m, FRESNEL_BOUND_F16_NONCRITICAL, "FRESNEL_BOUND_F16_NONCRITICAL");
     }
 }
 #endif
