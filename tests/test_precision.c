@@ -326,8 +326,8 @@ static void f16_cases(void)
         snprintf(where, sizeof where, "f16 conductor %g+%gi, every half c", (double)eta, (double)kappa);
         report(where, &m, FRESNEL_BOUND_F16_NONCRITICAL, "FRESNEL_BOUND_F16_NONCRITICAL");
     }
-    for (i = 0; i < 3; i++) {
-        const float eta = i == 0 ? 0.2f : i == 1 ? 0.05f : 0.01f, kappa = 16.0f;
+    for (i = 0; i < 4; i++) {
+        const float eta = i == 0 ? 0.2f : i == 1 ? 0.05f : i == 2 ? 0.01f : FRESNEL_ETA_MIN_F16, kappa = 16.0f;
         char where[96];
         int f;
         memset(&m, 0, sizeof m);
@@ -340,7 +340,8 @@ static void f16_cases(void)
         /* T(c) = 1 - F'(c) near grazing incidence is 4cu (m + s^2) s^2 /
          * den_p of the scaled p-polarised terms, which for eta 0.05 and 0.01
          * under kappa 16 would pass through binary16's subnormals if formed
-         * left to right (1.1e-2 and 3.2e-2). */
+         * left to right (1.1e-2 and 3.2e-2); at eta 2^-10, d / (4 eta)
+         * would overflow binary16 (an error of 1 at every c). */
         snprintf(where, sizeof where, "f16 Cook-Torrance 1 - F'(1) -> 0: %g+%gi", (double)eta, (double)kappa);
         report(where, &m, FRESNEL_BOUND_F16_NONCRITICAL, "FRESNEL_BOUND_F16_NONCRITICAL");
     }
