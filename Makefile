@@ -51,7 +51,7 @@ all: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(SINGLE) $(BUILD)/scene_example
 	@echo "      ($(BUILD)/report/report.md; the last one made is data/report/report.md)"
 
 # The single-file runtimes: one stb-style header per number type, made from
-# include/ and src/TYPE/ by ports/single.sh.
+# include/ and src/<type>/ by ports/single.sh.
 single: $(SINGLE)
 $(BUILD)/single/fresnel_single_%.h: ports/single.sh $(wildcard include/*.h) $(wildcard src/*/*)
 	@mkdir -p $(@D)
@@ -264,7 +264,7 @@ fuzz: fuzz-bins
 	        -artifact_prefix=$(BUILD)/fuzz/artifacts/$$t/ \
 	        $(BUILD)/fuzz/corpus/$$t tests/fuzz/corpus/$$t 2>$(BUILD)/fuzz/$$t.log; \
 	    rc=$$?; grep -E '^(stat::number_of_executed_units|stat::new_units_added|==[0-9]+==|SUMMARY|fuzz oracle|NOTE)' $(BUILD)/fuzz/$$t.log; \
-	    [ $$rc -eq 0 ] || { echo "$$t: finding, see $(BUILD)/fuzz/$$t.log and $(BUILD)/fuzz/artifacts/$$t/"; exit 1; }; \
+	    [ $$rc -eq 0 ] || { echo "$$t: failing input in $(BUILD)/fuzz/artifacts/$$t/, log $(BUILD)/fuzz/$$t.log"; exit 1; }; \
 	done
 
 # ---- fixed point, fp16 and cross targets ----

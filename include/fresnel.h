@@ -19,38 +19,69 @@
  *   src/q15/ (fresnel_fixed.h), src/f16/ (fresnel_f16.h). A vendoring
  *   project copies include/ and the folders of the types it uses.
  *
- * NAMING (the rule of every public name, in this header and in
- * fresnel_fixed.h, fresnel_fixed_fast.h, fresnel_f16.h)
- *   fresnel_<model>[_<form>][_<storage>][_<type>][_rgb][_fast|_batch]
- *     model    schlick, lsk, f82, gulbrandsen, approx_conductor,
- *              cook_torrance, conductor, dielectric, f0, lut
- *     form     the variant: gen, internal, comp, prepared, from_ior,
- *              in_medium, nk, rg, linear, residual, linear_residual,
- *              cubic, pl
- *     storage  a table's element type where it is not the type: u16, u8,
- *              s16, s8
- *     type     empty for binary32, q15 (Q1.15 fixed point), f16 (binary16)
- *     _rgb three channels; _fast an inline fast path; _batch many cosines
- *   e.g. fresnel_lut_linear_residual_s16_q15_rgb,
- *   fresnel_schlick_q15_rgb_fast, fresnel_lut_pl_u16_q15_fast. The type
- *   comes last (before _rgb and the call form) so that a model's variants
- *   and its types sort together and the type is read in one place.
+ * NAMING (the rule of every public name of include/\*.h; the word lists,
+ * "slot = words;", are what tests/test_public_names.sh checks names with)
+ *   Functions: fresnel_<model>[_<form>...][_avg][_<storage>][_<type>][_rgb][_<call>]
+ *     model = schlick lsk f82 gulbrandsen approx_conductor cook_torrance
+ *             conductor dielectric f0 lut film;
+ *     form = gen internal comp prepared from_ior in_medium nk rg linear
+ *            residual cubic pl;
+ *            the variant, none, one or several in this order;
+ *     _avg   the hemispherical average instead of the value at c;
+ *     storage = u16 u8 s16 s8;
+ *            a table's element type where it is not the type;
+ *     type = q15 f16;
+ *            Q1.15 fixed point, binary16, none for binary32;
+ *     _rgb   three channels;
+ *     call = fast batch;
+ *            an inline fast path, many cosines.
+ *   e.g. fresnel_lut_linear_residual_s16_q15_rgb, fresnel_schlick_q15_rgb_fast,
+ *   fresnel_lut_cubic_avg_u16_q15. The type comes after what is computed
+ *   and before _rgb and the call, so that a model's variants and its types
+ *   sort together and the type is read in one place.
  *   Prepared constants: fresnel_<what>_prepare[_<type>](eta, kappa, ...)
- *   returns a fresnel_<what>_prep[_<type>] by value, <what> the model, or
- *   the quantity several models read (fresnel_conductor_prepare,
- *   fresnel_ior_prepare_q15). Other types: fresnel_<what>[_<type>]
- *   (fresnel_rgb, fresnel_rgb_q15); a number type is its type token
- *   (fresnel_q15, fresnel_q16, fresnel_qf, fresnel_f16). Utilities name the
- *   operation and the integer type (fresnel_isqrt_u32, fresnel_recip_q16).
+ *   returns a fresnel_<what>_prep[_<type>] by value, <what> the model or a
+ *   quantity several models read (fresnel_conductor_prepare,
+ *   fresnel_ior_prepare_q15); a fresnel_<what>_prep[_<type>]_fast holds a
+ *   fast path's constants, which only the host makes (`fresnel gen`).
+ *     quantity = ior nk rg rgb;
+ *   Other types: fresnel_<model or quantity>[_node][_<type>] (fresnel_rgb,
+ *   fresnel_rgb_q15, fresnel_film_node_f16); a number type is its word,
+ *     number = q15 q16 qf f16;
+ *   Constant tables: fresnel_<model>[_<form>...]_<table>_<type>,
+ *     table = knots;
+ *   Utilities name the operation and the integer type (fresnel_isqrt_u32),
+ *     operation = isqrt udiv_frac recip;
+ *     integer = u32 q16;
  *   Parameters: eta, kappa for a complex index, c for the cosine.
- *   Macros: FRESNEL_<NAME>[_<TYPE>][_FAST][_<qualifier>], the binary32
+ *   Macros: FRESNEL_<NAME>[_<TYPE>][_FAST][_<QUALIFIER>], the binary32
  *   name with the type appended, so that the types' limits sit together
- *   (FRESNEL_ETA_MIN, FRESNEL_ETA_MIN_Q16, FRESNEL_ETA_MIN_F16). A bound is
- *   FRESNEL_BOUND_ and the function's name without fresnel_, storage and
- *   _rgb, in capitals (fresnel_lut_pl_u16_q15_fast:
- *   FRESNEL_BOUND_LUT_PL_Q15_FAST); one bound for a family leaves out the
- *   slot that varies (FRESNEL_BOUND_LUT_Q15). The runtime's internal
- *   helpers are fresnel_i_* (fresnel_config.h).
+ *   (FRESNEL_ETA_MIN, FRESNEL_ETA_MIN_Q16, FRESNEL_ETA_MIN_F16);
+ *     TYPE = Q15 Q16 F16;
+ *     QUALIFIER = HEADROOM TIR DIELECTRIC NONCRITICAL 1024;
+ *            where a second bound or limit of the same name applies.
+ *   <NAME> is one of
+ *     BOUND_<F>, DOMAIN_<F>: a function's error bound (DOMAIN_ over the
+ *       whole domain where BOUND_ is over a material set, fresnel_f16.h),
+ *       <F> its name without fresnel_, storage and _rgb, in capitals, the
+ *       type and call in their slots (fresnel_lut_pl_u16_q15_fast:
+ *       FRESNEL_BOUND_LUT_PL_Q15_FAST); a bound for a family leaves out
+ *       the slot that varies (FRESNEL_BOUND_LUT_Q15 for every LUT,
+ *       FRESNEL_BOUND_F16_NONCRITICAL for every model);
+ *     [<MODEL>_]<QUANTITY>_<LIMIT>: a limit of a domain, the model's own
+ *       where it has one (FRESNEL_GULBRANDSEN_R_MAX);
+ *       QUANTITY = ETA KAPPA P ALPHA A C R N D MATCH;
+ *       LIMIT = MIN MAX TINY;
+ *     ONE, the number 1 in the type; VERSION; <MODEL>_<SIZE>, a size of a
+ *       model's tables;
+ *       SIZE = POLES NODES;
+ *     CONFIG, CFG_<FLAG>, HAS_<FEATURE> (fresnel_config.h);
+ *       FLAG = NO_FLOAT NO_F16 NO_FIXED NO_SIMD KNOWN_FLAGS;
+ *       FEATURE = FLOAT F16 FIXED SIMD;
+ *     <HEADER>_H, the include guard of fresnel_<header>.h (FRESNEL_H).
+ *   The runtime's internal helpers are fresnel_i_* and FRESNEL_I_*
+ *   (fresnel_config.h), not API. A header's ALIASES block #defines second
+ *   names that code and generated headers may spell, each to its rule name.
  *
  * CONVENTIONS (every function)
  *   c        cosine of the angle of incidence, measured in the incident medium.
@@ -152,7 +183,7 @@ extern "C" {
 #define FRESNEL_BOUND_LSK_COMP         6e-7f
 #define FRESNEL_BOUND_F82              5e-7f
 #define FRESNEL_BOUND_GULBRANDSEN      4e-7f
-#define FRESNEL_BOUND_GULBRANDSEN_G    4e-7f /* g of fresnel_gulbrandsen_rg */
+#define FRESNEL_BOUND_GULBRANDSEN_RG    4e-7f /* g of fresnel_gulbrandsen_rg */
 #define FRESNEL_BOUND_APPROX_CONDUCTOR 3e-7f
 #define FRESNEL_BOUND_COOK_TORRANCE    6e-7f
 #define FRESNEL_BOUND_CONDUCTOR        4e-7f
@@ -269,7 +300,7 @@ fresnel_rgb fresnel_f82_avg_rgb(fresnel_rgb f0, fresnel_rgb f82);
  * r clamped to [0, FRESNEL_GULBRANDSEN_R_MAX]; the inverse
  *   r = fresnel_f0_from_ior(eta, kappa),  g = (nmax(r) - eta)/(nmax(r) - nmin(r)),
  * g clamped to [0, 1] (eta outside [nmin, nmax] has no edge tint).
- * Error of the inverse's g <= FRESNEL_BOUND_GULBRANDSEN_G.
+ * Error of the inverse's g <= FRESNEL_BOUND_GULBRANDSEN_RG.
  * Cost: forward 14 flops, 3 div, 2 sqrt; inverse 12 flops, 4 div, sqrt. */
 typedef struct fresnel_nk {
     float n, k;

@@ -56,7 +56,7 @@
 
 /* An unknown flag name is an undeclared identifier here; unknown bits make
  * the array size negative. (In #if the same name would quietly be 0.) */
-typedef char fresnel_config_has_unknown_flags_[(((FRESNEL_CONFIG) & ~FRESNEL_CFG_KNOWN_FLAGS) == 0) ? 1 : -1];
+typedef char fresnel_i_config_has_unknown_flags[(((FRESNEL_CONFIG) & ~FRESNEL_CFG_KNOWN_FLAGS) == 0) ? 1 : -1];
 
 #define FRESNEL_HAS_FLOAT (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_FLOAT) == 0)
 #define FRESNEL_HAS_FIXED (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_FIXED) == 0)

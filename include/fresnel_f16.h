@@ -18,7 +18,9 @@
  *   builds with any C99 compiler (clang 14 on x86-64 has no _Float16).
  *
  * ARITHMETIC
- *   Each +, -, *, / is one binary16 operation, rounded to nearest even: the
+ *   Each +, -, *, / is one binary16 operation, rounded to nearest even (the
+ *   LUTs' interpolation aside, binary32 as in the GLSL port: see the LUTs
+ *   below): the
  *   sources write every operation through a helper that returns _Float16,
  *   and a C99 return (like an assignment or a cast) removes any excess
  *   precision, whatever FLT_EVAL_METHOD the compiler uses for _Float16 (gcc
@@ -50,9 +52,13 @@
  *   model at the same binary16 inputs, on every binary16 cosine in [0, 1]
  *   and the materials of tests/fixed_materials.h (ten metals at 450, 550 and
  *   650 nm in air and under water, BK7 and water from both sides, corners of
- *   the domain); FRESNEL_DOMAIN_*_F16: the same over the whole domain of
- *   CONVENTIONS. binary16 ulp(1) = 9.8e-4, ulp(0.5) = 4.9e-4. tests/README.md
- *   names the test behind each figure.
+ *   the domain); FRESNEL_DOMAIN_*_F16, one for every function: the same
+ *   over the whole domain of CONVENTIONS, for the LUTs every n up to
+ *   FRESNEL_LUT_N_MAX_F16 and every table with nodes in [0, 2] (curves) or
+ *   [-1, 1] (residuals). binary16 ulp(1) = 9.8e-4, ulp(0.5) = 4.9e-4.
+ *   tests/README.md names the test behind each figure; the fuzzer
+ *   (tests/fuzz/fuzz_f16_models.c) fails on a result beyond its
+ *   FRESNEL_DOMAIN_*_F16.
  */
 #ifndef FRESNEL_F16_H
 #define FRESNEL_F16_H
@@ -70,7 +76,7 @@
 /* Error bounds on the material set (see ERROR BOUNDS). The exact models,
  * Cook-Torrance and Schlick internal have no bound near a dielectric's
  * critical angle (eta < 1, kappa 0): there the bound is 1, and
- * FRESNEL_BOUND_NONCRITICAL_F16 holds for every model at least 1/64 in c
+ * FRESNEL_BOUND_F16_NONCRITICAL holds for every model at least 1/64 in c
  * away from a critical angle. */
 #define FRESNEL_BOUND_SCHLICK_F16 2.6e-3 /* also every binary16 F0 */
 #define FRESNEL_BOUND_SCHLICK_GEN_F16 2.6e-3
@@ -85,25 +91,39 @@
 #define FRESNEL_BOUND_COOK_TORRANCE_F16 1.0 /* critical angle */
 #define FRESNEL_BOUND_CONDUCTOR_F16 1.0 /* critical angle */
 #define FRESNEL_BOUND_DIELECTRIC_F16 1.0 /* critical angle */
-#define FRESNEL_BOUND_LUT_CUBIC_F16 9.0e-4 /* reflectance curves, n <= 256 */
-#define FRESNEL_BOUND_LUT_F16 1.7e-2 /* tables with a total-reflection edge included */
-#define FRESNEL_BOUND_NONCRITICAL_F16 4.5e-3
+#define FRESNEL_BOUND_LUT_CUBIC_F16 5.0e-4 /* reflectance curves, n <= 256 */
+#define FRESNEL_BOUND_LUT_F16 2.3e-3 /* tables with a total-reflection edge included */
+#define FRESNEL_BOUND_F16_NONCRITICAL 4.5e-3
 /* Error bounds over the whole domain of CONVENTIONS (eta in [2^-10, 16],
- * kappa 0 or in [1e-3, 16], F0, r, g in [0, 1], a and alpha in
- * [2^-10, 64]), larger than the above for tiny eta with tiny c
- * (approximate conductor), F0 near 0 in a dense medium (F0 in medium),
- * Gulbrandsen with g near 0 and r near 1 (k clamped to 16), and
- * near-dielectric conductors (kappa 1e-3) at their critical angle. They are
- * measured maxima rounded up, not proven. */
+ * kappa 0 or in [1e-3, 16], F0, F82, F90, r, g in [0, 1], p, a and alpha
+ * in [2^-10, 64], every half c), larger than the above for tiny eta with
+ * tiny c (approximate conductor: at eta 2^-10 and a subnormal c, eta^2 and
+ * 2 eta c are binary16 subnormals of a few bits), F0 near 0 in a dense
+ * medium (F0 in medium), Gulbrandsen with g near 0 and r near 1 (k
+ * clamped to 16), F0 and F82 far apart (F82), and near-dielectric
+ * conductors (kappa 1e-3) at their critical angle. They are measured
+ * maxima rounded up, not proven, but for the LUTs'. */
 #define FRESNEL_DOMAIN_SCHLICK_F16 2.6e-3
+#define FRESNEL_DOMAIN_SCHLICK_GEN_F16 2.6e-3
+#define FRESNEL_DOMAIN_F82_F16 4.2e-3
+#define FRESNEL_DOMAIN_SCHLICK_INTERNAL_F16 1.0
 #define FRESNEL_DOMAIN_F0_FROM_IOR_F16 2.1e-3
 #define FRESNEL_DOMAIN_F0_IN_MEDIUM_F16 5.2e-3
 #define FRESNEL_DOMAIN_LSK_F16 3.5e-3
 #define FRESNEL_DOMAIN_LSK_COMP_F16 3.7e-3
 #define FRESNEL_DOMAIN_GULBRANDSEN_F16 0.15
-#define FRESNEL_DOMAIN_APPROX_CONDUCTOR_F16 1.9e-2
+#define FRESNEL_DOMAIN_APPROX_CONDUCTOR_F16 3.0e-2
 #define FRESNEL_DOMAIN_COOK_TORRANCE_F16 1.0
 #define FRESNEL_DOMAIN_CONDUCTOR_F16 1.0
+#define FRESNEL_DOMAIN_DIELECTRIC_F16 1.0
+/* The LUTs' bounds over any table hold by construction: half an ulp of
+ * the result (4.9e-4 below 2, 2.4e-4 below 1) plus the binary32 position's
+ * error (1.9e-4 of a segment at 2049 nodes) times the steepest slope of the
+ * interpolant (2 a segment for nodes in [0, 2] or [-1, 1], 3.5 for the
+ * cubic), and for the residual forms FRESNEL_DOMAIN_SCHLICK_F16. */
+#define FRESNEL_DOMAIN_LUT_F16 8.6e-4
+#define FRESNEL_DOMAIN_LUT_RESIDUAL_F16 3.3e-3
+#define FRESNEL_DOMAIN_LUT_CUBIC_F16 1.2e-3
 
 #if FRESNEL_HAS_F16
 
@@ -118,7 +138,7 @@ __extension__ typedef _Float16 fresnel_f16;
 /* Every function is the fresnel.h function of the same name without _f16:
  * the same formula, clamps and NaN policy, on the domain of CONVENTIONS.
  * Error <= FRESNEL_BOUND_<MODEL>_F16 on the material set and
- * FRESNEL_DOMAIN_<MODEL>_F16 (where defined) over the domain.
+ * FRESNEL_DOMAIN_<MODEL>_F16 over the domain.
  * Cost: the binary32 function's operation counts, in binary16 operations;
  * expf, log1pf and sqrtf on the half value, rounded to half. */
 fresnel_f16 fresnel_schlick_f16(fresnel_f16 f0, fresnel_f16 c);
@@ -138,12 +158,14 @@ fresnel_f16 fresnel_cook_torrance_f16(fresnel_f16 f0, fresnel_f16 eta, fresnel_f
 fresnel_f16 fresnel_conductor_f16(fresnel_f16 eta, fresnel_f16 kappa, fresnel_f16 c);
 fresnel_f16 fresnel_dielectric_f16(fresnel_f16 eta, fresnel_f16 c);
 /* Lookup tables with binary16 nodes; n as fresnel.h's LUTs with
- * FRESNEL_LUT_N_MAX_F16 for FRESNEL_LUT_N_MAX. Nodes uniform in sqrt(c): the
- * position sqrt(c) (n-1), root and product each rounded to half (as the GLSL
- * port's fresnel_lut_pos), so above 257 nodes it keeps fewer than 3
- * fraction bits. Curve tables clamp to [0, max(1, the nodes around c)]
- * (nodes above 1 carry out-of-gamut values, fresnel.h), residual ones to
- * [0, 1]. */
+ * FRESNEL_LUT_N_MAX_F16 for FRESNEL_LUT_N_MAX. The interpolation is
+ * binary32 on the binary16 nodes (the position of c among the nodes, its
+ * index and fraction, the blend), the result rounded to half: what the
+ * GLSL port computes in highp and returns in mediump (in binary16 the
+ * position would keep fewer than 3 fraction bits above 256 nodes; the
+ * residual forms add fresnel_schlick_f16). Curve tables clamp to
+ * [0, max(1, the nodes around c)] (nodes above 1 carry out-of-gamut values,
+ * fresnel.h), residual ones to [0, 1]. */
 fresnel_f16 fresnel_lut_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_linear_f16(const fresnel_f16 *table, int n, fresnel_f16 c);
 fresnel_f16 fresnel_lut_residual_f16(fresnel_f16 f0, const fresnel_f16 *table, int n, fresnel_f16 c);

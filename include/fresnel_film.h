@@ -60,7 +60,7 @@
  *   the display's gamut clip, as under the clip policy).
  *
  * ERROR
- *   Against the double evaluation of the same table (gen/model/
+ *   Against the double evaluation of the same table (gen/common/
  *   reference_film.c), measured maxima with a margin (not proven) over the
  *   six goal substrates under films 1.2, 1.8 and 2.5, every 1/512 in c
  *   (binary16: every 1/1024) and 23 thicknesses 0-5000 nm

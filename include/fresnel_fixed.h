@@ -45,7 +45,7 @@
  *                ("block floating point", as CMSIS-DSP's arm_divide_q15
  *                returns a mantissa and a shift).
  *   A per-material "prepared" struct holds what a model needs; the host fills
- *   it (the generator, or gen/fixed_params.c from double eta and kappa), or
+ *   it (the generator, or gen/3_encode/fixed_params.c from double eta and kappa), or
  *   the *_prepare functions below fill it at run time from Q16.16 inputs.
  *
  * ERROR BOUNDS
@@ -138,12 +138,18 @@ typedef struct fresnel_ior_prep_q15 {
 
 /* fresnel_conductor_q15_fast's constants (fresnel_fixed_fast.h, beside the
  * function, gives each field's value; `fresnel gen` emits them as
- * <prefix>_ior_fast_q15). */
-typedef struct fresnel_conductor_prep_q15 {
+ * <prefix>_ior_fast_q15). Made on the host only, as every fast path's. */
+typedef struct fresnel_conductor_prep_q15_fast {
     int32_t a0, a0_lo, shift;
     int32_t b1, b2, bm, be;
     uint32_t span;
-} fresnel_conductor_prep_q15;
+} fresnel_conductor_prep_q15_fast;
+
+/* ALIASES: second names that code and generated headers may spell, each the
+ * name of fresnel.h's NAMING rule it stands for (tests/test_public_names.sh
+ * reads this block). */
+#define fresnel_conductor_prep_q15 fresnel_conductor_prep_q15_fast
+/* end of ALIASES */
 
 typedef struct fresnel_nk_prep_q15 {
     fresnel_qf n, nk2;

@@ -43,9 +43,9 @@
 /* Forced inline under GCC and Clang: at -Os they would otherwise keep a
  * helper used twice (fresnel_i_fast_pow5) out of line, a call per use. */
 #if defined(__GNUC__)
-#define FRESNEL_FAST_INLINE static inline __attribute__((always_inline))
+#define FRESNEL_I_INLINE static inline __attribute__((always_inline))
 #else
-#define FRESNEL_FAST_INLINE static inline
+#define FRESNEL_I_INLINE static inline
 #endif
 
 #define FRESNEL_BOUND_SCHLICK_Q15_FAST 2.9
@@ -62,7 +62,7 @@
  * single rounding constant are about 2.8 LSB, where fresnel_schlick_q15's
  * split products keep 30 bits for 0.5 LSB at 3.5x the instructions; both
  * are far inside Schlick's own model error. */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
 {
     uint32_t x2 = (x * x + 32767u) >> 15, x4 = (x2 * x2) >> 15;
     return (x4 * x) >> 15;
@@ -76,13 +76,13 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_pow5(uint32_t x)
  * ceil(k^2 / 2^15) < 182, x^4 = 0 and x^5 = x^6 = 0: the result is F0, the
  * value at c = one. */
 #define FRESNEL_C_MAX_Q15_FAST (32768 + 2435)
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_c(int32_t c)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_c(int32_t c)
 {
     return (-1 >> 1) == -1 ? (uint32_t)c & ~(uint32_t)(c >> 31) : (uint32_t)(c < 0 ? 0 : c);
 }
 
 /* F0 + (1 - F0) x5 for f0, x5 in [0, one], truncated. */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_blend(uint32_t f0, uint32_t x5)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_blend(uint32_t f0, uint32_t x5)
 {
     return f0 + (((32768u - f0) * x5) >> 15);
 }
@@ -90,14 +90,14 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_blend(uint32_t f0, uint32_t x5)
 /* Schlick, F0 + (1 - F0)(1 - c)^5, for f0 in [0, one] and c as
  * PRECONDITIONS says; c = 0 gives exactly one, c = one exactly F0.
  * Error <= FRESNEL_BOUND_SCHLICK_Q15_FAST LSB. Cost: 4 mul. */
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
+FRESNEL_I_INLINE fresnel_q15 fresnel_schlick_q15_fast(int32_t f0, int32_t c)
 {
     return (fresnel_q15)fresnel_i_fast_blend((uint32_t)f0, fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c)));
 }
 
 /* The same for three channels; each channel equals fresnel_schlick_q15_fast's.
  * Cost: 6 mul (x^5 once, three blends). */
-FRESNEL_FAST_INLINE fresnel_rgb_q15 fresnel_schlick_q15_rgb_fast(fresnel_rgb_q15 f0, int32_t c)
+FRESNEL_I_INLINE fresnel_rgb_q15 fresnel_schlick_q15_rgb_fast(fresnel_rgb_q15 f0, int32_t c)
 {
     uint32_t x5 = fresnel_i_fast_pow5(32768u - fresnel_i_fast_c(c));
     fresnel_rgb_q15 r;
@@ -119,7 +119,7 @@ FRESNEL_FAST_INLINE fresnel_rgb_q15 fresnel_schlick_q15_rgb_fast(fresnel_rgb_q15
  * a = -9.5). Cost: 7 mul. */
 #define FRESNEL_F82_A_MIN_Q15_FAST (-72296)
 #define FRESNEL_F82_A_MAX_Q15_FAST 144592
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
+FRESNEL_I_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, int32_t c)
 {
     /* x^5 as fresnel_schlick_q15_fast, x^6 = x^2 x^4 in Q18 (its relative
      * error matters: a c multiplies it), c x^6 in Q18 (at most 14852, at
@@ -138,7 +138,7 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_f82_q15_fast(int32_t f0, int32_t a_q12, 
 /* The same for three channels, on the constants `fresnel gen` emits for a
  * scene with f82 in q15: <prefix>_f0_q15 and <prefix>_f82_a_q12[3]. Each
  * channel equals fresnel_f82_q15_fast's. Cost: 21 mul. */
-FRESNEL_FAST_INLINE fresnel_rgb_q15 fresnel_f82_q15_rgb_fast(fresnel_rgb_q15 f0, const int32_t a_q12[3], int32_t c)
+FRESNEL_I_INLINE fresnel_rgb_q15 fresnel_f82_q15_rgb_fast(fresnel_rgb_q15 f0, const int32_t a_q12[3], int32_t c)
 {
     fresnel_rgb_q15 r;
     r.r = fresnel_f82_q15_fast(f0.r, a_q12[0], c);
@@ -184,7 +184,7 @@ static const uint16_t fresnel_i_fast_sqrt_k[97] = {
  * delta1 = d k (the chord), delta2 = (d + delta1 (dh - delta1)) k (one
  * fixed-point step, contraction dh/(r_j + r_(j+1)) <= 2^-7). Every term is
  * non-negative (delta1 <= dh). |error| <= 2^-20.7. */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
 {
     uint32_t m = 0, j, d, k, r0, dh, d1;
     while (c < 8192u) {
@@ -206,7 +206,7 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt_q22(uint32_t c)
  * <= FRESNEL_BOUND_LUT_Q15_FAST LSB for n <= 64 and
  * FRESNEL_BOUND_LUT_Q15_FAST_1024 LSB for n <= 1024.
  * Cost: 5 mul (plus 2 shifts per halving of c below 1/4). */
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_u16_q15_fast(const uint16_t *table, int n, int32_t c)
+FRESNEL_I_INLINE fresnel_q15 fresnel_lut_u16_q15_fast(const uint16_t *table, int n, int32_t c)
 {
     uint32_t pos, i, t;
     int32_t v0, v1;
@@ -253,7 +253,7 @@ static const uint16_t fresnel_lut_pl_knots_q15[65] = {
  * (n-1) 2^-15 of a segment), FRESNEL_BOUND_LUT_PL_Q15_FAST_TIR across a
  * total-reflection edge (a step of up to one between two nodes).
  * Cost: 3 mul, 4 loads. */
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *table, int n, int32_t c)
+FRESNEL_I_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *table, int n, int32_t c)
 {
     uint32_t x, p, pos, t;
     const uint16_t *s, *v;
@@ -300,9 +300,9 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *tabl
 #define FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST 0.03
 #define FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST 8.0
 #define FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST 16.0
-#define FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST 0.07 /* for kappa < 0.1 */
+#define FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST_DIELECTRIC 0.07 /* for kappa < 0.1 */
 #define FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST 0.001
-/* fresnel_conductor_prep_q15 is declared in fresnel_fixed.h, so that a
+/* fresnel_conductor_prep_q15_fast is declared in fresnel_fixed.h, so that a
  * generated header can hold its constants without this header. */
 
 /* sqrt(j) and 2^7 / j in Q16 (4 bits below the results' units), raised
@@ -349,7 +349,7 @@ static const uint32_t fresnel_i_fast_rc[130] = {
 /* sqrt(x) for x in [2^30, 2^32), in [2^15, 2^16]: the chord of one of 192
  * segments, rounded; relative error below 2^-15.6 (tests/test_fixed_fast.c,
  * every x >> 8). */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt32(uint32_t x)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_sqrt32(uint32_t x)
 {
     const uint32_t *t = fresnel_i_fast_sq + ((x >> 24) - 64u);
     return (t[0] + (((t[1] - t[0]) * ((x >> 8) & 0xffffu)) >> 16)) >> 4;
@@ -358,7 +358,7 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_sqrt32(uint32_t x)
 /* 2^31 / d for d in [2^15, 2^16], in [2^15, 2^16]: the chord of one of 129
  * segments, rounded; relative error below 2^-15.6 (tests/test_fixed_fast.c,
  * every d). */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_recip16(uint32_t d)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_recip16(uint32_t d)
 {
     const uint32_t *t = fresnel_i_fast_rc + ((d >> 8) - 128u);
     return (t[0] - (((t[0] - t[1]) * (d & 255u)) >> 8)) >> 4;
@@ -375,7 +375,7 @@ static const uint8_t fresnel_i_fast_clz8[256] = {
     0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u,
     0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u,
     0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u, 0u};
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_lz(uint32_t x)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_lz(uint32_t x)
 {
     if (x >> 24)
         return fresnel_i_fast_clz8[x >> 24];
@@ -387,19 +387,19 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_lz(uint32_t x)
 }
 
 /* x c / 2^15 for x < 2^32, c <= 2^16 with x c / 2^15 < 2^32, from 15-bit halves. */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_mul15(uint32_t x, uint32_t c)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_mul15(uint32_t x, uint32_t c)
 {
     return (x >> 15) * c + (((x & 32767u) * c) >> 15);
 }
 
 /* x y / 2^16 for y <= 2^16 with x y / 2^16 < 2^32, from 16-bit halves. */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_mul16(uint32_t x, uint32_t y)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_mul16(uint32_t x, uint32_t y)
 {
     return (x >> 16) * y + (((x & 0xffffu) * y) >> 16);
 }
 
 /* x 2^d for d of either sign (0 when d <= -32). */
-FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
+FRESNEL_I_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
 {
     return d >= 0 ? x << d : (d > -32 ? x >> -d : 0u);
 }
@@ -457,7 +457,7 @@ FRESNEL_FAST_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
  *     recip16's domain; ns (dp + np)/2 <= ds dp, so its product with the
  *     reciprocal (<= 2^16) stays below 2^32 and F below one + 2^-14, cut
  *     to one. */
-FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conductor_prep_q15 *p, int32_t c_in)
+FRESNEL_I_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conductor_prep_q15_fast *p, int32_t c_in)
 {
     uint32_t c = (uint32_t)c_in, c2, ak, bk, x, s, mk, um, he, g, g2, ds, ns, dp, np, n, r, q;
     int32_t ah, a, k, e, eb2, eu;
@@ -541,7 +541,7 @@ FRESNEL_FAST_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conduct
 
 /* The same for three channels, on <prefix>_ior_fast_q15[3] as `fresnel gen`
  * emits it; each channel equals fresnel_conductor_q15_fast's. */
-FRESNEL_FAST_INLINE fresnel_rgb_q15 fresnel_conductor_q15_rgb_fast(const fresnel_conductor_prep_q15 p[3], int32_t c)
+FRESNEL_I_INLINE fresnel_rgb_q15 fresnel_conductor_q15_rgb_fast(const fresnel_conductor_prep_q15_fast p[3], int32_t c)
 {
     fresnel_rgb_q15 r;
     r.r = fresnel_conductor_q15_fast(&p[0], c);

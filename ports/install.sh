@@ -214,7 +214,7 @@ echo "f $manifest_rel" >>"$list"
 cat <<EOF
 installed fresnel $version in $root ($(grep -c '^f ' "$manifest") files, listed in $manifest_rel):
   include/            $(cd include && ls *.h | tr '\n' ' ')
-  lib/                libfresnel.a; pkgconfig/fresnel.pc; cmake/fresnel/ (target fresnel::fresnel)
+  lib/                libfresnel.a; pkgconfig/fresnel.pc; the CMake package in lib/cmake/fresnel (target fresnel::fresnel)
   bin/fresnel         the generator, which reads share/fresnel/data/
   share/fresnel/      data/ (the data pack), glsl/ and hlsl/ (the shader ports), LICENSE
 use it: pkg-config --cflags --libs fresnel   (PKG_CONFIG_PATH=$prefix/lib/pkgconfig)

@@ -1,14 +1,14 @@
 #!/bin/sh
 # The runtime of one number type as one stb-style header, made from the
-# sources (include/ and src/TYPE/, which stay the one place to edit):
+# sources (include/ and src/<type>/, which stay the one place to edit):
 #   sh ports/single.sh TYPE > fresnel_single_TYPE.h      TYPE: f32, q15, f16
 # `make` writes all three to build/single/; tests/test_single_file.sh builds
 # each as a consumer would (C99 alone, C++17 as a unity build) and checks that
 # the AVX2 kernel's target reaches no other function.
 #
 # The header holds the type's public headers, then, under
-# FRESNEL_IMPLEMENTATION, every source of src/TYPE/ in name order: each
-# #include "..." of include/ or src/TYPE/ is replaced by that file: a header
+# FRESNEL_IMPLEMENTATION, every source of src/<type>/ in name order: each
+# #include "..." of include/ or src/<type>/ is replaced by that file: a header
 # that lies wholly inside its include guard the first time only (the rest
 # would be empty), any other each time, as the preprocessor reads it;
 # system headers stay.

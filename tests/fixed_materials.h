@@ -70,7 +70,7 @@ static int test_materials(test_material *t)
     n = tm_add(t, n, "eta 0.0703 kappa 0", 0.0703, 0.0);  /* ... within a binary16 step of c = 1 */
     n = tm_add(t, n, "eta 0.01 kappa 5", 0.01, 5.0);
     /* near-dielectric conductors at their critical angle, and a rounded a0
-     * at the layout's limit (inputs the fixed-point fuzz targets found) */
+     * at the layout's limit */
     n = tm_add(t, n, "eta 0.0156 kappa 2.2e-5", 0.0156, 2.2e-5);
     n = tm_add(t, n, "eta 0.999999225 kappa 1.9e-5", 0.999999225, 1.9e-5);
     n = tm_add(t, n, "eta 0.0112 kappa 0.0038", 0.0112, 0.0038);

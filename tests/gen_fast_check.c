@@ -18,15 +18,15 @@
 
 static int failures;
 
-static void check(const char *name, const fresnel_conductor_prep_q15 got[3], double eta, double kappa)
+static void check(const char *name, const fresnel_conductor_prep_q15_fast got[3], double eta, double kappa)
 {
-    fresnel_conductor_prep_q15 want;
+    fresnel_conductor_prep_q15_fast want;
     double worst = 0.0;
     int ch, at = 0, same = 1;
     int32_t c;
     fixed_conductor_fast(eta, kappa, &want);
     for (ch = 0; ch < 3; ch++) {
-        const fresnel_conductor_prep_q15 *g = &got[ch];
+        const fresnel_conductor_prep_q15_fast *g = &got[ch];
         same &= g->a0 == want.a0 && labs((long)g->a0_lo - want.a0_lo) <= 2 && g->shift == want.shift &&
                 g->b1 == want.b1 && g->b2 == want.b2 && g->bm == want.bm && g->be == want.be && g->span == want.span;
         for (c = 0; c <= 32768; c++) {

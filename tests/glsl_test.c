@@ -29,7 +29,6 @@
  * results are also compared with it (NOTE lines only; its domain and LUT
  * layout are its own). */
 #include "fresnel_f16.h"
-#define HAVE_F16 FRESNEL_HAS_F16
 #include "glctx.h"
 #include "harness.h"
 #include "png.h"
@@ -99,7 +98,7 @@ static const struct material dielectrics[] = {
 
 /* LUT tables per metal and variant, each LUT_W = 3 LUT_N floats (r, g, b):
  * the exact conductor (or its difference from Schlick) at the nodes of
- * src/lut.c, uniform in sqrt(c) or in c. */
+ * src/f32/lut.c, uniform in sqrt(c) or in c. */
 static float lut_tables[NMETALS][LUT_VARIANTS][LUT_W];
 
 static void build_luts(void)
@@ -527,7 +526,7 @@ static struct summary summaries[64];
 
 /* The C binary16 function of a scalar case, on the same binary16 inputs. */
 typedef float (*eval16_fn)(const struct row *r, float c);
-#if HAVE_F16
+#if FRESNEL_HAS_F16
 #define H(x) ((fresnel_f16)(x))
 static float h_schlick(const struct row *r, float c) { return (float)fresnel_schlick_f16(H(P(0, 1)), H(c)); }
 static float h_schlick_gen(const struct row *r, float c)
@@ -570,7 +569,7 @@ static const struct {
 
 static eval16_fn eval16_of(const char *name)
 {
-#if HAVE_F16
+#if FRESNEL_HAS_F16
     size_t i;
     for (i = 0; i < sizeof evals16 / sizeof evals16[0]; i++)
         if (!strcmp(evals16[i].name, name))
@@ -961,7 +960,7 @@ int main(int argc, char **argv)
     tex_lut = glctx_r32f_texture(LUT_W, NMETALS * LUT_VARIANTS, lut_tex);
     free(lut_tex);
 
-    if (!HAVE_F16)
+    if (!FRESNEL_HAS_F16)
         NOTE("the C binary16 path (include/fresnel_f16.h with _Float16) is not available to this build");
     check_png();
     probe_context();

@@ -14,7 +14,8 @@
  *                         |a0_lo| <= 2^29, each qf {0, 0} or m in [2^30, 2^31)
  *   fresnel_nk_prep_q15        qf n, nk2
  *   fresnel_lsk_prep_q15       f0 in [0, 2^30], qf a, alpha in [0, FRESNEL_ALPHA_MAX_Q16]
- *   fresnel_conductor_prep_q15 a0, a0_lo, shift, b1, b2, bm, be, span
+ *   fresnel_conductor_prep_q15_fast
+ *                         a0, a0_lo, shift, b1, b2, bm, be, span
  *                         (fresnel_fixed_fast.h): shift in [0, 30], a0 +
  *                         2^(30 - shift) in int32, |a0_lo| <= 2^15, b1, b2
  *                         in [0, 2^31), bm 0 (be 255) or in [2^15, 2^16),
@@ -22,7 +23,7 @@
  *   enum NAME_frac        a residual table's fraction bits, [14, 30]
  * and each initialiser has exactly as many values as its type and length
  * need. Any other declared type is an error, so a new emitted type must be
- * added here. Used by tests/test_gen_matrix.c and the fuzz target
+ * added here. Used by tests/gen_matrix_check.c and the fuzz target
  * tests/fuzz/fuzz_gen_header.c. Host only. */
 #ifndef FRESNEL_HEADER_CHECK_H
 #define FRESNEL_HEADER_CHECK_H
@@ -72,7 +73,7 @@ static inline int hc_fields(const char *type, int *is_float)
     } t[] = {{"float", 1, 1},   {"fresnel_rgb", 3, 1},      {"fresnel_rgb_q15", 3, 0},
              {"uint16_t", 1, 0}, {"int16_t", 1, 0},          {"int32_t", 1, 0},
              {"fresnel_ior_prep_q15", 11, 0}, {"fresnel_nk_prep_q15", 4, 0}, {"fresnel_lsk_prep_q15", 4, 0},
-             {"fresnel_conductor_prep_q15", 8, 0}, {"fresnel_f16", 1, 1}};
+             {"fresnel_conductor_prep_q15_fast", 8, 0}, {"fresnel_f16", 1, 1}};
     size_t i;
     for (i = 0; i < sizeof t / sizeof t[0]; i++)
         if (!strcmp(t[i].type, type)) {
@@ -126,7 +127,7 @@ static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
             hc_fail(h, "%s %s: a0_lo %.17g not in [-2^29, 2^29]", t, d->name, v[1]);
         for (i = 3; i < 11; i += 2)
             hc_qf(h, d, v + i);
-    } else if (!strcmp(t, "fresnel_conductor_prep_q15")) {
+    } else if (!strcmp(t, "fresnel_conductor_prep_q15_fast")) {
         if (!hc_in(v[2], 0.0, 30.0))
             hc_fail(h, "%s %s: shift %.17g not in [0, 30]", t, d->name, v[2]);
         else if (!hc_in(v[0] + ldexp(1.0, 30 - (int)v[2]), -2147483648.0, 2147483647.0) ||

@@ -88,7 +88,7 @@ ln -s s.scene "$t/scene-link"
 "$F" gen "$t/s.scene" -o "$t/real" 2>"$t/err"; rc=$?
 [ $rc -eq 1 ] && [ -d "$t/real" ] && pass "gen -o DIR: exit 1" || fail "gen -o DIR: exit $rc $(cat "$t/err")"
 
-# Names a predictable temporary would take (OUT.tmp.PID, for the next few
+# Names a temporary could be predicted at (OUT.tmp.PID for the next few
 # pids) planted as symlinks to a victim: none is followed.
 printf 'victim\n' >"$t/victim"
 mkdir "$t/plant"

@@ -30,11 +30,10 @@
 
 #define GRID_MAX 2100
 
-/* Fuzz findings: none stands, so every check below asserts. F5 (q15
- * Gulbrandsen at r -> 1, g = 1) is fixed; F4 (f16 exact forms at a critical
- * angle) and F6 (f16 F82 on far-apart F0, F82) lie within the bounds
- * fresnel_f16.h documents (no bound at a critical angle; 4.0e-3 for F82 over
- * a grid of pairs). */
+/* Every check below asserts. The binary16 exact forms at a critical angle
+ * and binary16 F82 on far-apart F0, F82 are held to the bounds
+ * fresnel_f16.h documents (none at a critical angle; 4.0e-3 for F82 over a
+ * grid of pairs). */
 
 /* Binary32, Q15 and binary16 steps of the cosine in [0.5, 1). */
 static double ulp_upper(const extreme_type *ty)

@@ -96,8 +96,8 @@ static void check_models(const test_material *mat, int nmat)
         if (away.err > away_all.err)
             away_all = away;
     }
-    CHECK("f16 every model at least 1/64 away from a critical angle", away_all.err <= FRESNEL_BOUND_NONCRITICAL_F16,
-          "max|err| %.3e exceeds %.3e at %s", away_all.err, FRESNEL_BOUND_NONCRITICAL_F16, away_all.where);
+    CHECK("f16 every model at least 1/64 away from a critical angle", away_all.err <= FRESNEL_BOUND_F16_NONCRITICAL,
+          "max|err| %.3e exceeds %.3e at %s", away_all.err, FRESNEL_BOUND_F16_NONCRITICAL, away_all.where);
 }
 
 static void check_schlick_gen(void)
@@ -279,18 +279,22 @@ static fresnel_f16 rnd_half(unsigned long long *st, double lo, double hi, long i
 /* Every bound over the documented binary16 domain, not the material set:
  * eta in [FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16], kappa 0 or in
  * [1e-3, FRESNEL_KAPPA_MAX_F16], F0, r, g in [0, 1], LSK a in [0, 64],
- * alpha in [1/1024, 64], c a random half in [0, 1] or an end; 1e6
- * deterministic points per function, and the worst point fuzzing found. The maxima are FRESNEL_DOMAIN_*_F16;
+ * alpha in [1/1024, 64], F90 and F82 in [0, 1], p in [1/1024, 64], c a
+ * random half in [0, 1] (subnormals included) or an end; 1e6
+ * deterministic points per function, and the worst points fuzzing found.
+ * The maxima are FRESNEL_DOMAIN_*_F16;
  * the exact forms and Cook-Torrance are measured for conductors
  * (kappa >= 1e-3), away from any critical angle. */
 static void check_domain(void)
 {
-    enum { D_SCHLICK, D_F0, D_F0_MEDIUM, D_LSK, D_LSK_COMP, D_GULB, D_APPROX, D_COOK, D_COND, D_N };
-    static const char *names[D_N] = {"domain schlick", "domain f0_from_ior", "domain f0_in_medium",
-                                     "domain lsk", "domain lsk_comp", "domain gulbrandsen",
+    enum { D_SCHLICK, D_SCHLICK_GEN, D_F82, D_F0, D_F0_MEDIUM, D_LSK, D_LSK_COMP, D_GULB, D_APPROX, D_COOK,
+           D_COND, D_N };
+    static const char *names[D_N] = {"domain schlick", "domain schlick_gen", "domain f82", "domain f0_from_ior",
+                                     "domain f0_in_medium", "domain lsk", "domain lsk_comp", "domain gulbrandsen",
                                      "domain approx_conductor", "domain cook_torrance (kappa>=1e-3)",
                                      "domain conductor (kappa>=1e-3)"};
-    static const double bounds[D_N] = {FRESNEL_DOMAIN_SCHLICK_F16, FRESNEL_DOMAIN_F0_FROM_IOR_F16,
+    static const double bounds[D_N] = {FRESNEL_DOMAIN_SCHLICK_F16, FRESNEL_DOMAIN_SCHLICK_GEN_F16,
+                                       FRESNEL_DOMAIN_F82_F16, FRESNEL_DOMAIN_F0_FROM_IOR_F16,
                                        FRESNEL_DOMAIN_F0_IN_MEDIUM_F16, FRESNEL_DOMAIN_LSK_F16,
                                        FRESNEL_DOMAIN_LSK_COMP_F16, FRESNEL_DOMAIN_GULBRANDSEN_F16,
                                        FRESNEL_DOMAIN_APPROX_CONDUCTOR_F16, FRESNEL_DOMAIN_COOK_TORRANCE_F16,
@@ -301,7 +305,7 @@ static void check_domain(void)
     int f;
     memset(w, 0, sizeof w);
     for (i = 0; i < 1000000; i++) {
-        fresnel_f16 c = rnd_half(&st, 1.0 / 16384.0, 1.0, i + 1), e = rnd_half(&st, FRESNEL_ETA_MIN_F16, 16.0, i + 2);
+        fresnel_f16 c = rnd_half(&st, 0x1p-24, 1.0, i + 1), e = rnd_half(&st, FRESNEL_ETA_MIN_F16, 16.0, i + 2);
         fresnel_f16 k = i % 7 == 0 ? (fresnel_f16)0.0f : rnd_half(&st, 1e-3, 16.0, i + 3);
         fresnel_f16 kc = k > (fresnel_f16)0.0f ? k : (fresnel_f16)1e-3f;
         fresnel_f16 f0 = rnd_half(&st, 1.0 / 16384.0, 1.0, i + 4), a = rnd_half(&st, 1.0 / 1024.0, 64.0, i);
@@ -315,8 +319,17 @@ static void check_domain(void)
             a = (fresnel_f16)0x1.47cp-5f, al = (fresnel_f16)0.0f;
             cd = (double)c, ed = (double)e, kd = (double)k;
         }
+        if (i == 1) { /* the approximate conductor's worst: eta 2^-10, a subnormal c */
+            c = (fresnel_f16)0x1.eep-17f, e = (fresnel_f16)FRESNEL_ETA_MIN_F16, k = (fresnel_f16)0.0f;
+            cd = (double)c, ed = (double)e, kd = (double)k;
+        }
         got[D_SCHLICK] = (double)fresnel_schlick_f16(f0, c);
         ref[D_SCHLICK] = ref_schlick((double)f0, cd);
+        /* F90 and F82 as g, p as alpha: any half of their domains */
+        got[D_SCHLICK_GEN] = (double)fresnel_schlick_gen_f16(f0, g, al, c);
+        ref[D_SCHLICK_GEN] = ref_schlick_gen((double)f0, (double)g, (double)al, cd);
+        got[D_F82] = (double)fresnel_f82_f16(f0, g, c);
+        ref[D_F82] = ref_f82((double)f0, (double)g, cd);
         got[D_F0] = (double)fresnel_f0_from_ior_f16(e, k);
         ref[D_F0] = ref_f0_from_ior(ed, kd);
         got[D_F0_MEDIUM] = (double)fresnel_f0_in_medium_f16(f0, e);
@@ -349,6 +362,75 @@ static void check_domain(void)
         check_bound(names[f], &w[f], bounds[f], bad[f]);
 }
 
+/* The LUTs over their documented domain: every n from 2 to
+ * FRESNEL_LUT_N_MAX_F16 (log-uniform, and both ends), curve tables with
+ * nodes anywhere in [0, 2] (random, a zigzag between the ends, or a
+ * conductor's or a dielectric's exact curve, total reflection included)
+ * and residual tables in [-1, 1] (random, a zigzag, or a curve less
+ * Schlick at its F0); 400 random half cosines
+ * and the ends per table, 3000 tables. Against the same interpolation in
+ * double at the table's values, clamped as the runtime clamps. */
+static void check_lut_domain(void)
+{
+    static fresnel_f16 tab[FRESNEL_LUT_N_MAX_F16], res[FRESNEL_LUT_N_MAX_F16];
+    static double dtab[FRESNEL_LUT_N_MAX_F16], dres[FRESNEL_LUT_N_MAX_F16];
+    worst w[3];
+    long bad[3] = {0, 0, 0};
+    unsigned long long st = 1717;
+    int it, i, j, sp;
+    memset(w, 0, sizeof w);
+    for (it = 0; it < 3000; it++) {
+        int n = it % 10 == 0 ? 2 : it % 10 == 1 ? FRESNEL_LUT_N_MAX_F16
+                                                : 2 + (int)((FRESNEL_LUT_N_MAX_F16 - 2) * pow(rnd16(&st), 2.0));
+        /* 0 random, 1 conductor, 2 dielectric (total reflection for eta < 1), 3 random to 2, 4 a zigzag
+         * between 0 and 2 - 2^-10 (residual: -1 and 1), the steepest table */
+        int kind = it % 5;
+        double eta = 1.0 / 64.0 * pow(1024.0, rnd16(&st)), kappa = kind == 2 ? 0.0 : 1e-3 * pow(16000.0, rnd16(&st));
+        double f0 = ref_f0_from_ior(eta, kappa);
+        fresnel_f16 hf0 = (fresnel_f16)f0;
+        char what[96];
+        sp = it & 1; /* nodes uniform in sqrt(c) or in c */
+        for (i = 0; i < n; i++) {
+            double u = i / (double)(n - 1), cn = sp == 0 ? u * u : u, curve, r;
+            curve = kind == 0 ? rnd16(&st) : kind == 3 ? 2.0 * rnd16(&st) : kind == 4 ? (i & 1) * (2.0 - 0x1p-10)
+                                                                                  : ref_conductor(eta, kappa, cn);
+            r = kind == 0 || kind == 3 ? 2.0 * rnd16(&st) - 1.0 : kind == 4 ? (i & 1) * 2.0 - 1.0
+                                                                                : curve - ref_schlick((double)hf0, cn);
+            tab[i] = (fresnel_f16)curve;
+            res[i] = (fresnel_f16)r;
+            dtab[i] = (double)tab[i];
+            dres[i] = (double)res[i];
+        }
+        snprintf(what, sizeof what, "%s table n %d, %s, eta %.4g kappa %.4g",
+                 kind == 4 ? "zigzag" : kind == 0 || kind == 3 ? "random" : "curve",
+                 n, sp ? "linear" : "sqrt", eta, kappa);
+        for (j = 0; j < 402; j++) {
+            fresnel_f16 c = j < 2 ? (fresnel_f16)(float)j : (fresnel_f16)rnd16(&st);
+            double cd = (double)c, x = sp == 0 ? sqrt(cd) : cd, pos = x * (n - 1), got[3], ref[3], top;
+            int k = (int)pos < n - 1 ? (int)pos : n - 2, f;
+            top = dtab[k] > dtab[k + 1] ? dtab[k] : dtab[k + 1];
+            top = top > 1.0 ? top : 1.0;
+            got[0] = (double)(sp == 0 ? fresnel_lut_f16(tab, n, c) : fresnel_lut_linear_f16(tab, n, c));
+            ref[0] = ref_clamp(ref_lut(dtab, n, 0, x), 0.0, top);
+            got[1] = (double)(sp == 0 ? fresnel_lut_residual_f16(hf0, res, n, c)
+                                      : fresnel_lut_linear_residual_f16(hf0, res, n, c));
+            ref[1] = ref_clamp(ref_schlick((double)hf0, cd) + ref_lut(dres, n, 0, x), 0.0, 1.0);
+            got[2] = 0.0, ref[2] = 0.0;
+            if (sp == 0) {
+                got[2] = (double)fresnel_lut_cubic_f16(tab, n, c);
+                ref[2] = ref_clamp(ref_lut(dtab, n, 1, x), 0.0, top);
+            }
+            for (f = 0; f < 3; f++) {
+                bad[f] += !(got[f] >= 0.0 && got[f] <= (f == 1 ? 1.0 : top));
+                note_worst(&w[f], fabs(got[f] - ref[f]), what, cd);
+            }
+        }
+    }
+    check_bound("domain lut, lut_linear", &w[0], FRESNEL_DOMAIN_LUT_F16, bad[0]);
+    check_bound("domain lut_residual, lut_linear_residual", &w[1], FRESNEL_DOMAIN_LUT_RESIDUAL_F16, bad[1]);
+    check_bound("domain lut_cubic", &w[2], FRESNEL_DOMAIN_LUT_CUBIC_F16, bad[2]);
+}
+
 int main(void)
 {
     static test_material mat[TM_MAX];
@@ -365,6 +447,7 @@ int main(void)
     check_f0_helpers();
     check_luts(mat, nmat);
     check_domain();
+    check_lut_domain();
     return harness_exit();
 }
 

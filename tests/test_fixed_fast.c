@@ -278,7 +278,7 @@ static void check_conductor_helpers(void)
  * eta, kappa the constants were made from. */
 static void conductor_codes(worst *w, long *bad, double eta, double kappa, int32_t lo, int32_t hi, const char *what)
 {
-    fresnel_conductor_prep_q15 p;
+    fresnel_conductor_prep_q15_fast p;
     char where[96];
     int32_t c;
     fixed_conductor_fast(eta, kappa, &p);
@@ -294,7 +294,7 @@ static void conductor_codes(worst *w, long *bad, double eta, double kappa, int32
  * geometric grid (ratio 1.06) from FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST to
  * FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST, kappa at 0, 1e-8 .. 1e-3 and 24
  * values up to FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST, every pair in the
- * domain (kappa >= 0.1 below FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST,
+ * domain (kappa >= 0.1 below FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST_DIELECTRIC,
  * |eta^2 - kappa^2 - 1 + 2i eta kappa| >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST); every
  * material of data/ at every 10 nm from 380 to 780 nm; and the test
  * materials inside the domain. Every cos code. */
@@ -350,7 +350,7 @@ static void check_conductor(const test_material *mat, int nmat)
     check_bound("exact conductor, domain grid", &grid, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
     check_bound("exact conductor, data/ 380-780 nm", &data, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
     {
-        fresnel_conductor_prep_q15 p;
+        fresnel_conductor_prep_q15_fast p;
         fixed_conductor_fast(1.0, 0.0, &p);
         CHECK("fixed fast exact conductor: the matched index reflects 0 at every c, c = 0 included",
               fresnel_conductor_q15_fast(&p, 0) == 0 && fresnel_conductor_q15_fast(&p, 1) == 0 &&
@@ -360,11 +360,11 @@ static void check_conductor(const test_material *mat, int nmat)
     }
 }
 
-/* Materials once reported above the bound, every code: two whose
+/* Materials at the edges of the fast path's forms, every code: two whose
  * constants take one word everywhere (span 0) while a0 + c^2 is -32767 at
  * one code (4815, 25616), two conductors and three low-index dielectrics
  * near their critical angle near normal incidence. */
-static void check_conductor_reported(void)
+static void check_conductor_edges(void)
 {
     static const double m[][2] = {{1.7668102256209994, 1.4640124426721695}, {6.552184082229366, 6.5225902857269098},
                                   {7.4082362219860336, 8.7293341103153441}, {4.09, 12.23},
@@ -376,10 +376,10 @@ static void check_conductor_reported(void)
     memset(&w, 0, sizeof w);
     for (i = 0; i < (int)(sizeof m / sizeof m[0]); i++) {
         in &= conductor_in_domain(m[i][0], m[i][1]);
-        conductor_codes(&w, &bad, m[i][0], m[i][1], 0, ONE, "reported");
+        conductor_codes(&w, &bad, m[i][0], m[i][1], 0, ONE, "edge");
     }
-    CHECK("fixed fast exact conductor: the reported materials lie in the domain", in, "one does not");
-    check_bound("exact conductor, reported materials, every code", &w, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
+    CHECK("fixed fast exact conductor: the edge materials lie in the domain", in, "one does not");
+    check_bound("exact conductor, edge materials, every code", &w, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
 }
 
 static uint64_t conductor_rng = 0x9e3779b97f4a7c15ull;
@@ -428,7 +428,7 @@ static void check_conductor_boundaries(void)
                 double kappa = kind == 0 ? 0.001 + 0.7 * conductor_rnd()
                                          : (conductor_rnd() < 0.3 ? 0.0 : 1e-12 * pow(1e7, conductor_rnd()));
                 double eta = conductor_eta_for(ah_at[t] + 0.8 * conductor_rnd() - 0.4, kappa, c0);
-                fresnel_conductor_prep_q15 p;
+                fresnel_conductor_prep_q15_fast p;
                 if (eta == 0.0)
                     continue;
                 fixed_conductor_fast(eta, kappa, &p);
@@ -447,7 +447,7 @@ static void check_conductor_boundaries(void)
             double eta0 = conductor_eta_for(lo_at[t] / 65536.0, 0.0, c0);
             double kappa = eta0 > 0.0 ? b2 / (2.0 * eta0 * 70368744177664.0) : 0.0;
             double eta = conductor_eta_for(lo_at[t] / 65536.0, kappa, c0);
-            fresnel_conductor_prep_q15 p;
+            fresnel_conductor_prep_q15_fast p;
             if (eta == 0.0)
                 continue;
             fixed_conductor_fast(eta, kappa, &p);
@@ -524,7 +524,7 @@ static void conductor_random_material(double *eta, double *kappa)
 /* The largest error at codes lo..hi, and where. */
 static double conductor_err(double eta, double kappa, int32_t lo, int32_t hi, int32_t *at)
 {
-    fresnel_conductor_prep_q15 p;
+    fresnel_conductor_prep_q15_fast p;
     double w = 0.0;
     int32_t c;
     fixed_conductor_fast(eta, kappa, &p);
@@ -640,7 +640,7 @@ int main(void)
     check_lut_pl(mat, nmat);
     check_conductor_helpers();
     check_conductor(mat, nmat);
-    check_conductor_reported();
+    check_conductor_edges();
     check_conductor_boundaries();
     check_conductor_random();
     return harness_exit();

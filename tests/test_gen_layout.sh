@@ -6,8 +6,8 @@
 #   and every folder of gen/ has its place in the order;
 # - no dependency cycle between gen/ sources: file A depends on file B when
 #   A's object uses a symbol B's defines; tsort finds any loop;
-# - a subcommand (gen/cli/cmd_X.c) only parses and calls: it defines no
-#   global but cmd_X;
+# - a subcommand (gen/cli/cmd_<name>.c) only parses and calls: it defines no
+#   global but cmd_<name>;
 # - the host tool reads the runtime through include/ only: no gen/ source
 #   includes a header of src/.
 case "$BUILD" in *asan*) exit 0 ;; esac # the layout is the same in every build
@@ -66,7 +66,7 @@ fi
 
 bad=$(awk '$1 == "def" && $2 ~ /^gen\/cli\/cmd_/ { n = $2; sub(/^gen\/cli\//, "", n); sub(/\.c$/, "", n); if ($3 != n) print $2 ":" $3 }' "$t/syms")
 if [ -z "$bad" ]; then
-    echo "PASS gen layout: each gen/cli/cmd_X.c defines only cmd_X"
+    echo "PASS gen layout: each gen/cli/cmd_<name>.c defines only cmd_<name>"
 else
     echo "FAIL gen layout: subcommand files export library code: $(echo "$bad" | tr '\n' ' ')"
 fi

@@ -15,9 +15,9 @@
 # 12, 16, 64, 128, 256} (grazing-pl: N <= 64, q15 only) x spacing x n1,
 # gen_matrix_check's SCENE mode evaluates each model as `fresnel report`
 # does and requires the header's numbers, and holds each Q15 LUT to its
-# bound of its own double nodes (each binary16 LUT's distance from its own
-# nodes in double is printed beside fresnel_f16.h's bound, a NOTE: the
-# binary16 position keeps 3 fraction bits at 256 nodes); at n1 1.5,
+# bound of its own double nodes, and each binary16 LUT to
+# FRESNEL_DOMAIN_LUT_F16 (FRESNEL_DOMAIN_LUT_CUBIC_F16) of its own binary16
+# nodes in double; at n1 1.5,
 # `fresnel curve --type` of each material prints the header's numbers too.
 case "$BUILD" in *asan*) exit 0 ;; esac # the runtime's own tests run under the sanitizers
 B=${BUILD:-build}

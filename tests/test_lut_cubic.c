@@ -23,7 +23,7 @@ static double cubic_ref(const double *t, int n, double c)
     if (i > n - 2)
         i = n - 2;
     hi = fmax(hi, fmax(t[i], t[i + 1]));
-    return ref_clamp(ref_lut(t, n, 1, sqrt(c)), 0.0, hi); /* the weights form, not src/lut.c's */
+    return ref_clamp(ref_lut(t, n, 1, sqrt(c)), 0.0, hi); /* the weights form, not src/f32/lut.c's */
 }
 
 static double table_top(const double *t, int n)

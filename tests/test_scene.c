@@ -195,7 +195,7 @@ static void test_accepted_values(void)
     CHECK("scene lut_spacing grazing accepted", ok, "%s", last_message);
     ok = load_capturing(write_manifest("materials = a\nmodels = exact\ntypes = fixed f32\n"), &s) == 0 &&
          s.type_count == 2 && s.types[0] == &number_types[TYPE_Q15] && s.types[1] == &number_types[TYPE_F32];
-    CHECK("scene types: rows of the number type registry in file order, fixed the older name of q15", ok, "%s",
+    CHECK("scene types: rows of the number type registry in file order, fixed, the second name of q15", ok, "%s",
           last_message);
     ok = load_capturing(write_manifest("materials = a\nmodels = exact\ntypes = f16\n"), &s) == 0;
     CHECK("scene types = f16 accepted where the build has _Float16, refused with a reason where not",

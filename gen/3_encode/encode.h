@@ -1,5 +1,5 @@
 /* Stage 3 of the generator: LUT node positions and values for the runtime's
- * table models (include/fresnel.h, src/lut.c), fitted to the ground truth,
+ * table models (include/fresnel.h, src/f32/lut.c), fitted to the ground truth,
  * and every constant and table of a scene in each number type the runtime
  * reads (encode_constants.c). */
 #ifndef FRESNEL_ENCODE_H
@@ -66,7 +66,7 @@ typedef struct encoded_material {
     fresnel_lsk_prep_q15 q_lsk[3], q_lsk_comp[3]; /* on the fitted eta, kappa; q_lsk: a = alpha = 0 */
     fresnel_ior_prep_q15 q_ior[ETA_SOURCES][3], q_ct;
     fresnel_nk_prep_q15 q_nk[3];                  /* the fitted eta, kappa */
-    fresnel_conductor_prep_q15 q_ior_fast[3];     /* the fitted eta, kappa, where q_ior_fast_out is -1 */
+    fresnel_conductor_prep_q15_fast q_ior_fast[3];     /* the fitted eta, kappa, where q_ior_fast_out is -1 */
     int q_ior_fast_out; /* the first channel outside fresnel_conductor_q15_fast's domain, or -1 */
 #if FRESNEL_HAS_F16
     /* binary16, per channel (the binary16 runtime is scalar) */

@@ -1,5 +1,5 @@
 /* Stage 3, encode: the LUT tables the runtime interpolates (include/fresnel.h,
- * src/lut.c). The node values are not the curve sampled at the nodes: they
+ * src/f32/lut.c). The node values are not the curve sampled at the nodes: they
  * are the least-squares fit, through the runtime's own interpolation, of the
  * ground truth (under the gamut policy) at every 0.05 degrees from 0 to 90 (the report
  * measures every degree). Sampling at the nodes puts all of the error between
@@ -73,7 +73,7 @@ double lut_node_cos(lut_spacing spacing, int i, int n)
 
 /* The runtime's interpolation as weights on (at most) four nodes: idx[k]
  * gets weight w[k]. Linear uses two; Catmull-Rom four, the outer ones
- * clamped to the table's ends (src/lut.c). */
+ * clamped to the table's ends (src/f32/lut.c). */
 static void lut_weights(lut_spacing spacing, lut_form form, int n, double c, int idx[4], double w[4])
 {
     double pos = lut_position(spacing, c) * (n - 1), t;

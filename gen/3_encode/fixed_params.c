@@ -76,7 +76,7 @@ void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out)
     out->inv_eta2 = fixed_qf(1.0 / (eta * eta));
 }
 
-void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *out)
+void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15_fast *out)
 {
     double eh, el, d, x, hi = 0.0, b;
     int s, k, two;
@@ -124,7 +124,7 @@ void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *
 int fixed_conductor_fast_in_domain(double eta, double kappa)
 {
     return eta >= FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST && eta <= FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST && kappa >= 0.0 &&
-           (kappa >= 0.1 || eta >= FRESNEL_CONDUCTOR_ETA_MIN_DIELECTRIC_Q15_FAST) &&
+           (kappa >= 0.1 || eta >= FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST_DIELECTRIC) &&
            kappa <= FRESNEL_CONDUCTOR_KAPPA_MAX_Q15_FAST &&
            hypot(eta * eta - kappa * kappa - 1.0, 2.0 * eta * kappa) >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST;
 }

@@ -14,7 +14,7 @@ fresnel_q16 fixed_q16(double x);        /* round(x 65536), clamped to int32 */
 /* eta, kappa relative to the incident medium, clamped like fresnel.h. */
 void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out);
 /* fresnel_conductor_q15_fast's constants (fresnel_fixed_fast.h layout). */
-void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15 *out);
+void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15_fast *out);
 /* 1 where eta, kappa lie in fresnel_conductor_q15_fast's documented domain
  * (FRESNEL_CONDUCTOR_*_Q15_FAST), where its bound holds; else 0. */
 int fixed_conductor_fast_in_domain(double eta, double kappa);

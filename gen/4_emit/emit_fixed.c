@@ -138,10 +138,10 @@ static void emit_ior_fast3(fx_out *o, const char *prefix, const double *eta, con
     }
     fprintf(o->f, "/* the same eta, kappa for fresnel_conductor_q15_rgb_fast (fresnel_fixed_fast.h; one\n"
                   " * channel: fresnel_conductor_q15_fast); fields a0, a0_lo, shift, b1, b2, bm, be, span */\n"
-                  "static const fresnel_conductor_prep_q15 %s[3] FRESNEL_GEN_UNUSED = {\n",
+                  "static const fresnel_conductor_prep_q15_fast %s[3] FRESNEL_GEN_UNUSED = {\n",
             id);
     for (ch = 0; ch < 3; ch++) {
-        fresnel_conductor_prep_q15 q = e->q_ior_fast[ch];
+        fresnel_conductor_prep_q15_fast q = e->q_ior_fast[ch];
         fprintf(o->f, "    {%ld, %ld, %ld, %ld, %ld, %ld, %ld, %lu}%s\n", (long)q.a0, (long)q.a0_lo, (long)q.shift,
                 (long)q.b1, (long)q.b2, (long)q.bm, (long)q.be, (unsigned long)q.span, ch < 2 ? "," : "\n};");
     }

@@ -1,6 +1,6 @@
 /* Timing for `make bench` and the report's cost columns: never used by tests
- * to assert anything about speed (DEVELOPERS.md: performance goals live in
- * benchmarks). */
+ * to assert anything about speed (performance goals live in benchmarks, not
+ * in timed unit tests). */
 #ifndef FRESNEL_BENCH_H
 #define FRESNEL_BENCH_H
 

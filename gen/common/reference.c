@@ -19,7 +19,7 @@ static double kappa_dom(double x)
 }
 
 /* eta^2 + c^2 - 1 - kappa^2 with the squares exact (fma) and their sum's
- * rounding carried, as src/internal.h does in binary32: near the critical
+ * rounding carried, as src/f32/internal.h does in binary32: near the critical
  * angle this is a difference of nearly equal numbers whose root is taken. */
 static double eta2_minus_sin2(double eta, double c, double kappa2)
 {
@@ -197,7 +197,7 @@ double ref_cook_torrance(double f0, double eta, double kappa, double c)
     return unit(f0 + (1.0 - f0) * t);
 }
 
-/* u + iv = sqrt((eta + i kappa)^2 - sin^2), m = u^2 + v^2 (see src/exact.c). */
+/* u + iv = sqrt((eta + i kappa)^2 - sin^2), m = u^2 + v^2 (see src/f32/exact.c). */
 static void transmitted(double eta, double kappa, double c, double *u, double *v, double *m)
 {
     double ek = eta * kappa;

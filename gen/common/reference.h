@@ -54,7 +54,7 @@ double ref_clamp(double x, double lo, double hi);
 /* A LUT of n >= 2 nodes v[0..n-1] at position x in [0, 1] (x = sqrt(c) or c,
  * as the table's spacing), unclamped: linear between the two nodes around
  * x, or (cubic) Catmull-Rom through the four around it, the outer ones
- * clamped to the table's ends, written as weights (src/lut.c uses a Hermite
+ * clamped to the table's ends, written as weights (src/f32/lut.c uses a Hermite
  * form on differences). */
 double ref_lut(const double *v, int n, int cubic, double x);
 

@@ -19,7 +19,7 @@ typedef enum number_type_id { TYPE_F32, TYPE_Q15, TYPE_F16, NUMBER_TYPES } numbe
 typedef struct number_type {
     number_type_id id;
     const char *name;   /* manifests' types, --type, the report's columns */
-    const char *alias;  /* an older name accepted for it, or NULL */
+    const char *alias;  /* a second name accepted for it (q15: fixed), or NULL */
     const char *header; /* the runtime header a generated header includes for it */
     const char *what;   /* for --help */
     /* 1 where this build has the type (binary16: the compiler's _Float16):

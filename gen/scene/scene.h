@@ -38,7 +38,7 @@
  *                finite number in [1, 4].
  *   types        optional, default f32; whitespace-separated names of the
  *                number type registry (model/number_type.c: f32, q15 or
- *                its older name fixed, and f16 where the generator's
+ *                its second name fixed, and f16 where the generator's
  *                compiler has _Float16), no duplicates.
  *   lut_spacing  optional, default grazing; one of scene_lut_spacing_names[]:
  *                grazing (LUT nodes uniform in sqrt(cos theta), denser

@@ -450,7 +450,7 @@ FRESNEL_HP fresnel_i_approx_conductor_hp(FRESNEL_HP n, FRESNEL_HP k, FRESNEL_HP 
 /* ---------------------------------------------------------- Gulbrandsen */
 
 /* r, g -> (n, k), r clamped to [0, 0.9999]. highp (see the file comment).
- * k^2 in the factored form of src/gulbrandsen.c. */
+ * k^2 in the factored form of src/f32/gulbrandsen.c. */
 FRESNEL_HP2 fresnel_gulbrandsen_nk(FRESNEL_HP r, FRESNEL_HP g)
 {
     FRESNEL_HP sr, nmin, nmax, n, k2;
@@ -535,7 +535,7 @@ FRESNEL_VEC3 fresnel_conductor_rgb(FRESNEL_HP3 eta, FRESNEL_HP3 kappa, FRESNEL_H
                         fresnel_conductor(eta.b, kappa.b, c));
 }
 
-/* 1 - fresnel_conductor, from sums of non-negative terms (src/exact.c). */
+/* 1 - fresnel_conductor, from sums of non-negative terms (src/f32/exact.c). */
 FRESNEL_HP fresnel_i_conductor_transmittance(FRESNEL_HP e, FRESNEL_HP k, FRESNEL_HP cc)
 {
     FRESNEL_HP3 w;
@@ -597,7 +597,7 @@ FRESNEL_VEC3 fresnel_cook_torrance_rgb(FRESNEL_MP3 f0, FRESNEL_HP eta, FRESNEL_H
 
 /* --------------------------------------------------------------- LUTs */
 
-/* Tables of src/lut.c: n nodes, uniform in sqrt(c), c_i = (i/(n-1))^2
+/* Tables of src/f32/lut.c: n nodes, uniform in sqrt(c), c_i = (i/(n-1))^2
  * (FRESNEL_LUT_*, fresnel_lut*), or in c (the LINEAR forms); RGB tables
  * hold n red nodes, then n green, then n blue; the RESIDUAL forms add the
  * table to Schlick(F0). Linear interpolation between the two nodes around c,
@@ -647,7 +647,7 @@ FRESNEL_HP fresnel_lut_lerp(FRESNEL_HP a, FRESNEL_HP b, FRESNEL_HP t)
 #define FRESNEL_LUT_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
 #define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
 
-/* fresnel_lut_cubic (src/lut.c): Catmull-Rom through the four nodes around
+/* fresnel_lut_cubic (src/f32/lut.c): Catmull-Rom through the four nodes around
  * sqrt(c), the outer ones clamped to the table's ends; tables fitted for it
  * (lutN-cubic). Arrays, n an int (GLSL 1.20 has no integer min() and max()
  * for the index clamps), or the packed texture (fresnel_lut_cubic_packed_rgb,

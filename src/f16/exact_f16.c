@@ -90,8 +90,11 @@ fresnel_i_h fresnel_i_conductor_transmittance_h(fresnel_i_h eta, fresnel_i_h kap
     den_p = fresnel_i_hadd(fresnel_i_hmul(pu, pu), fresnel_i_hmul(qv, qv));
     four_cu = fresnel_i_hmul(fresnel_i_hmul(fresnel_i_hc(4.0f), c), w.u);
     ts = den_s > zero ? fresnel_i_hdiv(four_cu, den_s) : one;
-    /* numerator 4cu (m + s^2) s^2, formed as (4cu s)((m + s^2) s) */
-    tp = den_p > zero ? fresnel_i_hdiv(fresnel_i_hmul(fresnel_i_hmul(four_cu, s), fresnel_i_hmul(fresnel_i_hadd(w.m, s2), s)), den_p) : one;
+    /* 4cu (m + s^2) s^2 / den_p as 4cu (((m + s^2) s) s / den_p): for a
+     * small eta under a large kappa, 4cu s (u ~ eta, s ~ 1/kappa^2) falls
+     * among binary16's subnormals (below 2^-14, spacing 2^-24) near grazing
+     * incidence, a 1-2% error in T; (m + s^2) s s and den_p stay normal. */
+    tp = den_p > zero ? fresnel_i_hmul(four_cu, fresnel_i_hdiv(fresnel_i_hmul(fresnel_i_hmul(fresnel_i_hadd(w.m, s2), s), s), den_p)) : one;
     return fresnel_i_hunit(fresnel_i_hmul(fresnel_i_hc(0.5f), fresnel_i_hadd(ts, tp)));
 }
 

@@ -21,7 +21,7 @@
 static int channel(fresnel_rgb_q15 v, int ch) { return ch == 0 ? v.r : (ch == 1 ? v.g : v.b); }
 
 static void check(const char *what, const fresnel_rgb_q15 f0, const fresnel_rgb_q15 f82, const int32_t a_q12[3],
-                  const fresnel_ior_prep_q15 ior[3], const fresnel_conductor_prep_q15 fast[3])
+                  const fresnel_ior_prep_q15 ior[3], const fresnel_conductor_prep_q15_fast fast[3])
 {
     const double bound_f82 = FRESNEL_BOUND_F82_Q15_FAST + FRESNEL_BOUND_F82_Q15;
     const double bound_exact = FRESNEL_BOUND_CONDUCTOR_Q15_FAST + FRESNEL_BOUND_CONDUCTOR_Q15;

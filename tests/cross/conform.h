@@ -18,7 +18,7 @@ typedef struct conform_material {
     fresnel_lsk_prep_q15 lsk;
     fresnel_q16 eta, kappa; /* Q16.16, for the run-time *_prepare functions */
     int32_t f82_a;          /* fresnel_f82_q15_fast's a_q12 */
-    fresnel_conductor_prep_q15 cfast; /* fresnel_conductor_q15_fast's constants */
+    fresnel_conductor_prep_q15_fast cfast; /* fresnel_conductor_q15_fast's constants */
 } conform_material;
 
 extern const conform_material conform_materials[];

@@ -34,7 +34,7 @@ int main(void)
     for (k = 0; k < n; k++) {
         model_params mp;
         model_fixed mf;
-        fresnel_conductor_prep_q15 cf;
+        fresnel_conductor_prep_q15_fast cf;
         model_derive(mat[k].eta, mat[k].kappa, 1.0, 1.0, 5.0, &mp);
         model_params_round_fixed(&mp);
         model_fixed_from_params(&mp, &mf);

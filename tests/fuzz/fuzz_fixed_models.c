@@ -138,7 +138,7 @@ static void fuzz_prepared(fuzz_bytes *b, int32_t c)
      * the generator's test: c in [0, one] is a precondition, so c is
      * clamped here), held to its documented bound. */
     if (fixed_conductor_fast_in_domain(eta, kappa)) {
-        fresnel_conductor_prep_q15 cf;
+        fresnel_conductor_prep_q15_fast cf;
         int32_t cc = c < 0 ? 0 : (c > 32768 ? 32768 : c);
         fixed_conductor_fast(eta, kappa, &cf);
         check("fresnel_conductor_q15_fast", fresnel_conductor_q15_fast(&cf, cc), ref_conductor(eta, kappa, cc / 32768.0),

@@ -17,14 +17,6 @@
 #include "fresnel.h"
 #include "common/reference.h"
 
-/* Findings of this fuzzer that are in the runtime, not in the tests. Each entry replaces ONE documented bound in
- * ONE region by the error measured there, so the fuzzer keeps checking the
- * rest; delete an entry when the runtime is fixed (the crash inputs are in
- * the corpus and must then pass with the documented bound).
- *   (F1, Gulbrandsen near r = 1, and F2, F0 in a medium, are fixed in the
- *   runtime; their inputs stay in the corpus and are held to the documented
- *   bounds.) */
-
 /* The region of eta and kappa where fresnel.h says the bounds were measured. */
 static int measured_eta(float e)
 {
@@ -39,8 +31,8 @@ static int measured_kappa(float k)
 
 /* LSK's a is 2n from the host's fit (fresnel.h), so the measured eta range
  * gives a <= 200. The documented domain goes on to FRESNEL_A_MAX = 1e6,
- * where the error grows with a (6.8e-7 at a <= 2000, 1.2e-6 at a near
- * 1e6): outside a <= 200 only the range is checked. */
+ * where the error grows with a as fresnel.h says (6.8e-7 at a <= 2000,
+ * 1.2e-6 at a near 1e6): outside a <= 200 only the range is checked. */
 static int measured_a(float a)
 {
     return ref_clamp(a, 0.0, FRESNEL_A_MAX) <= 200.0;
@@ -100,7 +92,7 @@ static fresnel_rgb rgb3(float r, float g, float b)
     return x;
 }
 
-/* Linear interpolation in double on the same nodes as src/lut.c. */
+/* Linear interpolation in double on the same nodes as src/f32/lut.c. */
 static double ref_interp(const float *t, int n, double x)
 {
     double pos = x * (n - 1);
@@ -277,9 +269,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         /* the edge tint over the whole domain (r -> 0 and r -> 1 included) */
         double rr, rgg;
         ref_gulbrandsen_rg(eta, kappa, &rr, &rgg);
-        if (!(fabs((double)rg.g - rgg) <= FRESNEL_BOUND_GULBRANDSEN_G))
+        if (!(fabs((double)rg.g - rgg) <= FRESNEL_BOUND_GULBRANDSEN_RG))
             FUZZ_FAIL("fresnel_gulbrandsen_rg(%a, %a).g = %.9g, reference %.9g: beyond %g", (double)eta,
-                      (double)kappa, (double)rg.g, rgg, (double)FRESNEL_BOUND_GULBRANDSEN_G);
+                      (double)kappa, (double)rg.g, rgg, (double)FRESNEL_BOUND_GULBRANDSEN_RG);
     }
 
     in[0] = eta, in[1] = kappa, in[2] = c;
