@@ -2,7 +2,10 @@
 #   make          build the library and build/fresnel, run the main job
 #   make test     installs missing tools (tests/deps.sh), unit and error-bound
 #                 tests, again under ASan+UBSan, and again built by the other
-#                 compiler (clang when CC is gcc, else gcc)
+#                 compiler (clang when CC is gcc, else gcc): each check in the
+#                 passes its header names (tests/README.md), JOBS at a time
+#   make check    the edit loop's subset: the first pass, without the checks
+#                 of the external tools (browser, GPU drivers, qemu)
 #   make install  PREFIX=/usr/local DESTDIR=   headers, libfresnel.a, fresnel.pc,
 #                 CMake package, bin/fresnel, share/fresnel/ (ports/install.sh)
 #   make uninstall PREFIX=... DESTDIR=...      removes what install put there
@@ -35,7 +38,7 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/embed/viewer_assets.o
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all main-job test test-bins install uninstall deps clean report bench bench-run viewer
+.PHONY: all main-job test test-bins check check-bins install uninstall deps clean report bench bench-run viewer
 .DELETE_ON_ERROR:
 
 all: $(BUILD)/libfresnel.a $(BUILD)/fresnel
@@ -109,26 +112,39 @@ $(BUILD)/tests/gen_matrix_check: tests/gen_matrix_check.c $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(BUILD)/libfresnel.a $(LDLIBS)
 
-test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
-           $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit \
-           $(BUILD)/vulkan/vulkan_test
+# make check's programs; make test's add the two that link OSMesa and Vulkan.
+check-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(FUZZ_REPLAY) \
+            $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit
+test-bins: check-bins $(BUILD)/glsl/glsl_test $(BUILD)/vulkan/vulkan_test
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with
 # apt-get when run as root, else the exact apt-get line and a stop.
 deps:
 	@sh tests/deps.sh all
 
-# The second pass rebuilds everything with sanitizers in build/asan; the third
-# with the other compiler (-Werror, as always) in build/gcc or build/clang,
-# whose tests run with CC set to it. The last line printed is
-# "N passed, N failed".
+# The first pass builds in build/; the second rebuilds everything with
+# sanitizers in build/asan; the third with the other compiler (-Werror, as
+# always) in build/gcc or build/clang, whose tests run with CC set to it. The
+# three builds share JOBS jobs; then tests/run.sh runs JOBS checks at a time
+# and prints the ten slowest. The last line printed is "N passed, N failed".
 OTHER_CC := $(if $(findstring clang,$(shell $(CC) --version 2>/dev/null)),gcc,clang)
-test: deps
-	@$(MAKE) --no-print-directory test-bins
-	@$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1 -g" \
-	    SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" test-bins
+JOBS     ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+# -jJOBS unless make was given its own -j (a jobserver the sub-makes share)
+JFLAG     = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+.PHONY: test-build-first test-build-sanitize test-build-other
+test-build-first:
+	@$(MAKE) --no-print-directory BUILD=build test-bins
+test-build-sanitize:
+	@$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1 -g" SAN="$(SAN_FLAGS)" test-bins
+test-build-other:
 	@$(MAKE) --no-print-directory BUILD=build/$(OTHER_CC) CC=$(OTHER_CC) test-bins
-	@sh tests/run.sh build build/asan build/$(OTHER_CC)@$(OTHER_CC)
+test: deps
+	@$(MAKE) --no-print-directory $(JFLAG) test-build-first test-build-sanitize test-build-other
+	@JOBS=$(JOBS) sh tests/run.sh first=build sanitize=build/asan other=build/$(OTHER_CC)@$(OTHER_CC)
+check:
+	@$(MAKE) --no-print-directory $(JFLAG) BUILD=build check-bins
+	@JOBS=$(JOBS) sh tests/run.sh --check first=build
 
 # Benchmarks, never tests: `make report` writes build/report/ (accuracy against
 # the spectral ground truth, time and instructions per evaluation, plots, and

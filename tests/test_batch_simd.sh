@@ -1,4 +1,6 @@
 #!/bin/sh
+# passes: first (these builds are independent of the pass's flags)
+# make check: no (AArch64 under qemu)
 # tests/test_batch.c (fresnel_conductor_batch and _rgb_batch bit for bit
 # against fresnel_conductor_prepared) on each SIMD kernel of src/f32/simd.h
 # the main build does not select (an x86-64 -O2 build takes its AVX2 kernel
@@ -8,7 +10,6 @@
 # NEON under qemu-aarch64-static, and the portable C of FRESNEL_CFG_NO_SIMD. The AVX-512 kernel is compiled
 # warning-free by gcc and clang everywhere; it runs only on a CPU that has
 # AVX-512F (qemu-user has none).
-[ "$BUILD" = build ] || exit 0 # one pass: these builds are independent of the pass's flags
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 W="-std=c99 -Wall -Wextra -Wpedantic -Werror -D_POSIX_C_SOURCE=200809L -fno-math-errno -fno-trapping-math -Iinclude -Itests"

@@ -1,4 +1,5 @@
 #!/bin/sh
+# passes: first other (the layout is the same in the sanitized build)
 # The generator's architecture, checked on its object files (gen/README.md):
 # - no dependency cycle between gen/ sources: file A depends on file B when
 #   A's object uses a symbol B's defines; tsort finds any loop;
@@ -6,7 +7,6 @@
 #   global but cmd_X;
 # - the host tool reads the runtime through include/ only: no gen/ source
 #   includes a header of src/.
-case "$BUILD" in *asan*) exit 0 ;; esac # the layout is the same in every build
 B=${BUILD:-build}
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
