@@ -227,9 +227,14 @@ FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 .PHONY: fuzz fuzz-bins
 fuzz-bins: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/%)
 
-$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(wildcard tests/fuzz/*.h) $(LIB_SRC) $(wildcard src/*/*.h) $(wildcard include/*.h) $(FUZZ_GEN)
+# Each source compiled once with FUZZ_FLAGS, its objects shared by the targets.
+fuzz_obj = $(patsubst %.c,$(BUILD)/fuzz/obj/%.o,$(1))
+$(BUILD)/fuzz/obj/%.o: %.c
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN) -lm -o $@
+	$(FUZZ_CC) $(FUZZ_FLAGS) -MMD -MP -c $< -o $@
+$(BUILD)/fuzz/fuzz_%: $(call fuzz_obj,tests/fuzz/fuzz_%.c $(LIB_SRC) $(FUZZ_GEN))
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) $^ -lm -o $@
 
 # clang 14 on x86-64 has no _Float16: the binary16 target and src/f16/
 # are compiled by gcc (ASan, UBSan, and comparison tracing that libFuzzer's
@@ -243,17 +248,16 @@ FUZZ_F16_OBJ   := $(FUZZ_F16_SRC:%.c=$(BUILD)/fuzz/gcc/%.o)
 $(BUILD)/fuzz/gcc/%.o: %.c $(wildcard tests/fuzz/*.h) $(wildcard src/*/*.h) $(wildcard include/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_GCC) $(FUZZ_GCC_FLAGS) -c $< -o $@
-$(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(LIB_SRC) $(FUZZ_GEN)
+$(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) $(call fuzz_obj,tests/fuzz/gcc_cov_stubs.c \
+                                $(filter-out src/f16/%,$(LIB_SRC)) $(FUZZ_GEN))
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(filter-out src/f16/%,$(LIB_SRC)) \
-	    $(FUZZ_GEN) -lm -o $@
+	$(FUZZ_CC) $(FUZZ_FLAGS) $^ -lm -o $@
 
 # The end-to-end generator target links `fresnel gen` and what it calls.
 FUZZ_GEN_HEADER := gen/cli/cmd_gen.c $(filter-out gen/cli/cmd_%.c gen/bench/% gen/report/% gen/viewer/%,$(GEN_SRC))
-$(BUILD)/fuzz/fuzz_gen_header: tests/fuzz/fuzz_gen_header.c tests/header_check.h $(wildcard tests/fuzz/*.h) \
-                               $(LIB_SRC) $(wildcard src/*/*.h) $(FUZZ_GEN_HEADER)
+$(BUILD)/fuzz/fuzz_gen_header: $(call fuzz_obj,tests/fuzz/fuzz_gen_header.c $(LIB_SRC) $(FUZZ_GEN_HEADER))
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN_HEADER) -lm -o $@
+	$(FUZZ_CC) $(FUZZ_FLAGS) $^ -lm -o $@
 
 fuzz: fuzz-bins
 	@for t in $(FUZZ_TARGETS); do \
