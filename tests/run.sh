@@ -10,11 +10,12 @@
 # none; tests/README.md has the rule), and "make check: no (why)" leaves it
 # out of --check (make check). A check that exits non-zero without a FAIL
 # line (a crash, a sanitizer report) counts as one failure.
-# JOBS checks run at once (default: the number of CPUs); each one's output is
-# printed whole, in the order of the list, so the log reads as if they ran
-# one after another. At the end: the ten slowest checks, the time of each
-# check in DIR/test-times.tsv of the first pass (the next run starts the
-# slowest first), and last the line "N passed, N failed".
+# JOBS checks run at once (default: the number of CPUs), the slowest first
+# (by DIR/test-times.tsv of the first pass, which each run writes; without it
+# the checks left out of make check, then the other scripts, then the
+# binaries); each one's output is printed whole, in the order they start, so
+# the log reads as if they ran one after another. At the end: the ten
+# slowest checks and last the line "N passed, N failed".
 
 # One check, run by the pool below: its output, then its exit status and
 # times (the .rc file, written last, says it is done).
@@ -83,16 +84,13 @@ for arg in "$@"; do
 done
 [ "$n" -gt 0 ] || { echo "0 passed, $((fail + 1)) failed (no check to run)"; exit 1; }
 
-# The slowest first (their times from the last run, else the scripts before
-# the binaries and, among the scripts, those left out of make check, the
-# heavy ones), so that no long check starts last.
+# The slowest first, so that no long check starts last.
 awk -v tf="$times_file" '
     BEGIN { while ((getline line < tf) > 0) { split(line, f, "\t"); t[f[1] " " f[2]] = f[3] } }
     { key = $2 " " $6
       if (key in t) cost = t[key]
       else cost = ($5 == "script") ? 1 : 0.5
       print cost "\t" $0 }' "$work/list" | sort -t "$(printf '\t')" -k1,1gr -s | cut -f2- >"$work/queue"
-# Without old times the heavy scripts go first: those out of make check.
 if [ ! -f "$times_file" ]; then
     while read -r idx label dir cc kind src name; do
         case $(header "$src" "make check") in no*) echo "$idx $label $dir $cc $kind $src $name" ;; esac
@@ -135,7 +133,7 @@ while read -r idx label dir cc kind src name; do
     tally "$label" "$what" "$rc" "$work/$idx.log"
     printf '%s\t%s\t%.1f\t%d\t%d\t%s\n' "$label" "$src" "$(echo "$t0 $t1" | awk '{ print $2 - $1 }')" \
         $((pass - before_pass)) $((fail - before)) "$what" >>"$work/times"
-done <"$work/list"
+done <"$work/queue"
 wait "$pool"
 
 total=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.0f", e - s }')
