@@ -29,7 +29,10 @@ if [ "${1-}" = --job ]; then
         BUILD="$dir" CC="$cc" sh "$src" >"$work/$idx.log" 2>&1 </dev/null
     fi
     rc=$?
-    echo "$rc $start $(date +%s.%N)" >"$work/$idx.tmp" && mv "$work/$idx.tmp" "$work/$idx.rc"
+    # the CPU time of the check's processes (user + system), from times
+    times >"$work/$idx.cpu" # not in a pipeline: a subshell has no children
+    cpu=$(awk 'NR == 2 { for (i = 1; i <= 2; i++) { split($i, t, "m"); s += t[1] * 60 + t[2] } print s }' "$work/$idx.cpu")
+    echo "$rc $start $(date +%s.%N) ${cpu:-0}" >"$work/$idx.tmp" && mv "$work/$idx.tmp" "$work/$idx.rc"
     exit 0
 fi
 
@@ -127,22 +130,23 @@ while read -r idx label dir cc kind src name; do
         fail=$((fail + 1))
         continue
     fi
-    read -r rc t0 t1 <"$work/$idx.rc"
+    read -r rc t0 t1 cpu <"$work/$idx.rc"
     before=$fail
     before_pass=$pass
     tally "$label" "$what" "$rc" "$work/$idx.log"
-    printf '%s\t%s\t%.1f\t%d\t%d\t%s\n' "$label" "$src" "$(echo "$t0 $t1" | awk '{ print $2 - $1 }')" \
-        $((pass - before_pass)) $((fail - before)) "$what" >>"$work/times"
+    printf '%s\t%s\t%.1f\t%d\t%d\t%s\t%.1f\n' "$label" "$src" "$(echo "$t0 $t1" | awk '{ print $2 - $1 }')" \
+        $((pass - before_pass)) $((fail - before)) "$what" "$cpu" >>"$work/times"
 done <"$work/queue"
 wait "$pool"
 
 total=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.0f", e - s }')
-echo "NOTE the ten slowest checks, seconds (of $n checks, $jobs at a time, $total s in all):"
+cpu=$(awk -F'\t' '{ s += $7 } END { printf "%.0f", s }' "$work/times")
+echo "NOTE the ten slowest checks (of $n, $jobs at a time, $total s in all, $cpu CPU s): seconds, CPU seconds of its processes"
 sort -t "$(printf '\t')" -k3,3gr "$work/times" | head -10 |
-    awk -F'\t' '{ printf "NOTE %7.1f  [%s] %s\n", $3, $1, $6 }'
-awk -F'\t' '!($1 in n) { order[++k] = $1 } { n[$1]++ }
+    awk -F'\t' '{ printf "NOTE %7.1f %7.1f  [%s] %s\n", $3, $7, $1, $6 }'
+awk '!($2 in n) { order[++k] = $2 } { n[$2]++ }
     END { printf "NOTE checks per pass:"; for (i = 1; i <= k; i++) printf "%s %s %d", (i > 1 ? "," : ""), order[i], n[order[i]]; printf "\n" }' \
-    "$work/times"
+    "$work/list"
 if [ -n "$times_file" ] && [ -d "$(dirname "$times_file")" ]; then
     if [ $only_check = yes ] && [ -f "$times_file" ]; then
         # make check keeps the times of the passes it did not run
