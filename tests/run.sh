@@ -66,12 +66,12 @@ for arg in "$@"; do
         exit 2
         ;;
     esac
-    times_file_set=$times_file
-    [ -n "$times_file" ] || times_file=$dir/test-times.tsv
+    first_arg=no
+    [ -n "$times_file" ] || { first_arg=yes; times_file=$dir/test-times.tsv; }
     for src in tests/test_*.c tests/test_*.sh; do
         [ -f "$src" ] || continue
         passes=$(header "$src" passes | sed "s/(.*//")
-        [ -n "$times_file_set" ] || for p in ${passes:-all}; do
+        [ $first_arg = yes ] && for p in ${passes:-all}; do
             case $p in
             all | first | sanitize | other) ;;
             *) echo "FAIL $src: unknown pass '$p' on its passes: line (expected all, first, sanitize, other)"
