@@ -140,7 +140,8 @@ test-build-sanitize:
 test-build-other:
 	@$(MAKE) --no-print-directory BUILD=build/$(OTHER_CC) CC=$(OTHER_CC) test-bins
 test: deps
-	@$(MAKE) --no-print-directory $(JFLAG) test-build-first test-build-sanitize test-build-other
+	@s=$$(date +%s); $(MAKE) --no-print-directory $(JFLAG) test-build-first test-build-sanitize test-build-other && \
+	    echo "NOTE make test: the three builds took $$(($$(date +%s) - s)) s"
 	@JOBS=$(JOBS) sh tests/run.sh first=build sanitize=build/asan other=build/$(OTHER_CC)@$(OTHER_CC)
 check:
 	@$(MAKE) --no-print-directory $(JFLAG) BUILD=build check-bins
