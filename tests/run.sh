@@ -12,10 +12,11 @@
 # line (a crash, a sanitizer report) counts as one failure.
 # JOBS checks run at once (default: the number of CPUs), the slowest first
 # (by DIR/test-times.tsv of the first pass, which each run writes; without it
-# the checks left out of make check, then the other scripts, then the
-# binaries); each one's output is printed whole, in the order they start, so
-# the log reads as if they ran one after another. At the end: the ten
-# slowest checks and last the line "N passed, N failed".
+# those whose header says "start: early", then those left out of make
+# check, then the other scripts, then the binaries); each one's output is
+# printed whole, in the order they start, so the log reads as if they ran
+# one after another. At the end: the ten slowest checks and last the line
+# "N passed, N failed".
 
 # One check, run by the pool below: its output, then its exit status and
 # times (the .rc file, written last, says it is done).
@@ -95,11 +96,17 @@ awk -v tf="$times_file" '
       else cost = ($5 == "script") ? 1 : 0.5
       print cost "\t" $0 }' "$work/list" | sort -t "$(printf '\t')" -k1,1gr -s | cut -f2- >"$work/queue"
 if [ ! -f "$times_file" ]; then
-    while read -r idx label dir cc kind src name; do
-        case $(header "$src" "make check") in no*) echo "$idx $label $dir $cc $kind $src $name" ;; esac
-    done <"$work/queue" >"$work/heavy"
-    grep -vxF -f "$work/heavy" "$work/queue" >"$work/rest"
-    cat "$work/heavy" "$work/rest" >"$work/queue"
+    : >"$work/early"
+    : >"$work/heavy"
+    while read -r line; do
+        set -- $line
+        case $(header "$6" start)/$(header "$6" "make check") in
+        early*) echo "$line" >>"$work/early" ;;
+        */no*) echo "$line" >>"$work/heavy" ;;
+        esac
+    done <"$work/queue"
+    cat "$work/early" "$work/heavy" | grep -vxF -f - "$work/queue" >"$work/rest"
+    cat "$work/early" "$work/heavy" "$work/rest" >"$work/queue"
 fi
 xargs -P "$jobs" -L 1 sh "$0" --job "$work" <"$work/queue" &
 pool=$!

@@ -1,6 +1,7 @@
 #!/bin/sh
 # passes: first (target code does not change under the host's sanitizers)
 # make check: no (qemu and the cross compilers)
+# start: early (three emulators at once)
 # The fixed-point runtime on the Arm and RISC-V ISAs: `make
 # cross-test` builds the conformance program for a Cortex-M0, a Cortex-M4F
 # and an RV32IMC, runs it under qemu and compares every result with the

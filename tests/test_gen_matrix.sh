@@ -1,6 +1,7 @@
 #!/bin/sh
 # passes: first other (the runtime's own tests run under the sanitizers)
 # make check: no (g++ and clang++; minutes)
+# start: early (fifteen large scenes)
 # Every material x every model x both number types x n1 in {1, 1.33, 1.5,
 # 2.42, 4} x every LUT spacing (grazing-pl: q15 only, its lutN with N <= 64):
 # `fresnel gen` succeeds; the header compiles warning-free as C99 under gcc

@@ -5,8 +5,9 @@
 # that pass's BUILD and CC; a misspelt pass is a FAIL, not a check dropped
 # in silence; a check that exits non-zero without a FAIL line counts as one
 # failure; two checks run at once under JOBS=2 and each one's output is
-# printed whole; make check's subset leaves out "make check: no"; the final
-# count, the slowest-ten table and build/test-times.tsv.
+# printed whole; without recorded times "start: early" starts first; make
+# check's subset leaves out "make check: no"; the final count, the
+# slowest-ten table and build/test-times.tsv.
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 mkdir -p "$t/tests" "$t/build/tests" "$t/build/asan/tests" "$t/build/clang/tests"
@@ -27,6 +28,7 @@ check test_slow 'echo "PASS slow"' 'passes: first' 'make check: no (an external 
 # two checks that each wait for the other: they pass only when run at once
 check test_meet_a 'echo "PASS a1"; : >"$BUILD/a"; i=0; while [ ! -f "$BUILD/b" ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done; [ -f "$BUILD/b" ] && echo "PASS a2 met b" || echo "FAIL a2: b never ran beside a"' 'passes: first'
 check test_meet_b 'echo "PASS b1"; : >"$BUILD/b"; i=0; while [ ! -f "$BUILD/a" ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done; [ -f "$BUILD/a" ] && echo "PASS b2 met a" || echo "FAIL b2: a never ran beside b"' 'passes: first'
+check test_zz_early 'echo "PASS early"' 'passes: first' 'start: early (a long one)'
 printf '/* a C check\n * passes: sanitize */\n' >"$t/tests/test_c.c"
 printf '#!/bin/sh\necho "PASS c binary $0"\n' >"$t/build/asan/tests/test_c"
 chmod +x "$t/build/asan/tests/test_c"
@@ -57,14 +59,18 @@ case $(cat "$t/order") in
 "a1 a2 b1 b2 " | "b1 b2 a1 a2 ") echo "PASS run.sh: JOBS=2 runs two checks at once, each one's output printed whole ($(cat "$t/order"))" ;;
 *) echo "FAIL run.sh: two checks at once: $(grep -E 'a[12]|b[12]' "$t/out" | tr '\n' ' ')" ;;
 esac
-# PASS: everywhere x3, two x2, c, slow, a1 a2 b1 b2 = 11; FAIL: typo, crash
-tail -1 "$t/out" | grep -qxF "11 passed, 2 failed" && [ $rc -eq 1 ] &&
+# with no build/test-times.tsv yet, "start: early" first, then "make check: no"
+[ "$(grep -m2 '^PASS' "$t/out" | tr '\n' ' ')" = "PASS [build] early PASS [build] slow " ] &&
+    echo "PASS run.sh: without recorded times, 'start: early' starts first, then 'make check: no'" ||
+    echo "FAIL run.sh: the first checks: $(grep -m2 '^PASS' "$t/out" | tr '\n' ' ')"
+# PASS: everywhere x3, two x2, c, slow, early, a1 a2 b1 b2 = 12; FAIL: typo, crash
+tail -1 "$t/out" | grep -qxF "12 passed, 2 failed" && [ $rc -eq 1 ] &&
     echo "PASS run.sh: the count is the last line; exit 1 on a failure" || echo "FAIL run.sh: last line '$(tail -1 "$t/out")', exit $rc"
-grep -q '^NOTE the ten slowest checks (of 10, 2 at a time' "$t/out" &&
+grep -q '^NOTE the ten slowest checks (of 11, 2 at a time' "$t/out" &&
     [ "$(sed -n '/^NOTE the ten slowest/,/^NOTE checks per pass/p' "$t/out" | grep -c '^NOTE  ')" -eq 10 ] &&
-    expect "the ten slowest and the checks per pass" "NOTE checks per pass: build 5, asan 3, clang 2" ||
+    expect "the ten slowest and the checks per pass" "NOTE checks per pass: build 6, asan 3, clang 2" ||
     echo "FAIL run.sh: slowest-ten table: $(grep '^NOTE' "$t/out" | head -3)"
-[ "$(wc -l <"$t/build/test-times.tsv")" -eq 10 ] && awk -F'\t' '$1 == "asan" && $2 == "tests/test_c.c" && $4 == 1' \
+[ "$(wc -l <"$t/build/test-times.tsv")" -eq 11 ] && awk -F'\t' '$1 == "asan" && $2 == "tests/test_c.c" && $4 == 1' \
     "$t/build/test-times.tsv" | grep -q . && echo "PASS run.sh: build/test-times.tsv has a row per check and pass" ||
     echo "FAIL run.sh: test-times.tsv: $(head -3 "$t/build/test-times.tsv")"
 
@@ -72,4 +78,4 @@ grep -q '^NOTE the ten slowest checks (of 10, 2 at a time' "$t/out" &&
 rm -f "$t/build/a" "$t/build/b"
 (cd "$t" && CC=cc JOBS=2 sh tests/run.sh --check first=build) >"$t/out" 2>&1
 grep -q 'PASS \[build\] slow' "$t/out" && echo "FAIL run.sh: --check ran a 'make check: no' check" ||
-    expect "--check leaves out 'make check: no'" "PASS [build] everywhere build cc" "NOTE checks per pass: build 4"
+    expect "--check leaves out 'make check: no'" "PASS [build] everywhere build cc" "NOTE checks per pass: build 5"

@@ -2,6 +2,7 @@
 # passes: first (Chromium runs the same page in every pass; the tool that writes it:
 # tests/test_viewer_cli.sh)
 # make check: no (headless Chromium)
+# start: early (two browsers for minutes)
 # The page of `fresnel viewer` (gen/viewer/) in a real browser engine:
 # headless Chromium with software GL (SwiftShader), no display.
 # - the page loads with no console message, requests nothing (its own count

@@ -2,6 +2,7 @@
 # passes: first (glslangValidator, spirv-val and lavapipe do the same work in every pass; the
 # emitters under the sanitizers: tests/test_gen_shaders.sh)
 # make check: no (Vulkan, lavapipe)
+# start: early (lavapipe compiles every table)
 # The shader ports in a real Vulkan pipeline (ports/vulkan/): for the default
 # scene and two scenes with every model and every LUT kind, `fresnel gen
 # --glsl` (GLSL 4.50) and `fresnel gen --hlsl` after their ports, compiled to
