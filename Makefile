@@ -3,7 +3,10 @@
 #                 and the default scene's example, then say what is where
 #   make test     installs missing tools (tests/deps.sh), unit and error-bound
 #                 tests, again under ASan+UBSan, and again built by the other
-#                 compiler (clang when CC is gcc, else gcc)
+#                 compiler (clang when CC is gcc, else gcc): each check in the
+#                 passes its header names (tests/README.md), JOBS at a time
+#   make check    the edit loop's subset: the first pass, without the checks
+#                 of the external tools (browser, GPU drivers, qemu)
 #   make install  PREFIX=/usr/local DESTDIR=   headers, libfresnel.a, fresnel.pc,
 #                 CMake package, bin/fresnel, share/fresnel/ (ports/install.sh)
 #   make uninstall PREFIX=... DESTDIR=...      removes what install put there
@@ -36,7 +39,7 @@ LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/embed/viewer_assets.o
 TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
 
-.PHONY: all single test test-bins install uninstall deps clean report bench bench-run viewer
+.PHONY: all single test test-bins check check-bins install uninstall deps clean report bench bench-run viewer
 .DELETE_ON_ERROR:
 
 # A first build ends with what it made and where (tests/test_make_summary.sh).
@@ -118,26 +121,40 @@ $(BUILD)/tests/viewer_lit: tests/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
-test-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
-           $(BUILD)/glsl/glsl_test $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit \
-           $(BUILD)/vulkan/vulkan_test $(BUILD)/hlsl/fresnel.hlsl
+# make check's programs; make test's add the two that link OSMesa and Vulkan.
+check-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
+            $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit $(BUILD)/hlsl/fresnel.hlsl
+test-bins: check-bins $(BUILD)/glsl/glsl_test $(BUILD)/vulkan/vulkan_test
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with
 # apt-get when run as root, else the exact apt-get line and a stop.
 deps:
 	@sh tests/deps.sh all
 
-# The second pass rebuilds everything with sanitizers in build/asan; the third
-# with the other compiler (-Werror, as always) in build/gcc or build/clang,
-# whose tests run with CC set to it. The last line printed is
-# "N passed, N failed".
+# The first pass builds in build/; the second rebuilds everything with
+# sanitizers in build/asan; the third with the other compiler (-Werror, as
+# always) in build/gcc or build/clang, whose tests run with CC set to it. The
+# three builds share JOBS jobs; then tests/run.sh runs JOBS checks at a time
+# and prints the ten slowest. The last line printed is "N passed, N failed".
 OTHER_CC := $(if $(findstring clang,$(shell $(CC) --version 2>/dev/null)),gcc,clang)
-test: deps
-	@$(MAKE) --no-print-directory test-bins
-	@$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1 -g" \
-	    SAN="-fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer" test-bins
+JOBS     ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+# -jJOBS unless make was given its own -j (a jobserver the sub-makes share)
+JFLAG     = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+.PHONY: test-build-first test-build-sanitize test-build-other
+test-build-first:
+	@$(MAKE) --no-print-directory BUILD=build test-bins
+test-build-sanitize:
+	@$(MAKE) --no-print-directory BUILD=build/asan OPT="-O1 -g" SAN="$(SAN_FLAGS)" test-bins
+test-build-other:
 	@$(MAKE) --no-print-directory BUILD=build/$(OTHER_CC) CC=$(OTHER_CC) test-bins
-	@sh tests/run.sh build build/asan build/$(OTHER_CC)@$(OTHER_CC)
+test: deps
+	@s=$$(date +%s); $(MAKE) --no-print-directory $(JFLAG) test-build-first test-build-sanitize test-build-other && \
+	    echo "NOTE make test: the three builds took $$(($$(date +%s) - s)) s"
+	@JOBS=$(JOBS) sh tests/run.sh first=build sanitize=build/asan other=build/$(OTHER_CC)@$(OTHER_CC)
+check:
+	@$(MAKE) --no-print-directory $(JFLAG) BUILD=build check-bins
+	@JOBS=$(JOBS) sh tests/run.sh --check first=build
 
 # Benchmarks, never tests: `make report` writes build/report/ (accuracy against
 # the spectral ground truth, time and instructions per evaluation, plots, and
@@ -228,9 +245,14 @@ FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 .PHONY: fuzz fuzz-bins
 fuzz-bins: $(FUZZ_TARGETS:%=$(BUILD)/fuzz/%)
 
-$(BUILD)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(wildcard tests/fuzz/*.h) $(LIB_SRC) $(wildcard src/*/*.h) $(wildcard include/*.h) $(FUZZ_GEN)
+# Each source compiled once with FUZZ_FLAGS, its objects shared by the targets.
+fuzz_obj = $(patsubst %.c,$(BUILD)/fuzz/obj/%.o,$(1))
+$(BUILD)/fuzz/obj/%.o: %.c
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN) -lm -o $@
+	$(FUZZ_CC) $(FUZZ_FLAGS) -MMD -MP -c $< -o $@
+$(BUILD)/fuzz/fuzz_%: $(call fuzz_obj,tests/fuzz/fuzz_%.c $(LIB_SRC) $(FUZZ_GEN))
+	@mkdir -p $(@D)
+	$(FUZZ_CC) $(FUZZ_FLAGS) $^ -lm -o $@
 
 # clang 14 on x86-64 has no _Float16: the binary16 target and src/f16/
 # are compiled by gcc (ASan, UBSan, and comparison tracing that libFuzzer's
@@ -244,17 +266,16 @@ FUZZ_F16_OBJ   := $(FUZZ_F16_SRC:%.c=$(BUILD)/fuzz/gcc/%.o)
 $(BUILD)/fuzz/gcc/%.o: %.c $(wildcard tests/fuzz/*.h) $(wildcard src/*/*.h) $(wildcard include/*.h)
 	@mkdir -p $(@D)
 	$(FUZZ_GCC) $(FUZZ_GCC_FLAGS) -c $< -o $@
-$(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(LIB_SRC) $(FUZZ_GEN)
+$(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) $(call fuzz_obj,tests/fuzz/gcc_cov_stubs.c \
+                                $(filter-out src/f16/%,$(LIB_SRC)) $(FUZZ_GEN))
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $(FUZZ_F16_OBJ) tests/fuzz/gcc_cov_stubs.c $(filter-out src/f16/%,$(LIB_SRC)) \
-	    $(FUZZ_GEN) -lm -o $@
+	$(FUZZ_CC) $(FUZZ_FLAGS) $^ -lm -o $@
 
 # The end-to-end generator target links `fresnel gen` and what it calls.
 FUZZ_GEN_HEADER := gen/cli/cmd_gen.c $(filter-out gen/cli/cmd_%.c gen/bench/% gen/report/% gen/viewer/%,$(GEN_SRC))
-$(BUILD)/fuzz/fuzz_gen_header: tests/fuzz/fuzz_gen_header.c tests/header_check.h $(wildcard tests/fuzz/*.h) \
-                               $(LIB_SRC) $(wildcard src/*/*.h) $(FUZZ_GEN_HEADER)
+$(BUILD)/fuzz/fuzz_gen_header: $(call fuzz_obj,tests/fuzz/fuzz_gen_header.c $(LIB_SRC) $(FUZZ_GEN_HEADER))
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(LIB_SRC) $(FUZZ_GEN_HEADER) -lm -o $@
+	$(FUZZ_CC) $(FUZZ_FLAGS) $^ -lm -o $@
 
 fuzz: fuzz-bins
 	@for t in $(FUZZ_TARGETS); do \
@@ -310,13 +331,18 @@ $(BUILD)/cross/conform_data.c: $(BUILD)/tests/cross/conform_gen
 	$< > $@.tmp && mv $@.tmp $@
 cross-data: $(BUILD)/cross/conform_data.c
 
-# Every cos code on the Cortex-M0 and the RV32IMC, every 4th on the
-# Cortex-M4F, in parallel (about a minute on two cores).
+# Every cos code on the Cortex-M0; on the Cortex-M4F and the RV32IMC every
+# code within 64 of 0 and one and every CROSS_STRIDE-th between, from
+# CROSS_OFFSET: the day's number modulo the stride, so that CROSS_STRIDE
+# days of runs cover every code there too (CROSS_STRIDE=1: every code).
+# The three in parallel.
+CROSS_STRIDE ?= 4
+CROSS_OFFSET ?= $(shell echo $$(( $$(date +%s) / 86400 % $(CROSS_STRIDE) )))
 cross-test: cross-deps cross-data
 	@d=$(BUILD)/cross; \
 	BUILD=$(BUILD) sh ports/cross.sh conform m0 1 >$$d/m0.log 2>&1 & \
-	BUILD=$(BUILD) sh ports/cross.sh conform m4f 4 >$$d/m4f.log 2>&1 & \
-	BUILD=$(BUILD) sh ports/cross.sh conform rv32 1 >$$d/rv32.log 2>&1 & \
+	BUILD=$(BUILD) sh ports/cross.sh conform m4f $(CROSS_STRIDE) $(CROSS_OFFSET) >$$d/m4f.log 2>&1 & \
+	BUILD=$(BUILD) sh ports/cross.sh conform rv32 $(CROSS_STRIDE) $(CROSS_OFFSET) >$$d/rv32.log 2>&1 & \
 	wait; cat $$d/m0.log $$d/m4f.log $$d/rv32.log
 	@BUILD=$(BUILD) sh ports/cross.sh nm
 

@@ -7,7 +7,10 @@
 #
 #   cross.sh check                     toolchains and emulators present?
 #   cross.sh nm                        fixed-point-only Cortex-M0 build: symbol checks
-#   cross.sh conform TARGET STRIDE     conformance run vs the host, bit for bit
+#   cross.sh conform TARGET STRIDE [OFFSET]
+#                                      conformance run vs the host, bit for
+#                                      bit: every STRIDE-th cos code from
+#                                      OFFSET, every code near 0 and one
 #   cross.sh count TARGET              instructions per call (qemu trace); on
 #                                      m0 also cycles (1- and 32-cycle MULS)
 #   cross.sh count a64 gcc|clang OPT   the binary32 runtime on AArch64 Linux
@@ -68,35 +71,40 @@ cmd_check() {
     command -v qemu-riscv32 >/dev/null 2>&1 || need qemu-riscv32-static
 }
 
-# conform/bench ELF for target $1 with stride $2 -> $OUT/$1/<name>.elf
-build_prog() { # target prog stride
+# conform/bench ELF for target $1 with stride $3 from offset $4 -> $OUT/$1/<name>.elf
+build_prog() { # target prog stride [offset]
     target "$1"
     mkdir -p "$OUT/$1"
-    $CC $W $CF $FIXED_ONLY -DCONFORM_STRIDE="$3" $INC $LD tests/cross/$2.c "$OUT/conform_data.c" $PORT_COMMON $PORT \
-        $ALL_SRC -lgcc -o "$OUT/$1/$2_$3.elf"
+    $CC $W $CF $FIXED_ONLY -DCONFORM_STRIDE="$3" -DCONFORM_OFFSET="${4:-0}" $INC $LD tests/cross/$2.c \
+        "$OUT/conform_data.c" $PORT_COMMON $PORT $ALL_SRC -lgcc -o "$OUT/$1/$2_$3.elf"
 }
 
-host_prog() { # prog stride -> $OUT/host/<prog>_<stride>
+# the same program on the host, one per target (the targets run at once)
+host_prog() { # target prog stride offset -> $OUT/host/<prog>_<target>
     mkdir -p "$OUT/host"
-    $HOSTCC $W -O2 $FIXED_ONLY -DCONFORM_STRIDE="$2" $INC tests/cross/$1.c "$OUT/conform_data.c" \
-        ports/common/port_print.c ports/host/port.c $ALL_SRC -o "$OUT/host/$1_$2"
+    $HOSTCC $W -O2 $FIXED_ONLY -DCONFORM_STRIDE="$3" -DCONFORM_OFFSET="$4" $INC tests/cross/$2.c "$OUT/conform_data.c" \
+        ports/common/port_print.c ports/host/port.c $ALL_SRC -o "$OUT/host/$2_$1"
 }
 
-cmd_conform() { # target stride: PASS/FAIL lines
-    t=$1 s=$2
-    if ! build_prog "$t" conform "$s" 2>"$OUT/conform_$t.err" || ! host_prog conform "$s" 2>>"$OUT/conform_$t.err"; then
+cmd_conform() { # target stride [offset]: PASS/FAIL lines
+    t=$1 s=$2 o=${3:-0}
+    if ! build_prog "$t" conform "$s" "$o" 2>"$OUT/conform_$t.err" || ! host_prog "$t" conform "$s" "$o" 2>>"$OUT/conform_$t.err"; then
         echo "FAIL cross $t: conformance build: $(head -5 "$OUT/conform_$t.err")"
         return
     fi
-    "$OUT/host/conform_$s" >"$OUT/host/conform_$s.txt"
+    host="$OUT/host/conform_$t.txt"
+    "$OUT/host/conform_$t" >"$host"
     $RUN "$OUT/$t/conform_$s.elf" >"$OUT/$t/conform_$s.txt" 2>"$OUT/$t/conform_$s.err"
     rc=$?
-    if [ $rc -eq 0 ] && cmp -s "$OUT/host/conform_$s.txt" "$OUT/$t/conform_$s.txt" &&
-        grep -q '^done$' "$OUT/$t/conform_$s.txt"; then
-        if [ "$s" = 1 ]; then every="every cos code"; else every="every ${s}th cos code"; fi
+    if [ $rc -eq 0 ] && cmp -s "$host" "$OUT/$t/conform_$s.txt" && grep -q '^done$' "$OUT/$t/conform_$s.txt"; then
+        if [ "$s" = 1 ]; then
+            every="every cos code"
+        else
+            every="every ${s}th cos code from $o and every code within 64 of 0 and one"
+        fi
         echo "PASS cross $t: fixed-point conformance under $(basename "${RUN%% *}"), $every x $(sed -n 's/^conformance: \([0-9]*\) materials.*/\1/p' "$OUT/$t/conform_$s.txt") materials x $(($(wc -l <"$OUT/$t/conform_$s.txt") - 2)) functions: bit-identical to the host"
     else
-        echo "FAIL cross $t: conformance (exit $rc) differs from the host: $(diff "$OUT/host/conform_$s.txt" "$OUT/$t/conform_$s.txt" | head -6 | tr '\n' ' ') $(head -3 "$OUT/$t/conform_$s.err")"
+        echo "FAIL cross $t: conformance (exit $rc, stride $s from $o) differs from the host: $(diff "$host" "$OUT/$t/conform_$s.txt" | head -6 | tr '\n' ' ') $(head -3 "$OUT/$t/conform_$s.err")"
     fi
 }
 
@@ -327,8 +335,8 @@ cmd_size() {
 case ${1:-} in
 check) cmd_check ;;
 nm) cmd_check && cmd_nm ;;
-conform) cmd_check && cmd_conform "$2" "$3" ;;
+conform) cmd_check && cmd_conform "$2" "$3" "${4:-0}" ;;
 count) [ "$2" = a64 ] || cmd_check; cmd_count "$2" "${3:-}" "${4:-}" ;;
 size) cmd_check && cmd_size ;;
-*) sed -n '2,17p' "$0"; exit 2 ;;
+*) sed -n '2,22p' "$0"; exit 2 ;;
 esac

@@ -1,4 +1,6 @@
 #!/bin/sh
+# passes: first (these builds are independent of the pass's flags)
+# make check: no (AArch64 under qemu)
 # tests/test_batch.c (fresnel_conductor_batch and _rgb_batch bit for bit
 # against fresnel_conductor_prepared, lane by lane) on each SIMD kernel of
 # src/f32/simd.h, built with the flags users build with: gcc and clang, in
@@ -15,7 +17,6 @@
 # qemu-aarch64-static (gcc, and clang --target=aarch64-linux-gnu).
 # A kernel this CPU cannot run (AVX-512 without AVX-512F, qemu-user has
 # none) is compiled, warning-free, and not run: a NOTE says so.
-[ "$BUILD" = build ] || exit 0 # one pass: these builds are independent of the pass's flags
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 W="-Wall -Wextra -Wpedantic -Werror -D_POSIX_C_SOURCE=200809L -fno-math-errno -fno-trapping-math -Iinclude -Itests"

@@ -1,11 +1,13 @@
 #!/bin/sh
+# passes: first (installs and builds with CMake, pkg-config, C++ compilers: not a sanitizer
+# question)
+# make check: no (CMake, C++ and install routes)
 # Consumers, one per route a user takes: `make install` + pkg-config, + CMake
 # find_package, the source tree through CMake add_subdirectory and
 # FetchContent (ports/cmake), vendored include/ + src/f32/ compiled with plain cc,
 # and C++17 (g++ and clang++) against the installed libfresnel.a. Every build
 # is warning-free with -Werror and prints the same numbers. Then the installed
 # tool finds its data pack, and `make uninstall` leaves nothing behind.
-[ "$BUILD" = build ] || exit 0 # not a sanitizer question; runs once
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 W="-std=c99 -Wall -Wextra -Wpedantic -Werror"

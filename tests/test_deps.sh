@@ -1,96 +1,152 @@
 #!/bin/sh
+# passes: first (about the machine, not the build)
+# make check: no (probes Chromium, qemu and the cross compilers)
 # tests/deps.sh, the set-up `make test` runs first: which packages it asks
-# for, what it does as root and as another user. Probes are pointed at a fake
-# PATH and an empty file-system root, so nothing is installed or removed.
-[ "$BUILD" = build ] || exit 0 # about the machine, not the build; once
+# for, what it does as root and as another user, and that each probe fails
+# the way a machine without the package fails. The probes find their tools
+# on a fake PATH (links to this machine's, some removed or replaced by
+# broken ones) and files under an empty root, so nothing is installed or
+# removed.
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 D=tests/deps.sh
 
 # this machine: `make test` got past deps, so nothing may be missing now
-if sh $D all >"$t/out" 2>&1 && [ ! -s "$t/out" ] && sh $D cross >"$t/out" 2>&1 && [ ! -s "$t/out" ]; then
-    echo "PASS deps.sh all and cross: every probe is present here, silent, exit 0"
+if sh $D all >"$t/out" 2>&1 && [ ! -s "$t/out" ]; then
+    echo "PASS deps.sh all (the cross rows included): every probe does its job here, silent, exit 0"
 else
-    echo "FAIL deps.sh on this machine: $(head -3 "$t/out")"
+    echo "FAIL deps.sh on this machine: $(head -5 "$t/out")"
 fi
 
-# A fake PATH holding every command of the table except xmllint: one
-# package.
+# A fake PATH: a link to every command of this machine's PATH (the first of
+# each name), then xmllint removed.
 mkdir "$t/bin"
-for c in $(awk '$2 == "cmd" { print $3 }' $D | sort -u); do
-    [ "$c" = xmllint ] && continue
-    p=$(command -v "$c") && ln -s "$p" "$t/bin/$c"
+for dir in $(echo "$PATH" | tr ':' ' '); do
+    [ -d "$dir" ] && ln -s "$dir"/* "$t/bin/" 2>/dev/null
 done
-DEPS_PATH="$t/bin" DEPS_UID=1000 sh $D all >"$t/out" 2>"$t/err"
-rc=$?
-want="apt-get -o DPkg::Lock::Timeout=600 update && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y --no-install-recommends libxml2-utils"
-if [ $rc -eq 1 ] && [ ! -s "$t/out" ] && grep -qxF "$want" "$t/err"; then
-    echo "PASS not root, xmllint missing: exit 1 with the exact line: $want"
-else
-    echo "FAIL not root, xmllint missing: exit $rc, $(cat "$t/out" "$t/err" | head -3)"
-fi
-DEPS_PATH="$t/bin" DEPS_UID=0 DEPS_DRY_RUN=1 sh $D all >"$t/out" 2>"$t/err"
-rc=$?
-if [ $rc -eq 0 ] && grep -qx 'apt-get -o DPkg::Lock::Timeout=600 update -qq' "$t/out" &&
-    grep -qx 'DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y --no-install-recommends libxml2-utils' "$t/out"; then
-    echo "PASS root, xmllint missing: apt-get update, then install of libxml2-utils alone (lock timeout 600 s, noninteractive)"
-else
-    echo "FAIL root, xmllint missing: exit $rc, $(cat "$t/out" "$t/err" | head -3)"
-fi
-DEPS_PATH="$t/bin" DEPS_UID=1000 sh $D cross >"$t/out" 2>&1
-if [ $? -eq 0 ] && [ ! -s "$t/out" ]; then
+rm "$t/bin/xmllint"
+# deps ARGS...: deps.sh with the fake PATH as a user; exit status in $rc
+deps() {
+    DEPS_PATH="$t/bin" DEPS_UID=1000 sh $D "$@" >"$t/out" 2>"$t/err"
+    rc=$?
+}
+apt_line() { # the line deps.sh prints for PACKAGES
+    echo "apt-get -o DPkg::Lock::Timeout=600 update && DEBIAN_FRONTEND=noninteractive apt-get -o DPkg::Lock::Timeout=600 install -y --no-install-recommends $*"
+}
+# asks NAME PACKAGES ROWS...: deps.sh on ROWS asks for exactly PACKAGES
+asks() {
+    name=$1 want=$2
+    shift 2
+    deps "$@"
+    if [ $rc -eq 1 ] && [ ! -s "$t/out" ] && grep -qxF "$(apt_line "$want")" "$t/err"; then
+        echo "PASS $name: exit 1, asks for $want"
+    else
+        echo "FAIL $name: exit $rc, $(cat "$t/out" "$t/err" | head -4)"
+    fi
+}
+asks "not root, xmllint missing, every other probe doing its job on the fake PATH" libxml2-utils all
+deps cross
+if [ $rc -eq 0 ] && [ ! -s "$t/out" ] && [ ! -s "$t/err" ]; then
     echo "PASS cross group: xmllint is not a cross row, nothing missing"
 else
-    echo "FAIL cross group asked for a non-cross package: $(head -2 "$t/out")"
+    echo "FAIL cross group asked for a non-cross package: exit $rc, $(head -2 "$t/err")"
 fi
 
-# A clang that cannot link -fsanitize=address,undefined (no runtime library)
-printf '#!/bin/sh\ncase "$*" in *-fsanitize=*) exit 1 ;; esac\nexec %s "$@"\n' "$(command -v clang)" >"$t/clang"
-chmod +x "$t/clang"
-rm "$t/bin/clang"
-ln -s "$t/clang" "$t/bin/clang"
-DEPS_PATH="$t/bin" DEPS_UID=1000 sh $D all >/dev/null 2>"$t/err"
-if grep -q -- '--no-install-recommends libclang-rt-dev libxml2-utils$' "$t/err"; then
-    echo "PASS clang without its sanitizer runtime: asks for libclang-rt-dev"
+# As root: apt-get update, the install of the missing packages alone (lock
+# timeout, noninteractive), then every failed probe again. A stand-in for
+# apt-get logs its arguments; the first installs nothing, the second puts
+# xmllint back on the fake PATH.
+printf '#!/bin/sh\necho "$*" >>"%s/apt.log"\n' "$t" >"$t/apt-noop"
+printf '#!/bin/sh\necho "$*" >>"%s/apt.log"\ncase "$*" in *install*) ln -s "%s" "%s/bin/xmllint" ;; esac\n' \
+    "$t" "$(command -v xmllint)" "$t" >"$t/apt-fix"
+chmod +x "$t/apt-noop" "$t/apt-fix"
+DEPS_PATH="$t/bin" DEPS_UID=0 DEPS_APT="$t/apt-noop" sh $D xmllint gcc >"$t/out" 2>"$t/err"
+rc=$?
+if [ $rc -eq 1 ] && [ "$(cat "$t/apt.log")" = "-o DPkg::Lock::Timeout=600 update -qq
+-o DPkg::Lock::Timeout=600 install -y --no-install-recommends libxml2-utils" ] &&
+    grep -q '^deps: the xmllint probe still fails with libxml2-utils installed' "$t/err"; then
+    echo "PASS root, xmllint missing, an install that does not bring it: apt-get update, install of libxml2-utils alone, then a deps failure naming the probe"
 else
-    echo "FAIL clang without its sanitizer runtime: $(tail -1 "$t/err")"
+    echo "FAIL root, install without effect: exit $rc, apt: $(cat "$t/apt.log" | tr '\n' ';') $(head -3 "$t/err")"
+fi
+rm -f "$t/apt.log"
+DEPS_PATH="$t/bin" DEPS_UID=0 DEPS_APT="$t/apt-fix" sh $D xmllint gcc >"$t/out" 2>"$t/err"
+rc=$?
+if [ $rc -eq 0 ] && [ ! -s "$t/err" ] && grep -q '^deps: installing libxml2-utils' "$t/out" && [ -L "$t/bin/xmllint" ]; then
+    echo "PASS root, xmllint missing, an install that brings it: the probes pass again, exit 0"
+else
+    echo "FAIL root, install with effect: exit $rc, $(cat "$t/out" "$t/err" | head -3)"
 fi
 
-# Without clang on PATH, clang and its sanitizer runtime (the link probe)
+# replace NAME SCRIPT: NAME on the fake PATH becomes SCRIPT (a sh body; $REAL
+# is the real command)
+replace() {
+    real=$(command -v "$1")
+    rm -f "$t/bin/$1"
+    printf '#!/bin/sh\nREAL=%s\n%s\n' "$real" "$2" >"$t/bin/$1"
+    chmod +x "$t/bin/$1"
+}
+restore() { rm -f "$t/bin/$1" && ln -s "$(command -v "$1")" "$t/bin/$1"; }
+
+# What a machine without a package does: the compilers' libraries and
+# headers, the runtimes, the emulators, the drivers.
+replace aarch64-linux-gnu-gcc 'exec "$REAL" -nostdinc "$@"'
+asks "aarch64-linux-gnu-gcc without its C library (only recommended by gcc-aarch64-linux-gnu)" \
+    "gcc-aarch64-linux-gnu libc6-dev-arm64-cross" cross
+restore aarch64-linux-gnu-gcc
+replace qemu-aarch64-static 'exit 1'
+asks "qemu-aarch64-static that runs nothing" qemu-user-static aarch64 qemu-aarch64
+restore qemu-aarch64-static
+replace arm-none-eabi-gcc 'case " $* " in *" -lc "*) echo "ld: cannot find -lc" >&2; exit 1 ;; esac; exec "$REAL" "$@"'
+asks "arm-none-eabi-gcc without newlib" libnewlib-arm-none-eabi arm-none-eabi newlib qemu-arm
+restore arm-none-eabi-gcc
+replace qemu-system-arm 'exit 1'
+asks "qemu-system-arm that runs nothing" qemu-system-arm arm-none-eabi newlib qemu-arm
+restore qemu-system-arm
+replace riscv64-unknown-elf-gcc 'case " $* " in *" -lgcc "*) echo "ld: cannot find -lgcc" >&2; exit 1 ;; esac; exec "$REAL" "$@"'
+asks "riscv64-unknown-elf-gcc without its libgcc" "gcc-riscv64-unknown-elf binutils-riscv64-unknown-elf" riscv64-elf qemu-riscv32
+restore riscv64-unknown-elf-gcc
+replace clang 'case "$*" in *-fsanitize=*) exit 1 ;; esac; exec "$REAL" "$@"'
+asks "clang without its sanitizer runtime (libFuzzer, ASan, UBSan)" libclang-rt-dev clang clang-rt clang++
 rm "$t/bin/clang" "$t/bin/clang++"
-DEPS_PATH="$t/bin" DEPS_UID=1000 sh $D all >/dev/null 2>"$t/err"
-if grep -q -- '--no-install-recommends clang libclang-rt-dev libxml2-utils$' "$t/err"; then
-    echo "PASS clang and xmllint missing: asks for clang, libclang-rt-dev (sanitizer runtime), libxml2-utils"
-else
-    echo "FAIL clang missing: $(tail -1 "$t/err")"
-fi
+asks "no clang: clang, and its sanitizer runtime, only recommended" "clang libclang-rt-dev" clang clang-rt clang++
+restore clang
+restore clang++
+replace pkg-config 'case "$*" in *osmesa*) echo "Package osmesa was not found" >&2; exit 1 ;; esac; exec "$REAL" "$@"'
+asks "no osmesa.pc" libosmesa6-dev pkg-config osmesa
+restore pkg-config
+replace chromium 'exit 0'
+asks "a chromium that takes no screenshot" chromium chromium
+restore chromium
+mkdir "$t/root"
+export DEPS_ROOT="$t/root"
+asks "no lavapipe ICD file" mesa-vulkan-drivers vulkan lavapipe
+unset DEPS_ROOT
+rm "$t/bin/g++"
+asks "no g++" g++ g++ clang++
 
-# An empty root: the file and dir probes (OSMesa, newlib) fail; an empty PATH:
-# every command. All packages of the table, each once.
-mkdir "$t/root" "$t/nobin"
+# An empty PATH and an empty root: every probe fails, the line names every
+# package of the table once.
+mkdir "$t/nobin"
 DEPS_PATH="$t/nobin" DEPS_ROOT="$t/root" DEPS_UID=1000 sh $D all >/dev/null 2>"$t/err"
 rc=$?
 got=$(sed -n 's/.* --no-install-recommends //p' "$t/err" | tr ' ' '\n' | sort | tr '\n' ' ')
-table=$(awk 'NF == 4 && $1 ~ /^(all|cross)$/ && $2 ~ /^(cmd|file|dir|link)$/ { print $4 }' $D | sort -u | tr '\n' ' ')
+table=$(sed -n "/^table='/,/^'/p" $D | awk 'NF >= 3 && $1 ~ /^(all|cross)$/ { for (i = 3; i <= NF; i++) print $i }' |
+    sort -u | tr '\n' ' ')
 if [ $rc -eq 1 ] && [ -n "$got" ] && [ "$got" = "$table" ]; then
     echo "PASS nothing present: the install line names every package of the table once ($(echo $got | wc -w))"
 else
     echo "FAIL nothing present: exit $rc, asked for '$got', table '$table'"
 fi
-DEPS_ROOT="$t/root" DEPS_UID=1000 sh $D cross >/dev/null 2>"$t/err"
-if grep -q -- '--no-install-recommends libnewlib-arm-none-eabi$' "$t/err"; then
-    echo "PASS cross group, newlib's directory missing: asks for libnewlib-arm-none-eabi alone"
-else
-    echo "FAIL cross group without newlib: $(head -3 "$t/err")"
-fi
-for want in libosmesa6-dev glslang-tools spirv-tools cmake g++ qemu-user-static gcc-riscv64-unknown-elf; do
+for want in libosmesa6-dev glslang-tools spirv-tools cmake g++ qemu-user-static gcc-riscv64-unknown-elf \
+    libc6-dev-arm64-cross libclang-rt-dev; do
     case " $table " in
     *" $want "*) ;;
     *) echo "FAIL the table has no row for $want" ;;
     esac
 done
 sh $D bogus >/dev/null 2>"$t/err"
-if [ $? -eq 2 ] && grep -q "unknown group 'bogus'" "$t/err"; then
+if [ $? -eq 2 ] && grep -q "unknown group or row 'bogus'" "$t/err"; then
     echo "PASS unknown group: exit 2, named"
 else
     echo "FAIL unknown group: $(head -2 "$t/err")"

@@ -25,13 +25,3 @@ for src in tests/fuzz/fuzz_*.c; do
         tail -20 "$out/$name.log"
     fi
 done
-# `make fuzz` links each libFuzzer target against its own list of host
-# sources (FUZZ_GEN in the Makefile): linking them all here, in the main
-# pass, keeps that list whole.
-if [ "$B" = build ]; then
-    if make -s --no-print-directory BUILD=build/fuzz-link fuzz-bins >"$out/fuzz-link.log" 2>&1; then
-        echo "PASS fuzz: make fuzz-bins links every libFuzzer target"
-    else
-        echo "FAIL fuzz: make fuzz-bins: $(grep -m3 'undefined reference\|error' "$out/fuzz-link.log")"
-    fi
-fi

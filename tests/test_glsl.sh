@@ -1,4 +1,6 @@
 #!/bin/sh
+# passes: first (OSMesa runs the same shaders in every pass)
+# make check: no (OSMesa)
 # The GLSL port in a real GL pipeline: runs tests/glsl_test.c, built by make
 # test-bins against OSMesa and $BUILD/libfresnel.a into $BUILD/glsl/. Its
 # own link line (pkg-config osmesa) is why it is not a tests/test_*.c.

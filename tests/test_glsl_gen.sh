@@ -1,4 +1,7 @@
 #!/bin/sh
+# passes: first (OSMesa runs the same shaders in every pass; the emitters under the sanitizers and
+# the texture header under each compiler: tests/test_gen_shaders.sh)
+# make check: no (OSMesa)
 # `fresnel gen --glsl` on the GPU: for the default scene and two scenes with
 # every LUT kind and every analytic model, the generated GLSL (and, for
 # GLSL ES 1.00, the packed LUT texture of --glsl-texture) evaluates in
@@ -20,19 +23,8 @@ fi
 # the objects of today's sources (a stale object of a removed file is not
 # linked), and the viewer's embedded page (Makefile, viewer_assets)
 gen_obj="$(for f in gen/*/*.c; do echo "$BUILD/obj/${f%.c}.o"; done) $BUILD/obj/embed/viewer_assets.o"
-cat >"$out/glsl_all_models.scene" <<'SCENE'
-# every analytic model and every LUT kind, nodes uniform in sqrt(cos theta)
-materials = au ag bk7
-models = schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point lut4 lut256 lut32-residual lut4-cubic lut16-cubic lut256-cubic
-SCENE
-cat >"$out/glsl_uniform.scene" <<'SCENE'
-# every LUT kind with nodes uniform in cos theta (cubic needs grazing)
-materials = cu water
-models = lut4 lut32 lut256 lut4-residual lut256-residual
-lut_spacing = uniform
-SCENE
 status=0
-for manifest in data/scenes/default.scene "$out/glsl_all_models.scene" "$out/glsl_uniform.scene"; do
+for manifest in data/scenes/default.scene tests/scenes/glsl_all_models.scene tests/scenes/glsl_uniform.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
     IDENT=$(printf '%s' "$ident" | tr 'a-z' 'A-Z')
     if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$out/$ident.glsl" --glsl-texture "$out/${ident}_tex.h" \

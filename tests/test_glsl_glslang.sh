@@ -1,4 +1,7 @@
 #!/bin/sh
+# passes: first (glslangValidator does the same work in every pass; the emitters under the
+# sanitizers: tests/test_gen_shaders.sh)
+# make check: no (glslangValidator)
 # `fresnel gen --glsl` output compiles in every dialect the GLSL port claims:
 # glslangValidator (Debian glslang-tools) on each prelude x scene x model,
 # a fragment shader calling the model's function for every material. The
@@ -72,19 +75,8 @@ for c in array index; do
     fi
 done
 
-cat >"$out/glsl_luts.scene" <<'EOF'
-# every LUT kind with nodes uniform in sqrt(cos theta), and every analytic model
-materials = au ag bk7
-models = schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point lut4 lut16 lut256 lut4-residual lut32-residual lut256-residual lut4-cubic lut16-cubic lut256-cubic
-EOF
-cat >"$out/glsl_luts_uniform.scene" <<'EOF'
-# every LUT kind with nodes uniform in cos theta (cubic needs grazing)
-materials = cu water
-models = lut4 lut32 lut256 lut4-residual lut16-residual lut256-residual
-lut_spacing = uniform
-EOF
 
-for manifest in data/scenes/*.scene "$out/glsl_luts.scene" "$out/glsl_luts_uniform.scene"; do
+for manifest in data/scenes/*.scene tests/scenes/glsl_luts.scene tests/scenes/glsl_luts_uniform.scene; do
     scene=$(basename "$manifest" .scene)
     ident=$(printf '%s' "$scene" | tr 'A-Z-' 'a-z_')
     glsl="$out/$ident.glsl"
@@ -129,33 +121,4 @@ for manifest in data/scenes/*.scene "$out/glsl_luts.scene" "$out/glsl_luts_unifo
     fi
 done
 
-# Bad input for --glsl: a clear error, exit 2, no output written.
-# expect_bad NAME WANT -- ARGS: runs fresnel gen ARGS with -o/--glsl-texture
-# at files that exist beforehand and must survive unchanged.
-expect_bad() {
-    name=$1
-    want=$2
-    shift 3
-    echo keep >"$out/bad.glsl"
-    echo keep >"$out/bad_tex.h"
-    "$BUILD/fresnel" gen "$@" >"$out/bad.out" 2>"$out/bad.err"
-    st=$?
-    if [ $st -eq 2 ] && grep -q -- "$want" "$out/bad.err" && [ "$(cat "$out/bad.glsl")" = keep ] &&
-        [ "$(cat "$out/bad_tex.h")" = keep ] && [ -z "$(ls "$out" | grep '\.tmp\.')" ]; then
-        echo "PASS glslang: $name: exit 2, $(head -c 120 "$out/bad.err" | head -1)"
-    else
-        echo "FAIL glslang: $name: exit $st, stderr: $(cat "$out/bad.err"), outputs: $(cat "$out/bad.glsl" "$out/bad_tex.h" | tr '\n' ' ')"
-    fi
-}
-printf 'materials = au\nmodels = lut16\ntypes = q15\nlut_spacing = grazing-pl\n' >"$out/pl.scene"
-expect_bad "grazing-pl with --glsl" "pl.scene:4: expected lut_spacing grazing or uniform" -- \
-    "$out/pl.scene" --glsl -o "$out/bad.glsl" --glsl-texture "$out/bad_tex.h"
-printf 'name = a__b\nmaterials = au\nmodels = schlick\n' >"$out/a__b.scene"
-expect_bad "scene name with __ (reserved in GLSL)" "no '__'" -- \
-    "$out/a__b.scene" --glsl -o "$out/bad.glsl"
-printf 'materials = au\nmodels = schlick\n' >"$out/nolut.scene"
-expect_bad "--glsl-texture for a scene without LUTs" "no LUT model" -- \
-    "$out/nolut.scene" --glsl -o "$out/bad.glsl" --glsl-texture "$out/bad_tex.h"
-expect_bad "--glsl-texture without --glsl" "needs --glsl" -- \
-    data/scenes/default.scene -o "$out/bad.glsl" --glsl-texture "$out/bad_tex.h"
 exit 0

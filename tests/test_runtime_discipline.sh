@@ -1,4 +1,5 @@
 #!/bin/sh
+# passes: first (the object code of build/libfresnel.a)
 # The runtime library: no allocation, no stdio, no errno, no global mutable
 # state. Checked on the object code: the only undefined symbols are libm's
 # float functions, and there is no writable data (.data, .bss) at all.
@@ -6,7 +7,6 @@
 # them and requires even a freestanding environment to provide both (gcc
 # manual, "C Language Standards"); fresnel_conductor_batch's matched-index
 # loop becomes a memset.
-[ "$BUILD" = build ] || exit 0
 lib=build/libfresnel.a
 # __cpu_model, __cpu_indicator_init: the compiler runtime's CPU feature word
 # (reached through the GOT, _GLOBAL_OFFSET_TABLE_ in PIC code),

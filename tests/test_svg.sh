@@ -1,4 +1,5 @@
 #!/bin/sh
+# make check: no (xmllint)
 # The SVG writer's sample plot (build/tests/test_svg --write) is well-formed
 # XML by a real parser, xmllint from Debian's libxml2-utils (.ci/run installs
 # it). A missing xmllint is a failure, not a skip: this is the check that

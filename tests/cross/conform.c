@@ -1,5 +1,5 @@
 /* Fixed-point conformance on a target: every model of tests/cross/fixed_models.h
- * over the material set and every cos code (every CONFORM_STRIDE-th), the
+ * over the material set and the cos codes of next_code, the
  * results folded into one FNV-1a hash per model, and the run-time
  * preparation from Q16.16 of every material. The same program built for the
  * host prints the hashes the target must reproduce bit for bit
@@ -12,6 +12,25 @@
 #ifndef CONFORM_STRIDE
 #define CONFORM_STRIDE 1
 #endif
+#ifndef CONFORM_OFFSET
+#define CONFORM_OFFSET 0
+#endif
+/* Every code within CONFORM_EDGE of 0 and of one is always run. */
+#define CONFORM_EDGE 64
+
+/* The cos code after c: every code within CONFORM_EDGE of 0 and one, and
+ * between them those equal to CONFORM_OFFSET modulo CONFORM_STRIDE (every
+ * code for stride 1). */
+static int32_t next_code(int32_t c)
+{
+    uint32_t n = (uint32_t)c + 1u;
+    if (n > CONFORM_EDGE && n < 32768u - CONFORM_EDGE) {
+        n += (CONFORM_OFFSET + CONFORM_STRIDE - n % CONFORM_STRIDE) % CONFORM_STRIDE;
+        if (n > 32768u - CONFORM_EDGE)
+            n = 32768u - CONFORM_EDGE;
+    }
+    return (int32_t)n;
+}
 
 static uint32_t fnv(uint32_t h, uint32_t v)
 {
@@ -37,12 +56,14 @@ int main(void)
     port_put_dec((uint32_t)conform_material_count);
     port_puts(" materials, stride ");
     port_put_dec(CONFORM_STRIDE);
+    port_puts(" from ");
+    port_put_dec(CONFORM_OFFSET);
     port_puts("\n");
     for (i = 0; i < FIXED_MODEL_COUNT; i++) {
         h = 2166136261u;
         for (k = 0; k < (fixed_models[i].per_material ? conform_material_count : 1); k++) {
             int32_t c;
-            for (c = 0; c <= 32768; c += CONFORM_STRIDE)
+            for (c = 0; c <= 32768; c = next_code(c))
                 h = fnv(h, fixed_models[i].fn(&conform_materials[k], c));
         }
         report(fixed_models[i].name, h);
@@ -67,12 +88,12 @@ int main(void)
         h = fnv(fnv(fnv(h, lsk.f0), lsk.f0 >> 16), (uint32_t)lsk.alpha);
         h = fnv(fnv(fnv_qf(h, lsk.a), r), g);
         h = fnv(h, fresnel_f0_from_ior_q15(m->eta, m->kappa));
-        for (c = 0; c <= 32768; c += 97 * CONFORM_STRIDE)
+        for (c = 97 * CONFORM_OFFSET; c <= 32768; c += 97 * CONFORM_STRIDE)
             h = fnv(h, fresnel_conductor_q15(&ior, c));
     }
     report("prepare-q16", h);
     h = 2166136261u;
-    for (k = 0; k < 1 << 20; k += 7 * CONFORM_STRIDE) {
+    for (k = 7 * CONFORM_OFFSET; k < 1 << 20; k += 7 * CONFORM_STRIDE) {
         uint32_t x = (uint32_t)k * 4099u + 1u;
         h = fnv(fnv(h, fresnel_isqrt_u32(x)), fresnel_isqrt_u32(x << 12));
         h = fnv(h, (uint32_t)fresnel_recip_q16((fresnel_q16)(x | 4u)));
