@@ -67,7 +67,8 @@ case "$v" in "1 0."*) echo "PASS eval fixed --n1 1.5: TIR at c 0.7, partial at c
 printf '' >"$t/bad"
 "$F" eval --model exact --type fixed16 <"$t/bad" >"$t/out" 2>"$t/err"
 rc=$?
-[ $rc -eq 2 ] && grep -q "unknown type 'fixed16'" "$t/err" && grep -q 'q15, f16' "$t/err" &&
+[ $rc -eq 2 ] && grep -q "unknown type 'fixed16'" "$t/err" &&
+    { [ $f16 = no ] && grep -q '(expected one of: f32, q15)' "$t/err" || grep -q '(expected one of: f32, q15, f16)' "$t/err"; } &&
     echo "PASS eval --type fixed16: exit 2 naming the types ($(head -1 "$t/err"))" || echo "FAIL eval --type fixed16: exit $rc $(cat "$t/err")"
 printf '1.5,0,1\n1.5,x,0.5\n' >"$t/bad"
 "$F" eval --model exact --type fixed <"$t/bad" >"$t/out" 2>"$t/err"

@@ -1,8 +1,8 @@
 #!/bin/sh
+# passes: first (the install itself is tests/test_consumers.sh's; runs once)
 # `make install` says what it installed where and how a build finds it, and
 # installs both shader ports (share/fresnel/glsl/ and hlsl/); `make uninstall`
 # says what it removed. (tests/test_consumers.sh builds through each route.)
-[ "$BUILD" = build ] || exit 0 # the install itself is tests/test_consumers.sh's; runs once
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 P=/opt/fresnel

@@ -1,4 +1,5 @@
 #!/bin/sh
+# passes: first (the same in every build)
 # The product speaks of the product as it is: its docs, comments, help and
 # messages (tests/text_files.sh lists them), and its file names, tell of no
 # work history: no issues or findings and their labels (F7), nothing fixed,
@@ -23,7 +24,6 @@ words="$words"'|\b(is|are|was|were|been) fixed([.,;:)]|$| (in|by|now|here)\b)|(^
 words="$words"'|\bthe old(er)? [a-z]|\b(earlier|older|previous|former) (versions?|releases?|names?|code|forms?)\b'
 words="$words"'|\bbefore (the|this) (change|commit|fix|rename)|\b(before|after|since|in) commit\b'
 [ "$1" = --words ] && { printf '%s\n' "$words"; exit 0; }
-[ "$BUILD" = build ] || [ -z "$BUILD" ] || exit 0 # the same in every build
 allow=tests/product_text.allow
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT

@@ -12,7 +12,8 @@ t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 mkdir -p "$t/tests" "$t/build/tests" "$t/build/asan/tests" "$t/build/clang/tests"
 cp tests/run.sh "$t/tests/"
-# check NAME BODY [HEADER...]: tests/NAME.sh, the header lines, then BODY
+T=tests/ # the made-up checks' folder, as run.sh names them
+# check NAME BODY [HEADER...]: NAME.sh in the made-up tests/, the header lines, then BODY
 check() {
     f=$t/tests/$1.sh
     shift
@@ -49,10 +50,10 @@ grep -q 'two build/asan' "$t/out" && echo "FAIL run.sh: a first other check ran 
     echo "PASS run.sh: a first other check does not run in the sanitize pass"
 expect "a C check's binary runs in its pass, from the pass's build" "PASS [asan] c binary build/asan/tests/test_c"
 n=$(grep -c "unknown pass 'frist'" "$t/out")
-[ "$n" -eq 1 ] && grep -qxF "FAIL tests/test_typo.sh: unknown pass 'frist' on its passes: line (expected all, first, sanitize, other)" "$t/out" &&
+[ "$n" -eq 1 ] && grep -qxF "FAIL ${T}test_typo.sh: unknown pass 'frist' on its passes: line (expected all, first, sanitize, other)" "$t/out" &&
     echo "PASS run.sh: a misspelt pass is one FAIL line naming it" || echo "FAIL run.sh: misspelt pass: $n lines"
 expect "a check that exits non-zero without a FAIL line is a failure, its output shown" \
-    "FAIL [asan] tests/test_crash.sh exited 3 without a FAIL line:" "NOTE about to crash"
+    "FAIL [asan] ${T}test_crash.sh exited 3 without a FAIL line:" "NOTE about to crash"
 # each check's lines together, though the two ran at once
 sed -n 's/^PASS \[build\] \([ab][12]\).*/\1/p' "$t/out" | tr '\n' ' ' >"$t/order"
 case $(cat "$t/order") in
@@ -70,7 +71,7 @@ grep -q '^NOTE the ten slowest checks (of 11, 2 at a time' "$t/out" &&
     [ "$(sed -n '/^NOTE the ten slowest/,/^NOTE checks per pass/p' "$t/out" | grep -c '^NOTE  ')" -eq 10 ] &&
     expect "the ten slowest and the checks per pass" "NOTE checks per pass: build 6, asan 3, clang 2" ||
     echo "FAIL run.sh: slowest-ten table: $(grep '^NOTE' "$t/out" | head -3)"
-[ "$(wc -l <"$t/build/test-times.tsv")" -eq 11 ] && awk -F'\t' '$1 == "asan" && $2 == "tests/test_c.c" && $4 == 1' \
+[ "$(wc -l <"$t/build/test-times.tsv")" -eq 11 ] && awk -F'\t' -v T="$T" '$1 == "asan" && $2 == T "test_c.c" && $4 == 1' \
     "$t/build/test-times.tsv" | grep -q . && echo "PASS run.sh: build/test-times.tsv has a row per check and pass" ||
     echo "FAIL run.sh: test-times.tsv: $(head -3 "$t/build/test-times.tsv")"
 

@@ -1,4 +1,5 @@
 #!/bin/sh
+# passes: first (reads sources only; runs once)
 # The shader ports have one source of the model functions,
 # ports/glsl/fresnel.glsl; the HLSL port is HLSL's spellings of its type and
 # helper names, then an #include of it. So no run of 6 or more lines stands
@@ -6,7 +7,6 @@
 # (ports/hlsl/*.hlsl): lines compared with their spaces collapsed, blank
 # lines passed over, a run within one file on each side. The controls show
 # the detector finds a 6-line run (re-indented) and passes over a 5-line one.
-[ "$BUILD" = build ] || exit 0 # reads sources only; runs once
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 

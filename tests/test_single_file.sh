@@ -1,4 +1,5 @@
 #!/bin/sh
+# passes: first (builds of its own, independent of the pass's flags)
 # The single-file runtimes (ports/single.sh: build/single/fresnel_single_TYPE.h)
 # as a vendoring project uses them: each header copied alone into an empty
 # folder, built with gcc and clang as C99 -Werror, every type's alone and all
@@ -10,7 +11,6 @@
 # no other function: the combined file, compiled for plain x86-64 by gcc,
 # clang and g++, has VEX-encoded instructions (v...) only in the kernel's
 # functions (*_avx*), and those use 8 lanes (ymm).
-[ "$BUILD" = build ] || exit 0 # builds of its own, independent of the pass's flags
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 W="-Wall -Wextra -Wpedantic -Werror"

@@ -23,7 +23,7 @@ echo old >"$t/keep/index.html"
 rc=$?
 [ "$rc" -eq 2 ] && [ "$(cat "$t/keep/index.html")" = old ] && grep -q 'pl.scene:4' "$t/err" &&
     [ -z "$(ls "$t/keep" | grep -v '^index.html$')" ] &&
-    pass "a scene the GLSL port cannot express: exit 2 at its line, the old page untouched, no temporary ($(head -1 "$t/err" | sed "s|$t/||"))" ||
+    pass "a scene the GLSL port cannot express: exit 2 at its line, the page already there untouched, no temporary ($(head -1 "$t/err" | sed "s|$t/||"))" ||
     fail "grazing-pl scene: exit $rc, $(cat "$t/err")"
 
 # A failed page leaves no directory behind; -o - is the page on stdout.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# passes: first (the page is the same in every pass)
 # The viewer's page as a user first sees it, in headless Chromium with a
 # 1280 x 800 window: it opens on the scene's own material (the first
 # `material ID = FILE` line) rather than the data pack's first, unless the
@@ -6,7 +7,6 @@
 # the picture; each curve panel has a labelled tick every 15 degrees (5 in
 # the 70-90 degree zoom) and at least three reflectance ticks. Read through
 # the page's #layout hook.
-[ "$BUILD" = build ] || exit 0 # the page is the same in every pass
 F="$BUILD/fresnel"
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
