@@ -16,6 +16,11 @@
  *     static const fresnel_film oil_on_steel = {...};      // made on the host
  *     fresnel_rgb r = fresnel_film_rgb(&oil_on_steel, n_dot_v, thickness_nm);
  *     fresnel_rgb_q15 q = fresnel_film_q15_rgb(&table_q15, c_q15, d_q16);
+ *   The tables come from `fresnel gen` (a scene with `models = thin-film`
+ *   and `film = N`, or `film ID = N` per material: gen/scene/scene.h), one
+ *   per material and number type, named fresnel_<scene>_<material>_thin_film
+ *   (_q15, _f16); `fresnel curve --material ID --film N:D` prints the film's
+ *   truth and this model over angle, `fresnel report` measures it.
  *
  * THE TRUTH (gen/1_spectral/film_truth.c)
  *   At every whole nanometre of the 0.1 nm spectral grid, Airy's sum of

@@ -127,7 +127,7 @@ int main(int argc, char **argv)
     if (!params || !spectra || !models || !out)
         return 1;
     for (i = 0; i < nmat; i++) {
-        if (derive_parameters(&gc, &(material_source){sc.materials[i], NULL, NK_FORMAT_AUTO}, sc.sigma, sc.n1, &spectra[i], &params[i]))
+        if (derive_parameters(&gc, &(material_source){sc.materials[i], NULL, NK_FORMAT_AUTO, 0.0}, sc.sigma, sc.n1, &spectra[i], &params[i]))
             return 1;
         for (m = 0; m < sc.model_count; m++)
             if (scene_model_prepare(&sc.models[m], sc.spacing, &spectra[i], &gc, &params[i],

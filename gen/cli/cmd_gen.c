@@ -43,7 +43,11 @@ static void gen_usage(FILE *out)
             model_lut_patterns, SCENE_LUT_MIN, SCENE_LUT_MAX);
     for (i = 0; i < number_types_available; i++)
         fprintf(out, " %s", number_types[i].name);
-    fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_pl_u16_q15_fast)\n");
+    fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_pl_u16_q15_fast)\n"
+                 "  film = 1.38               with thin-film: the film's index on every material (n1..4)\n"
+                 "  film ID = 2.1             material ID's own film\n"
+                 "  film_thickness = 100 400  nm, optional (default 0 %g: set at run time)\n",
+            FRESNEL_FILM_D_MAX);
 }
 
 int cmd_gen(int argc, char **argv)
