@@ -88,3 +88,15 @@ else
     echo "FAIL gen film below n1: $(cat "$t/err")"
 fi
 
+# report: the thin film's section, one row per material with every type's
+# mean and max, its table sizes; the other models' tables without it
+printf 'materials = au bk7\nmodels = schlick thin-film\nfilm = 1.5\nfilm bk7 = 2.2\nfilm_thickness = 0 400\n' >"$t/r.scene"
+if "$F" report --scene "$t/r.scene" -o "$t/rep" --no-timing --no-instructions >/dev/null 2>"$t/err" &&
+    grep -q '^## Thin film' "$t/rep/report.md" &&
+    grep -q 'x 201 thicknesses 0-400 nm (18291 samples per material)' "$t/rep/report.md" &&
+    [ "$(grep -cE '^\| (au \| 1.5|bk7 \| 2.2|all \|) \|( [0-9.]+( \(goal (met|missed)\))? \|){4,6}' "$t/rep/report.md")" -eq 3 ] &&
+    grep -q '^| f32 | 6976 | not timed' "$t/rep/report.md" && ! grep -q '^| au | thin-film' "$t/rep/report.md"; then
+    echo "PASS report: the thin film's section (per material and type over angle x thickness, sizes), kept out of the other tables"
+else
+    echo "FAIL report thin film: $(cat "$t/err") $(sed -n '/## Thin film/,+12p' "$t/rep/report.md" 2>/dev/null | head -12)"
+fi
