@@ -1,6 +1,6 @@
 #!/bin/sh
 # `fresnel gen --glsl` on the GPU: for the default scene and two scenes with
-# every LUT kind and every analytic model, the generated GLSL (and, for
+# every LUT kind and every analytic model (and the thin film), the generated GLSL (and, for
 # GLSL ES 1.00, the packed LUT texture of --glsl-texture) evaluates in
 # OSMesa to what the C runtime computes from the same manifest, in GLSL 3.30,
 # ES 3.00 and ES 1.00 (tests/glsl_gen_test.c, built once per scene because it
@@ -21,9 +21,11 @@ fi
 # linked), and the viewer's embedded page (Makefile, viewer_assets)
 gen_obj="$(for f in gen/*/*.c; do echo "$BUILD/obj/${f%.c}.o"; done) $BUILD/obj/embed/viewer_assets.o"
 cat >"$out/glsl_all_models.scene" <<'SCENE'
-# every analytic model and every LUT kind, nodes uniform in sqrt(cos theta)
+# every analytic model and every LUT kind, nodes uniform in sqrt(cos theta), the thin film
 materials = au ag bk7
-models = schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point lut4 lut256 lut32-residual lut4-cubic lut16-cubic lut256-cubic
+models = schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point lut4 lut256 lut32-residual lut4-cubic lut16-cubic lut256-cubic thin-film
+film = 1.5
+film bk7 = 2.3
 SCENE
 cat >"$out/glsl_uniform.scene" <<'SCENE'
 # every LUT kind with nodes uniform in cos theta (cubic needs grazing)

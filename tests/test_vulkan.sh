@@ -32,7 +32,9 @@ mkdir -p "$out"
 cat >"$out/vk_models.scene" <<'SCENE'
 # every scene model and LUT kind (small tables), the default scene's materials
 materials = au cu ag al cr
-models = schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point lut4 lut4-residual lut4-cubic
+models = schlick lsk lsk-comp f82 gulbrandsen cook-torrance approx-conductor exact exact-gaussian exact-point lut4 lut4-residual lut4-cubic thin-film
+film = 1.5
+film cu = 2.2
 SCENE
 cat >"$out/vk_uniform.scene" <<'SCENE'
 # the LUT kinds with nodes uniform in cos theta

@@ -499,7 +499,7 @@ const model model_table[] = {
     /* A scene model only: a function of the film's index and thickness too. */
     {"thin-film", MODEL_SCENE | MODEL_FILM, "a film: its index (the scene's film key), its thickness (run time)",
      NULL, NULL, FRESNEL_BOUND_FILM, NULL, FRESNEL_BOUND_FILM_Q15, NULL, FRESNEL_BOUND_FILM_F16, 0, 0, ETA_FIT,
-     LUT_PLAIN, 0, NULL, SCENE(film), NULL, NULL},
+     LUT_PLAIN, 0, "FRESNEL_FILM_RGB_BODY(@thin_film, c, d_nm)", SCENE(film), NULL, "thin-film"},
 };
 const int model_count = (int)(sizeof model_table / sizeof model_table[0]);
 

@@ -111,7 +111,8 @@ typedef struct model {
     int uniform;        /* MODEL_LUT rows: 1 nodes uniform in c, 0 in sqrt(c) */
     /* Shader return expression (ports/glsl/fresnel.glsl, the one source of
      * the GLSL and HLSL ports); '@' stands for the material's
-     * identifier prefix and '_'. NULL for LUT rows, whose shader code the
+     * identifier prefix and '_' (the MODEL_FILM row's is a function body,
+     * a statement macro). NULL for LUT rows, whose shader code the
      * emitters build from the form; NULL in a scene row: no shader form. */
     const char *glsl;
     fresnel_rgb (*rgb_f32)(const model_rgb *q, float c);
