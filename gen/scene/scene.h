@@ -60,7 +60,10 @@
  *                transparent, non-dispersive film on every material, a finite
  *                number in [n1, 4] (a film less dense than the incident
  *                medium, total reflection inside it, is outside the model's
- *                domain: include/fresnel_film.h, DOMAIN).
+ *                domain: include/fresnel_film.h, DOMAIN). The film's results
+ *                are held to [0, 1] per channel (the clip policy) whatever
+ *                the gamut key: its truth varies with the thickness, which
+ *                only the run time knows.
  *   film ID = N  the film on material ID only, overriding `film`; one line
  *                per material, ID a material of the scene; repeatable. With
  *                thin-film every material has a film by one key or the other.
