@@ -209,7 +209,8 @@ FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize
 # Host code the targets exercise, linked into each with the whole runtime.
 FUZZ_GEN     := gen/common/reference.c gen/common/reference_targets.c gen/common/cli.c gen/1_spectral/load_nk.c \
                 gen/1_spectral/resample.c gen/scene/scene.c gen/2_derive/targets.c gen/1_spectral/colour_space.c \
-                gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/fixed_params.c
+                gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/fixed_params.c \
+                gen/common/reference_film.c
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 
 .PHONY: fuzz fuzz-bins

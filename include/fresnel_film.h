@@ -80,7 +80,9 @@
  *     Q1.15       0.092   1.44
  *     binary16    0.124   1.79
  *   (the double model: as binary32). Thick films (1000-5000 nm, gold
- *   under 2.5, BK7 under 1.8) stay below 0.25.
+ *   under 2.5, BK7 under 1.8) stay below 0.25. A film of no thickness,
+ *   and one of the ambient's index at any thickness, give the bare
+ *   substrate's truth within 0.1 (measured 0.056, tests/test_film.c).
  *   THE DOMAIN: a film at least as dense as its ambient (n_f >= n1). A
  *   less dense one (total reflection inside it) is outside it: within
  *   about 10 degrees of the film's critical angle the linear interpolation

@@ -221,7 +221,7 @@ void report_film_write(report_run *r, FILE *out)
                 bench_compiler(), 0.5 * (sc->film_d_lo + sc->film_d_hi), r->mats[r->timed_material].p.info.id,
                 GOAL_COST_X_SCHLICK);
     if (!isnan(m0))
-        fprintf(out, "\nCortex-M0 (`make cross-count`): %.0f instructions per RGB evaluation of fresnel_film_q15_rgb%s "
-                     "(goal <= %g).\n",
-                m0, mark(m0, GOAL_M0_INSTRUCTIONS), GOAL_M0_INSTRUCTIONS);
+        fprintf(out, "\nCortex-M0 (`make cross-count`): %.0f instructions per RGB evaluation of fresnel_film_q15_rgb "
+                     "(goal <= %g: %s).\n",
+                m0, GOAL_M0_INSTRUCTIONS, m0 <= GOAL_M0_INSTRUCTIONS ? "met" : "missed");
 }
