@@ -100,3 +100,10 @@ if "$F" report --scene "$t/r.scene" -o "$t/rep" --no-timing --no-instructions >/
 else
     echo "FAIL report thin film: $(cat "$t/err") $(sed -n '/## Thin film/,+12p' "$t/rep/report.md" 2>/dev/null | head -12)"
 fi
+# a scene whose only model is the film: refused (the report's tables compare models of angle)
+printf 'materials = au\nmodels = thin-film\nfilm = 1.5\n' >"$t/only.scene"
+"$F" report --scene "$t/only.scene" -o "$t/only" --no-timing --no-instructions >/dev/null 2>"$t/err"
+rc=$?
+[ "$rc" -eq 2 ] && grep -q 'only.scene:2: expected a model besides thin-film' "$t/err" && [ ! -e "$t/only/report.md" ] &&
+    echo "PASS report: a scene with the film alone is refused at its models line, no report written" ||
+    echo "FAIL report with the film alone: exit $rc, $(cat "$t/err")"

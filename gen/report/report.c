@@ -560,7 +560,7 @@ int report_write(const report_options *o)
     if (r.sc.spacing == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only and the report measures every number "
                                      "type; its targets table measures them itself");
-    if ((status = report_film_take(&r)))
+    if ((status = report_film_take(&r, scene_path)))
         goto done;
     r.g = malloc(sizeof *r.g);
     r.mats = calloc((size_t)r.sc.material_count, sizeof *r.mats);

@@ -134,11 +134,12 @@ void report_curve_de(const lab_space *ls, const double (*gt)[3], const double (*
                      double *rms, double *max);
 
 /* report_film.c. take: after the scene is loaded, moves its thin-film model
- * out of sc.models into r->film (0, or a status); measure: after material
+ * out of sc.models into r->film (0, or CLI_BAD_INPUT after a message for a
+ * scene whose only model it is); measure: after material
  * i is derived, prepares its film and measures it in every type; time: ns
  * per RGB evaluation and fresnel_schlick_rgb's, interleaved; write: the
  * report's section; free. Each does nothing for a scene without a film. */
-int report_film_take(report_run *r);
+int report_film_take(report_run *r, const char *scene_path);
 int report_film_measure(report_run *r, int i);
 void report_film_time(report_run *r);
 void report_film_write(report_run *r, FILE *f);

@@ -23,7 +23,7 @@ static const double goal_max[NUMBER_TYPES] = {2.0, 2.5, 0.0};
 #define GOAL_COST_X_SCHLICK 10.0
 #define GOAL_M0_INSTRUCTIONS 2000.0
 
-int report_film_take(report_run *r)
+int report_film_take(report_run *r, const char *scene_path)
 {
     report_film *f = &r->film;
     int m, i;
@@ -32,6 +32,14 @@ int report_film_take(report_run *r)
         ;
     if (m == r->sc.model_count)
         return 0;
+    if (r->sc.model_count == 1) /* the report's other sections compare models of angle alone */
+    {
+        char where[1100];
+        snprintf(where, sizeof where, "%s:%d", scene_path, r->sc.models_line);
+        return cli_error(where, "expected a model besides %s in models (the report measures the film beside the bare "
+                                "material's models)",
+                         r->sc.models[m].name);
+    }
     f->entry = r->sc.models[m];
     f->present = 1;
     f->film_n = calloc((size_t)r->sc.material_count, sizeof *f->film_n);
