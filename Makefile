@@ -187,9 +187,15 @@ SPEED_DIR := $(BUILD)/bench/$(notdir $(firstword $(CC)))$(subst =,-,$(subst $() 
 SPEED_SRC := tests/speed/speed.c tests/speed/kernels.c gen/bench/bench_compare.c gen/bench/speed_targets.c \
              $(wildcard src/f32/*.c src/q15/*.c)
 SPEED_CFLAGS := $(WARN) $(OPT) $(MATH_FLAGS) -D_POSIX_C_SOURCE=200809L -Iinclude -Igen
-$(SPEED_DIR)/speed: $(SPEED_SRC) $(wildcard tests/speed/*.h gen/bench/*.h include/*.h src/*/*.h)
+# The thin film's table, as `fresnel gen` writes it (GEN_TOOL: the host tool
+# that writes it, by default this build's).
+GEN_TOOL ?= $(BUILD)/fresnel
+$(SPEED_DIR)/speed_film.h: tests/speed/film.scene $(GEN_TOOL)
 	@mkdir -p $(@D)
-	$(CC) $(SPEED_CFLAGS) -DSPEED_OPT='"$(OPT)"' -DSPEED_CFLAGS='"$(CC) $(SPEED_CFLAGS)"' $(SPEED_SRC) $(LDLIBS) -o $@
+	$(GEN_TOOL) gen tests/speed/film.scene -o $@
+$(SPEED_DIR)/speed: $(SPEED_SRC) $(SPEED_DIR)/speed_film.h $(wildcard tests/speed/*.h gen/bench/*.h include/*.h src/*/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(SPEED_CFLAGS) -I$(SPEED_DIR) -DSPEED_OPT='"$(OPT)"' -DSPEED_CFLAGS='"$(CC) $(SPEED_CFLAGS)"' $(SPEED_SRC) $(LDLIBS) -o $@
 
 bench-run: $(SPEED_DIR)/speed
 	@$(SPEED_DIR)/speed $(SPEED_ARGS)
@@ -239,7 +245,8 @@ FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize
 # Host code the targets exercise, linked into each with the whole runtime.
 FUZZ_GEN     := gen/common/reference.c gen/common/reference_targets.c gen/common/cli.c gen/1_spectral/load_nk.c \
                 gen/1_spectral/resample.c gen/scene/scene.c gen/2_derive/targets.c gen/1_spectral/colour_space.c \
-                gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/fixed_params.c
+                gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/fixed_params.c \
+                gen/common/reference_film.c
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 
 .PHONY: fuzz fuzz-bins

@@ -16,6 +16,11 @@
  *     static const fresnel_film oil_on_steel = {...};      // made on the host
  *     fresnel_rgb r = fresnel_film_rgb(&oil_on_steel, n_dot_v, thickness_nm);
  *     fresnel_rgb_q15 q = fresnel_film_q15_rgb(&table_q15, c_q15, d_q16);
+ *   The tables come from `fresnel gen` (a scene with `models = thin-film`
+ *   and `film = N`, or `film ID = N` per material: gen/scene/scene.h), one
+ *   per material and number type, named fresnel_<scene>_<material>_thin_film
+ *   (_q15, _f16); `fresnel curve --material ID --film N:D` prints the film's
+ *   truth and this model over angle, `fresnel report` measures it.
  *
  * THE TRUTH (gen/1_spectral/film_truth.c)
  *   At every whole nanometre of the 0.1 nm spectral grid, Airy's sum of
@@ -75,24 +80,34 @@
  *     Q1.15       0.092   1.44
  *     binary16    0.124   1.79
  *   (the double model: as binary32). Thick films (1000-5000 nm, gold
- *   under 2.5, BK7 under 1.8) stay below 0.25. A film less dense than its
- *   ambient (total reflection inside it) is fitted too, but within about
- *   10 degrees of the film's critical angle the linear interpolation in c
- *   crosses the square-root edge of cos(theta_f) and errors reach CIEDE2000
- *   80; further away mean 0.36, max 11 (gold under 1.2 in glass); the Q1.15
- *   layout refuses such tables (their A, B leave [-1, 1]).
+ *   under 2.5, BK7 under 1.8) stay below 0.25. A film of no thickness,
+ *   and one of the ambient's index at any thickness, give the bare
+ *   substrate's truth within 0.1 (measured 0.056, tests/test_film.c).
+ *   THE DOMAIN: a film at least as dense as its ambient (n_f >= n1). A
+ *   less dense one (total reflection inside it) is outside it: within
+ *   about 10 degrees of the film's critical angle the linear interpolation
+ *   in c crosses the square-root edge of cos(theta_f) and errors reach
+ *   CIEDE2000 80; further away mean 0.36, max 11 (gold under 1.2 in glass,
+ *   tests/test_film.c). `fresnel gen` (the scene's film keys) and `fresnel
+ *   curve --film` refuse such a film; the Q1.15 layout cannot hold its
+ *   table (its A, B leave [-1, 1]).
  *
- * COST per RGB evaluation (sh tests/cross/film_count.sh)
+ * COST per RGB evaluation
  *   binary32: 53 interpolated table values, 6 complex exponentials (short
  *   polynomials, no libm call), 6 complex divisions, 36 multiply-adds for
- *   the channels, loops vectorised at -O2: 120 ns against 7.5 ns for
- *   fresnel_schlick_rgb, 16x (x86-64, gcc 12 -O2, one process, interleaved
- *   rounds, on a shared two-core machine).
- *   Q1.15 on a Cortex-M0 (gcc -Os, qemu trace over 40 cosines and
- *   thicknesses): 3207 instructions on average, 4023 at most (4554 cycles
- *   with a 1-cycle multiplier); no division instruction (a 257-entry
- *   reciprocal table after a shift normalisation), no soft-float helper;
- *   1.2 KiB of shared tables (quarter sine, 2^-x, 1/x), 1.9 KiB of code.
+ *   the channels, loops vectorised at -O2: 117.6 ns against 6.1 ns for
+ *   fresnel_schlick_rgb, 19.1x (make bench OPT=-O2, rows film-f32 and
+ *   schlick-rgb-f32, target film-vs-schlick-rgb; gcc 12, an AMD EPYC
+ *   x86-64). Fewer poles would cost accuracy (the observer's fit needs six
+ *   for the CIEDE2000 goals at thin films).
+ *   Q1.15 on a Cortex-M0 (make cross-count, row thin-film: gcc -Os, qemu
+ *   trace over tests/cross/bench.c's 153 cosines, thicknesses 0-4096 nm):
+ *   3465 instructions on average, 2089-4018 (4897 cycles with a 1-cycle
+ *   multiplier, 15299 with a 32-cycle one); no division instruction (a
+ *   257-entry reciprocal table after a shift normalisation), no soft-float
+ *   helper; 1.2 KiB of shared tables (quarter sine, 2^-x, 1/x), 1.9 KiB of
+ *   code. Bit-identical on the Cortex-M0, M4F and RV32IMC and the host
+ *   (make cross-test).
  *   Table per material: sizeof(fresnel_film) 6976 bytes, fresnel_film_q15
  *   3560, fresnel_film_f16 3488.
  */

@@ -20,10 +20,11 @@
  *
  * With SCENE (the manifest the header was generated from), also the
  * header against the report (scene_mode below); with SCENE CURVE_CSV
- * MATERIAL TYPE instead, against `fresnel curve --type TYPE` (curve_mode).
+ * MATERIAL TYPE [FILM_D] instead, against `fresnel curve --type TYPE`
+ * (curve_mode; FILM_D: the thickness of its --film N:D).
  *
  * usage: gen_matrix_check HEADER SPACING LABEL [SCENE [CURVE_CSV MATERIAL
- * TYPE]]   (SPACING grazing, uniform or grazing-pl) */
+ * TYPE [FILM_D]]]   (SPACING grazing, uniform or grazing-pl) */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -32,6 +33,7 @@
 
 #include "fresnel.h"
 #include "fresnel_fixed.h"
+#include "fresnel_film.h"
 #include "fresnel_fixed_fast.h"
 #include "header_check.h"
 #include "common/reference.h"
@@ -238,13 +240,88 @@ static int hdr_eval_f16(hdr_model *m, const char *model, const scene_model *sm, 
 }
 #endif
 
+/* The thin film of the header: its table, by name, through the runtime at
+ * cosine x and thickness d (each converted to the type as a caller would:
+ * binary32, Q1.15 code round(x 32768) and Q16.16 round(d 65536), binary16). */
+typedef char film_floats_in_order[sizeof(fresnel_film) == HC_FILM_FLOATS * sizeof(float) ? 1 : -1];
+static int hdr_film(hdr_model *m, const char *id, number_type_id type, double x, double d, double out[3])
+{
+    char name[96];
+    const hc_decl *t;
+    const double *v;
+    int i, j, k;
+    snprintf(name, sizeof name, type == TYPE_F32 ? "%s" : (type == TYPE_Q15 ? "%s_q15" : "%s_f16"), id);
+    if (!(t = need(m, name)))
+        return -1;
+    v = t->v;
+    if (type == TYPE_F32) {
+        static fresnel_film f;
+        fresnel_rgb r;
+        for (i = 0; i < HC_FILM_FLOATS; i++)
+            ((float *)&f)[i] = (float)v[i];
+        r = fresnel_film_rgb(&f, (float)x, (float)d);
+        out[0] = r.r, out[1] = r.g, out[2] = r.b;
+    } else if (type == TYPE_Q15) {
+        static fresnel_film_q15 f;
+        fresnel_rgb_q15 r;
+        double dq = floor(d * 65536.0 + 0.5);
+        for (j = 0; j < FRESNEL_FILM_POLES; j++) {
+            f.turn_nu[j] = (uint32_t)v[j];
+            f.turn_gamma[j] = (uint32_t)v[FRESNEL_FILM_POLES + j];
+            f.octave_nu[j] = (uint32_t)v[2 * FRESNEL_FILM_POLES + j];
+            f.octave_gamma[j] = (uint32_t)v[3 * FRESNEL_FILM_POLES + j];
+        }
+        v += 4 * FRESNEL_FILM_POLES;
+        for (i = 0; i < 3; i++)
+            for (j = 0; j < FRESNEL_FILM_POLES; j++) {
+                f.weight[i][j][0] = (int16_t)v[2 * (i * FRESNEL_FILM_POLES + j)];
+                f.weight[i][j][1] = (int16_t)v[2 * (i * FRESNEL_FILM_POLES + j) + 1];
+            }
+        v += 6 * FRESNEL_FILM_POLES;
+        for (k = 0; k < FRESNEL_FILM_NODES; k++, v += HC_FILM_NODE) {
+            fresnel_film_node_q15 *n = &f.node[k];
+            int16_t *arrays[8];
+            arrays[0] = n->a_re;
+            arrays[1] = n->a_im;
+            arrays[2] = n->b_re;
+            arrays[3] = n->b_im;
+            arrays[4] = n->p_re;
+            arrays[5] = n->p_im;
+            arrays[6] = n->q_re;
+            arrays[7] = n->q_im;
+            for (i = 0; i < 3; i++)
+                n->a0[i] = (int16_t)v[i];
+            n->opd = (uint16_t)v[3];
+            n->decay = (uint16_t)v[4];
+            for (i = 0; i < 8; i++)
+                for (j = 0; j < FRESNEL_FILM_POLES; j++)
+                    arrays[i][j] = (int16_t)v[5 + i * FRESNEL_FILM_POLES + j];
+        }
+        r = fresnel_film_q15_rgb(&f, (int32_t)lround(x * 32768.0),
+                                 dq >= 2147483647.0 ? INT32_MAX : (dq > 0.0 ? (int32_t)dq : 0));
+        out[0] = r.r / 32768.0, out[1] = r.g / 32768.0, out[2] = r.b / 32768.0;
+    } else {
+#if FRESNEL_HAS_F16
+        static fresnel_film_f16 f;
+        fresnel_rgb_f16 r;
+        for (i = 0; i < HC_FILM_FLOATS; i++)
+            ((fresnel_f16 *)&f)[i] = (fresnel_f16)(float)v[i];
+        r = fresnel_film_f16_rgb(&f, (fresnel_f16)x, (fresnel_f16)d);
+        out[0] = (double)r.r, out[1] = (double)r.g, out[2] = (double)r.b;
+#else
+        return -1;
+#endif
+    }
+    return m->missing ? -1 : 0;
+}
+
 /* The header's model `name` at cosine x in number type `type` (x converted
  * to the type: rounded to binary32 or binary16, Q1.15 code round(x
  * 32768); results as doubles, Q1.15 codes / 32768), through the runtime
  * function the header's comments name; -1 when the checker knows no such
  * model (then the test must learn it) or a constant is missing. */
 static int hdr_eval(hdr_model *m, const char *model, const scene_model *sm, number_type_id type, double x,
-                    double out[3])
+                    double d_nm, double out[3])
 {
     int q15 = type == TYPE_Q15;
     int32_t c = (int32_t)lround(x * 32768.0);
@@ -255,6 +332,8 @@ static int hdr_eval(hdr_model *m, const char *model, const scene_model *sm, numb
     char id[64];
     int i;
     ident_of(model, id);
+    if (!strcmp(model, "thin-film"))
+        return hdr_film(m, id, type, x, d_nm, out);
     if (type == TYPE_F16) {
 #if FRESNEL_HAS_F16
         int ch;
@@ -408,6 +487,15 @@ static double own_double_f16(const scene_model *sm, const double *t16, int ch, i
 }
 #endif
 
+/* A film's thicknesses: the scene's range's ends, then across the runtime's
+ * range, its end and beyond it (the runtime clamps). */
+#define FILM_THICKNESSES 9
+static double film_thickness(const scene *sc, int i)
+{
+    static const double d[FILM_THICKNESSES - 2] = {0.0, 0.5, 137.25, 480.0, 2999.9, 5000.0, 7000.0};
+    return i < 2 ? (i ? sc->film_d_hi : sc->film_d_lo) : d[i - 2];
+}
+
 /* Every material and model of the scene at every cosine code below 256,
  * every 4th below 2048 and every 16th above (several per segment of the
  * finest table): the report's figure against the header's, in each number
@@ -477,9 +565,14 @@ static int scene_mode(const char *scene_path, const char *label)
                 int32_t c;
                 if (!scene_has_type(&sc, number_types[t].id))
                     continue;
-                for (c = 0; c <= 32768 && !fails; c += c < 256 ? 1 : (c < 2048 ? 4 : 16)) {
+                /* a film at thicknesses across its range, the ends of the
+                 * runtime's and beyond; the other models at d 0 */
+                int film = sm.film != NULL, di, nd = film ? FILM_THICKNESSES : 1;
+                for (di = 0; di < nd && !fails; di++) {
+                rp.d_nm = film ? film_thickness(&sc, di) : 0.0;
+                for (c = 0; c <= 32768 && !fails; c += film ? (c < 2048 ? 16 : 128) : (c < 256 ? 1 : (c < 2048 ? 4 : 16))) {
                     double got[3], want[3];
-                    if (hdr_eval(&hm, sc.models[m].name, &sm, number_types[t].id, c / 32768.0, want)) {
+                    if (hdr_eval(&hm, sc.models[m].name, &sm, number_types[t].id, c / 32768.0, rp.d_nm, want)) {
                         printf("FAIL gen matrix %s: %s %s %s: %s\n", label, sc.materials[i], sc.models[m].name,
                                number_types[t].name,
                                hm.missing ? "missing from the header" : "a model the checker cannot evaluate");
@@ -542,6 +635,7 @@ static int scene_mode(const char *scene_path, const char *label)
                         }
                     }
                 }
+                }
                 if (q15 && sm.lut.n)
                     luts++;
                 if (number_types[t].id == TYPE_F16 && sm.lut.n)
@@ -577,7 +671,7 @@ static int scene_mode(const char *scene_path, const char *label)
  * (its CSV), every model column against the header at the same cosines
  * (curve's: theta = 90 r / (rows - 1) degrees), the same %.9g text. */
 static int curve_mode(const char *scene_path, const char *csv_path, const char *material, const char *type_name,
-                      const char *label)
+                      double film_d, const char *label)
 {
     scene sc;
     const number_type *type = number_type_find(type_name);
@@ -623,7 +717,7 @@ static int curve_mode(const char *scene_path, const char *csv_path, const char *
             sm.lut.n = sc.models[m].lut_n;
             sm.lut.form = sc.models[m].row->form;
             sm.lut.spacing = sc.spacing;
-            if (hdr_eval(&hm, sc.models[m].name, &sm, type->id, c, want)) {
+            if (hdr_eval(&hm, sc.models[m].name, &sm, type->id, c, film_d, want)) {
                 printf("FAIL gen matrix %s: %s %s: not in the header or not known to the checker\n", label,
                        sc.models[m].name, type->name);
                 fails++;
@@ -658,8 +752,8 @@ int main(int argc, char **argv)
     int i, uniform, pl, fails = 0;
     worst w[4]; /* linear, residual, cubic, pl */
     static const char *const form_name[4] = {"linear", "residual", "cubic", "grazing-pl"};
-    if (argc != 4 && argc != 5 && argc != 8) {
-        fprintf(stderr, "usage: gen_matrix_check HEADER SPACING LABEL [SCENE [CURVE_CSV MATERIAL TYPE]]\n");
+    if (argc != 4 && argc != 5 && argc != 8 && argc != 9) {
+        fprintf(stderr, "usage: gen_matrix_check HEADER SPACING LABEL [SCENE [CURVE_CSV MATERIAL TYPE [FILM_D]]]\n");
         return 2;
     }
     spacing = argv[2];
@@ -782,8 +876,8 @@ int main(int argc, char **argv)
     }
     if (argc == 5)
         fails += scene_mode(argv[4], label);
-    if (argc == 8)
-        fails += curve_mode(argv[4], argv[5], argv[6], argv[7], label);
+    if (argc >= 8)
+        fails += curve_mode(argv[4], argv[5], argv[6], argv[7], argc == 9 ? atof(argv[8]) : 0.0, label);
     hc_free(&hh);
     free(text);
     return fails != 0;

@@ -8,7 +8,9 @@
  * program uploads); ES 3.00 also runs that path with FRESNEL_LUT_ARRAYS 0.
  *
  * Bounds (highp): analytic models and const-array tables 1e-5, as the
- * port's own test. Texture tables: within 1e-5 of the C runtime on the
+ * port's own test, and the thin film too (const arrays only: GLSL 3.30,
+ * ES 3.00; thicknesses 0-1195 nm scattered over the cosines), whose GPU
+ * sin, cos and exp stand for the C runtime's polynomials. Texture tables: within 1e-5 of the C runtime on the
  * decoded 16-bit nodes, and within the quantisation bound of the C runtime
  * on the binary32 nodes: 2^-16 for linear interpolation, 1.25 * 2^-16 for
  * Catmull-Rom (the sum of its weights' magnitudes is at most 1.25), plus
@@ -76,8 +78,14 @@ static GLuint program(const struct variant *v, const char *prelude, const char *
     return glctx_program(vs, fs, glsl_log, sizeof glsl_log);
 }
 
-/* main(): row r of the viewport evaluates material r's function. */
-static char *main_body(const scene *sc, const char *ident, const char *id)
+/* The thin film's thickness at pixel x, the same binary32 value in GLSL
+ * and here: 0-1195 nm, scattered over x (every product exact). */
+#define FILM_D_GLSL "mod(floor(fr_uv.x * 260.0) * 157.0, 256.0) * 4.6875"
+static float film_d(int x) { return (float)((x * 157) % 256) * 4.6875f; }
+
+/* main(): row r of the viewport evaluates material r's function (the thin
+ * film's at FILM_D_GLSL). */
+static char *main_body(const scene *sc, const char *ident, const char *id, int film)
 {
     size_t size = 4096 + (size_t)sc->material_count * 256;
     char *b = malloc(size);
@@ -90,8 +98,8 @@ static char *main_body(const scene *sc, const char *ident, const char *id)
                            "    highp float row = floor(fr_uv.y * %d.0);\n    vec3 r = vec3(0.0);\n",
                            W, sc->material_count);
     for (i = 0; i < sc->material_count; i++)
-        len += (size_t)snprintf(b + len, size - len, "    %sif (row < %d.5) r = fresnel_%s_%s_%s_rgb(c);\n",
-                                i ? "else " : "", i, ident, sc->materials[i], id);
+        len += (size_t)snprintf(b + len, size - len, "    %sif (row < %d.5) r = fresnel_%s_%s_%s_rgb(c%s);\n",
+                                i ? "else " : "", i, ident, sc->materials[i], id, film ? ", " FILM_D_GLSL : "");
     snprintf(b + len, size - len, "    FR_OUT = vec4(r, 1.0);\n}\n");
     return b;
 }
@@ -127,7 +135,8 @@ int main(int argc, char **argv)
     if (!params || !spectra || !models || !out)
         return 1;
     for (i = 0; i < nmat; i++) {
-        if (derive_parameters(&gc, &(material_source){sc.materials[i], NULL, NK_FORMAT_AUTO}, sc.sigma, sc.n1, &spectra[i], &params[i]))
+        material_source ms = scene_material(&sc, i);
+        if (derive_parameters(&gc, &ms, sc.sigma, sc.n1, &spectra[i], &params[i]))
             return 1;
         for (m = 0; m < sc.model_count; m++)
             if (scene_model_prepare(&sc.models[m], sc.spacing, &spectra[i], &gc, &params[i],
@@ -155,7 +164,8 @@ int main(int argc, char **argv)
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
 
     for (m = 0; m < sc.model_count; m++) {
-        char *body = main_body(&sc, ident, sc.models[m].ident);
+        int film = models[m].film != NULL;
+        char *body = main_body(&sc, ident, sc.models[m].ident, film);
         int is_lut = models[m].lut.n > 0, form = models[m].lut.form;
         for (v = 0; v < NVARIANTS && body; v++) {
             const struct variant *va = &variants[v];
@@ -163,7 +173,7 @@ int main(int argc, char **argv)
             double worst = 0.0, worst_q = 0.0, bound, bound_q = HIGHP_BOUND;
             char name[256], sampler[128];
             GLuint prog;
-            if (va->lut_only && !is_lut)
+            if ((va->lut_only && !is_lut) || (film && va->texture)) /* the film: const arrays only */
                 continue;
             bound = mediump ? MEDIUMP_BOUND
                   : texture ? (form == LUT_CUBIC ? 1.25 : 1.0) * ldexp(1.0, -16) + 1e-6
@@ -203,6 +213,13 @@ int main(int argc, char **argv)
                     const float *gpu = out + 4 * ((size_t)i * W + (size_t)x);
                     scene_model_eval(sm, c, ref);
                     scene_model_eval(&qm, c, refq);
+                    if (film) {
+                        model_rgb q = scene_model_rgb(sm);
+                        fresnel_rgb v;
+                        q.d_nm = film_d(x);
+                        v = q.def->rgb_f32(&q, c);
+                        ref[0] = refq[0] = v.r, ref[1] = refq[1] = v.g, ref[2] = refq[2] = v.b;
+                    }
                     for (ch = 0; ch < 3; ch++) {
                         double d = fabs(gpu[ch] - ref[ch]), dq = fabs(gpu[ch] - refq[ch]);
                         if (!(d <= worst))

@@ -20,6 +20,12 @@
  *                         2^(30 - shift) in int32, |a0_lo| <= 2^15, b1, b2
  *                         in [0, 2^31), bm 0 (be 255) or in [2^15, 2^16),
  *                         span 0 or 65535 (65535 only with shift 0)
+ *   fresnel_film          the thin-film table (fresnel_film.h), its floats in
+ *                         struct order, finite
+ *   fresnel_film_q15      the same in Q1.15: turn_* in uint32_t, octave_* in
+ *                         [0, 2^27), weights int16_t; per node a0 int16_t,
+ *                         opd and decay uint16_t, A, B, P, Q int16_t
+ *   fresnel_film_f16      the same in binary16, each a binary16 value
  *   enum NAME_frac        a residual table's fraction bits, [14, 30]
  * and each initialiser has exactly as many values as its type and length
  * need. Any other declared type is an error, so a new emitted type must be
@@ -36,7 +42,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "fresnel_film.h"
+
 #define HC_MAX_DECLS 8192
+/* fresnel_film (fresnel_film.h): freq, damp, weight[3][J][2], then per node
+ * a0[3], opd, decay and eight arrays of J; the Q1.15 layout has four pole
+ * arrays where the float ones have two. */
+#define HC_FILM_NODE (5 + 8 * FRESNEL_FILM_POLES)
+#define HC_FILM_FLOATS (2 * FRESNEL_FILM_POLES + 6 * FRESNEL_FILM_POLES + FRESNEL_FILM_NODES * HC_FILM_NODE)
 #define HC_NAME 160
 
 typedef struct hc_decl {
@@ -73,7 +86,9 @@ static inline int hc_fields(const char *type, int *is_float)
     } t[] = {{"float", 1, 1},   {"fresnel_rgb", 3, 1},      {"fresnel_rgb_q15", 3, 0},
              {"uint16_t", 1, 0}, {"int16_t", 1, 0},          {"int32_t", 1, 0},
              {"fresnel_ior_prep_q15", 11, 0}, {"fresnel_nk_prep_q15", 4, 0}, {"fresnel_lsk_prep_q15", 4, 0},
-             {"fresnel_conductor_prep_q15_fast", 8, 0}, {"fresnel_f16", 1, 1}};
+             {"fresnel_conductor_prep_q15_fast", 8, 0}, {"fresnel_f16", 1, 1},
+             {"fresnel_film", HC_FILM_FLOATS, 1}, {"fresnel_film_q15", HC_FILM_FLOATS + 12, 0},
+             {"fresnel_film_f16", HC_FILM_FLOATS, 1}};
     size_t i;
     for (i = 0; i < sizeof t / sizeof t[0]; i++)
         if (!strcmp(t[i].type, type)) {
@@ -98,12 +113,31 @@ static inline void hc_element(hc_header *h, const hc_decl *d, const double *v)
 {
     const char *t = d->type;
     int i;
-    if (!strcmp(t, "fresnel_f16")) { /* the literal is a float's */
-        int e;
-        double x = (double)(float)v[0], m = frexp(x, &e);
-        if (!(fabs(x) <= 65504.0) ||
-            (fabs(x) >= 0x1p-14 ? ldexp(m, 11) != floor(ldexp(m, 11)) : ldexp(x, 24) != floor(ldexp(x, 24))))
-            hc_fail(h, "%s %s: %.17g is not a binary16 value", t, d->name, v[0]);
+    if (!strcmp(t, "fresnel_f16") || !strcmp(t, "fresnel_film_f16")) { /* the literals are a float's */
+        int n = strcmp(t, "fresnel_f16") ? HC_FILM_FLOATS : 1;
+        for (i = 0; i < n; i++) {
+            int e;
+            double x = (double)(float)v[i], m = frexp(x, &e);
+            if (!(fabs(x) <= 65504.0) ||
+                (fabs(x) >= 0x1p-14 ? ldexp(m, 11) != floor(ldexp(m, 11)) : ldexp(x, 24) != floor(ldexp(x, 24)))) {
+                hc_fail(h, "%s %s: value %d, %.17g, is not a binary16 value", t, d->name, i, v[i]);
+                break;
+            }
+        }
+    } else if (!strcmp(t, "fresnel_film_q15")) {
+        const int poles = 4 * FRESNEL_FILM_POLES, weights = poles + 6 * FRESNEL_FILM_POLES;
+        for (i = 0; i < HC_FILM_FLOATS + 12; i++) {
+            int at = (i - weights) % HC_FILM_NODE;
+            double lo = -32768.0, hi = 32767.0;
+            if (i < poles)
+                lo = 0.0, hi = i < 2 * FRESNEL_FILM_POLES ? 4294967295.0 : 134217727.0;
+            else if (i >= weights && (at == 3 || at == 4))
+                lo = 0.0, hi = 65535.0;
+            if (!hc_in(v[i], lo, hi)) {
+                hc_fail(h, "%s %s: value %d, %.17g, not in [%.0f, %.0f]", t, d->name, i, v[i], lo, hi);
+                break;
+            }
+        }
     } else if (!strcmp(t, "fresnel_rgb_q15")) {
         for (i = 0; i < 3; i++)
             if (!hc_in(v[i], 0.0, 32768.0))

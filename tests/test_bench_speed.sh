@@ -7,7 +7,7 @@
 F="$BUILD/fresnel"
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
-if make -s --no-print-directory BUILD="$t/b" CC="${CC:-cc}" OPT=-O1 SPEED_ARGS='--rounds 3' bench-run \
+if make -s --no-print-directory BUILD="$t/b" GEN_TOOL="$F" CC="${CC:-cc}" OPT=-O1 SPEED_ARGS='--rounds 3' bench-run \
     >"$t/speed.txt" 2>"$t/err"; then
     echo "PASS bench speed: builds in its own directory per compiler and flag set and runs (OPT=-O1, 3 rounds)"
 else
@@ -26,10 +26,11 @@ grep -q '^# opt: -O1$' "$t/speed.txt" && grep -q '^# cflags: .* -O1 -fno-math-er
     echo "FAIL bench speed: header lacks:$missing"
 missing=""
 for r in copy schlick-inline sqrt2-div1 sqrt2-div2 schlick-f32 schlick-q15 conductor-call conductor-prepared conductor-batch \
-    conductor-rgb-batch mitsuba-call mitsuba-inline mitsuba-inline-rgb pbrt-call pbrt-inline lut16-cubic-f32 lut32-q15 lut16-cubic-q15 lut16-linear-q15; do
+    conductor-rgb-batch mitsuba-call mitsuba-inline mitsuba-inline-rgb pbrt-call pbrt-inline lut16-cubic-f32 lut32-q15 lut16-cubic-q15 lut16-linear-q15 \
+    schlick-rgb-f32 film-f32; do
     awk -v r="$r" '$1 == "row" && $2 == r && NF == 11 { f = 1 } END { exit !f }' "$t/speed.txt" || missing="$missing $r"
 done
-[ -z "$missing" ] && echo "PASS bench speed: every row (floors, library calls and batch, peers as call and inlined, LUTs), 11 fields" ||
+[ -z "$missing" ] && echo "PASS bench speed: every row (floors, library calls and batch, peers as call and inlined, LUTs, RGB Schlick, the thin film), 11 fields" ||
     echo "FAIL bench speed: rows missing or malformed:$missing"
 n=$(grep -c '^target ' "$t/speed.txt")
 [ "$n" -ge 7 ] && grep -q '^target batch-vs-mitsuba-inline .*goal -O2 <= 0.5, -O3 -march=native <= 0.8' "$t/speed.txt" &&

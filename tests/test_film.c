@@ -418,6 +418,66 @@ static void test_outside_goal(const gen_context *g, const film_model *poles, spe
     free(m);
 }
 
+/* The film's identities through the runtime: a film of no thickness, and a
+ * film of the ambient's index at any thickness, are the bare substrate
+ * (its spectral ground truth, held to [0, 1] as the runtime holds its
+ * result), within CIEDE2000 0.1 (fresnel_film.h; measured 0.056): the
+ * model is a fit there as everywhere. Every 5 degrees, every substrate. */
+static void test_identities(const gen_context *g, const film_model *poles, spectrum *const *s)
+{
+    static const float ds[] = {0.0f, 250.0f, 1000.0f, 5000.0f};
+    film_model *m = malloc(sizeof *m);
+    fresnel_film *f32 = malloc(sizeof *f32);
+    lab_space ls;
+    double worst_d0 = 0.0, worst_n1 = 0.0;
+    int i, a, k, ch;
+    if (!m || !f32 || lab_space_init(&ls, &g->cs)) {
+        CHECK("film identities: memory", 0, "out of memory");
+        return;
+    }
+    for (i = 0; i < N_SUB; i++) {
+        const film_model *thick = fit_of(g, poles, s, i, 1);
+        film_stack f;
+        f.n1 = 1.0;
+        f.film = NULL;
+        f.film_n = 1.0; /* the ambient's index */
+        f.substrate = s[i];
+        *m = *poles;
+        if (!thick || film_fit_material(&f, &g->cm, &g->cs, m)) {
+            CHECK("film identities: the substrates fit", 0, "%s", substrates[i]);
+            continue;
+        }
+        for (a = 0; a <= 90; a += 5) {
+            double c = a == 90 ? 0.0 : cos(a * 3.14159265358979323846 / 180.0), bare[3], lab0[3], lab[3], rgb[3];
+            fresnel_rgb r;
+            ground_truth(s[i], &g->cm, &g->cs, 1.0, c, bare);
+            for (ch = 0; ch < 3; ch++)
+                bare[ch] = fmin(fmax(bare[ch], 0.0), 1.0);
+            lab_space_lab(&ls, bare, lab0);
+            film_encode_f32(thick, f32); /* a 1.8 film of no thickness */
+            r = fresnel_film_rgb(f32, (float)c, 0.0f);
+            rgb[0] = r.r, rgb[1] = r.g, rgb[2] = r.b;
+            lab_space_lab(&ls, rgb, lab);
+            worst_d0 = fmax(worst_d0, ciede2000(lab0, lab));
+            film_encode_f32(m, f32); /* a film of the ambient's index */
+            for (k = 0; k < 4; k++) {
+                r = fresnel_film_rgb(f32, (float)c, ds[k]);
+                rgb[0] = r.r, rgb[1] = r.g, rgb[2] = r.b;
+                lab_space_lab(&ls, rgb, lab);
+                worst_n1 = fmax(worst_n1, ciede2000(lab0, lab));
+            }
+        }
+    }
+    NOTE("film identities, binary32 against the bare substrate's truth: d = 0 (a 1.8 film) CIEDE2000 max %.3f; "
+         "n_f = n1 at 0, 250, 1000, 5000 nm max %.3f", worst_d0, worst_n1);
+    CHECK("film binary32 of no thickness is the bare substrate within CIEDE2000 0.1", worst_d0 <= 0.1, "max %.3f",
+          worst_d0);
+    CHECK("film binary32 of the ambient's index is the bare substrate at every thickness within CIEDE2000 0.1",
+          worst_n1 <= 0.1, "max %.3f", worst_n1);
+    free(m);
+    free(f32);
+}
+
 int main(void)
 {
     gen_context *g = malloc(sizeof *g);
@@ -445,6 +505,7 @@ int main(void)
     test_hostile(fit_of(g, poles, s, 0, 2));
     test_bounds(g, poles, s);
     test_outside_goal(g, poles, s);
+    test_identities(g, poles, s);
     de_matrix(g, poles, s, getenv("FILM_FULL") != NULL);
     for (i = 0; i < N_SUB; i++) {
         int k;

@@ -43,7 +43,7 @@ static int measure(const gen_context *g, const lab_space *ls, const char *id, sp
     double curve[REPORT_ANGLES][3], v32[REPORT_ANGLES][3], v15[REPORT_ANGLES][3];
     scene_model m;
     int a, k;
-    if (derive_parameters(g, &(material_source){id, NULL, NK_FORMAT_AUTO}, 25.0, 1.0, s, p) ||
+    if (derive_parameters(g, &(material_source){id, NULL, NK_FORMAT_AUTO, 0.0}, 25.0, 1.0, s, p) ||
         scene_model_prepare_name("lut16-cubic", LUT_GRAZING, s, g, p, &m))
         return -1;
     *table_max = 0.0;

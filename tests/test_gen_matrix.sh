@@ -13,7 +13,9 @@
 # grazing-pl). Also: a header of each number type alone compiles.
 # Then the report against the header: for water (a dielectric with a
 # total-reflection edge for n1 > 1.33), gold (outside the sRGB gamut) and
-# diamond, every scene model x number type (f32, q15 and, where the build
+# diamond, every scene model (the thin film with grazing spacing: a film no
+# less dense than n1, gold's its own, at thicknesses across the scene's
+# range and the runtime's, 0, 5000 nm and beyond) x number type (f32, q15 and, where the build
 # has _Float16, f16: `fresnel gen --help` lists them) x LUT size in {4, 8,
 # 12, 16, 64, 128, 256} (grazing-pl: N <= 64, q15 only) x spacing x n1,
 # gen_matrix_check's SCENE mode evaluates each model as `fresnel report`
@@ -21,7 +23,8 @@
 # bound of its own double nodes, and each binary16 LUT to
 # FRESNEL_DOMAIN_LUT_F16 (FRESNEL_DOMAIN_LUT_CUBIC_F16) of its own binary16
 # nodes in double; at n1 1.5,
-# `fresnel curve --type` of each material prints the header's numbers too.
+# `fresnel curve --type` of each material prints the header's numbers too
+# (with --film N:D, the thin film's column at D).
 B=${BUILD:-build}
 F="$B/fresnel"
 t=$(mktemp -d)
@@ -51,10 +54,10 @@ compile() {
     done
 }
 
-# scene NAME SPACING N1 TYPES MODELS [MATERIALS]
+# scene NAME SPACING N1 TYPES MODELS [MATERIALS [MORE_LINES]]
 scene() {
-    printf 'name = %s\nmaterials = %s\nmodels = %s\ntypes = %s\nn1 = %s\nlut_spacing = %s\n' \
-        "$1" "${6:-$mats}" "$5" "$4" "$3" "$2" >"$t/$1.scene"
+    printf 'name = %s\nmaterials = %s\nmodels = %s\ntypes = %s\nn1 = %s\nlut_spacing = %s\n%s' \
+        "$1" "${6:-$mats}" "$5" "$4" "$3" "$2" "${7:-}" >"$t/$1.scene"
     if ! "$F" gen "$t/$1.scene" -o "$t/$1.h" 2>"$t/gen.log" >/dev/null; then
         echo "FAIL gen matrix $1: fresnel gen: $(grep -v warning "$t/gen.log" | head -3)"
         return 1
@@ -79,6 +82,9 @@ done
 for types in $all_types; do
     scene "m_only_$types" grazing 1.5 "$types" "$named lut4 lut16-residual lut16-cubic" &&
         compile "m_only_$types (types = $types alone)" "$t/m_only_$types.h"
+    scene "f_only_$types" grazing 1.5 "$types" "thin-film" "au bk7" 'film = 1.5
+film au = 2.2
+' && compile "f_only_$types (thin-film, types = $types alone)" "$t/f_only_$types.h"
 done
 
 for spacing in grazing uniform grazing-pl; do
@@ -93,16 +99,34 @@ for spacing in grazing uniform grazing-pl; do
     done
     for n1 in 1 1.33 1.5 2.42 4; do
         name=r_$(echo "$spacing" | tr -c 'a-z0-9\n' _)_$(echo "$n1" | tr . _)
-        scene "$name" "$spacing" "$n1" "$types" "$named$luts" "water au diamond" || continue
+        # the thin film (independent of the spacing: grazing only): a film no
+        # less dense than n1 on each material, gold's its own, over a range
+        film="" film_lines=""
+        if [ "$spacing" = grazing ]; then
+            film=" thin-film"
+            film_lines="film = $(awk -v n="$n1" 'BEGIN { print (n > 2.42 ? n : 2.42) }')
+film au = 4
+film_thickness = 80 640
+"
+        fi
+        scene "$name" "$spacing" "$n1" "$types" "$named$luts$film" "water au diamond" "$film_lines" || continue
         [ "$n1" = 1.5 ] && compile "$name" "$t/$name.h"
         "$t/check" "$t/$name.h" "$spacing" "$name (${spacing}, n1 $n1)" "$t/$name.scene" 2>"$t/check.err"
         # fresnel curve --type evaluates the same values (grazing-pl has no curve)
         if [ "$spacing" != grazing-pl ] && [ "$n1" = 1.5 ]; then
             for mat in water au diamond; do
+                # the scene's film on mat (gold's its own), at 480 nm
+                film_opt="" film_d=""
+                if [ -n "$film" ]; then
+                    film_d=480
+                    film_opt="--film $( [ "$mat" = au ] && echo 4 || echo 2.42 ):$film_d"
+                fi
                 for ty in $types; do
+                    # shellcheck disable=SC2086
                     if "$F" curve --material "$mat" --n1 "$n1" --lut-spacing "$spacing" --type "$ty" --samples 181 \
-                        --models "$named$luts" >"$t/curve.csv" 2>"$t/curve.err"; then
-                        "$t/check" "$t/$name.h" "$spacing" "$name curve" "$t/$name.scene" "$t/curve.csv" "$mat" "$ty" 2>"$t/check.err"
+                        --models "$named$luts$film" $film_opt >"$t/curve.csv" 2>"$t/curve.err"; then
+                        # shellcheck disable=SC2086
+                        "$t/check" "$t/$name.h" "$spacing" "$name curve" "$t/$name.scene" "$t/curve.csv" "$mat" "$ty" $film_d 2>"$t/check.err"
                     else
                         echo "FAIL gen matrix $name: fresnel curve --type $ty: $(head -2 "$t/curve.err")"
                     fi

@@ -98,7 +98,7 @@ int main(void)
         double gt[3], worst_rms = 0.0;
         int ok_f0 = 1, ok_dom = 1;
         char name[96];
-        if (derive_parameters(g, &(material_source){metals[i], NULL, NK_FORMAT_AUTO}, 25.0, 1.0, s, &p)) {
+        if (derive_parameters(g, &(material_source){metals[i], NULL, NK_FORMAT_AUTO, 0.0}, 25.0, 1.0, s, &p)) {
             CHECK(metals[i], 0, "derive_parameters failed");
             continue;
         }
@@ -179,7 +179,7 @@ int main(void)
     {
         /* Gold's red leaves the sRGB gamut: the policy keeps it visible in
          * params (unclamped) and clamps what the runtime gets. */
-        derive_parameters(g, &(material_source){"au", NULL, NK_FORMAT_AUTO}, 25.0, 1.0, s, &p);
+        derive_parameters(g, &(material_source){"au", NULL, NK_FORMAT_AUTO, 0.0}, 25.0, 1.0, s, &p);
         CHECK("gold red F0 is out of the sRGB gamut (unclamped > 1) and clamped to 1",
               p.f0_unclamped[0] > 1.0 && p.f0[0] == 1.0, "F0 red %.6g / %.6g", p.f0_unclamped[0], p.f0[0]);
         NOTE("gold F0 in linear sRGB, unclamped: %.4f %.4f %.4f", p.f0_unclamped[0], p.f0_unclamped[1],

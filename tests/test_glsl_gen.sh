@@ -3,7 +3,7 @@
 # the texture header under each compiler: tests/test_gen_shaders.sh)
 # make check: no (OSMesa)
 # `fresnel gen --glsl` on the GPU: for the default scene and two scenes with
-# every LUT kind and every analytic model, the generated GLSL (and, for
+# every LUT kind and every analytic model (and the thin film), the generated GLSL (and, for
 # GLSL ES 1.00, the packed LUT texture of --glsl-texture) evaluates in
 # OSMesa to what the C runtime computes from the same manifest, in GLSL 3.30,
 # ES 3.00 and ES 1.00 (tests/glsl_gen_test.c, built once per scene because it

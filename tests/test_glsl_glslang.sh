@@ -88,15 +88,19 @@ for manifest in data/scenes/*.scene tests/scenes/glsl_luts.scene tests/scenes/gl
     nmat=$(grep -c '^/\* ---- ' "$glsl")
     for model in $models; do
         id=$(printf '%s' "$model" | tr '-' '_')
-        funcs=$(sed -n "s/^vec3 \(fresnel_${ident}_[a-z0-9_]*_${id}_rgb\)(FRESNEL_HIGHP float c)$/\1/p" "$glsl")
+        # the thin film takes the thickness too, and needs const arrays (not GLSL ES 1.00)
+        params='FRESNEL_HIGHP float c' args='(fr_c)' variants="es100 es300 330"
+        case $model in
+        lut*) variants="$variants es300-texture" ;;
+        thin-film) params='FRESNEL_HIGHP float c, FRESNEL_HIGHP float d_nm' args='(fr_c, 700.0 * fr_c)' variants="es300 330" ;;
+        esac
+        funcs=$(sed -n "s/^vec3 \(fresnel_${ident}_[a-z0-9_]*_${id}_rgb\)($params)$/\1/p" "$glsl")
         n=$(printf '%s\n' "$funcs" | grep -c .)
         if [ "$n" -ne "$nmat" ]; then
             echo "FAIL glslang: $scene $model: $n functions for $nmat materials"
             continue
         fi
-        expr=$(printf '%s\n' "$funcs" | sed 's/$/(fr_c)/' | paste -sd+)
-        variants="es100 es300 330"
-        case $model in lut*) variants="$variants es300-texture" ;; esac
+        expr=$(printf '%s\n' "$funcs" | sed "s/\$/$args/" | paste -sd+)
         for v in $variants; do
             p=${v%-texture}
             conf=
@@ -113,9 +117,11 @@ for manifest in data/scenes/*.scene tests/scenes/glsl_luts.scene tests/scenes/gl
     # supports, one shader calling every function.
     if [ "$ident" = glsl_luts ]; then
         all=$(sed -n "s/^vec3 \(fresnel_${ident}_[a-z0-9_]*_rgb\)(FRESNEL_HIGHP float c)$/\1(fr_c)/p" "$glsl" | paste -sd+)
+        film=$(sed -n "s/^vec3 \(fresnel_${ident}_[a-z0-9_]*_rgb\)(FRESNEL_HIGHP float c, FRESNEL_HIGHP float d_nm)$/\1(fr_c, 300.0)/p" "$glsl" | paste -sd+)
         for v in 110 120 130 150 450 es310 es320; do
             f="$out/${ident}_all_$v.frag"
-            { prelude_of "$v"; cat "$port/fresnel.glsl" "$glsl"; main_of "$v" "$all"; } >"$f"
+            case $v in 110 | 120) e=$all ;; *) e="$all+$film" ;; esac # const arrays from 1.30
+            { prelude_of "$v"; cat "$port/fresnel.glsl" "$glsl"; main_of "$v" "$e"; } >"$f"
             validate "glslang: $scene, every model and material, GLSL $v" "$f"
         done
     fi

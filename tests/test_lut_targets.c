@@ -48,7 +48,7 @@ int main(void)
             uint16_t q[96];
             double gt[REPORT_ANGLES][3], v[REPORT_ANGLES][3], mean, rms, max;
             int a;
-            if (derive_parameters(g, &(material_source){metals[i], NULL, NK_FORMAT_AUTO}, 25.0, 1.0, s, &p) ||
+            if (derive_parameters(g, &(material_source){metals[i], NULL, NK_FORMAT_AUTO, 0.0}, 25.0, 1.0, s, &p) ||
                 scene_model_prepare_name(targets[t].model, targets[t].spacing, s, g, &p, &m)) {
                 CHECK(metals[i], 0, "cannot prepare %s", targets[t].model);
                 continue;

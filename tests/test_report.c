@@ -22,7 +22,7 @@ int main(void)
     memset(&rm, 0, sizeof rm);
     rm.s = malloc(sizeof *rm.s);
     if (!g || !rm.s || gen_context_load(data_dir(NULL), "srgb", g) || lab_space_init(&ls, &g->cs) ||
-        derive_parameters(g, &(material_source){"cu", NULL, NK_FORMAT_AUTO}, 25.0, 1.0, rm.s, &rm.p)) {
+        derive_parameters(g, &(material_source){"cu", NULL, NK_FORMAT_AUTO, 0.0}, 25.0, 1.0, rm.s, &rm.p)) {
         CHECK("report: load copper", 0, "cannot load");
         return harness_exit();
     }

@@ -379,6 +379,68 @@ static void test_errors(void)
                  2, "key");
 }
 
+/* The thin film: `film = N` for every material, `film ID = N` for one,
+ * `film_thickness = LO HI`; typed once, checked against the models, the
+ * materials and n1. */
+static void test_film(void)
+{
+    scene s;
+    const char *path = write_manifest("film gold = 2.2\nmaterials = gold bk7 cu\nmodels = schlick thin-film\n"
+                                      "film = 1.4\nfilm_thickness = 100 750.5\n");
+    int rc = load_capturing(path, &s);
+    CHECK("scene film: loads", rc == 0, "rc %d: %s", rc, last_message);
+    if (rc == 0) {
+        material_source m0 = scene_material(&s, 0), m1 = scene_material(&s, 1);
+        CHECK("scene film: the film key, each material's own film (before its materials line), the range",
+              s.film_n == 1.4 && scene_film_n(&s, 0) == 2.2 && scene_film_n(&s, 1) == 1.4 &&
+                  scene_film_n(&s, 2) == 1.4 && m0.film_n == 2.2 && m1.film_n == 1.4 && s.film_d_lo == 100.0 &&
+                  s.film_d_hi == 750.5 && (s.models[1].row->offered & MODEL_FILM),
+              "film %g, gold %g, bk7 %g, range %g-%g", s.film_n, scene_film_n(&s, 0), scene_film_n(&s, 1),
+              s.film_d_lo, s.film_d_hi);
+    }
+    path = write_manifest("materials = gold\nmodels = thin-film\nfilm gold = 1.5\n");
+    rc = load_capturing(path, &s);
+    CHECK("scene film: a material's own film alone; thickness left to run time (0 to FRESNEL_FILM_D_MAX)",
+          rc == 0 && scene_film_n(&s, 0) == 1.5 && s.film_d_lo == 0.0 && s.film_d_hi == FRESNEL_FILM_D_MAX,
+          "rc %d: %s", rc, last_message);
+    path = write_manifest("materials = gold\nmodels = schlick\n");
+    rc = load_capturing(path, &s);
+    CHECK("scene film: no film without thin-film", rc == 0 && scene_film_n(&s, 0) == 0.0 &&
+                                                       scene_material(&s, 0).film_n == 0.0,
+          "rc %d", rc);
+    expect_error("scene error: thin-film without a film", "materials = gold bk7\nmodels = thin-film\nfilm gold = 2\n",
+                 3, "bk7 has no film");
+    expect_error("scene error: a film without thin-film", "materials = gold\nmodels = exact\nfilm = 1.5\n", 3,
+                 "thin-film model");
+    expect_error("scene error: a thickness without thin-film", "materials = gold\nfilm_thickness = 0 10\nmodels = exact\n",
+                 2, "thin-film model");
+    expect_error("scene error: film below n1 (total reflection inside it)",
+                 "n1 = 1.5\nmaterials = gold\nmodels = thin-film\nfilm = 1.33\n", 4, "at least n1 1.5");
+    expect_error("scene error: a material's film below n1",
+                 "n1 = 1.5\nmaterials = gold bk7\nmodels = thin-film\nfilm = 1.6\nfilm bk7 = 1.2\n", 5,
+                 "1.2 for bk7");
+    expect_error("scene error: film index out of range", "materials = gold\nmodels = thin-film\nfilm = 4.5\n", 3,
+                 "in [1, 4]");
+    expect_error("scene error: film index NaN", "materials = gold\nmodels = thin-film\nfilm = nan\n", 3,
+                 "in [1, 4]");
+    expect_error("scene error: a film of an unknown material",
+                 "materials = gold\nmodels = thin-film\nfilm = 1.5\nfilm silver = 2\n", 4, "'silver'");
+    expect_error("scene error: a material's film twice",
+                 "materials = gold\nmodels = thin-film\nfilm gold = 1.5\nfilm gold = 2\n", 4, "line 3");
+    expect_error("scene error: a film line with two ids", "materials = gold\nmodels = thin-film\nfilm a b = 1.5\n",
+                 3, "one material id");
+    expect_error("scene error: thickness reversed", "materials = gold\nmodels = thin-film\nfilm = 1.5\n"
+                 "film_thickness = 500 100\n", 4, "LO <= HI");
+    expect_error("scene error: thickness beyond the runtime's range",
+                 "materials = gold\nmodels = thin-film\nfilm = 1.5\nfilm_thickness = 0 6000\n", 4, "HI <= 5000");
+    expect_error("scene error: thickness negative",
+                 "materials = gold\nmodels = thin-film\nfilm = 1.5\nfilm_thickness = -1 10\n", 4, "0 <= LO");
+    expect_error("scene error: one thickness number",
+                 "materials = gold\nmodels = thin-film\nfilm = 1.5\nfilm_thickness = 10\n", 4, "two numbers");
+    expect_error("scene error: three thickness numbers",
+                 "materials = gold\nmodels = thin-film\nfilm = 1.5\nfilm_thickness = 1 2 3\n", 4, "two numbers");
+}
+
 static void test_unreadable(void)
 {
     scene s;
@@ -411,6 +473,7 @@ int main(void)
     test_lut_names();
     test_targets();
     test_errors();
+    test_film();
     test_unreadable();
     if (!harness_failed_) {
         for (i = 1; i <= manifest_count; i++) {

@@ -136,7 +136,7 @@ static void fits(void)
     for (m = 0; metals[m]; m++) {
         double truth[TARGET_ANGLES][3];
         target_anchor a;
-        material_source src = {metals[m], NULL, NK_FORMAT_AUTO};
+        material_source src = {metals[m], NULL, NK_FORMAT_AUTO, 0.0};
         double fit_openpbr = 0.0;
         if (derive_parameters(g, &src, 25.0, 1.0, s, p)) {
             CHECK("derive", 0, "%s", metals[m]);

@@ -23,6 +23,15 @@
 #   page's test hook from its canvas in the same browser run.
 # - the same page in WebGL 1 (#webgl1): the probes within 4e-3 (an 8-bit
 #   read-back: WebGL 1 promises no float render target).
+# - a scene with a thin film (gold and copper under a 1.38 film, F82 beside
+#   it): the page's film at its starting thickness (the slider's) and the
+#   film's reference (a 128-node table per slider step) against `fresnel
+#   curve --film` (5e-5: SwiftShader's sin, cos and exp; 2e-3: the table's
+#   interpolation), the lit probes against tests/viewer_lit.c, and a
+#   screenshot. A separate page: each material's film function is a const
+#   array of 1744 floats that SwiftShader copies per pixel, slow enough in
+#   the main scene's one shader to lose the WebGL context on a loaded
+#   machine.
 F="$BUILD/fresnel"
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
@@ -74,14 +83,17 @@ materials=$(awk -F= '/^materials/ { sub(/#.*/, "", $2); print $2 }' data/scenes/
 for m in $materials; do
     "$F" curve --material "$m" --models "$models" --samples 181 >"$t/$m.csv" || fail "fresnel curve --material $m"
 done
-# compare DOM MODEL_TOL REFERENCE_TOL CLAMP: every PROBE line of DOM against
-# the C runtime's curve (CLAMP 1: the C value held to [0, 1], as an 8-bit
-# read-back holds it); prints the worst per material and model, and "over"
-# or "missing" on a failure.
+# compare DOM MODEL_TOL REFERENCE_TOL CLAMP [FILM_TOL FILM_REF_TOL]: every
+# PROBE line of DOM against the C runtime's curve (CLAMP 1: the C value held
+# to [0, 1], as an 8-bit read-back holds it; with a film, its rows too);
+# prints the worst per material and model, and "over" or "missing" on a
+# failure.
 compare() {
+    rows=$(($(echo "$models" | wc -w) + 1))
+    [ -n "${5:-}" ] && rows=$((rows + 1)) # the film's reference
     for m in $materials; do
         grep "^PROBE $m " "$1" >"$t/$m.probe"
-        awk -F, -v mat="$m" -v tm="$2" -v tr="$3" -v cl="$4" -v want=$(($(echo "$models" | wc -w) + 1)) '
+        awk -F, -v mat="$m" -v tm="$2" -v tr="$3" -v cl="$4" -v tf="${5:-0}" -v tfr="${6:-0}" -v want="$rows" '
             NR == FNR { if (FNR == 1) { for (i = 1; i <= NF; i++) col[$i] = i; next } row[$1 + 0] = $0; next }
             { split($0, p, " "); model = p[3]; split(row[p[4] + 0], c, ","); base = model == "reference" ? "unclipped" : model
               n[model]++
@@ -90,7 +102,8 @@ compare() {
                   v = c[k]; if (cl && v > 1) v = 1
                   d = p[5 + ch] - v; if (d < 0) d = -d; if (d > w[model]) w[model] = d } }
             END { rows = 0
-                  for (model in w) { rows++; tol = model == "reference" ? tr : tm
+                  for (model in w) { rows++
+                      tol = model == "thin-film" ? tf : (model == "film-reference" ? tfr : (model == "reference" ? tr : tm))
                       printf "%s %s %.3g%s; ", mat, model, w[model], (w[model] <= tol && n[model] == 181) ? "" : " over" }
                   if (rows != want) printf "missing rows (%d of %d); ", rows, want }' "$t/$m.csv" "$t/$m.probe"
     done
@@ -133,3 +146,44 @@ echo "NOTE viewer: WebGL 1, largest |page - C runtime| (8-bit read-back): $worst
 echo "$worst1" | grep -q 'over\|missing' &&
     fail "WebGL 1 page and C runtime differ: $(echo "$worst1" | tr ';' '\n' | grep 'over\|missing' | head -5)" ||
     pass "WebGL 1: every model of every material and the reference within 4e-3 of the C runtime (the 8-bit read-back's 1/255)"
+
+# The thin film's page: its own scene, the slider's starting thickness (the
+# page's FILM line), curve --film for the film's columns.
+printf 'materials = au cu\nmodels = f82 thin-film\nfilm = 1.38\nfilm_thickness = 0 1000\n' >"$t/film.scene"
+if ! "$F" viewer "$t/film.scene" -o "$out/film" 2>"$t/err"; then
+    fail "fresnel viewer on a scene with a thin film: $(cat "$t/err")"
+    exit 0
+fi
+grep -q 'id="film"' "$out/film/index.html" && pass "the film's page has the thickness slider" ||
+    fail "no thickness slider in the film's page"
+abs=$(cd "$out/film" && pwd)/index.html
+browse "$t/logf" --dump-dom "file://$abs#test" >"$t/pagef"
+sed -n '/<pre id="test-result">/,/<\/pre>/p' "$t/pagef" | sed 's/.*<pre id="test-result">//; s/<\/pre>.*//' >"$t/domf"
+if grep -q '^DONE$' "$t/domf" && ! grep -q '^ERROR' "$t/domf" && ! grep -q CONSOLE "$t/logf"; then
+    pass "the film's page renders its probes with no console message"
+else
+    fail "the film's page: $(grep ERROR "$t/domf" | head -2) $(grep CONSOLE "$t/logf" | head -2)"
+    exit 0
+fi
+materials="au cu" models="f82 thin-film"
+film_d=$(sed -n 's/^FILM //p' "$t/domf")
+for m in $materials; do
+    "$F" curve --material "$m" --models f82 --samples 181 >"$t/$m.bare.csv" &&
+        "$F" curve --material "$m" --film "1.38:$film_d" --samples 181 >"$t/$m.film.csv" ||
+        fail "fresnel curve --material $m (--film 1.38:$film_d)"
+    sed '1s/unclipped_/film-reference_/g' "$t/$m.film.csv" | cut -d, -f6-11 | paste -d, "$t/$m.bare.csv" - >"$t/$m.csv"
+done
+worstf=$(compare "$t/domf" 1e-6 2e-6 0 5e-5 2e-3)
+echo "NOTE viewer: thin film at $film_d nm, largest |page - C runtime| per material and model: $worstf"
+echo "$worstf" | grep -q 'over\|missing' &&
+    fail "the film's page and the C runtime differ: $(echo "$worstf" | tr ';' '\n' | grep 'over\|missing' | head -5)" ||
+    pass "the thin film at $film_d nm and its reference, F82 and the reference, at 181 angles: within 5e-5, 2e-3, 1e-6 and 2e-6 of the C runtime"
+lit=$(grep '^LIT ' "$t/domf" | "$BUILD/tests/viewer_lit" "$t/film.scene")
+echo "NOTE viewer: thin film, lit probes: $lit"
+echo "$lit" | awk -v n=$((2 * 4 * 8 * 2 * 3)) '{ exit !($1 <= 1e-3 && $2 == n && $3 == 0) }' &&
+    pass "the film's lit pixels equal the host's shading within 1e-3 relative" || fail "the film's lit probes: $lit"
+grep '^SHOT ' "$t/domf" | while read -r tag name data; do
+    printf '%s' "${data#data:image/png;base64,}" | base64 -d >"$out/film-$name.png" 2>/dev/null
+done
+ls "$out"/film-*thin-film*.png >/dev/null 2>&1 && pass "a screenshot of the thin film in $out/" ||
+    fail "no screenshot of the thin film"

@@ -4,7 +4,7 @@
 # make check: no (Vulkan, lavapipe)
 # start: early (lavapipe compiles every table)
 # The shader ports in a real Vulkan pipeline (ports/vulkan/): for the default
-# scene and two scenes with every model and every LUT kind, `fresnel gen
+# scene, two scenes with every model and every LUT kind and one with the thin film, `fresnel gen
 # --glsl` (GLSL 4.50) and `fresnel gen --hlsl` after their ports, compiled to
 # SPIR-V by glslangValidator, checked by spirv-val and run on Mesa's
 # lavapipe by tests/vulkan_test.c (built by make test-bins), against the C
@@ -53,7 +53,7 @@ fi
 # Leak detection is off as in tests/test_glsl.sh: in the sanitizer pass the
 # one leak LeakSanitizer reports is 128 bytes allocated inside libubsan
 # itself (a realloc in libubsan.so) while the driver runs, not by the host.
-for manifest in data/scenes/default.scene tests/scenes/vk_models.scene tests/scenes/vk_uniform.scene; do
+for manifest in data/scenes/default.scene tests/scenes/vk_models.scene tests/scenes/vk_uniform.scene tests/scenes/vk_film.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
     if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$out/$ident.glsl" 2>"$out/gen.log" ||
         ! "$BUILD/fresnel" gen "$manifest" --hlsl -o "$out/$ident.hlsl" 2>>"$out/gen.log"; then
@@ -102,7 +102,8 @@ for manifest in data/scenes/*.scene; do
         status=1
         continue
     fi
-    all=$(sed -n "s/^float3 \(fresnel_${ident}_[a-z0-9_]*_rgb\)(float c)$/\1(c)/p" "$out/scene_$ident.hlsl" | paste -sd+)
+    all=$(sed -n -e "s/^float3 \(fresnel_${ident}_[a-z0-9_]*_rgb\)(float c)$/\1(c)/p" \
+        -e "s/^float3 \(fresnel_${ident}_[a-z0-9_]*_rgb\)(float c, float d_nm)$/\1(c, 300.0)/p" "$out/scene_$ident.hlsl" | paste -sd+)
     for mp in min16float float; do
         f="$out/scene_${ident}_$mp.hlsl"
         { echo "#define FRESNEL_MP $mp"

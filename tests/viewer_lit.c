@@ -1,7 +1,9 @@
 /* The viewer's lit probes (ports/webgl/viewer.html, test hook) recomputed
  * on the host: the same camera, sphere and plate, sky, three lights, GGX or
  * normalised Blinn-Phong, in double, with the Fresnel term from the C
- * runtime (binary32, the scene's constants) or the page's reference table.
+ * runtime (binary32, the scene's constants; the thin film at the page's
+ * starting thickness) or the page's reference tables (the bare material's,
+ * the film's).
  * Reads the page's "LIT material model dist u v r g b" lines on stdin;
  * prints, for tests/test_viewer.sh, the largest relative difference
  * |page - host| / max(|host|, 0.01) and how many values were compared.
@@ -37,23 +39,28 @@ static vec3 cross(vec3 a, vec3 b) { return v3(a.y * b.z - a.z * b.y, a.z * b.x -
 static vec3 mix(vec3 a, vec3 b, double t) { return add(scale(a, 1.0 - t), scale(b, t)); }
 static double clampd(double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); }
 
-/* What the page's fresnel_of evaluates for one row. */
+/* What the page's fresnel_of evaluates for one row: a model (the thin film
+ * at the page's starting thickness d_nm) or a reference table of n nodes. */
 typedef struct row {
     const scene_model *model; /* NULL: the reference table */
-    const double *ref; /* VIEWER_REF_NODES x 3 */
+    const double *ref;        /* n x 3 */
+    int n;
+    double d_nm;
 } row;
 
 static vec3 fresnel(const row *r, double c)
 {
     if (r->model) {
-        float v[3];
-        scene_model_eval(r->model, (float)c, v);
-        return v3(v[0], v[1], v[2]);
+        model_rgb q = scene_model_rgb(r->model);
+        fresnel_rgb v;
+        q.d_nm = r->d_nm;
+        v = q.def->rgb_f32(&q, (float)c);
+        return v3(v.r, v.g, v.b);
     } else {
-        double x = sqrt(clampd(c, 0.0, 1.0)) * (VIEWER_REF_NODES - 1), t;
+        double x = sqrt(clampd(c, 0.0, 1.0)) * (r->n - 1), t;
         int i = (int)x;
-        if (i > VIEWER_REF_NODES - 2)
-            i = VIEWER_REF_NODES - 2;
+        if (i > r->n - 2)
+            i = r->n - 2;
         t = x - i;
         return mix(v3(r->ref[3 * i], r->ref[3 * i + 1], r->ref[3 * i + 2]),
                    v3(r->ref[3 * i + 3], r->ref[3 * i + 4], r->ref[3 * i + 5]), t);
@@ -142,14 +149,16 @@ int main(int argc, char **argv)
 {
     emit_loaded l;
     char line[512], mat[64], model[64];
-    double worst = 0.0, *refs;
+    double worst = 0.0, *refs, *film_refs, d0;
     int count = 0, bad = 0, i, k;
     scene_model *models;
     if (argc != 2 || emit_load(argv[1], NULL, 1, &l))
         return 2;
+    d0 = viewer_film_d(l.sc, VIEWER_FILM_START);
     models = calloc((size_t)(l.sc->material_count * l.sc->model_count), sizeof *models);
     refs = malloc((size_t)l.sc->material_count * VIEWER_REF_NODES * 3 * sizeof *refs);
-    if (!models || !refs)
+    film_refs = malloc((size_t)l.sc->material_count * VIEWER_FILM_REF_NODES * 3 * sizeof *film_refs);
+    if (!models || !refs || !film_refs)
         return 2;
     for (i = 0; i < l.sc->material_count; i++) {
         for (k = 0; k < l.sc->model_count; k++)
@@ -159,6 +168,15 @@ int main(int argc, char **argv)
         for (k = 0; k < VIEWER_REF_NODES; k++) {
             double x = (double)k / (VIEWER_REF_NODES - 1);
             ground_truth(l.spectra[i], &l.g->cm, &l.g->cs, l.params[i].n1, x * x, refs + (i * VIEWER_REF_NODES + k) * 3);
+        }
+        for (k = 0; l.params[i].film_n > 0.0 && k < VIEWER_FILM_REF_NODES; k++) { /* the film's, at d0 */
+            double x = (double)k / (VIEWER_FILM_REF_NODES - 1);
+            film_stack f;
+            f.n1 = l.params[i].n1;
+            f.film = NULL;
+            f.film_n = l.params[i].film_n;
+            f.substrate = l.spectra[i];
+            film_truth(&f, &l.g->cm, &l.g->cs, x * x, d0, film_refs + (i * VIEWER_FILM_REF_NODES + k) * 3);
         }
     }
     while (fgets(line, sizeof line, stdin)) {
@@ -175,12 +193,19 @@ int main(int argc, char **argv)
         for (k = 0; k < l.sc->model_count; k++)
             if (!strcmp(l.sc->models[k].name, model))
                 mo = k;
-        if (mi < 0 || (mo < 0 && strcmp(model, "reference"))) {
+        if (mi < 0 || (mo < 0 && strcmp(model, "reference") && strcmp(model, "film-reference"))) {
             bad++;
             continue;
         }
         r.model = mo < 0 ? NULL : &models[mi * l.sc->model_count + mo];
-        r.ref = refs + mi * VIEWER_REF_NODES * 3;
+        r.d_nm = d0;
+        if (!strcmp(model, "film-reference")) {
+            r.ref = film_refs + mi * VIEWER_FILM_REF_NODES * 3;
+            r.n = VIEWER_FILM_REF_NODES;
+        } else {
+            r.ref = refs + mi * VIEWER_REF_NODES * 3;
+            r.n = VIEWER_REF_NODES;
+        }
         e = shade(&r, dist, u, w);
         worst = fmax(worst, fabs(got[0] - e.x) / fmax(fabs(e.x), 0.01));
         worst = fmax(worst, fabs(got[1] - e.y) / fmax(fabs(e.y), 0.01));
@@ -192,6 +217,7 @@ int main(int argc, char **argv)
         scene_model_free(&models[i]);
     free(models);
     free(refs);
+    free(film_refs);
     emit_loaded_free(&l);
     return 0;
 }

@@ -6,7 +6,8 @@
  * functions) are compiled to SPIR-V by glslangValidator (GLSL front end,
  * and HLSL front end with -D -e main -Iports/hlsl), checked by
  * spirv-val, and run on every cosine c = i/1024, i = -1..1025 (both ends
- * just outside [0, 1]) for every material and model of the scene; each
+ * just outside [0, 1]) for every material and model of the scene (the thin
+ * film at thicknesses 0-1195 nm scattered over the cosines); each
  * result is compared with what the C runtime computes from the same
  * manifest (gen/scene/scene_eval.c, the evaluation of the C header).
  *
@@ -89,9 +90,16 @@ static char *read_file(const char *path)
     return b;
 }
 
+/* The thin film's thickness at invocation i, the same binary32 value in the
+ * shader (GLSL and HLSL both read FILM_D) and here: 0-1195 nm, scattered
+ * over the cosines (every product exact). */
+#define FILM_D "float((i * 157) % 256) * 4.6875"
+static float film_d(int i) { return (float)((i * 157) % 256) * 4.6875f; }
+
 /* The shader's main(): invocation i evaluates at cosine fr_c[i] the model
  * and material that specialisation constants 0 and 1 select (so each
- * pipeline compiles one function), and writes the three channels. */
+ * pipeline compiles one function), and writes the three channels; the
+ * thin film at thickness FILM_D. */
 static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, int m)
 {
     int i;
@@ -114,8 +122,8 @@ static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, in
     fprintf(f, "    if (i >= %d)\n        return;\n    c = fr_c[i];\n", NCOS);
     snprintf(id, sizeof id, "%s", sc->models[m].ident);
     for (i = 0; i < sc->material_count; i++)
-        fprintf(f, "    %sif (fr_material == %d) r = fresnel_%s_%s_%s_rgb(c);\n", i ? "else " : "", i, ident,
-                sc->materials[i], id);
+        fprintf(f, "    %sif (fr_material == %d) r = fresnel_%s_%s_%s_rgb(c%s);\n", i ? "else " : "", i, ident,
+                sc->materials[i], id, sc->models[m].row->offered & MODEL_FILM ? ", " FILM_D : "");
     fprintf(f, "    fr_out[3 * i] = r.x;\n    fr_out[3 * i + 1] = r.y;\n    fr_out[3 * i + 2] = r.z;\n}\n");
 }
 
@@ -336,8 +344,14 @@ int main(int argc, char **argv)
             scene_model *sm = &models[i * sc.model_count + m];
             if (scene_model_prepare(&sc.models[m], sc.spacing, &spectra[i], &gc, &params[i], sm))
                 return 1;
-            for (k = 0; k < NCOS; k++)
-                scene_model_eval(sm, cosines[k], ref + (size_t)m * nout + 3 * ((size_t)i * NCOS + k));
+            for (k = 0; k < NCOS; k++) {
+                float *r = ref + (size_t)m * nout + 3 * ((size_t)i * NCOS + k);
+                model_rgb q = scene_model_rgb(sm);
+                fresnel_rgb v;
+                q.d_nm = film_d(k); /* read by the thin film only */
+                v = q.def->rgb_f32(&q, cosines[k]);
+                r[0] = v.r, r[1] = v.g, r[2] = v.b;
+            }
         }
     }
     snprintf(path, sizeof path, "ports/glsl/prelude_450.glsl");

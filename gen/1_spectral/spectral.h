@@ -139,6 +139,7 @@ typedef struct material_source {
     const char *id;
     const char *path;
     nk_format format;
+    double film_n; /* a thin film of this real index on the material (the thin-film model); 0: none */
 } material_source;
 /* Load and resample a material; info gets the data pack's row or, for a
  * file, id, the file's name and provenance, and a kind from its k. 0 or

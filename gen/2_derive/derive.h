@@ -41,6 +41,7 @@ typedef struct material_params {
     material_info info;
     double measured_lo, measured_hi; /* nm, within 360-830; outside, end values held */
     double n1, sigma;
+    double film_n;              /* the thin film's index on it (material_source); 0: none */
     double nm[3];               /* dominant wavelengths of the space's primaries */
     double f0_unclamped[3];     /* ground truth at normal incidence */
     double f0[3], f82[3];       /* ground truth under the gamut policy at c = 1 and c = 1/7 */

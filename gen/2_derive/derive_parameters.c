@@ -87,6 +87,7 @@ int derive_parameters(const gen_context *g, const material_source *m, double sig
     p->measured_hi = s->measured_hi;
     p->n1 = n1;
     p->sigma = sigma;
+    p->film_n = m->film_n;
     memcpy(p->nm, g->nm, sizeof p->nm);
 
     gamut_map_build(s, g, p);

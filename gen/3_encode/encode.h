@@ -8,8 +8,10 @@
 #include <stdint.h>
 
 #include "2_derive/derive.h"
+#include "3_encode/film_encode.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
+#include "fresnel_film.h"
 #include "fresnel_fixed.h"
 
 /* LUT_GRAZING: nodes uniform in sqrt(c); LUT_UNIFORM: in c; LUT_GRAZING_PL:
@@ -98,5 +100,24 @@ void encoded_lut_free(encoded_lut *t);
 /* The Q1.15 codes of curve nodes (round(v 32768) clamped to [0, 65535]),
  * for tables the report builds to compare encodings. */
 void encode_curve_q15(const double *nodes, int count, uint16_t *codes);
+
+/* A material's thin film (fresnel_film.h) in every number type: the
+ * observer's poles and the material's table fitted (2_derive/film_fit.h)
+ * for a film of index p->film_n on the material in p->n1, then encoded
+ * (film_encode.h). model is the fit in double; model_f32 the double model of
+ * the binary32 table (the reference of the binary32 runtime's bound). */
+typedef struct encoded_film {
+    double n_film;
+    film_model model, model_f32;
+    fresnel_film f32;
+    fresnel_film_q15 q15;
+    int q15_ok; /* 0 where the Q1.15 layout holds no table of it (film_encode_q15) */
+#if FRESNEL_HAS_F16
+    fresnel_film_f16 f16;
+#endif
+} encoded_film;
+/* 0; -1 when p has no film (film_n 0) or the fit fails (a film outside the
+ * model's domain, out of memory). s: the material's spectrum. */
+int encode_film(const spectrum *s, const gen_context *g, const material_params *p, encoded_film *out);
 
 #endif

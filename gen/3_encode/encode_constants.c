@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "2_derive/film_fit.h"
 #include "3_encode/encode.h"
 #include "3_encode/fixed_params.h"
 
@@ -192,5 +193,27 @@ int encode_table(const spectrum *s, const gen_context *g, const material_params 
     }
     for (i = 0; i < count; i++)
         residual_code(t->nodes[i], t->frac, &t->q15_res[i]);
+    return 0;
+}
+
+int encode_film(const spectrum *s, const gen_context *g, const material_params *p, encoded_film *out)
+{
+    film_stack f;
+    memset(out, 0, sizeof *out);
+    if (!(p->film_n > 0.0))
+        return -1;
+    out->n_film = p->film_n;
+    f.n1 = p->n1;
+    f.film = NULL;
+    f.film_n = p->film_n;
+    f.substrate = s;
+    if (film_fit_poles(&g->cm, &g->cs, &out->model, NULL) || film_fit_material(&f, &g->cm, &g->cs, &out->model))
+        return -1;
+    film_encode_f32(&out->model, &out->f32);
+    film_decode_f32(&out->f32, &out->model_f32);
+    out->q15_ok = film_encode_q15(&out->model, &out->q15) == 0;
+#if FRESNEL_HAS_F16
+    film_encode_f16(&out->model, &out->f16);
+#endif
     return 0;
 }

@@ -17,6 +17,7 @@ typedef struct emit_input {
     const material_params *params; /* one per scene material, in order */
     spectrum *const *spectra;      /* the same */
     const encoded_material *enc;   /* the same, encoded: every constant the back ends write */
+    const encoded_film *films;     /* the same: each material's film; NULL for a scene without thin-film */
     int glsl; /* EMIT_C: C header for include/fresnel.h; EMIT_GLSL, EMIT_HLSL: shader source */
 } emit_input;
 
@@ -35,6 +36,7 @@ typedef struct emit_loaded {
     material_params *params;
     spectrum **spectra;
     encoded_material *enc;
+    encoded_film *films;
     char name[SCENE_PREFIX_SIZE];
     emit_input in;
 } emit_loaded;
@@ -89,5 +91,9 @@ typedef int (*emit_type_fn)(FILE *f, const emit_input *in, int material, const c
 int emit_f32_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
 int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
 int emit_f16_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
+/* Material i's thin-film table in number type `type` (emit_film.c), where
+ * the scene has the thin-film model: 0, or CLI_BAD_INPUT after a message (a
+ * table the type's layout cannot hold). */
+int emit_film(FILE *f, const emit_input *in, int material, const char *prefix, number_type_id type);
 
 #endif

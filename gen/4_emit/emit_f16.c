@@ -87,8 +87,9 @@ int emit_f16_material(FILE *f, const emit_input *in, int mi, const char *prefix,
     for (m = 0; m < in->sc->model_count; m++)
         if (luts[m].n)
             emit_lut_f16(f, in, prefix, &in->sc->models[m], &luts[m]);
+    m = emit_film(f, in, mi, prefix, TYPE_F16);
     fputs("#endif\n", f);
-    return 0;
+    return m;
 #else
     (void)f, (void)in, (void)mi, (void)prefix, (void)luts;
     return 0; /* never asked: the registry's f16 row is not available here */

@@ -293,5 +293,5 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
     for (m = 0; m < sc->model_count && !o.bad; m++)
         if (luts[m].n)
             emit_lut_q15(&o, prefix, &sc->models[m], &luts[m]);
-    return o.bad ? CLI_BAD_INPUT : 0;
+    return o.bad ? CLI_BAD_INPUT : emit_film(f, in, mi, prefix, TYPE_Q15);
 }

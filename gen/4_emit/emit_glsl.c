@@ -15,6 +15,7 @@
 #include "common/cli.h"
 
 #define WHERE "fresnel gen"
+#define FILM_FLOATS ((int)(sizeof(fresnel_film) / sizeof(float))) /* FRESNEL_FILM_FLOATS of ports/glsl/fresnel.glsl */
 
 /* A binary32 literal that reads back to the same float, without suffix
  * (GLSL ES 1.00 has none; HLSL reads it as float): 9 significant digits,
@@ -229,12 +230,42 @@ void emit_shader_model_expr(FILE *f, const char *prefix, const struct model *row
             fputc(*t, f);
 }
 
+typedef char film_table_floats[sizeof(fresnel_film) % sizeof(float) == 0 ? 1 : -1];
+
+void emit_shader_film_table(FILE *f, const emit_input *in, int i, const char *prefix, const scene_entry *e,
+                            const char *decl, const char *open, const char *close)
+{
+    const float *v = &in->films[i].f32.freq[0];
+    int k;
+    fprintf(f, "/* %s: a film of index %g on %s, the binary32 table of fresnel_film.h as %d floats in its\n"
+               " * order (fresnel_film_rgb in ports/glsl/fresnel.glsl). */\n%s %s_%s[%d] = %s",
+            e->name, in->films[i].n_film, in->params[i].info.id, FILM_FLOATS, decl, prefix, e->ident, FILM_FLOATS,
+            open);
+    for (k = 0; k < FILM_FLOATS; k++) {
+        fputs(k % 6 == 0 ? "\n    " : " ", f);
+        emit_shader_float(f, v[k]);
+        if (k + 1 < FILM_FLOATS)
+            fputc(',', f);
+    }
+    fprintf(f, "\n%s;\n", close);
+}
+
+const char *emit_shader_more_params(const scene_entry *e, const char *float_type)
+{
+    static char buf[64];
+    if (!(e->row->offered & MODEL_FILM))
+        return "";
+    snprintf(buf, sizeof buf, ", %s d_nm", float_type);
+    return buf;
+}
+
 /* vec3 <prefix>_<model>_rgb(c): the model for this material, as
  * gen/scene/scene_eval.c evaluates it with the C runtime. */
 static void emit_model_function(FILE *f, const char *scene_prefix, const char *prefix, const scene_entry *e,
                                 const glsl_lut *u, lut_spacing spacing)
 {
-    fprintf(f, "vec3 %s_%s_rgb(FRESNEL_HIGHP float c)\n{\n", prefix, e->ident);
+    fprintf(f, "vec3 %s_%s_rgb(FRESNEL_HIGHP float c%s)\n{\n", prefix, e->ident,
+            emit_shader_more_params(e, "FRESNEL_HIGHP float"));
     if (u) {
         const char *kind = u->form == LUT_CUBIC ? "cubic_" : (u->form == LUT_RESIDUAL ? "residual_" : "");
         const char *lin = spacing == LUT_UNIFORM ? "linear_" : "";
@@ -248,9 +279,9 @@ static void emit_model_function(FILE *f, const char *scene_prefix, const char *p
                 kind, f0, scene_prefix, prefix, u->name, u->n);
         return;
     }
-    fputs("    return ", f);
+    fputs(e->row->offered & MODEL_FILM ? "    " : "    return ", f); /* the film's is a body */
     emit_shader_model_expr(f, prefix, e->row);
-    fputs(";\n}\n", f);
+    fputs(e->row->offered & MODEL_FILM ? "\n}\n" : ";\n}\n", f);
 }
 
 static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, const char *guard)
@@ -372,8 +403,18 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
             if (u)
                 emit_lut_data(f, scene_prefix, prefix, u, &l, spacing);
         }
-        for (m = 0; m < sc->model_count; m++)
-            emit_model_function(f, scene_prefix, prefix, &sc->models[m], layout_find(&l, i, m), spacing);
+        for (m = 0; m < sc->model_count; m++) {
+            const scene_entry *e = &sc->models[m];
+            if (e->row->offered & MODEL_FILM) { /* const arrays only: none in GLSL ES 1.00 */
+                char open[32];
+                snprintf(open, sizeof open, "float[%d](", FILM_FLOATS);
+                fputs("#if FRESNEL_LUT_ARRAYS\n", f);
+                emit_shader_film_table(f, in, i, prefix, e, "const FRESNEL_HIGHP float", open, ")");
+            }
+            emit_model_function(f, scene_prefix, prefix, e, layout_find(&l, i, m), spacing);
+            if (e->row->offered & MODEL_FILM)
+                fputs("#endif\n", f);
+        }
     }
     fprintf(f, "\n#endif\n");
     status = tex ? emit_texture(tex, in, &l, guard) : 0;

@@ -37,6 +37,16 @@ void emit_shader_model_expr(FILE *f, const char *prefix, const struct model *row
 void emit_shader_lut_array_call(FILE *f, const char *prefix, const char *table, int n, lut_form form,
                                 lut_spacing spacing);
 
+/* The thin film's table of material i (model e) as a float array of
+ * FRESNEL_FILM_FLOATS values, the C struct's order: decl and the
+ * initialiser's opening and closing ("const FRESNEL_HIGHP float", "float[1744](", ")"
+ * for GLSL; "static const float", "{", "}" for HLSL); and the model
+ * function's parameters after c (", FRESNEL_HIGHP float d_nm" for the film
+ * in GLSL, "" for the other models). */
+void emit_shader_film_table(FILE *f, const emit_input *in, int i, const char *prefix, const scene_entry *e,
+                            const char *decl, const char *open, const char *close);
+const char *emit_shader_more_params(const scene_entry *e, const char *float_type);
+
 /* `fresnel gen --hlsl`: the scene as HLSL for ports/hlsl/fresnel.hlsl
  * (emit_hlsl.c). 0, or CLI_BAD_INPUT after a message. */
 int emit_hlsl(FILE *f, const emit_input *in);

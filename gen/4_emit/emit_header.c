@@ -59,7 +59,7 @@ int emit_f32_material(FILE *f, const emit_input *in, int mi, const char *prefix,
     for (m = 0; m < in->sc->model_count; m++)
         if (luts[m].n)
             emit_lut(f, in, prefix, &in->sc->models[m], &luts[m]);
-    return 0;
+    return emit_film(f, in, mi, prefix, TYPE_F32);
 }
 
 /* Every derived constant the header may hold as a float must be a finite
@@ -208,6 +208,8 @@ int emit_header(FILE *f, const emit_input *in)
     for (k = 0; k < NUMBER_TYPES; k++)
         if (scene_has_type(sc, emit_types[k].type))
             include_guarded(f, number_types[emit_types[k].type].header);
+    if (in->films)
+        include_guarded(f, "fresnel_film.h");
     fputc('\n', f);
     fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
                "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n");

@@ -71,12 +71,15 @@ int emit_hlsl(FILE *f, const emit_input *in)
             const scene_entry *e = &sc->models[m];
             if (e->lut_n && hlsl_lut(f, in, i, e, prefix))
                 return CLI_BAD_INPUT;
-            fprintf(f, "float3 %s_%s_rgb(float c)\n{\n    return ", prefix, e->ident);
+            if (e->row->offered & MODEL_FILM)
+                emit_shader_film_table(f, in, i, prefix, e, "static const float", "{", "}");
+            fprintf(f, "float3 %s_%s_rgb(float c%s)\n{\n    %s", prefix, e->ident, emit_shader_more_params(e, "float"),
+                    e->row->offered & MODEL_FILM ? "" : "return "); /* the film's is a body */
             if (e->lut_n)
                 emit_shader_lut_array_call(f, prefix, e->ident, e->lut_n, e->row->form, sc->spacing);
             else
                 emit_shader_model_expr(f, prefix, e->row);
-            fputs(";\n}\n", f);
+            fputs(e->row->offered & MODEL_FILM ? "\n}\n" : ";\n}\n", f);
         }
     }
     fprintf(f, "\n#endif\n");

@@ -21,6 +21,7 @@ void emit_loaded_free(emit_loaded *l)
             free(l->spectra[i]);
     free(l->spectra);
     free(l->enc);
+    free(l->films);
     free(l->params);
     free(l->g);
     free(l->sc);
@@ -74,6 +75,19 @@ int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loade
             goto done;
         encode_material(&l->params[i], &l->enc[i]);
     }
+    if (l->params[0].film_n > 0.0) { /* the scene has the thin-film model: every material has a film */
+        if (!(l->films = malloc((size_t)l->sc->material_count * sizeof *l->films))) {
+            status = cli_oom(WHERE);
+            goto done;
+        }
+        for (i = 0; i < l->sc->material_count; i++)
+            if (encode_film(l->spectra[i], l->g, &l->params[i], &l->films[i])) {
+                snprintf(where, sizeof where, "%s:%d", manifest, l->sc->material_line[i]);
+                status = cli_error(where, "%s: fitting the thin-film model of a %g film failed", l->sc->materials[i],
+                                   l->params[i].film_n);
+                goto done;
+            }
+    }
     l->in.sc = l->sc;
     l->in.name = l->name;
     l->in.manifest_name = strrchr(manifest, '/') ? strrchr(manifest, '/') + 1 : manifest;
@@ -82,6 +96,7 @@ int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loade
     l->in.params = l->params;
     l->in.spectra = l->spectra;
     l->in.enc = l->enc;
+    l->in.films = l->films;
     l->in.glsl = glsl;
 done:
     if (status)

@@ -66,6 +66,9 @@ const speed_target speed_targets[] = {
      "report's LUT table), so sqrt(c) stays: its exact root is the half of the call above the goal"},
     {"lut16-linear-q15-vs-schlick-q15", "lut16-linear-q15", "schlick-q15",
      "fresnel_lut_linear_u16_q15, 16 nodes, against fresnel_schlick_q15", {3.0, 3.0}, NULL},
+    {"film-vs-schlick-rgb", "film-f32", "schlick-rgb-f32",
+     "fresnel_film_rgb (a thin film: six poles, 53 interpolated table values, RGB) against fresnel_schlick_rgb",
+     {10.0, 10.0}, NULL},
 };
 const int speed_target_count = (int)(sizeof speed_targets / sizeof speed_targets[0]);
 

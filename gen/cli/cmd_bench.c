@@ -109,6 +109,7 @@ int cmd_bench(int argc, char **argv)
     source.id = material;
     source.path = nk_file;
     source.format = NK_FORMAT_AUTO;
+    source.film_n = 0.0;
     if (nk_file) {
         material_id_from_path(nk_file, nk_id);
         source.id = nk_id;

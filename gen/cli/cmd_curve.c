@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "common/cli.h"
+#include "common/reference.h"
 #include "cli/material_options.h"
 #include "scene/scene.h"
 #include "scene/scene_eval.h"
@@ -13,6 +14,23 @@
 #define WHERE "fresnel curve"
 #define MAX_MODELS 32
 
+
+/* --film N:D: 0, or -1 for anything but an index in [1, 4] and a thickness
+ * in [0, FRESNEL_FILM_D_MAX] nm. */
+static int parse_film(const char *val, double *n, double *d)
+{
+    const char *colon = strchr(val, ':');
+    char text[64];
+    size_t len = colon ? (size_t)(colon - val) : sizeof text;
+    if (len >= sizeof text)
+        return -1;
+    memcpy(text, val, len);
+    text[len] = '\0';
+    return cli_parse_double(text, n) || !(*n >= 1.0 && *n <= 4.0) || cli_parse_double(colon + 1, d) ||
+                   !(*d >= 0.0 && *d <= FRESNEL_FILM_D_MAX)
+               ? -1
+               : 0;
+}
 
 int cmd_curve(int argc, char **argv)
 {
@@ -25,10 +43,12 @@ int cmd_curve(int argc, char **argv)
     const char *model_list = model_curve_default;
     static const char *const options[] = {"--material", "--nk",      "--name",   "--format",      "--space",
                                           "--gamut",    "--sigma",    "--n1",      "--data",   "--samples",     "--models",
-                                          "--lut-spacing", "--type", "--help", NULL};
+                                          "--lut-spacing", "--type", "--film", "--help", NULL};
     const number_type *type = &number_types[TYPE_F32];
     const char *val;
-    int samples = 91, n_models = 0, i, r, status = 0;
+    int samples = 91, n_models = 0, i, r, status = 0, models_given = 0;
+    double film_d = 0.0;
+    film_stack film;
     lut_spacing spacing = LUT_GRAZING;
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
@@ -36,7 +56,8 @@ int cmd_curve(int argc, char **argv)
             int t;
             printf("usage: fresnel curve (--material ID | --nk FILE) [--space NAME] [--gamut map|clip|keep]\n"
                    "                     [--sigma S] [--samples N] [--models \"NAME ...\"]\n"
-                   "                     [--lut-spacing grazing|uniform] [--type T] [--n1 X] [--data DIR]\n\n"
+                   "                     [--lut-spacing grazing|uniform] [--type T] [--n1 X] [--data DIR]\n"
+                   "                     [--film N:D]\n\n"
                    "Prints CSV: theta_deg,cos,gt_r,gt_g,gt_b (the spectral ground truth under the\n"
                    "--gamut policy, which every model is derived from), unclipped_r,_g,_b (the\n"
                    "spectral ground truth itself, outside [0,1] where the colour leaves the space's\n"
@@ -44,8 +65,13 @@ int cmd_curve(int argc, char **argv)
                    "number type T (default f32) on the constants and tables `fresnel gen` writes\n"
                    "for it (a Q1.15 result as code / 32768). N rows (default 91), theta uniform\n"
                    "from 0 to 90 degrees.\n"
+                   "With --film N:D, a film of index N (n1..4) and thickness D nm (0..5000) lies\n"
+                   "on the material: gt and unclipped are the film's spectral truth (gt clipped\n"
+                   "per channel, the thin-film model's policy), and the default model is thin-film,\n"
+                   "at thickness D; any other model named is the bare material's.\n"
                    "Default models: %s\n\n%s"
                    "  --samples N     rows, 2..100000\n"
+                   "  --film N:D      a thin film: index N, thickness D nm\n"
                    "  --type T        one of",
                    model_curve_default, material_options_help);
             for (t = 0; t < number_types_available; t++)
@@ -66,6 +92,13 @@ int cmd_curve(int argc, char **argv)
                     return cli_error(WHERE, "--samples expects an integer 2..100000, got '%s'", val);
             } else if (!strcmp(argv[i - 1], "--models")) {
                 model_list = val;
+                models_given = 1;
+            } else if (!strcmp(argv[i - 1], "--film")) {
+                if (parse_film(val, &o.film_n, &film_d))
+                    return cli_error(WHERE,
+                                     "--film expects N:D, a film index N in [1, 4] and a thickness D of nm in "
+                                     "[0, %g], got '%s'",
+                                     FRESNEL_FILM_D_MAX, val);
             } else if (!strcmp(argv[i - 1], "--type")) {
                 if (type_option(WHERE, val, &type))
                     return CLI_BAD_INPUT;
@@ -82,8 +115,21 @@ int cmd_curve(int argc, char **argv)
         status = cli_oom(WHERE);
         goto done;
     }
+    if (o.film_n > 0.0 && o.film_n < o.n1) {
+        status = cli_error(WHERE,
+                           "--film %g is less dense than --n1 %g: total reflection inside the film is outside the "
+                           "thin-film model's domain (include/fresnel_film.h)",
+                           o.film_n, o.n1);
+        goto done;
+    }
+    if (o.film_n > 0.0 && !models_given)
+        model_list = model_curve_film;
     if ((status = material_options_derive(WHERE, &o, g, s, &p)))
         goto done;
+    film.n1 = o.n1;
+    film.film = NULL;
+    film.film_n = o.film_n;
+    film.substrate = s;
     strcpy(names, model_list);
     for (tok = strtok(names, " \t,"); tok; tok = strtok(NULL, " \t,")) {
         if (n_models == MAX_MODELS) {
@@ -102,12 +148,19 @@ int cmd_curve(int argc, char **argv)
         double theta = 90.0 * r / (samples - 1), c = r == samples - 1 ? 0.0 : cos(theta * (3.14159265358979323846 / 180.0));
         double gt[3], raw[3];
         int m;
-        ground_truth_gamut(s, g, &p, c, gt);
-        ground_truth(s, &g->cm, &g->cs, p.n1, c, raw);
+        if (o.film_n > 0.0) {
+            film_truth(&film, &g->cm, &g->cs, c, film_d, raw);
+            for (m = 0; m < 3; m++)
+                gt[m] = ref_clamp(raw[m], 0.0, 1.0);
+        } else {
+            ground_truth_gamut(s, g, &p, c, gt);
+            ground_truth(s, &g->cm, &g->cs, p.n1, c, raw);
+        }
         printf("%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", theta, c, gt[0], gt[1], gt[2], raw[0], raw[1], raw[2]);
         for (m = 0; m < n_models; m++) {
             model_rgb q = scene_model_rgb(&models[m]);
             double v[3];
+            q.d_nm = film_d;
             type->eval(&q, c, v);
             printf(",%.9g,%.9g,%.9g", v[0], v[1], v[2]);
         }

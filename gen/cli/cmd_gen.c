@@ -67,9 +67,13 @@ static void gen_usage(FILE *out)
             fprintf(out, " %s", targets[i]);
     }
     fprintf(out, "\n"
+                 "  film = 1.38               with thin-film: the film's index on every material (n1..4)\n"
+                 "  film ID = 2.1             material ID's own film\n"
+                 "  film_thickness = 100 400  nm, optional (default 0 %g: set at run time)\n"
                  "  name = metals             the scene's part of every identifier (default: from\n"
                  "                            SCENE's file name)\n"
-                 "The GLSL and HLSL output does not depend on types.\n");
+                 "The GLSL and HLSL output does not depend on types.\n",
+            FRESNEL_FILM_D_MAX);
 }
 
 int cmd_gen(int argc, char **argv)

@@ -36,6 +36,7 @@ void material_options_init(material_options *o)
     o->sigma = 25.0;
     o->n1 = 1.0;
     o->gamut = GAMUT_MAP;
+    o->film_n = 0.0;
 }
 
 int type_option(const char *where, const char *val, const number_type **out)
@@ -115,6 +116,7 @@ int material_options_derive(const char *where, material_options *o, gen_context 
     m.id = o->material;
     m.path = o->nk;
     m.format = o->format;
+    m.film_n = o->film_n;
     if (o->nk) {
         if (o->name)
             snprintf(o->id, sizeof o->id, "%s", o->name);

@@ -16,6 +16,7 @@ typedef struct material_options {
     const char *data;
     double sigma, n1;
     gamut_policy gamut; /* --gamut NAME */
+    double film_n;      /* a thin film on the material (curve's --film); 0: none */
 } material_options;
 
 void material_options_init(material_options *o);

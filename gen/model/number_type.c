@@ -45,22 +45,7 @@ static void eval_f16(const model_rgb *q, double c, double rgb[3])
     for (ch = 0; ch < 3; ch++)
         rgb[ch] = q->def->ch_f16(q, ch, c);
 }
-static double loop_f16(const void *x, const float *c, const int32_t *cq, int n)
-{
-    const model_rgb *q = x;
-    double sum = 0.0;
-    int i, ch;
-    (void)cq;
-    for (i = 0; i < n; i++)
-        for (ch = 0; ch < 3; ch++)
-            sum += q->def->ch_f16(q, ch, c[i]);
-    return sum;
-}
-static model_batch batch_f16(const model *row)
-{
-    (void)row;
-    return loop_f16;
-}
+static model_batch batch_f16(const model *row) { return row->batch_f16; }
 static int has_f16(const model *row) { return (row->offered & MODEL_EVAL) && row->f16 != NULL; }
 static double params_f16(const model *row, const model_params *p, double c) { return row->f16(p, c); }
 #define F16_EVAL eval_f16, batch_f16, has_f16, model_params_round_f16, params_f16

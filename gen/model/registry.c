@@ -2,6 +2,7 @@
 #include "model/registry.h"
 
 #include <ctype.h>
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -10,7 +11,9 @@
 #include "3_encode/fixed_params.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
+#include "fresnel_film.h"
 #include "common/reference.h"
+#include "common/reference_film.h"
 
 #define F(x) ((float)(x))
 
@@ -283,8 +286,32 @@ static double rr_lut_lin_res(const model_rgb *q, int ch, double c)
 }
 static double rr_lut_cubic(const model_rgb *q, int ch, double c) { return ref_nodes(q, ch, sqrt(c), 1); }
 
+/* The thin film: the material's table at the thickness model_rgb holds;
+ * the reference evaluates the binary32 table in double. */
+#define FILM (q->film)
+static fresnel_rgb r_film(const model_rgb *q, float c) { return fresnel_film_rgb(&FILM->f32, c, (float)q->d_nm); }
+/* d as Q16.16 nm, held to int32_t (the runtime clamps it to its range) */
+static fresnel_rgb_q15 rq_film(const model_rgb *q, int32_t c)
+{
+    static const fresnel_rgb_q15 none = {0, 0, 0};
+    double d = floor(q->d_nm * 65536.0 + 0.5);
+    int32_t dq = d >= 2147483647.0 ? INT32_MAX : (d > 0.0 ? (int32_t)d : 0);
+    return FILM->q15_ok ? fresnel_film_q15_rgb(&FILM->q15, c, dq) : none;
+}
+static double rr_film(const model_rgb *q, int ch, double c)
+{
+    double rgb[3];
+    ref_film_model(&FILM->model_f32, c, q->d_nm, 1, rgb);
+    return rgb[ch];
+}
+
 #if FRESNEL_HAS_F16
 /* binary16: scalar functions, channel by channel as a shader would */
+static double rh_film(const model_rgb *q, int ch, double c)
+{
+    fresnel_rgb_f16 v = fresnel_film_f16_rgb(&FILM->f16, H(c), H(q->d_nm));
+    return (double)(ch == 0 ? v.r : (ch == 1 ? v.g : v.b));
+}
 #define HC(fn_args) return (double)(fn_args)
 static double rh_schlick(const model_rgb *q, int ch, double c) { HC(fresnel_schlick_f16(M->h_f0[ch], H(c))); }
 static double rh_lsk(const model_rgb *q, int ch, double c) { HC(fresnel_lsk_f16(M->h_eta[E][ch], M->h_kappa[E][ch], H(c))); }
@@ -369,14 +396,54 @@ BATCHES(lut_lin)
 BATCHES(lut_res)
 BATCHES(lut_lin_res)
 BATCHES(lut_cubic)
+BATCHES(film)
 
 #if FRESNEL_HAS_F16
-#define SCENE(id) r_##id, rq_##id, rh_##id, rr_##id, batch_f32_##id, batch_q15_##id
+/* binary16: the scalar function channel by channel, as a shader would; the
+ * film's runtime gives all three channels in one call */
+#define BATCH_F16(id)                                                                                  \
+    static double batch_f16_##id(const void *x, const float *c, const int32_t *cq, int n)              \
+    {                                                                                                  \
+        const model_rgb *q = x;                                                                        \
+        double sum = 0.0;                                                                              \
+        int i, ch;                                                                                     \
+        (void)cq;                                                                                      \
+        for (i = 0; i < n; i++)                                                                        \
+            for (ch = 0; ch < 3; ch++)                                                                 \
+                sum += rh_##id(q, ch, c[i]);                                                           \
+        return sum;                                                                                    \
+    }
+BATCH_F16(schlick)
+BATCH_F16(lsk)
+BATCH_F16(lsk_comp)
+BATCH_F16(f82)
+BATCH_F16(gulbrandsen)
+BATCH_F16(cook_torrance)
+BATCH_F16(conductor)
+BATCH_F16(approx)
+BATCH_F16(lut)
+BATCH_F16(lut_lin)
+BATCH_F16(lut_res)
+BATCH_F16(lut_lin_res)
+BATCH_F16(lut_cubic)
+static double batch_f16_film(const void *x, const float *c, const int32_t *cq, int n)
+{
+    const model_rgb *q = x;
+    double sum = 0.0;
+    int i;
+    (void)cq;
+    for (i = 0; i < n; i++) {
+        fresnel_rgb_f16 v = fresnel_film_f16_rgb(&FILM->f16, H(c[i]), H(q->d_nm));
+        sum += (double)v.r + (double)v.g + (double)v.b;
+    }
+    return sum;
+}
+#define SCENE(id) r_##id, rq_##id, rh_##id, rr_##id, batch_f32_##id, batch_q15_##id, batch_f16_##id
 #else
-#define SCENE(id) r_##id, rq_##id, NULL, rr_##id, batch_f32_##id, batch_q15_##id
+#define SCENE(id) r_##id, rq_##id, NULL, rr_##id, batch_f32_##id, batch_q15_##id, NULL
 #endif
 /* Rows offered in eval only carry no scene evaluators. */
-#define NO_SCENE 0, 0, ETA_FIT, LUT_PLAIN, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL
+#define NO_SCENE 0, 0, ETA_FIT, LUT_PLAIN, 0, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL
 #define EVAL_SCENE (MODEL_EVAL | MODEL_SCENE)
 
 const model model_table[] = {
@@ -429,6 +496,10 @@ const model model_table[] = {
     {"schlick-internal", MODEL_EVAL, "F0, eta (eta < 1: from inside the denser medium)", d_internal,
      s_internal, FRESNEL_BOUND_SCHLICK_INTERNAL,
      q_internal, FRESNEL_BOUND_SCHLICK_INTERNAL_Q15, F16(h_internal), FRESNEL_BOUND_SCHLICK_INTERNAL_F16, NO_SCENE},
+    /* A scene model only: a function of the film's index and thickness too. */
+    {"thin-film", MODEL_SCENE | MODEL_FILM, "a film: its index (the scene's film key), its thickness (run time)",
+     NULL, NULL, FRESNEL_BOUND_FILM, NULL, FRESNEL_BOUND_FILM_Q15, NULL, FRESNEL_BOUND_FILM_F16, 0, 0, ETA_FIT,
+     LUT_PLAIN, 0, "FRESNEL_FILM_RGB_BODY(@thin_film, c, d_nm)", SCENE(film), NULL, "thin-film"},
 };
 const int model_count = (int)(sizeof model_table / sizeof model_table[0]);
 
@@ -448,11 +519,13 @@ const char model_lut_patterns[] = "lutN lutN-residual lutN-cubic";
 
 const char model_curve_default[] =
     "schlick lsk lsk-comp f82 gulbrandsen cook-torrance exact exact-gaussian approx-conductor lut16 lut32";
+const char model_curve_film[] = "thin-film";
 const char *const model_approaches_order[] = {"exact-gaussian", "exact-point", "schlick", "f82", "exact",
                                               "gulbrandsen", "lsk", "lsk-comp", "cook-torrance",
                                               "approx-conductor", "lut8", "lut16", "lut32", "lut16-residual",
                                               "lut16-cubic", "lut32-cubic", NULL};
 
+const model *const model_schlick = &model_table[0];
 const model *const model_exact = &model_table[7];
 const model *const model_f82 = &model_table[4];
 const model *const model_gulbrandsen = &model_table[5];

@@ -23,6 +23,8 @@
 #define MODEL_SCENE 2u /* a scene model: manifests, `gen`, `curve`, `report`, `bench` */
 #define MODEL_LUT 4u   /* a LUT form; its scene names are lutN, lutN-residual, lutN-cubic */
 #define MODEL_EXACT 8u /* the Fresnel equations themselves (the reference `accuracy` measures against) */
+#define MODEL_FILM 16u /* the thin film (fresnel_film.h): reads the material's film (encoded_film) at
+                        * model_rgb's thickness; a scene with it names the film's index */
 
 /* The derived parameters (material_params) a scene model reads, one bit per
  * group, in the order the C and GLSL emitters write them (emit_header.c). */
@@ -73,7 +75,9 @@ typedef struct model_fixed {
 typedef struct model_rgb {
     const struct model *def;
     const encoded_material *mat;
-    const encoded_lut *lut; /* the LUT rows' table; NULL for the others */
+    const encoded_lut *lut;   /* the LUT rows' table; NULL for the others */
+    const encoded_film *film; /* the MODEL_FILM row's film; NULL for the others */
+    double d_nm;              /* the MODEL_FILM row's film thickness, nm; the others ignore it */
 } model_rgb;
 
 /* A timed loop over n cosines (c for the float types, cq the same as Q15
@@ -107,7 +111,8 @@ typedef struct model {
     int uniform;        /* MODEL_LUT rows: 1 nodes uniform in c, 0 in sqrt(c) */
     /* Shader return expression (ports/glsl/fresnel.glsl, the one source of
      * the GLSL and HLSL ports); '@' stands for the material's
-     * identifier prefix and '_'. NULL for LUT rows, whose shader code the
+     * identifier prefix and '_' (the MODEL_FILM row's is a function body,
+     * a statement macro). NULL for LUT rows, whose shader code the
      * emitters build from the form; NULL in a scene row: no shader form. */
     const char *glsl;
     fresnel_rgb (*rgb_f32)(const model_rgb *q, float c);
@@ -115,7 +120,7 @@ typedef struct model {
     double (*ch_f16)(const model_rgb *q, int ch, double c); /* NULL without _Float16 */
     /* The double reference on the binary32-rounded parameters, channel ch */
     double (*ch_ref)(const model_rgb *q, int ch, double c);
-    model_batch batch_f32, batch_q15;
+    model_batch batch_f32, batch_q15, batch_f16; /* batch_f16 NULL without _Float16 */
     /* The runtime's closed-form hemispherical average (fresnel_*_avg_rgb,
      * binary32); NULL where the runtime has none. */
     fresnel_rgb (*avg_f32)(const model_rgb *q);
@@ -149,12 +154,13 @@ int model_names(unsigned offered, const char **out, int max);
 /* The LUT names' patterns for --help ("lutN lutN-residual lutN-cubic"). */
 extern const char model_lut_patterns[];
 
-/* The models `fresnel curve` draws without --models. */
-extern const char model_curve_default[];
+/* The models `fresnel curve` draws without --models: without and with --film. */
+extern const char model_curve_default[], model_curve_film[];
 /* The column order of the report's table of the papers' approaches. */
 extern const char *const model_approaches_order[];
 
 /* Rows other code needs by role. */
+extern const model *const model_schlick;          /* Schlick (the yardstick of run-time costs) */
 extern const model *const model_exact;            /* exact, the dielectric form at kappa 0 */
 extern const model *const model_f82;              /* the F82 model (extremes: F0, F82 pairs) */
 extern const model *const model_gulbrandsen;      /* Gulbrandsen (extremes: r, g pairs) */

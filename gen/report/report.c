@@ -332,7 +332,7 @@ static int compute_hoffman(report_run *r)
         material_params p;
         double gt[REPORT_ANGLES][3], sch[REPORT_ANGLES][3], fit[REPORT_ANGLES][3], ps[REPORT_ANGLES][3];
         double mean, max;
-        material_source pack = {hoffman[i].id, NULL, NK_FORMAT_AUTO};
+        material_source pack = {hoffman[i].id, NULL, NK_FORMAT_AUTO, 0.0};
         if ((status = derive_parameters(g, &pack, 25.0, 1.0, s, &p)))
             goto done;
         r->hoffman_in_gamut[i] = 1;
@@ -562,6 +562,8 @@ int report_write(const report_options *o)
     if (r.sc.spacing == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only and the report measures every number "
                                      "type; its targets table measures them itself");
+    if ((status = report_film_take(&r, scene_path)))
+        goto done;
     r.g = malloc(sizeof *r.g);
     r.mats = calloc((size_t)r.sc.material_count, sizeof *r.mats);
     r.cells = calloc((size_t)r.sc.material_count * r.sc.model_count * number_types_available, sizeof *r.cells);
@@ -598,6 +600,8 @@ int report_write(const report_options *o)
             for (t = 0; t < number_types_available; t++)
                 report_measure(&r.ls, rm, m, &number_types[t], report_cell_at(&r, i, m, t));
         }
+        if ((status = report_film_measure(&r, i)))
+            goto done;
     }
     for (i = 0; i < r.sc.model_count * number_types_available; i++)
         r.ns[i] = r.instr[i] = NAN;
@@ -622,6 +626,8 @@ int report_write(const report_options *o)
                 fprintf(stderr, "%s: %s %s: %.2f ns, %.0f instructions\n", WHERE, r.sc.models[m].name,
                         number_types[t].name, r.ns[k], r.instr[k]);
         }
+    if (timing)
+        report_film_time(&r);
     sigma_sweep(&r, sig_de, sig_err);
     if ((status = compute_hoffman(&r)))
         goto done;
@@ -654,6 +660,7 @@ int report_write(const report_options *o)
             scene_path, r.sc.space, r.sc.sigma, r.sc.n1, gamut_policy_names[r.g->gamut]);
     report_targets(&r, f);
     write_accuracy_tables(&r, f);
+    report_film_write(&r, f);
     write_sigma(&r, f, sig_de, sig_err);
     write_approaches(&r, f);
     report_renderers(&r, f);
@@ -681,6 +688,7 @@ done:
             free(r.mats[i].models);
             free(r.mats[i].s);
         }
+    report_film_free(&r);
     free(r.mats);
     free(r.cells);
     free(r.ns);

@@ -48,6 +48,23 @@ typedef struct report_cell {
     double avg[3];                  /* the model's F_avg = 2 int F(mu) mu dmu in this type */
 } report_cell;
 
+/* The scene's thin-film model, measured over angle and thickness against
+ * the film's spectral truth (report_film.c). */
+typedef struct report_film_cell {
+    double de_mean, de_max; /* CIEDE2000 against the truth held to [0, 1] */
+    int worst_theta;        /* where de_max is: degrees, nm */
+    double worst_d;
+} report_film_cell;
+typedef struct report_film {
+    int present;        /* the scene has the thin-film model */
+    scene_entry entry;  /* its entry, taken out of the scene's models */
+    double *film_n;     /* [material] the film's index */
+    scene_model *models; /* [material] */
+    report_film_cell *cells; /* [material][type] */
+    long samples;            /* angle x thickness samples per material */
+    double ns[NUMBER_TYPES], schlick_ns; /* ns per RGB evaluation; NaN when not timed */
+} report_film;
+
 /* One run of the report: the scene, its materials and every measurement. */
 typedef struct report_run {
     const char *out_dir;
@@ -68,6 +85,7 @@ typedef struct report_run {
     const struct speed_file *speed[REPORT_MAX_SPEED];
     int speed_count;
     int timing;                            /* 0: --no-timing */
+    report_film film;
     /* The files written so far, all committed together at the end:
      * report.md, pareto.svg, sigma.svg, one per material. */
     cli_outfile *out;
@@ -114,6 +132,18 @@ void report_measure(const lab_space *ls, const report_material *rm, int model, c
 /* Mean, RMS and max CIEDE2000 of a whole curve given per angle (rgb[REPORT_ANGLES][3]). */
 void report_curve_de(const lab_space *ls, const double (*gt)[3], const double (*rgb)[3], double *mean,
                      double *rms, double *max);
+
+/* report_film.c. take: after the scene is loaded, moves its thin-film model
+ * out of sc.models into r->film (0, or CLI_BAD_INPUT after a message for a
+ * scene whose only model it is); measure: after material
+ * i is derived, prepares its film and measures it in every type; time: ns
+ * per RGB evaluation and fresnel_schlick_rgb's, interleaved; write: the
+ * report's section; free. Each does nothing for a scene without a film. */
+int report_film_take(report_run *r, const char *scene_path);
+int report_film_measure(report_run *r, int i);
+void report_film_time(report_run *r);
+void report_film_write(report_run *r, FILE *f);
+void report_film_free(report_run *r);
 
 /* What `fresnel report` was asked for; report_write measures and writes it:
  * 0, or a CLI_* status after a message. */

@@ -19,14 +19,17 @@ const char *const scene_f_avg_names[] = {"no", "yes", NULL};
 const char *const gamut_policy_names[] = {"map", "clip", "keep", NULL};
 
 enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
-                 KEY_LUT_SPACING, KEY_NAME, KEY_GAMUT, KEY_F_AVG, KEY_TARGETS, KEY_COUNT };
+                 KEY_LUT_SPACING, KEY_NAME, KEY_GAMUT, KEY_F_AVG, KEY_TARGETS, KEY_FILM, KEY_FILM_THICKNESS,
+                 KEY_COUNT };
 static const char *const key_names[] = {"materials", "models", "space",       "sigma", "n1",
-                                        "types",     "lut_spacing", "name", "gamut", "f_avg", "targets", NULL};
+                                        "types",     "lut_spacing", "name", "gamut", "f_avg", "targets",
+                                        "film", "film_thickness", NULL};
 
 #define SIGMA_MAX 200.0
 #define SCENE_MAX_ERRORS 50
 #define N1_MIN 1.0
 #define N1_MAX 4.0
+#define FILM_N_MAX 4.0
 
 static int *key_line(scene *s, int key)
 {
@@ -41,6 +44,8 @@ static int *key_line(scene *s, int key)
     case KEY_GAMUT: return &s->gamut_line;
     case KEY_F_AVG: return &s->f_avg_line;
     case KEY_TARGETS: return &s->targets_line;
+    case KEY_FILM: return &s->film_line;
+    case KEY_FILM_THICKNESS: return &s->film_thickness_line;
     default: return &s->lut_spacing_line;
     }
 }
@@ -320,6 +325,39 @@ static int parse_number(const char *path, int line, const char *key, const char 
     return 0;
 }
 
+/* film_thickness = LO HI */
+static int parse_thickness(const char *path, int line, char *value, scene *s)
+{
+    char *cursor = value, *lo = next_token(&cursor), *hi = next_token(&cursor);
+    double max = FRESNEL_FILM_D_MAX;
+    if (!lo || !hi || next_token(&cursor) || cli_parse_double(lo, &s->film_d_lo) ||
+        cli_parse_double(hi, &s->film_d_hi) || !(s->film_d_lo >= 0.0 && s->film_d_lo <= s->film_d_hi &&
+                                                 s->film_d_hi <= max))
+        return report(path, line, "expected film_thickness as two numbers LO HI of nm, 0 <= LO <= HI <= %g, got '%s'",
+                      max, value);
+    return 0;
+}
+
+/* `film ID = N`: material ID's own film. */
+static int parse_material_film(const char *path, int line, char *id, const char *value, scene *s)
+{
+    int i;
+    if (*id == '\0' || strpbrk(id, " \t") || !material_id_ok(id))
+        return report(path, line, "expected 'film ID = N' with one material id, got 'film %s'", id);
+    for (i = 0; i < s->film_count; i++)
+        if (!strcmp(s->film_material[i], id))
+            return report(path, line, "expected one film per material, '%s' has one at line %d", id,
+                          s->film_material_line[i]);
+    if (s->film_count == SCENE_MAX_MATERIALS || strlen(id) >= SCENE_ID_SIZE)
+        return report(path, line, "expected at most %d film lines of material ids of at most %d characters",
+                      SCENE_MAX_MATERIALS, SCENE_ID_SIZE - 1);
+    if (parse_number(path, line, "the film's index", value, 1.0, FILM_N_MAX, &s->film_material_n[s->film_count]))
+        return CLI_BAD_INPUT;
+    strcpy(s->film_material[s->film_count], id);
+    s->film_material_line[s->film_count++] = line;
+    return 0;
+}
+
 int scene_name_ok(const char *name)
 {
     size_t i, len = strlen(name);
@@ -380,6 +418,8 @@ static int parse_value(const char *path, int line, int key, char *value, scene *
     case KEY_F_AVG:
         return parse_choice(path, line, "f_avg value", scene_f_avg_names, value, &s->f_avg);
     case KEY_SIGMA: return parse_number(path, line, "sigma (nm)", value, 0.0, SIGMA_MAX, &s->sigma);
+    case KEY_FILM: return parse_number(path, line, "the film's index", value, 1.0, FILM_N_MAX, &s->film_n);
+    case KEY_FILM_THICKNESS: return parse_thickness(path, line, value, s);
     default: return parse_number(path, line, "n1", value, N1_MIN, N1_MAX, &s->n1);
     }
 }
@@ -394,6 +434,7 @@ static void set_defaults(scene *s)
     s->type_count = 1;
     s->sigma = 25.0;
     s->n1 = 1.0;
+    s->film_d_hi = FRESNEL_FILM_D_MAX;
 }
 
 /* One non-blank, non-comment line, comments already cut off. */
@@ -413,6 +454,11 @@ static int parse_line(const char *path, int line, char *text, scene *s)
             return report(path, line, "expected a file after 'material %s ='", trim(key + 8));
         return parse_material_file(path, line, trim(key + 8), value, s);
     }
+    if (!strncmp(key, "film", 4) && isspace((unsigned char)key[4])) {
+        if (*value == '\0')
+            return report(path, line, "expected an index after 'film %s ='", trim(key + 4));
+        return parse_material_film(path, line, trim(key + 4), value, s);
+    }
     k = table_index(key_names, key);
     if (k < 0) {
         char near[SCENE_NAME_SIZE + 32];
@@ -426,6 +472,46 @@ static int parse_line(const char *path, int line, char *text, scene *s)
         return report(path, line, "expected a value after '%s ='", key);
     *where = line;
     return parse_value(path, line, k, value, s);
+}
+
+/* The film keys against the models, the materials and n1. */
+static int check_film(const char *path, int last, const scene *s)
+{
+    int i, k, film = -1, first = s->film_line ? s->film_line : (s->film_count ? s->film_material_line[0] : 0);
+    for (i = 0; i < s->model_count; i++)
+        if (s->models[i].row->offered & MODEL_FILM)
+            film = i;
+    if (film < 0) {
+        if (first || s->film_thickness_line)
+            return report(path, first ? first : s->film_thickness_line,
+                          "expected film keys only with a thin-film model in models (line %d lists none)",
+                          s->models_line);
+        return 0;
+    }
+    for (k = 0; k < s->film_count; k++) {
+        for (i = 0; i < s->material_count && strcmp(s->materials[i], s->film_material[k]); i++)
+            ;
+        if (i == s->material_count)
+            return report(path, s->film_material_line[k], "expected 'film ID = N' for a material of the scene, got '%s'",
+                          s->film_material[k]);
+    }
+    for (i = 0; i < s->material_count; i++) {
+        double n = scene_film_n(s, i);
+        int at = s->film_line;
+        for (k = 0; k < s->film_count; k++)
+            if (!strcmp(s->materials[i], s->film_material[k]))
+                at = s->film_material_line[k];
+        if (n == 0.0)
+            return report(path, last > 0 ? last : 1,
+                          "expected 'film = N' or 'film %s = N': %s has no film for %s (line %d)", s->materials[i],
+                          s->materials[i], s->models[film].name, s->models_line);
+        if (n < s->n1)
+            return report(path, at,
+                          "expected a film index of at least n1 %g, got %g for %s: total reflection inside a film "
+                          "less dense than the incident medium is outside the thin-film model's domain",
+                          s->n1, n, s->materials[i]);
+    }
+    return 0;
 }
 
 int scene_load(const char *path, scene *out)
@@ -494,6 +580,8 @@ int scene_load(const char *path, scene *out)
         return report(path, out->lut_spacing_line ? out->lut_spacing_line : 1,
                       "expected types = q15 with lut_spacing grazing-pl (its tables are for "
                       "fresnel_lut_pl_u16_q15_fast only)");
+    if ((rc = check_film(path, line, out)))
+        return rc;
     for (m = 0; m < out->model_count; m++) {
         scene_entry *e = &out->models[m];
         if (!e->lut_n)
@@ -519,7 +607,19 @@ material_source scene_material(const scene *sc, int i)
     m.id = sc->materials[i];
     m.path = sc->material_file[i][0] ? sc->material_file[i] : NULL;
     m.format = NK_FORMAT_AUTO;
+    m.film_n = scene_film_n(sc, i);
     return m;
+}
+
+double scene_film_n(const scene *sc, int i)
+{
+    int k, film = 0;
+    for (k = 0; k < sc->model_count; k++)
+        film |= (sc->models[k].row->offered & MODEL_FILM) != 0;
+    for (k = 0; film && k < sc->film_count; k++)
+        if (!strcmp(sc->film_material[k], sc->materials[i]))
+            return sc->film_material_n[k];
+    return film ? sc->film_n : 0.0;
 }
 
 unsigned scene_reads(const scene *sc, int q15)

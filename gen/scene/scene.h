@@ -55,6 +55,27 @@
  *                hemispherical average F_avg = 2 int F(mu) mu dmu of the
  *                ground truth under the gamut policy, per channel, beside
  *                the models' constants (a scene that reads it only).
+ *   film         the thin-film model's film (required with models = ...
+ *                thin-film, refused without it): the real index of a
+ *                transparent, non-dispersive film on every material, a finite
+ *                number in [n1, 4] (a film less dense than the incident
+ *                medium, total reflection inside it, is outside the model's
+ *                domain: include/fresnel_film.h, DOMAIN). The film's results
+ *                are held to [0, 1] per channel (the clip policy) whatever
+ *                the gamut key: its truth varies with the thickness, which
+ *                only the run time knows.
+ *   film ID = N  the film on material ID only, overriding `film`; one line
+ *                per material, ID a material of the scene; repeatable. With
+ *                thin-film every material has a film by one key or the other.
+ *   film_thickness
+ *                optional, with thin-film only: LO HI, the thicknesses in nm
+ *                the film takes, 0 <= LO <= HI <= 5000 (LO = HI: one
+ *                thickness). The runtime takes the thickness at run time in
+ *                any case (fresnel_film_rgb(table, c, d_nm), clamped to
+ *                [0, FRESNEL_FILM_D_MAX]); the range is what the header's
+ *                comment states, what `fresnel report` measures over and what
+ *                the viewer's slider spans. Default: 0 5000, the whole range
+ *                the runtime takes (thickness left to run time).
  *   targets      optional; whitespace-separated renderers, each once, from
  *                the targets of `fresnel params --for` (2_derive/targets.h:
  *                openpbr materialx blender unreal gltf filament
@@ -135,7 +156,7 @@ int scene_entry_parse(const char *name, lut_spacing spacing, scene_entry *out);
 typedef struct scene {
     /* Line of the file where each key was set; 0 where the default applies. */
     int materials_line, models_line, space_line, sigma_line, n1_line, types_line,
-        lut_spacing_line, name_line, gamut_line, f_avg_line, targets_line;
+        lut_spacing_line, name_line, gamut_line, f_avg_line, targets_line, film_line, film_thickness_line;
     char name[SCENE_PREFIX_SIZE]; /* the name key; "" when not given */
 
     int material_count; /* in the order the file names them */
@@ -154,6 +175,14 @@ typedef struct scene {
     const target *targets[SCENE_MAX_TARGETS];
     double sigma; /* nm */
     double n1;
+    /* The thin-film model's film: the film key (0 when not given), the
+     * `film ID = N` lines in the file's order, the thickness range (nm). */
+    double film_n;
+    int film_count;
+    char film_material[SCENE_MAX_MATERIALS][SCENE_ID_SIZE];
+    double film_material_n[SCENE_MAX_MATERIALS];
+    int film_material_line[SCENE_MAX_MATERIALS];
+    double film_d_lo, film_d_hi;
 } scene;
 
 /* Read and validate a manifest. Returns 0, or CLI_BAD_INPUT after printing
@@ -166,8 +195,12 @@ int scene_name_ok(const char *name);
 /* The scene name derived from a manifest's path, as FORMAT describes. */
 void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE]);
 
-/* Material i as derive_parameters takes it (pointing into sc). */
+/* Material i as derive_parameters takes it (pointing into sc), with its
+ * film's index where the scene has the thin-film model. */
 material_source scene_material(const scene *sc, int i);
+/* The index of material i's film (its own line, else the film key); 0
+ * where the scene has no film. */
+double scene_film_n(const scene *sc, int i);
 
 /* 1 if the loaded scene names this model (as written) / number type, else 0. */
 int scene_has_model(const scene *sc, const char *model);

@@ -1,6 +1,7 @@
 /* Scene models through the runtime (see scene_eval.h). */
 #include "scene/scene_eval.h"
 
+#include <stdlib.h>
 #include <string.h>
 
 #include "common/cli.h"
@@ -16,6 +17,16 @@ int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectru
     encode_material(p, &m->mat);
     if (e->lut_n && encode_table(s, g, p, spacing, e->lut_n, e->row->form, &m->lut))
         return cli_oom("scene model");
+    if (e->row->offered & MODEL_FILM) {
+        if (!(p->film_n > 0.0))
+            return cli_error(p->info.id, "%s needs a film (a scene's film key, curve's --film N:D)", e->name);
+        if (!(m->film = malloc(sizeof *m->film)))
+            return cli_oom("scene model");
+        if (encode_film(s, g, p, m->film)) {
+            scene_model_free(m);
+            return cli_error(p->info.id, "fitting the thin-film model of a %g film in n1 %g failed", p->film_n, p->n1);
+        }
+    }
     return 0;
 }
 
@@ -30,7 +41,12 @@ int scene_model_prepare_name(const char *name, lut_spacing spacing, const spectr
     return scene_model_prepare(&e, spacing, s, g, p, m);
 }
 
-void scene_model_free(scene_model *m) { encoded_lut_free(&m->lut); }
+void scene_model_free(scene_model *m)
+{
+    encoded_lut_free(&m->lut);
+    free(m->film);
+    m->film = NULL;
+}
 
 model_rgb scene_model_rgb(const scene_model *m)
 {
@@ -38,6 +54,8 @@ model_rgb scene_model_rgb(const scene_model *m)
     q.def = m->def;
     q.mat = &m->mat;
     q.lut = m->lut.n ? &m->lut : NULL;
+    q.film = m->film;
+    q.d_nm = 0.0;
     return q;
 }
 

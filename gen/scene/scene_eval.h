@@ -16,10 +16,13 @@ typedef struct scene_model {
     const model *def;     /* its registry row */
     encoded_material mat; /* the material's constants in every number type */
     encoded_lut lut;      /* LUT rows: the table in every number type; lut.n 0 for the others */
+    encoded_film *film;   /* the thin-film row: the material's film (malloc'd); NULL for the others */
 } scene_model;
 
 /* Prepare model e, with tables spaced `spacing`, for material p (s = its
- * spectrum, for LUT nodes): 0, or CLI_OOM after a message. */
+ * spectrum, for LUT nodes and films): 0, or CLI_OOM after a message;
+ * CLI_BAD_INPUT after a message for the thin-film row on a material
+ * without a film (p->film_n 0) or one the model cannot fit. */
 int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectrum *s, const gen_context *g,
                         const material_params *p, scene_model *m);
 /* The same for a model named on a command line (scene_entry_parse):
@@ -27,7 +30,8 @@ int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectru
 int scene_model_prepare_name(const char *name, lut_spacing spacing, const spectrum *s, const gen_context *g,
                              const material_params *p, scene_model *m);
 void scene_model_free(scene_model *m);
-/* What the registry row's evaluators read: pointers into m. */
+/* What the registry row's evaluators read: pointers into m (the film's
+ * thickness d_nm 0: the caller sets it). */
 model_rgb scene_model_rgb(const scene_model *m);
 /* The binary32 runtime at c. */
 void scene_model_eval(const scene_model *m, float c, float rgb[3]);

@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "common/cli.h"
+#include "common/reference.h"
 #include "4_emit/emit.h"
 #include "4_emit/emit_glsl.h"
 #include "bench/bench.h"
@@ -94,16 +95,64 @@ static void put_script_text(FILE *f, const char *s)
 /* vec3 fresnel_select(int mat, int model, float c): the scene's functions
  * by index, in the scene's order of materials and models; with
  * FRESNEL_VIEWER_MATERIAL defined, only that material's (WebGL 1). */
+/* The scene's thin-film model, or -1. */
+static int film_row(const scene *sc)
+{
+    int m;
+    for (m = 0; m < sc->model_count; m++)
+        if (sc->models[m].row->offered & MODEL_FILM)
+            return m;
+    return -1;
+}
+
+double viewer_film_d(const scene *sc, int step)
+{
+    return sc->film_d_lo + (sc->film_d_hi - sc->film_d_lo) * step / (VIEWER_FILM_STEPS - 1);
+}
+
+/* The page's thin-film reference of material i: the film's spectral truth
+ * (unclipped) at VIEWER_FILM_REF_NODES cosines uniform in sqrt(c) for each
+ * thickness step; rgb[(step nodes + node) 3 + ch]. 0, or -1 when out of
+ * memory. */
+static int film_reference(const emit_loaded *l, int i, double *rgb)
+{
+    film_stack stack;
+    int k, step;
+    stack.n1 = l->params[i].n1;
+    stack.film = NULL;
+    stack.film_n = l->params[i].film_n;
+    stack.substrate = l->spectra[i];
+    for (k = 0; k < VIEWER_FILM_REF_NODES; k++) {
+        double x = (double)k / (VIEWER_FILM_REF_NODES - 1);
+        film_optics_table *t = film_truth_prepare(&stack, x * x);
+        if (!t)
+            return -1;
+        for (step = 0; step < VIEWER_FILM_STEPS; step++)
+            film_truth_at(t, &l->g->cm, &l->g->cs, viewer_film_d(l->sc, step),
+                          rgb + 3 * (step * VIEWER_FILM_REF_NODES + k));
+        free(t);
+    }
+    return 0;
+}
+
+/* vec3 fresnel_select(int mat, int model, float c): the scene's functions
+ * by index, in the scene's order of materials and models, the thin film at
+ * the slider's thickness (uniform u_film_d; its function needs const
+ * arrays, so WebGL 1 has it not); with FRESNEL_VIEWER_MATERIAL defined,
+ * only that material's (WebGL 1). */
 static void write_select(FILE *f, const emit_loaded *l)
 {
     int i, m;
-    fprintf(f, "vec3 fresnel_select(int mat, int model, FRESNEL_HIGHP float c)\n{\n");
+    fprintf(f, "uniform FRESNEL_HIGHP float u_film_d;\nvec3 fresnel_select(int mat, int model, FRESNEL_HIGHP float c)\n{\n");
     for (i = 0; i < l->sc->material_count; i++) {
         fprintf(f, "#if !defined(FRESNEL_VIEWER_MATERIAL) || FRESNEL_VIEWER_MATERIAL == %d\n", i);
         fprintf(f, "    if (mat == %d) {\n", i);
-        for (m = 0; m < l->sc->model_count; m++)
-            fprintf(f, "        if (model == %d)\n            return fresnel_%s_%s_%s_rgb(c);\n", m, l->name,
-                    l->sc->materials[i], l->sc->models[m].ident);
+        for (m = 0; m < l->sc->model_count; m++) {
+            int film = (l->sc->models[m].row->offered & MODEL_FILM) != 0;
+            fprintf(f, "%s        if (model == %d)\n            return fresnel_%s_%s_%s_rgb(c%s);\n%s",
+                    film ? "#if FRESNEL_LUT_ARRAYS\n" : "", m, l->name, l->sc->materials[i], l->sc->models[m].ident,
+                    film ? ", u_film_d" : "", film ? "#endif\n" : "");
+        }
         fprintf(f, "    }\n#endif\n");
     }
     fprintf(f, "    return vec3(0.0);\n}\n");
@@ -152,7 +201,8 @@ static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_p
     if (!isnan(ns))
         used = (size_t)snprintf(cost, sizeof cost, "%.1f ns per RGB call here (binary32, %s)", ns, bench_compiler());
     if (!isnan(m0) && used < sizeof cost)
-        snprintf(cost + used, sizeof cost - used, "; %.0f instructions per channel on the Cortex-M0 (Q15)", m0);
+        snprintf(cost + used, sizeof cost - used, "; %.0f instructions per %s on the Cortex-M0 (Q15)", m0,
+                 l->sc->models[m].row->offered & MODEL_FILM ? "RGB call" : "channel");
     put_json_string(f, cost);
 }
 
@@ -177,6 +227,90 @@ static int write_lut_texture(FILE *f, const char *tex)
             p = end - 1;
         }
     fputs("]}", f);
+    return 0;
+}
+
+/* "film": the thin film's slider, reference tables, its curves at every
+ * step (binary32, every degree) and CIEDE2000 over angle and the steps
+ * against the truth held to [0, 1]; null for a scene without it. */
+static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
+{
+    const scene *sc = l->sc;
+    int fm = film_row(sc), i, k, step, a, ch;
+    double *ref = malloc((size_t)VIEWER_FILM_STEPS * VIEWER_FILM_REF_NODES * 3 * sizeof *ref);
+    double *de = calloc(2 * (size_t)sc->material_count, sizeof *de);
+    if (fm < 0 || !ref || !de) {
+        fputs("null", f);
+        free(ref);
+        free(de);
+        return fm < 0 ? 0 : cli_oom(WHERE);
+    }
+    fprintf(f, "{\"model\":%d,\"steps\":%d,\"start\":%d,\"refN\":%d,\"d\":[", fm, VIEWER_FILM_STEPS,
+            VIEWER_FILM_START, VIEWER_FILM_REF_NODES);
+    for (step = 0; step < VIEWER_FILM_STEPS; step++)
+        fprintf(f, "%s%.9g", step ? "," : "", (double)(float)viewer_film_d(sc, step));
+    fprintf(f, "],\"n\":[");
+    for (i = 0; i < sc->material_count; i++)
+        fprintf(f, "%s%g", i ? "," : "", l->params[i].film_n);
+    fprintf(f, "],\n\"reference\":[");
+    for (i = 0; i < sc->material_count; i++) {
+        if (film_reference(l, i, ref)) {
+            free(ref);
+            free(de);
+            return cli_oom(WHERE);
+        }
+        for (k = 0; k < VIEWER_FILM_STEPS * VIEWER_FILM_REF_NODES * 3; k++)
+            fprintf(f, "%s%.9g", i + k ? "," : "", ref[k]);
+    }
+    free(ref);
+    /* curves[mat][step][degree] and the report's measure per material: every
+     * degree x every step against the truth clipped per channel */
+    fprintf(f, "],\n\"curves\":[");
+    for (i = 0; i < sc->material_count; i++) {
+        scene_model sm;
+        film_stack stack;
+        double sum = 0.0, max = 0.0;
+        if (scene_model_prepare(&sc->models[fm], sc->spacing, l->spectra[i], l->g, &l->params[i], &sm)) {
+            free(de);
+            return CLI_BAD_INPUT;
+        }
+        stack.n1 = l->params[i].n1;
+        stack.film = NULL;
+        stack.film_n = l->params[i].film_n;
+        stack.substrate = l->spectra[i];
+        fprintf(f, "%s[", i ? "," : "");
+        for (step = 0; step < VIEWER_FILM_STEPS; step++) {
+            fprintf(f, "%s[", step ? "," : "");
+            for (a = 0; a < REPORT_ANGLES; a++) {
+                model_rgb q = scene_model_rgb(&sm);
+                fresnel_rgb v;
+                double d[3], truth[3], l1[3], l2[3], de;
+                q.d_nm = viewer_film_d(sc, step);
+                v = q.def->rgb_f32(&q, (float)report_cos(a));
+                d[0] = v.r, d[1] = v.g, d[2] = v.b;
+                fprintf(f, "%s", a ? "," : "");
+                put_rgb(f, d);
+                film_truth(&stack, &l->g->cm, &l->g->cs, report_cos(a), q.d_nm, truth);
+                for (ch = 0; ch < 3; ch++)
+                    truth[ch] = ref_clamp(truth[ch], 0.0, 1.0);
+                lab_space_lab(ls, truth, l1);
+                lab_space_lab(ls, d, l2);
+                de = ciede2000(l1, l2);
+                sum += de;
+                max = fmax(max, de);
+            }
+            fprintf(f, "]");
+        }
+        fprintf(f, "]");
+        scene_model_free(&sm);
+        de[2 * i] = sum / (VIEWER_FILM_STEPS * REPORT_ANGLES);
+        de[2 * i + 1] = max;
+    }
+    fprintf(f, "],\n\"report\":[");
+    for (i = 0; i < sc->material_count; i++)
+        fprintf(f, "%s{\"mean\":%.6g,\"max\":%.6g}", i ? "," : "", de[2 * i], de[2 * i + 1]);
+    fprintf(f, "]}");
+    free(de);
     return 0;
 }
 
@@ -292,7 +426,10 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
         fprintf(f, "%s", m ? "," : "");
         write_cost(f, l, m, cross_path);
     }
-    fprintf(f, "],\n\"lutTexture\":");
+    fprintf(f, "],\n\"film\":");
+    if ((k = write_film(f, l, &ls)))
+        return k;
+    fprintf(f, ",\n\"lutTexture\":");
     write_lut_texture(f, tex);
     fprintf(f, ",\n\"toXYZ\":[");
     for (k = 0; k < 9; k++) /* column-major */

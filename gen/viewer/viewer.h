@@ -7,6 +7,16 @@
 /* Nodes of the page's reference table, uniform in sqrt(c). */
 #define VIEWER_REF_NODES 1024
 
+/* A scene's thin film: the slider's thickness steps across the scene's
+ * film_thickness range, the one the page starts at (and its probes use),
+ * and the nodes (uniform in sqrt(c)) of the film's reference table per
+ * material and step. */
+#define VIEWER_FILM_STEPS 51
+#define VIEWER_FILM_START 25
+#define VIEWER_FILM_REF_NODES 128
+struct scene;
+double viewer_film_d(const struct scene *sc, int step);
+
 /* Load the manifest, derive its materials and write OUT_DIR/index.html
  * (the directory is made if missing; the file written to a temporary and
  * renamed only on success). cross_path: a `make cross-count` output for the

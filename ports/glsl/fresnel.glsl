@@ -661,6 +661,63 @@ FRESNEL_HP fresnel_lut_cubic_blend(FRESNEL_HP p0, FRESNEL_HP p1, FRESNEL_HP p2, 
 #define FRESNEL_LUT_CUBIC_ARRAY(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))))
 #define FRESNEL_LUT_CUBIC_ARRAY_RGB(table, n, c) FRESNEL_SATURATE(FRESNEL_VEC3(FRESNEL_I_LUT_CUBIC_AT(table, 0, (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, (n), (n), fresnel_lut_pos(float(n), (c))), FRESNEL_I_LUT_CUBIC_AT(table, 2 * (n), (n), fresnel_lut_pos(float(n), (c)))))
 
+/* ---------------------------------------------------------- thin film */
+
+/* fresnel_film_rgb (include/fresnel_film.h): a transparent film of
+ * thickness d_nm (clamped to [0, FRESNEL_FILM_D_MAX]) on a material, from
+ * the material's table as `fresnel gen --glsl` or `--hlsl` writes it: a
+ * float array of FRESNEL_FILM_FLOATS values in the order of the C struct
+ * fresnel_film (freq[6], damp[6], weight[3][6][2], then 32 nodes of
+ * FRESNEL_FILM_NODE values: a0[3], opd, decay, A, B, P, Q as six real
+ * parts then six imaginary parts each). The binary32 runtime's algorithm:
+ * the node pair around sqrt(c), linear interpolation, six poles
+ *   F_j = zeta (A + B zeta) / (1 - P zeta + Q zeta^2),
+ *   zeta = exp(2 pi i (x + i y)(nu + i gamma)),
+ * and R = a0 + Re(sum_j w_j F_j) per channel, with the GPU's sin, cos and
+ * exp where the C runtime has its own polynomials (the phase reduced to one
+ * turn first). highp throughout: phases reach a hundred turns, and the
+ * denominators cancel near the fringes' peaks. Const arrays only (GLSL ES
+ * 3.00 and desktop 1.30 and later, where FRESNEL_LUT_ARRAYS is 1; HLSL):
+ * the table is indexed with a variable. No loops: the six poles are written
+ * out (one-line macros: GLSL ES 1.00 and 3.30 have no line continuation).
+ * fresnel_film_rgb(t, c, d_nm) takes any table; FRESNEL_FILM_RGB_BODY is its
+ * body, for a function over one const array. */
+#define FRESNEL_FILM_NODE 53
+#define FRESNEL_FILM_FLOATS 1744
+#define FRESNEL_FILM_D_MAX 5000.0
+#if !defined(FRESNEL_GLSL) || FRESNEL_LUT_ARRAYS
+FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a, FRESNEL_HP2 b, FRESNEL_HP2 p,
+                                FRESNEL_HP2 q)
+{
+    FRESNEL_HP turns = xy.x * pole.x - xy.y * pole.y;
+    FRESNEL_HP phase = 6.28318530718 * (turns - floor(turns));
+    FRESNEL_HP2 z = exp(-6.28318530718 * max(xy.x * pole.y + xy.y * pole.x, 0.0)) *
+                    FRESNEL_VEC2(cos(phase), sin(phase));
+    FRESNEL_HP2 z2 = FRESNEL_VEC2(z.x * z.x - z.y * z.y, 2.0 * z.x * z.y);
+    FRESNEL_HP2 n0 = a + FRESNEL_VEC2(b.x * z.x - b.y * z.y, b.x * z.y + b.y * z.x);
+    FRESNEL_HP2 n = FRESNEL_VEC2(z.x * n0.x - z.y * n0.y, z.x * n0.y + z.y * n0.x);
+    FRESNEL_HP2 den = FRESNEL_VEC2(1.0 - (p.x * z.x - p.y * z.y) + (q.x * z2.x - q.y * z2.y),
+                                   -(p.x * z.y + p.y * z.x) + (q.x * z2.y + q.y * z2.x));
+    return FRESNEL_VEC2(n.x * den.x + n.y * den.y, n.y * den.x - n.x * den.y) / dot(den, den);
+}
+/* value i of the node at base b and of the next, interpolated at w */
+#define FRESNEL_I_FILM_AT(t, b, i, w) fresnel_lut_lerp((t)[(b) + (i)], (t)[(b) + FRESNEL_FILM_NODE + (i)], (w))
+#define FRESNEL_I_FILM_C(t, b, i, w) FRESNEL_VEC2(FRESNEL_I_FILM_AT(t, b, i, w), FRESNEL_I_FILM_AT(t, b, (i) + 6, w))
+#define FRESNEL_I_FILM_POLE(t, b, w, xy, j) fresnel_i_film_pole(xy, FRESNEL_VEC2((t)[j], (t)[6 + (j)]), FRESNEL_I_FILM_C(t, b, 5 + (j), w), FRESNEL_I_FILM_C(t, b, 17 + (j), w), FRESNEL_I_FILM_C(t, b, 29 + (j), w), FRESNEL_I_FILM_C(t, b, 41 + (j), w))
+/* channel ch: a0 + Re(w_j F_j) over the poles */
+#define FRESNEL_I_FILM_W(t, ch, j, f) ((t)[12 + 12 * (ch) + 2 * (j)] * (f).x - (t)[13 + 12 * (ch) + 2 * (j)] * (f).y)
+#define FRESNEL_I_FILM_CH(t, b, w, ch) (FRESNEL_I_FILM_AT(t, b, ch, w) + FRESNEL_I_FILM_W(t, ch, 0, fresnel_i_f0) + FRESNEL_I_FILM_W(t, ch, 1, fresnel_i_f1) + FRESNEL_I_FILM_W(t, ch, 2, fresnel_i_f2) + FRESNEL_I_FILM_W(t, ch, 3, fresnel_i_f3) + FRESNEL_I_FILM_W(t, ch, 4, fresnel_i_f4) + FRESNEL_I_FILM_W(t, ch, 5, fresnel_i_f5))
+/* The body of a function of c and d_nm returning the film's RGB from the
+ * table t: `fresnel gen` writes one per material over its const array (read
+ * in place, not passed: a 1744-float parameter would be a copy per call). */
+#define FRESNEL_FILM_RGB_BODY(t, c, d_nm) FRESNEL_HP fresnel_i_pos = sqrt(FRESNEL_SATURATE(c)) * 31.0; FRESNEL_HP fresnel_i_k = min(floor(fresnel_i_pos), 30.0); FRESNEL_HP fresnel_i_w = fresnel_i_pos - fresnel_i_k; int fresnel_i_b = 48 + FRESNEL_FILM_NODE * int(fresnel_i_k); FRESNEL_HP2 fresnel_i_xy = clamp(d_nm, 0.0, FRESNEL_FILM_D_MAX) * FRESNEL_VEC2(FRESNEL_I_FILM_AT(t, fresnel_i_b, 3, fresnel_i_w), FRESNEL_I_FILM_AT(t, fresnel_i_b, 4, fresnel_i_w)); FRESNEL_HP2 fresnel_i_f0 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 0); FRESNEL_HP2 fresnel_i_f1 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 1); FRESNEL_HP2 fresnel_i_f2 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 2); FRESNEL_HP2 fresnel_i_f3 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 3); FRESNEL_HP2 fresnel_i_f4 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 4); FRESNEL_HP2 fresnel_i_f5 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 5); return FRESNEL_SATURATE(FRESNEL_VEC3(FRESNEL_I_FILM_CH(t, fresnel_i_b, fresnel_i_w, 0), FRESNEL_I_FILM_CH(t, fresnel_i_b, fresnel_i_w, 1), FRESNEL_I_FILM_CH(t, fresnel_i_b, fresnel_i_w, 2)));
+/* The same as a function of any table (a uniform array, a cbuffer's). */
+FRESNEL_VEC3 fresnel_film_rgb(FRESNEL_HP t[FRESNEL_FILM_FLOATS], FRESNEL_HP c, FRESNEL_HP d_nm)
+{
+    FRESNEL_FILM_RGB_BODY(t, c, d_nm)
+}
+#endif
+
 #ifdef FRESNEL_GLSL
 /* ------------------------------------------------- LUTs in GLSL textures */
 

@@ -7,6 +7,7 @@
 
 #include <stdint.h>
 
+#include "fresnel_film.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
 
@@ -47,5 +48,8 @@ extern const int16_t conform_lut_s16[2][CONFORM_LUT_N];
 extern const int8_t conform_lut_s8[2][CONFORM_LUT_N];
 extern const int conform_lut_frac16, conform_lut_frac8;
 extern const int32_t conform_lut_f0;
+
+/* A thin film's table (fresnel_film.h): a 2.5 film on gold in air, sRGB. */
+extern const fresnel_film_q15 conform_film;
 
 #endif

@@ -1,12 +1,16 @@
 /* Writes the C data of tests/cross/conform.h to stdout: the material set of
  * tests/fixed_materials.h prepared by model_fixed_from_params after
- * model_params_round_fixed, as tests/test_fixed_bounds.c does, and LUTs of
- * one curve. Host only. */
+ * model_params_round_fixed, as tests/test_fixed_bounds.c does, LUTs of one
+ * curve, and a thin film's table. Host only. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "cross/conform.h"
 #include "fixed_materials.h"
+#include "2_derive/film_fit.h"
+#include "3_encode/film_encode.h"
 #include "3_encode/fixed_params.h"
 #include "model/registry.h"
 #include "common/reference.h"
@@ -18,6 +22,72 @@ static void ior(const char *name, const fresnel_ior_prep_q15 *m)
     printf(" .%s = {%d, %d, %d,", name, (int)m->a0, (int)m->a0_lo, (int)m->shift);
     printf(" {%uu, %d}, {%uu, %d}, {%uu, %d}, {%uu, %d}},", (unsigned)m->b.m, (int)m->b.e, (unsigned)m->n4.m,
            (int)m->n4.e, (unsigned)m->t1_inv.m, (int)m->t1_inv.e, (unsigned)m->inv_eta2.m, (int)m->inv_eta2.e);
+}
+
+static void ints(const char *open, const void *v, int n, int is16, int is_signed)
+{
+    int i;
+    printf("%s{", open);
+    for (i = 0; i < n; i++) {
+        long x = is16 ? (is_signed ? (long)((const int16_t *)v)[i] : (long)((const uint16_t *)v)[i])
+                      : (long)((const uint32_t *)v)[i];
+        printf("%ld%s", x, is16 ? "" : "u");
+        printf(i + 1 < n ? ", " : "}");
+    }
+}
+
+/* The thin film's Q1.15 table (fresnel_film.h): a 2.5 film on gold in air,
+ * sRGB, as `fresnel gen` fits and encodes it. */
+static int print_film(void)
+{
+    gen_context *g = malloc(sizeof *g);
+    film_model *m = malloc(sizeof *m);
+    spectrum *s = malloc(sizeof *s);
+    fresnel_film_q15 *q = malloc(sizeof *q);
+    film_stack f;
+    int ch, j, k;
+    if (!g || !m || !s || !q || gen_context_load(data_dir(NULL), "srgb", g) || spectrum_load(data_dir(NULL), "au", s) ||
+        film_fit_poles(&g->cm, &g->cs, m, NULL))
+        return 1;
+    f.n1 = 1.0;
+    f.film = NULL;
+    f.film_n = 2.5;
+    f.substrate = s;
+    if (film_fit_material(&f, &g->cm, &g->cs, m) || film_encode_q15(m, q))
+        return 1;
+    printf("\n/* a 2.5 film on gold in air, sRGB */\nconst fresnel_film_q15 conform_film = {\n");
+    ints("    ", q->turn_nu, FRESNEL_FILM_POLES, 0, 0);
+    ints(", ", q->turn_gamma, FRESNEL_FILM_POLES, 0, 0);
+    ints(", ", q->octave_nu, FRESNEL_FILM_POLES, 0, 0);
+    ints(", ", q->octave_gamma, FRESNEL_FILM_POLES, 0, 0);
+    printf(",\n    {");
+    for (ch = 0; ch < 3; ch++) {
+        printf(ch ? ", {" : "{");
+        for (j = 0; j < FRESNEL_FILM_POLES; j++)
+            ints(j ? ", " : "", q->weight[ch][j], 2, 1, 1);
+        printf("}");
+    }
+    printf("},\n    {");
+    for (k = 0; k < FRESNEL_FILM_NODES; k++) {
+        const fresnel_film_node_q15 *n = &q->node[k];
+        ints(k ? ",\n     {" : "{", n->a0, 3, 1, 1);
+        printf(", %u, %u", (unsigned)n->opd, (unsigned)n->decay);
+        ints(", ", n->a_re, FRESNEL_FILM_POLES, 1, 1);
+        ints(", ", n->a_im, FRESNEL_FILM_POLES, 1, 1);
+        ints(", ", n->b_re, FRESNEL_FILM_POLES, 1, 1);
+        ints(", ", n->b_im, FRESNEL_FILM_POLES, 1, 1);
+        ints(", ", n->p_re, FRESNEL_FILM_POLES, 1, 1);
+        ints(", ", n->p_im, FRESNEL_FILM_POLES, 1, 1);
+        ints(", ", n->q_re, FRESNEL_FILM_POLES, 1, 1);
+        ints(", ", n->q_im, FRESNEL_FILM_POLES, 1, 1);
+        printf("}");
+    }
+    printf("}\n};\n");
+    free(g);
+    free(m);
+    free(s);
+    free(q);
+    return 0;
 }
 
 int main(void)
@@ -135,5 +205,5 @@ int main(void)
         printf("},");
     }
     printf("};\n");
-    return 0;
+    return print_film();
 }

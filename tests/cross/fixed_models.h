@@ -104,6 +104,16 @@ static fresnel_q15 e_conductor_fast(const conform_material *m, int32_t c)
 {
     return fresnel_conductor_q15_fast(&m->cfast, c);
 }
+/* The thin film (fresnel_film_q15_rgb, one RGB evaluation): conform_film
+ * at a thickness scattered over 0-4096 nm by the code (a multiplication,
+ * not a remainder: the M0 has no division), the channels folded into one
+ * value for the hash. */
+static fresnel_q15 e_film(const conform_material *m, int32_t c)
+{
+    fresnel_rgb_q15 r = fresnel_film_q15_rgb(&conform_film, c, (fresnel_q16)(((uint32_t)c * 2654435761u) >> 4));
+    (void)m;
+    return (fresnel_q15)(r.r ^ (uint32_t)r.g << 5 ^ (uint32_t)r.b << 10);
+}
 typedef struct fixed_model {
     const char *name;
     fixed_eval fn;
@@ -137,6 +147,7 @@ static const fixed_model fixed_models[] = {
     {"lut u16 fast", e_lut_u16_fast, 0},
     {"lut u16 pl fast", e_lut_u16_pl_fast, 0},
     {"exact-conductor fast", e_conductor_fast, 1},
+    {"thin-film", e_film, 0},
 };
 #define FIXED_MODEL_COUNT ((int)(sizeof fixed_models / sizeof fixed_models[0]))
 

@@ -9,8 +9,10 @@
 
 #include "bench/bench_compare.h"
 #include "bench/peers.h"
+#include "fresnel_film.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
+#include "speed_film.h" /* `fresnel gen tests/speed/film.scene` (the Makefile) */
 
 /* The material's scalars are read into locals before the loop, as a
  * renderer holds them: a store to out[] cannot alias them, so an inlined
@@ -110,6 +112,26 @@ static void k_mitsuba_inline_rgb(const speed_ctx *x, const float *c, const int32
     }
 }
 
+/* RGB per cosine: Schlick's three channels, and the thin film (a 1.5 film on
+ * gold, thickness 0-1022 nm from the index) on the table gen writes. */
+static void k_schlick_rgb(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
+                          fresnel_rgb *outrgb, int n)
+{
+    int i;
+    (void)cq, (void)out, (void)outq;
+    for (i = 0; i < n; i++)
+        outrgb[i] = fresnel_schlick_rgb(x->f0_3, c[i]);
+}
+
+static void k_film(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
+                   fresnel_rgb *outrgb, int n)
+{
+    int i;
+    (void)x, (void)cq, (void)out, (void)outq;
+    for (i = 0; i < n; i++)
+        outrgb[i] = fresnel_film_rgb(&fresnel_speed_au_thin_film, c[i], (float)(2 * (i & 511)));
+}
+
 const speed_kernel_def speed_kernels[] = {
     {"copy", "floor", k_copy, 0, 0},
     {"schlick-inline", "floor", k_schlick_inline, 0, 0},
@@ -134,6 +156,8 @@ const speed_kernel_def speed_kernels[] = {
     {"lut16-cubic-q15", "call", k_lut16_cubic_q15, 1, 0},
     {"lut16-linear-q15", "call", k_lut16_linear_q15, 1, 0},
     {"lut32-q15-fast", "inline", k_lut32_q15_fast, 1, 0},
+    {"schlick-rgb-f32", "call", k_schlick_rgb, 0, 1},
+    {"film-f32", "call", k_film, 0, 1},
 };
 const int speed_kernel_count = (int)(sizeof speed_kernels / sizeof speed_kernels[0]);
 
@@ -155,6 +179,9 @@ void speed_ctx_init(speed_ctx *x, float eta, float kappa)
         x->kappa3[i] = k3[i];
         x->prep3[i] = fresnel_conductor_prepare(e3[i], k3[i]);
     }
+    x->f0_3.r = fresnel_conductor(x->eta3[0], x->kappa3[0], 1.0f);
+    x->f0_3.g = fresnel_conductor(x->eta3[1], x->kappa3[1], 1.0f);
+    x->f0_3.b = fresnel_conductor(x->eta3[2], x->kappa3[2], 1.0f);
     for (i = 0; i < 32; i++) {
         float s = (float)i / 31.0f;
         x->lut32[i] = fresnel_conductor(eta, kappa, s * s);

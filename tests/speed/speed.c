@@ -29,7 +29,7 @@
 #endif
 
 #define N 2048                /* cosines per kernel call: inputs and outputs stay in L1 */
-#define SAMPLE_NS 100000.0    /* a schlick-f32 sample lasts about this long */
+#define SAMPLE_NS 100000.0    /* every row's sample lasts about this long */
 #define MAX_ROUNDS 1001
 
 static float cos_f[N], out_f[N];
@@ -154,6 +154,7 @@ static int kernel_index(const char *name)
 int main(int argc, char **argv)
 {
     static double t[64][MAX_ROUNDS], v[MAX_ROUNDS];
+    int kreps[64];
     speed_ctx x;
     unsigned s = 2463534242u;
     int rounds = 41, reps, i, k, r, base, flagset = speed_flagset(SPEED_OPT);
@@ -189,16 +190,20 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    for (i = 0; i < 5; i++) {
-        double d = sample(&x, base, 1) * N;
-        t1 = d < t1 ? d : t1;
+    /* Each row's calls per sample make its sample last about SAMPLE_NS, so
+     * that a loaded machine's preemptions fall alike on cheap and dear rows. */
+    for (k = 0; k < speed_kernel_count; k++) {
+        for (i = 0, t1 = 1e30; i < 5; i++) {
+            double d = sample(&x, k, 1) * N;
+            t1 = d < t1 ? d : t1;
+        }
+        reps = (int)(SAMPLE_NS / (t1 > 1.0 ? t1 : 1.0));
+        kreps[k] = reps < 1 ? 1 : reps;
     }
-    reps = (int)(SAMPLE_NS / (t1 > 1.0 ? t1 : 1.0));
-    reps = reps < 1 ? 1 : reps;
     for (r = 0; r < rounds; r++)
         for (i = 0; i < speed_kernel_count; i++) {
             k = (i + r) % speed_kernel_count;
-            t[k][r] = sample(&x, k, reps);
+            t[k][r] = sample(&x, k, kreps[k]);
             check_outputs(k);
         }
     cpu_model(cpu, sizeof cpu);
@@ -216,8 +221,8 @@ int main(int argc, char **argv)
            cpu, vector_isa());
     /* The runtime's own batch SIMD width joins the header here when
      * fresnel.h exposes it as a macro. */
-    printf("# workload: %d cosines in [0, 1] (L1-resident), %d kernel calls per sample, %d interleaved rounds in "
-           "rotating order\n"
+    printf("# workload: %d cosines in [0, 1] (L1-resident), kernel calls per sample sized to about %.0f us "
+           "(schlick-f32: %d calls), %d interleaved rounds in rotating order\n"
            "# peers: mitsuba-* and pbrt-* are this project's binary32 transcriptions (gen/bench/peers.h) of "
            "Mitsuba 3's fresnel_conductor (include/mitsuba/render/fresnel.h) and pbrt-v4's FrComplex "
            "(src/pbrt/util/scattering.h), no code of theirs\n"
@@ -228,7 +233,7 @@ int main(int argc, char **argv)
            "division per cosine; sqrt2-div2: Mitsuba's two and two)\n"
            "#\n# row NAME FORM  ns per evaluation: min q1 median q3 max  time / schlick-f32 in the same round: "
            "median q1 q3\n",
-           N, reps, rounds);
+           N, SAMPLE_NS / 1000.0, kreps[base], rounds);
     for (k = 0; k < speed_kernel_count; k++) {
         double q[5], x5[5];
         memcpy(v, t[k], (size_t)rounds * sizeof *v);

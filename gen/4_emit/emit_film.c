@@ -1,0 +1,229 @@
+/* Stage 4, emit: a material's thin-film table (include/fresnel_film.h) in
+ * each number type of the scene, as the encoder made it (encoded_film,
+ * 3_encode/encode.h). One writer serves the three layouts: each is the
+ * same sequence of arrays (the poles, the weights, 32 nodes), written with
+ * every brace of its struct. */
+#include <math.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "common/cli.h"
+#include "4_emit/emit.h"
+
+#define J FRESNEL_FILM_POLES
+#define NODES FRESNEL_FILM_NODES
+
+/* A table's values in the order of its struct, as doubles. */
+typedef struct film_values {
+    int pole_rows; /* binary32, binary16: freq, damp; Q1.15: turn_nu, turn_gamma, octave_nu, octave_gamma */
+    double pole[4][J];
+    double weight[3][J][2];
+    double a0[NODES][3], opd[NODES], decay[NODES];
+    double term[NODES][8][J]; /* a_re, a_im, b_re, b_im, p_re, p_im, q_re, q_im */
+} film_values;
+
+#define NODE_TERMS(n, v, T)                                                                                 \
+    do {                                                                                                    \
+        int j_;                                                                                             \
+        for (j_ = 0; j_ < J; j_++) {                                                                        \
+            (v)[0][j_] = (T)(n)->a_re[j_], (v)[1][j_] = (T)(n)->a_im[j_], (v)[2][j_] = (T)(n)->b_re[j_];    \
+            (v)[3][j_] = (T)(n)->b_im[j_], (v)[4][j_] = (T)(n)->p_re[j_], (v)[5][j_] = (T)(n)->p_im[j_];    \
+            (v)[6][j_] = (T)(n)->q_re[j_], (v)[7][j_] = (T)(n)->q_im[j_];                                   \
+        }                                                                                                   \
+    } while (0)
+
+static void values_f32(const fresnel_film *t, film_values *v)
+{
+    int j, k, ch;
+    v->pole_rows = 2;
+    for (j = 0; j < J; j++) {
+        v->pole[0][j] = t->freq[j];
+        v->pole[1][j] = t->damp[j];
+        for (ch = 0; ch < 3; ch++)
+            v->weight[ch][j][0] = t->weight[ch][j][0], v->weight[ch][j][1] = t->weight[ch][j][1];
+    }
+    for (k = 0; k < NODES; k++) {
+        for (ch = 0; ch < 3; ch++)
+            v->a0[k][ch] = t->node[k].a0[ch];
+        v->opd[k] = t->node[k].opd;
+        v->decay[k] = t->node[k].decay;
+        NODE_TERMS(&t->node[k], v->term[k], double);
+    }
+}
+
+static void values_q15(const fresnel_film_q15 *t, film_values *v)
+{
+    int j, k, ch;
+    v->pole_rows = 4;
+    for (j = 0; j < J; j++) {
+        v->pole[0][j] = t->turn_nu[j];
+        v->pole[1][j] = t->turn_gamma[j];
+        v->pole[2][j] = t->octave_nu[j];
+        v->pole[3][j] = t->octave_gamma[j];
+        for (ch = 0; ch < 3; ch++)
+            v->weight[ch][j][0] = t->weight[ch][j][0], v->weight[ch][j][1] = t->weight[ch][j][1];
+    }
+    for (k = 0; k < NODES; k++) {
+        for (ch = 0; ch < 3; ch++)
+            v->a0[k][ch] = t->node[k].a0[ch];
+        v->opd[k] = t->node[k].opd;
+        v->decay[k] = t->node[k].decay;
+        NODE_TERMS(&t->node[k], v->term[k], double);
+    }
+}
+
+#if FRESNEL_HAS_F16
+static void values_f16(const fresnel_film_f16 *t, film_values *v)
+{
+    int j, k, ch;
+    v->pole_rows = 2;
+    for (j = 0; j < J; j++) {
+        v->pole[0][j] = (double)t->freq[j];
+        v->pole[1][j] = (double)t->damp[j];
+        for (ch = 0; ch < 3; ch++)
+            v->weight[ch][j][0] = (double)t->weight[ch][j][0], v->weight[ch][j][1] = (double)t->weight[ch][j][1];
+    }
+    for (k = 0; k < NODES; k++) {
+        for (ch = 0; ch < 3; ch++)
+            v->a0[k][ch] = (double)t->node[k].a0[ch];
+        v->opd[k] = (double)t->node[k].opd;
+        v->decay[k] = (double)t->node[k].decay;
+        NODE_TERMS(&t->node[k], v->term[k], double);
+    }
+}
+#endif
+
+static void put(FILE *f, double v, int is_float)
+{
+    if (is_float)
+        emit_c_float(f, v);
+    else
+        fprintf(f, "%.0f", v);
+}
+
+static void put_array(FILE *f, const double *v, int n, int is_float)
+{
+    int i;
+    fputc('{', f);
+    for (i = 0; i < n; i++) {
+        if (i)
+            fputs(", ", f);
+        put(f, v[i], is_float);
+    }
+    fputc('}', f);
+}
+
+static void put_values(FILE *f, const film_values *v, int is_float)
+{
+    int r, j, ch, k, t;
+    fputs("{\n    ", f);
+    for (r = 0; r < v->pole_rows; r++) {
+        put_array(f, v->pole[r], J, is_float);
+        fputs(",\n    ", f);
+    }
+    fputc('{', f);
+    for (ch = 0; ch < 3; ch++) {
+        fputs(ch ? ",\n     {" : "{", f);
+        for (j = 0; j < J; j++) {
+            if (j)
+                fputs(", ", f);
+            put_array(f, v->weight[ch][j], 2, is_float);
+        }
+        fputc('}', f);
+    }
+    fputs("},\n    {", f);
+    for (k = 0; k < NODES; k++) {
+        fputs(k ? ",\n     {" : "{", f);
+        put_array(f, v->a0[k], 3, is_float);
+        fputs(", ", f);
+        put(f, v->opd[k], is_float);
+        fputs(", ", f);
+        put(f, v->decay[k], is_float);
+        for (t = 0; t < 8; t++) {
+            fputs(t % 2 ? ", " : ",\n      ", f);
+            put_array(f, v->term[k][t], J, is_float);
+        }
+        fputc('}', f);
+    }
+    fputs("}\n};\n", f);
+}
+
+/* The comment every type's table opens with. */
+static void film_comment(FILE *f, const emit_input *in, int mi, const scene_entry *e, const char *type_note,
+                         const char *call)
+{
+    const scene *sc = in->sc;
+    fprintf(f, "/* %s: a film of index %g on %s in n1 %g, thickness %g-%g nm%s (include/fresnel_film.h),\n"
+               " * %s. Evaluate with %s. */\n",
+            e->name, in->films[mi].n_film, in->params[mi].info.id, sc->n1, sc->film_d_lo, sc->film_d_hi,
+            sc->film_d_lo == 0.0 && sc->film_d_hi == FRESNEL_FILM_D_MAX ? " (set at run time)" : "", type_note, call);
+}
+
+static const scene_entry *film_entry(const scene *sc)
+{
+    int m;
+    for (m = 0; m < sc->model_count; m++)
+        if (sc->models[m].row->offered & MODEL_FILM)
+            return &sc->models[m];
+    return NULL;
+}
+
+/* A literal of a float type must be finite (inf.0f does not compile). */
+static int all_finite(const film_values *v)
+{
+    const double *d = &v->pole[0][0];
+    size_t i, n = (sizeof *v - offsetof(film_values, pole)) / sizeof *d;
+    for (i = 0; i < n; i++)
+        if (!isfinite(d[i]))
+            return 0;
+    return 1;
+}
+
+static int not_finite(const emit_input *in, const char *prefix, const char *type)
+{
+    char where[1100];
+    snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->models_line);
+    return cli_error(where, "%s: the thin-film table holds a value no %s holds; no header written", prefix, type);
+}
+
+int emit_film(FILE *f, const emit_input *in, int mi, const char *prefix, number_type_id type)
+{
+    const scene_entry *e = film_entry(in->sc);
+    const encoded_film *film = in->films ? &in->films[mi] : NULL;
+    film_values v;
+    if (!e || !film)
+        return 0;
+    if (type == TYPE_F32) {
+        values_f32(&film->f32, &v);
+        if (!all_finite(&v))
+            return not_finite(in, prefix, "binary32");
+        film_comment(f, in, mi, e, "binary32", "fresnel_film_rgb(&table, c, d_nm)");
+        fprintf(f, "static const fresnel_film %s_%s FRESNEL_GEN_UNUSED = ", prefix, e->ident);
+        put_values(f, &v, 1);
+    } else if (type == TYPE_Q15) {
+        if (!film->q15_ok) {
+            char where[1100];
+            snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->types_line);
+            return cli_error(where,
+                             "%s: the thin-film table of a %g film leaves the Q1.15 layout's ranges "
+                             "(include/fresnel_film.h); no header written",
+                             prefix, film->n_film);
+        }
+        values_q15(&film->q15, &v);
+        film_comment(f, in, mi, e, "Q1.15 (layout: fresnel_film.h)",
+                     "fresnel_film_q15_rgb(&table, c_q15, d_nm_q16)");
+        fprintf(f, "static const fresnel_film_q15 %s_%s_q15 FRESNEL_GEN_UNUSED = ", prefix, e->ident);
+        put_values(f, &v, 0);
+    } else {
+#if FRESNEL_HAS_F16
+        values_f16(&film->f16, &v);
+        if (!all_finite(&v))
+            return not_finite(in, prefix, "binary16 (largest 65504)");
+        film_comment(f, in, mi, e, "binary16", "fresnel_film_f16_rgb(&table, c, d_nm)");
+        fprintf(f, "static const fresnel_film_f16 %s_%s_f16 FRESNEL_GEN_UNUSED = ", prefix, e->ident);
+        put_values(f, &v, 1);
+#endif
+    }
+    return 0;
+}

@@ -1,0 +1,235 @@
+/* The thin film in the report: a scene's thin-film model measured over
+ * thickness as well as angle against the film's own spectral truth, its
+ * cost beside fresnel_schlick_rgb's in the same run, and its table sizes
+ * (report.h). The film is taken out of the scene's model list, whose
+ * tables measure models of angle alone against the bare material. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench/bench.h"
+#include "common/reference.h"
+#include "report/report.h"
+
+#define WHERE "fresnel report"
+
+/* Thicknesses measured across the scene's range (one where it is one). */
+#define FILM_THICKNESSES 201
+
+/* The accuracy goals (the thin-film feature's), per number type id: mean
+ * and max CIEDE2000; 0 where the goal names none. */
+static const double goal_mean[NUMBER_TYPES] = {0.5, 0.6, 1.0};
+static const double goal_max[NUMBER_TYPES] = {2.0, 2.5, 0.0};
+#define GOAL_COST_X_SCHLICK 10.0
+#define GOAL_M0_INSTRUCTIONS 2000.0
+
+int report_film_take(report_run *r, const char *scene_path)
+{
+    report_film *f = &r->film;
+    int m, i;
+    memset(f, 0, sizeof *f);
+    for (m = 0; m < r->sc.model_count && !(r->sc.models[m].row->offered & MODEL_FILM); m++)
+        ;
+    if (m == r->sc.model_count)
+        return 0;
+    if (r->sc.model_count == 1) /* the report's other sections compare models of angle alone */
+    {
+        char where[1100];
+        snprintf(where, sizeof where, "%s:%d", scene_path, r->sc.models_line);
+        return cli_error(where, "expected a model besides %s in models (the report measures the film beside the bare "
+                                "material's models)",
+                         r->sc.models[m].name);
+    }
+    f->entry = r->sc.models[m];
+    f->present = 1;
+    f->film_n = calloc((size_t)r->sc.material_count, sizeof *f->film_n);
+    f->models = calloc((size_t)r->sc.material_count, sizeof *f->models);
+    f->cells = calloc((size_t)r->sc.material_count * number_types_available, sizeof *f->cells);
+    if (!f->film_n || !f->models || !f->cells)
+        return cli_oom(WHERE);
+    for (i = 0; i < r->sc.material_count; i++)
+        f->film_n[i] = scene_film_n(&r->sc, i);
+    memmove(&r->sc.models[m], &r->sc.models[m + 1], (size_t)(r->sc.model_count - m - 1) * sizeof r->sc.models[0]);
+    r->sc.model_count--;
+    for (i = 0; i < NUMBER_TYPES; i++)
+        f->ns[i] = NAN;
+    f->schlick_ns = NAN;
+    return 0;
+}
+
+void report_film_free(report_run *r)
+{
+    report_film *f = &r->film;
+    int i;
+    for (i = 0; f->models && i < r->sc.material_count; i++)
+        scene_model_free(&f->models[i]);
+    free(f->models);
+    free(f->film_n);
+    free(f->cells);
+    memset(f, 0, sizeof *f);
+}
+
+static double thickness(const scene *sc, int k)
+{
+    return sc->film_d_lo == sc->film_d_hi ? sc->film_d_lo
+                                          : sc->film_d_lo + (sc->film_d_hi - sc->film_d_lo) * k / (FILM_THICKNESSES - 1);
+}
+
+int report_film_measure(report_run *r, int i)
+{
+    report_film *f = &r->film;
+    report_material *rm = &r->mats[i];
+    material_params p = rm->p;
+    film_stack stack;
+    model_rgb q;
+    int a, k, t, nd = r->sc.film_d_lo == r->sc.film_d_hi ? 1 : FILM_THICKNESSES, status;
+    long n = 0;
+    if (!f->present)
+        return 0;
+    p.film_n = f->film_n[i];
+    if ((status = scene_model_prepare(&f->entry, r->sc.spacing, rm->s, r->g, &p, &f->models[i])))
+        return status;
+    q = scene_model_rgb(&f->models[i]);
+    stack.n1 = p.n1;
+    stack.film = NULL;
+    stack.film_n = p.film_n;
+    stack.substrate = rm->s;
+    for (a = 0; a < REPORT_ANGLES; a++) {
+        double c = report_cos(a);
+        film_optics_table *optics = film_truth_prepare(&stack, c);
+        if (!optics)
+            return cli_oom(WHERE);
+        for (k = 0; k < nd; k++) {
+            double truth[3], lab_truth[3];
+            int ch;
+            q.d_nm = thickness(&r->sc, k);
+            film_truth_at(optics, &r->g->cm, &r->g->cs, q.d_nm, truth);
+            for (ch = 0; ch < 3; ch++)
+                truth[ch] = ref_clamp(truth[ch], 0.0, 1.0);
+            lab_space_lab(&r->ls, truth, lab_truth);
+            for (t = 0; t < number_types_available; t++) {
+                report_film_cell *cell = &f->cells[i * number_types_available + t];
+                double rgb[3], lab[3], de;
+                number_types[t].eval(&q, c, rgb);
+                lab_space_lab(&r->ls, rgb, lab);
+                de = ciede2000(lab_truth, lab);
+                cell->de_mean += de;
+                if (de >= cell->de_max) {
+                    cell->de_max = de;
+                    cell->worst_theta = a;
+                    cell->worst_d = q.d_nm;
+                }
+            }
+            n++;
+        }
+        free(optics);
+    }
+    for (t = 0; t < number_types_available; t++)
+        f->cells[i * number_types_available + t].de_mean /= (double)n;
+    f->samples = n;
+    return 0;
+}
+
+void report_film_time(report_run *r)
+{
+    report_film *f = &r->film;
+    bench_batch fns[NUMBER_TYPES + 1];
+    const void *ctxs[NUMBER_TYPES + 1];
+    model_rgb q[NUMBER_TYPES + 1];
+    double ns[NUMBER_TYPES + 1];
+    int t;
+    if (!f->present)
+        return;
+    for (t = 0; t < number_types_available; t++) {
+        q[t] = scene_model_rgb(&f->models[r->timed_material]);
+        q[t].d_nm = 0.5 * (r->sc.film_d_lo + r->sc.film_d_hi);
+        fns[t] = number_types[t].batch(q[t].def);
+        ctxs[t] = &q[t];
+    }
+    q[t] = scene_model_rgb(&f->models[r->timed_material]); /* the same material's F0 */
+    q[t].def = model_schlick;
+    q[t].film = NULL;
+    fns[t] = model_schlick->batch_f32;
+    ctxs[t] = &q[t];
+    /* short samples (2048 evaluations) in many rounds: on a loaded machine a
+     * long sample of the film would be preempted more often than Schlick's */
+    if (bench_ns_per_eval_rounds(fns, ctxs, t + 1, 2048, 101, ns))
+        return;
+    for (t = 0; t < number_types_available; t++)
+        f->ns[t] = ns[t];
+    f->schlick_ns = ns[t];
+}
+
+static const char *mark(double v, double goal) { return goal <= 0.0 ? "" : (v <= goal ? " (goal met)" : " (goal missed)"); }
+
+void report_film_write(report_run *r, FILE *out)
+{
+    const report_film *f = &r->film;
+    const scene *sc = &r->sc;
+    int i, t, nd = sc->film_d_lo == sc->film_d_hi ? 1 : FILM_THICKNESSES;
+    double m0 = r->cross_path && f->entry.row->cross_row ? report_m0_count(r->cross_path, f->entry.row->cross_row) : NAN;
+    static const size_t bytes[NUMBER_TYPES] = {sizeof(fresnel_film), sizeof(fresnel_film_q15),
+#if FRESNEL_HAS_F16
+                                                sizeof(fresnel_film_f16)
+#else
+                                                0
+#endif
+    };
+    char range[96];
+    if (!f->present)
+        return;
+    if (nd > 1)
+        snprintf(range, sizeof range, "%d thicknesses %g-%g nm", nd, sc->film_d_lo, sc->film_d_hi);
+    else
+        snprintf(range, sizeof range, "the thickness %g nm", sc->film_d_lo);
+    fprintf(out, "\n## Thin film\n\n`%s` (include/fresnel_film.h): a transparent film on each material, its "
+                 "thickness a run-time input. CIEDE2000 of the runtime of each type, on the tables `fresnel gen` "
+                 "writes for this scene, against the film's spectral truth (Airy's sum at every nanometre, held "
+                 "to [0, 1] per channel as the runtime holds its result), over theta 0-90 degrees every degree x "
+                 "%s (%ld samples per material):\n\n| material | film n |",
+            f->entry.name, range, f->samples);
+    for (t = 0; t < number_types_available; t++)
+        fprintf(out, " %s mean | %s max |", number_types[t].name, number_types[t].name);
+    fprintf(out, " worst (%s) at |\n|---|---:|", number_types[0].name);
+    for (t = 0; t < number_types_available; t++)
+        fprintf(out, "---:|---:|");
+    fprintf(out, "---|\n");
+    for (i = 0; i < sc->material_count; i++) {
+        const report_film_cell *c0 = &f->cells[i * number_types_available];
+        fprintf(out, "| %s | %g |", r->mats[i].p.info.id, f->film_n[i]);
+        for (t = 0; t < number_types_available; t++)
+            fprintf(out, " %.3f | %.3f |", c0[t].de_mean, c0[t].de_max);
+        fprintf(out, " theta %d, d %.0f nm |\n", c0->worst_theta, c0->worst_d);
+    }
+    fprintf(out, "| all | |");
+    for (t = 0; t < number_types_available; t++) {
+        double mean = 0.0, max = 0.0;
+        for (i = 0; i < sc->material_count; i++) {
+            mean += f->cells[i * number_types_available + t].de_mean / sc->material_count;
+            max = fmax(max, f->cells[i * number_types_available + t].de_max);
+        }
+        fprintf(out, " %.3f%s | %.3f%s |", mean, mark(mean, goal_mean[number_types[t].id]), max,
+                mark(max, goal_max[number_types[t].id]));
+    }
+    fprintf(out, " |\n\nGoals: binary32 mean <= %g, max <= %g; Q1.15 mean <= %g, max <= %g; binary16 mean <= %g.\n",
+            goal_mean[TYPE_F32], goal_max[TYPE_F32], goal_mean[TYPE_Q15], goal_max[TYPE_Q15], goal_mean[TYPE_F16]);
+    fprintf(out, "\n| type | table bytes per material | ns per RGB evaluation | x fresnel_schlick_rgb |\n"
+                 "|---|---:|---:|---:|\n");
+    for (t = 0; t < number_types_available; t++) {
+        fprintf(out, "| %s | %lu |", number_types[t].name, (unsigned long)bytes[number_types[t].id]);
+        if (isnan(f->ns[t]))
+            fprintf(out, " not timed | |\n");
+        else
+            fprintf(out, " %.1f | %.1f%s |\n", f->ns[t], f->ns[t] / f->schlick_ns,
+                    number_types[t].id == TYPE_F32 ? mark(f->ns[t] / f->schlick_ns, GOAL_COST_X_SCHLICK) : "");
+    }
+    if (!isnan(f->schlick_ns))
+        fprintf(out, "\nTimes: %s, the film at %g nm on %s and fresnel_schlick_rgb on the same 2048 cosines, 101 "
+                     "interleaved rounds in one process, medians. Goal: binary32 <= %gx fresnel_schlick_rgb.\n",
+                bench_compiler(), 0.5 * (sc->film_d_lo + sc->film_d_hi), r->mats[r->timed_material].p.info.id,
+                GOAL_COST_X_SCHLICK);
+    if (!isnan(m0))
+        fprintf(out, "\nCortex-M0 (`make cross-count`): %.0f instructions per RGB evaluation of fresnel_film_q15_rgb "
+                     "(goal <= %g: %s).\n",
+                m0, GOAL_M0_INSTRUCTIONS, m0 <= GOAL_M0_INSTRUCTIONS ? "met" : "missed");
+}
