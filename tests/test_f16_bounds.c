@@ -73,6 +73,8 @@ static void check_models(const test_material *mat, int nmat)
         long bad = 0;
         memset(&w, 0, sizeof w);
         memset(&away, 0, sizeof away);
+        if (!m->f16) /* the thin film, or no _Float16: tests/test_film.c */
+            continue;
         for (k = 0; k < nmat; k++) {
             model_params mp;
             if (!in_f16_domain(&mat[k]))

@@ -40,7 +40,7 @@ for film in 2.2:0 1:640; do
 done
 
 # a user's n,k file and every number type
-for ty in $("$F" gen --help | sed -n 's/.*number types: *//p'); do
+for ty in $("$F" gen --help | sed -n 's/^ *types = f32 *number types: *//p'); do
     if "$F" curve --nk data/ti.csv --film 2.4:180 --type "$ty" --samples 10 >"$t/o" 2>"$t/err" &&
         [ "$(wc -l <"$t/o")" -eq 11 ] && ! grep -qiE 'nan|inf' "$t/o"; then
         echo "PASS curve --nk FILE --film --type $ty"
@@ -70,7 +70,7 @@ expect_error "curve thin-film without --film refused" "thin-film needs a film" c
 
 # gen: each type's table, named as the model's identifier
 printf 'name = f\nmaterials = au bk7\nmodels = thin-film\ntypes = %s\nfilm = 1.38\nfilm bk7 = 2.1\nfilm_thickness = 100 400\n' \
-    "$("$F" gen --help | sed -n 's/.*number types: *//p')" >"$t/f.scene"
+    "$("$F" gen --help | sed -n 's/^ *types = f32 *number types: *//p')" >"$t/f.scene"
 if "$F" gen "$t/f.scene" -o "$t/f.h" 2>"$t/err" && grep -q 'static const fresnel_film fresnel_f_au_thin_film ' "$t/f.h" &&
     grep -q 'static const fresnel_film_q15 fresnel_f_bk7_thin_film_q15 ' "$t/f.h" && grep -q '#include "fresnel_film.h"' "$t/f.h" &&
     grep -q 'a film of index 2.1 on bk7 in n1 1, thickness 100-400 nm' "$t/f.h"; then

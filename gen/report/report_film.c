@@ -167,7 +167,7 @@ void report_film_write(report_run *r, FILE *out)
     const report_film *f = &r->film;
     const scene *sc = &r->sc;
     int i, t, nd = sc->film_d_lo == sc->film_d_hi ? 1 : FILM_THICKNESSES;
-    double m0 = r->cross_path && f->entry.row->cross_row ? report_m0_count(r->cross_path, f->entry.row->cross_row) : NAN;
+    double m0;
     static const size_t bytes[NUMBER_TYPES] = {sizeof(fresnel_film), sizeof(fresnel_film_q15),
 #if FRESNEL_HAS_F16
                                                 sizeof(fresnel_film_f16)
@@ -178,6 +178,7 @@ void report_film_write(report_run *r, FILE *out)
     char range[96];
     if (!f->present)
         return;
+    m0 = r->cross_path && f->entry.row->cross_row ? report_m0_count(r->cross_path, f->entry.row->cross_row) : NAN;
     if (nd > 1)
         snprintf(range, sizeof range, "%d thicknesses %g-%g nm", nd, sc->film_d_lo, sc->film_d_hi);
     else
