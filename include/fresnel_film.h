@@ -98,8 +98,21 @@
  *   the channels, loops vectorised at -O2: 117.6 ns against 6.1 ns for
  *   fresnel_schlick_rgb, 19.1x (make bench OPT=-O2, rows film-f32 and
  *   schlick-rgb-f32, target film-vs-schlick-rgb; gcc 12, an AMD EPYC
- *   x86-64). Fewer poles would cost accuracy (the observer's fit needs six
- *   for the CIEDE2000 goals at thin films).
+ *   x86-64). By pole count (sh tests/speed/film_poles.sh: each count
+ *   built on its own; CIEDE2000 against the spectral truth at
+ *   build/tests/test_film's default sampling, 18180 samples; binary32 time
+ *   and its ratio to fresnel_schlick_rgb in the same round, make bench
+ *   gcc -O2; Cortex-M0 instructions per RGB call, make cross-count's
+ *   thin-film row):
+ *             binary32      Q1.15        binary16     binary32     M0
+ *     poles   mean   max    mean   max   mean   max   ns   ratio   instr
+ *       3     0.829 12.13   0.829 12.16  0.837 12.23  104  16.0    1846
+ *       4     0.458  8.07   0.458  8.04  0.468  8.05  104  17.0    2288
+ *       5     0.125  2.66   0.127  2.66  0.151  2.75  110  17.0    2712
+ *       6     0.079  1.02   0.081  1.02  0.111  1.09  117  19.1    3465
+ *   Only six poles meet the CIEDE2000 maxima (binary32 2.0, Q1.15 2.5).
+ *   The binary32 time hardly falls with fewer poles: its loops run eight
+ *   lanes, padded, whatever the count (src/f32/film.c).
  *   Q1.15 on a Cortex-M0 (make cross-count, row thin-film: gcc -Os, qemu
  *   trace over tests/cross/bench.c's 153 cosines, thicknesses 0-4096 nm):
  *   3465 instructions on average, 2089-4018 (4897 cycles with a 1-cycle
