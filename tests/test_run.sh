@@ -30,7 +30,7 @@ check test_slow 'echo "PASS slow"' 'passes: first' 'make check: no (an external 
 check test_meet_a 'echo "PASS a1"; : >"$BUILD/a"; i=0; while [ ! -f "$BUILD/b" ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done; [ -f "$BUILD/b" ] && echo "PASS a2 met b" || echo "FAIL a2: b never ran beside a"' 'passes: first'
 check test_meet_b 'echo "PASS b1"; : >"$BUILD/b"; i=0; while [ ! -f "$BUILD/a" ] && [ $i -lt 300 ]; do sleep 0.1; i=$((i + 1)); done; [ -f "$BUILD/a" ] && echo "PASS b2 met a" || echo "FAIL b2: a never ran beside b"' 'passes: first'
 check test_zz_early 'echo "PASS early"' 'passes: first' 'start: early (a long one)'
-printf '/* a C check\n * passes: sanitize */\n' >"$t/tests/test_c.c"
+printf '/* a C check\n * passes: sanitize */\n' >"$t/${T}test_c.c"
 printf '#!/bin/sh\necho "PASS c binary $0"\n' >"$t/build/asan/tests/test_c"
 chmod +x "$t/build/asan/tests/test_c"
 

@@ -23,74 +23,63 @@ typedef struct film_values {
     double term[NODES][8][J]; /* a_re, a_im, b_re, b_im, p_re, p_im, q_re, q_im */
 } film_values;
 
-#define NODE_TERMS(n, v, T)                                                                                 \
+/* The weights and the 32 nodes, named alike in the three layouts: a macro
+ * over the table's type, each value converted to double. */
+#define FILM_WEIGHTS_AND_NODES(t, v)                                                                        \
     do {                                                                                                    \
-        int j_;                                                                                             \
-        for (j_ = 0; j_ < J; j_++) {                                                                        \
-            (v)[0][j_] = (T)(n)->a_re[j_], (v)[1][j_] = (T)(n)->a_im[j_], (v)[2][j_] = (T)(n)->b_re[j_];    \
-            (v)[3][j_] = (T)(n)->b_im[j_], (v)[4][j_] = (T)(n)->p_re[j_], (v)[5][j_] = (T)(n)->p_im[j_];    \
-            (v)[6][j_] = (T)(n)->q_re[j_], (v)[7][j_] = (T)(n)->q_im[j_];                                   \
+        int j_, k_, ch_;                                                                                    \
+        for (j_ = 0; j_ < J; j_++)                                                                          \
+            for (ch_ = 0; ch_ < 3; ch_++)                                                                   \
+                (v)->weight[ch_][j_][0] = (double)(t)->weight[ch_][j_][0],                                  \
+                (v)->weight[ch_][j_][1] = (double)(t)->weight[ch_][j_][1];                                  \
+        for (k_ = 0; k_ < NODES; k_++) {                                                                    \
+            for (ch_ = 0; ch_ < 3; ch_++)                                                                   \
+                (v)->a0[k_][ch_] = (double)(t)->node[k_].a0[ch_];                                           \
+            (v)->opd[k_] = (double)(t)->node[k_].opd;                                                       \
+            (v)->decay[k_] = (double)(t)->node[k_].decay;                                                   \
+            for (j_ = 0; j_ < J; j_++) {                                                                    \
+                (v)->term[k_][0][j_] = (double)(t)->node[k_].a_re[j_];                                      \
+                (v)->term[k_][1][j_] = (double)(t)->node[k_].a_im[j_];                                      \
+                (v)->term[k_][2][j_] = (double)(t)->node[k_].b_re[j_];                                      \
+                (v)->term[k_][3][j_] = (double)(t)->node[k_].b_im[j_];                                      \
+                (v)->term[k_][4][j_] = (double)(t)->node[k_].p_re[j_];                                      \
+                (v)->term[k_][5][j_] = (double)(t)->node[k_].p_im[j_];                                      \
+                (v)->term[k_][6][j_] = (double)(t)->node[k_].q_re[j_];                                      \
+                (v)->term[k_][7][j_] = (double)(t)->node[k_].q_im[j_];                                      \
+            }                                                                                               \
         }                                                                                                   \
     } while (0)
 
 static void values_f32(const fresnel_film *t, film_values *v)
 {
-    int j, k, ch;
+    int j;
     v->pole_rows = 2;
-    for (j = 0; j < J; j++) {
-        v->pole[0][j] = t->freq[j];
-        v->pole[1][j] = t->damp[j];
-        for (ch = 0; ch < 3; ch++)
-            v->weight[ch][j][0] = t->weight[ch][j][0], v->weight[ch][j][1] = t->weight[ch][j][1];
-    }
-    for (k = 0; k < NODES; k++) {
-        for (ch = 0; ch < 3; ch++)
-            v->a0[k][ch] = t->node[k].a0[ch];
-        v->opd[k] = t->node[k].opd;
-        v->decay[k] = t->node[k].decay;
-        NODE_TERMS(&t->node[k], v->term[k], double);
-    }
+    for (j = 0; j < J; j++)
+        v->pole[0][j] = t->freq[j], v->pole[1][j] = t->damp[j];
+    FILM_WEIGHTS_AND_NODES(t, v);
 }
 
 static void values_q15(const fresnel_film_q15 *t, film_values *v)
 {
-    int j, k, ch;
+    int j;
     v->pole_rows = 4;
     for (j = 0; j < J; j++) {
         v->pole[0][j] = t->turn_nu[j];
         v->pole[1][j] = t->turn_gamma[j];
         v->pole[2][j] = t->octave_nu[j];
         v->pole[3][j] = t->octave_gamma[j];
-        for (ch = 0; ch < 3; ch++)
-            v->weight[ch][j][0] = t->weight[ch][j][0], v->weight[ch][j][1] = t->weight[ch][j][1];
     }
-    for (k = 0; k < NODES; k++) {
-        for (ch = 0; ch < 3; ch++)
-            v->a0[k][ch] = t->node[k].a0[ch];
-        v->opd[k] = t->node[k].opd;
-        v->decay[k] = t->node[k].decay;
-        NODE_TERMS(&t->node[k], v->term[k], double);
-    }
+    FILM_WEIGHTS_AND_NODES(t, v);
 }
 
 #if FRESNEL_HAS_F16
 static void values_f16(const fresnel_film_f16 *t, film_values *v)
 {
-    int j, k, ch;
+    int j;
     v->pole_rows = 2;
-    for (j = 0; j < J; j++) {
-        v->pole[0][j] = (double)t->freq[j];
-        v->pole[1][j] = (double)t->damp[j];
-        for (ch = 0; ch < 3; ch++)
-            v->weight[ch][j][0] = (double)t->weight[ch][j][0], v->weight[ch][j][1] = (double)t->weight[ch][j][1];
-    }
-    for (k = 0; k < NODES; k++) {
-        for (ch = 0; ch < 3; ch++)
-            v->a0[k][ch] = (double)t->node[k].a0[ch];
-        v->opd[k] = (double)t->node[k].opd;
-        v->decay[k] = (double)t->node[k].decay;
-        NODE_TERMS(&t->node[k], v->term[k], double);
-    }
+    for (j = 0; j < J; j++)
+        v->pole[0][j] = (double)t->freq[j], v->pole[1][j] = (double)t->damp[j];
+    FILM_WEIGHTS_AND_NODES(t, v);
 }
 #endif
 
