@@ -4,16 +4,17 @@
 # make check: no (Vulkan, lavapipe)
 # start: early (lavapipe compiles every table)
 # The shader ports in a real Vulkan pipeline (ports/vulkan/): for the default
-# scene and two scenes with every model and every LUT kind, `fresnel gen
-# --glsl` (GLSL 4.50) and `fresnel gen --hlsl` after their ports, compiled to
-# SPIR-V by glslangValidator, checked by spirv-val and run on Mesa's
-# lavapipe by tests/vulkan_test.c (built by make test-bins), against the C
-# runtime on every cosine step of 1/1024. Then the bad inputs of --hlsl.
-# The thin film runs in OSMesa (tests/test_glsl_gen.sh) and Chromium
-# (tests/test_viewer.sh) and compiles and validates here in every committed
-# scene's HLSL (data/scenes/report.scene) and in tests/test_glsl_glslang.sh;
-# not on lavapipe, where one material's four pipelines ran over 25 minutes
-# (SPIR-V indexes a const array through a per-invocation copy: 1744 floats).
+# scene, two scenes with every model and every LUT kind and the thin film on
+# six substrates, `fresnel gen --glsl` (GLSL 4.50) and `fresnel gen --hlsl`
+# after their ports, compiled to SPIR-V by glslangValidator, checked by
+# spirv-val and run on Mesa's lavapipe by tests/vulkan_test.c (built by make
+# test-bins), against the C runtime on every cosine step of 1/1024. The thin
+# film runs from its table in a storage buffer, as on a GPU (a scene's const
+# array is copied into every invocation by SPIR-V: over 25 minutes for one
+# material's four pipelines); the scenes' film functions run in OSMesa
+# (tests/test_glsl_gen.sh) and Chromium (tests/test_viewer.sh) and compile
+# and validate here in every committed scene's HLSL. Then the bad inputs of
+# --hlsl.
 # Missing tools are a FAIL, not a skip (make test installs them: tests/deps.sh).
 #
 # VULKAN_DEVICE picks the device (vulkan_test --device): cpu, lavapipe, by
@@ -58,7 +59,8 @@ fi
 # Leak detection is off as in tests/test_glsl.sh: in the sanitizer pass the
 # one leak LeakSanitizer reports is 128 bytes allocated inside libubsan
 # itself (a realloc in libubsan.so) while the driver runs, not by the host.
-for manifest in data/scenes/default.scene tests/scenes/vk_models.scene tests/scenes/vk_uniform.scene; do
+for manifest in data/scenes/default.scene tests/scenes/vk_models.scene tests/scenes/vk_uniform.scene \
+    tests/scenes/vk_film.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
     if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$out/$ident.glsl" 2>"$out/gen.log" ||
         ! "$BUILD/fresnel" gen "$manifest" --hlsl -o "$out/$ident.hlsl" 2>>"$out/gen.log"; then

@@ -7,7 +7,8 @@
  * and HLSL front end with -D -e main -Iports/hlsl), checked by
  * spirv-val, and run on every cosine c = i/1024, i = -1..1025 (both ends
  * just outside [0, 1]) for every material and model of the scene (the thin
- * film at thicknesses 0-1195 nm scattered over the cosines); each
+ * film at thicknesses 0-1195 nm scattered over the cosines, its table in a
+ * storage buffer: write_main); each
  * result is compared with what the C runtime computes from the same
  * manifest (gen/scene/scene_eval.c, the evaluation of the C header).
  *
@@ -96,34 +97,52 @@ static char *read_file(const char *path)
 #define FILM_D "float((i * 157) % 256) * 4.6875"
 static float film_d(int i) { return (float)((i * 157) % 256) * 4.6875f; }
 
+/* The thin film runs from a storage buffer, as a GPU application hands
+ * fresnel_film_rgb its table: the input buffer holds the material's
+ * fresnel_film (FILM_FLOATS floats, the order of the C struct and of the
+ * port's table) and then the cosines; the shader's function is the port's
+ * FRESNEL_FILM_RGB_BODY over that buffer. (The scene's own film functions
+ * index a const array, which SPIR-V copies into every invocation: over 25
+ * minutes for one material's four pipelines on lavapipe. The scene's
+ * tables are the C header's, tests/test_gen_shaders.sh.) */
+#define FILM_FLOATS (sizeof(fresnel_film) / sizeof(float)) /* the port's FRESNEL_FILM_FLOATS */
+
 /* The shader's main(): invocation i evaluates at cosine fr_c[i] the model
  * and material that specialisation constants 0 and 1 select (so each
  * pipeline compiles one function), and writes the three channels; the
- * thin film at thickness FILM_D. */
+ * thin film at thickness FILM_D, from the table before the cosines. */
 static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, int m)
 {
-    int i;
+    int i, film = (sc->models[m].row->offered & MODEL_FILM) != 0;
     char id[32];
     if (hlsl)
         fprintf(f, "\n[[vk::binding(0, 0)]] StructuredBuffer<float> fr_c;\n"
                    "[[vk::binding(1, 0)]] RWStructuredBuffer<float> fr_out;\n"
-                   "[[vk::constant_id(0)]] const int fr_material = 0;\n"
-                   "[numthreads(%d, 1, 1)]\nvoid main(uint3 fr_id : SV_DispatchThreadID)\n{\n"
-                   "    int i = (int)fr_id.x;\n    float3 r = float3(-1.0, -1.0, -1.0);\n    float c;\n",
-                GROUP);
+                   "[[vk::constant_id(0)]] const int fr_material = 0;\n");
     else
         fprintf(f, "\nlayout(local_size_x = %d) in;\n"
                    "layout(std430, set = 0, binding = 0) readonly buffer FrIn { highp float fr_c[]; };\n"
                    "layout(std430, set = 0, binding = 1) writeonly buffer FrOut { highp float fr_out[]; };\n"
-                   "layout(constant_id = 0) const int fr_material = 0;\n"
-                   "void main()\n{\n    int i = int(gl_GlobalInvocationID.x);\n    vec3 r = vec3(-1.0);\n"
-                   "    highp float c;\n",
+                   "layout(constant_id = 0) const int fr_material = 0;\n",
                 GROUP);
-    fprintf(f, "    if (i >= %d)\n        return;\n    c = fr_c[i];\n", NCOS);
+    if (film)
+        fprintf(f, "%s fr_film(%s c, %s d_nm)\n{\n    FRESNEL_FILM_RGB_BODY(fr_c, c, d_nm)\n}\n",
+                hlsl ? "float3" : "vec3", hlsl ? "float" : "highp float", hlsl ? "float" : "highp float");
+    if (hlsl)
+        fprintf(f, "[numthreads(%d, 1, 1)]\nvoid main(uint3 fr_id : SV_DispatchThreadID)\n{\n"
+                   "    int i = (int)fr_id.x;\n    float3 r = float3(-1.0, -1.0, -1.0);\n    float c;\n",
+                GROUP);
+    else
+        fprintf(f, "void main()\n{\n    int i = int(gl_GlobalInvocationID.x);\n    vec3 r = vec3(-1.0);\n"
+                   "    highp float c;\n");
+    fprintf(f, "    if (i >= %d)\n        return;\n    c = fr_c[%si];\n", NCOS, film ? "FRESNEL_FILM_FLOATS + " : "");
     snprintf(id, sizeof id, "%s", sc->models[m].ident);
-    for (i = 0; i < sc->material_count; i++)
-        fprintf(f, "    %sif (fr_material == %d) r = fresnel_%s_%s_%s_rgb(c%s);\n", i ? "else " : "", i, ident,
-                sc->materials[i], id, sc->models[m].row->offered & MODEL_FILM ? ", " FILM_D : "");
+    if (film)
+        fputs("    r = fr_film(c, " FILM_D ");\n", f);
+    else
+        for (i = 0; i < sc->material_count; i++)
+            fprintf(f, "    %sif (fr_material == %d) r = fresnel_%s_%s_%s_rgb(c);\n", i ? "else " : "", i, ident,
+                    sc->materials[i], id);
     fprintf(f, "    fr_out[3 * i] = r.x;\n    fr_out[3 * i + 1] = r.y;\n    fr_out[3 * i + 2] = r.z;\n}\n");
 }
 
@@ -298,10 +317,11 @@ int main(int argc, char **argv)
     material_params *params;
     spectrum *spectra;
     scene_model *models; /* [material][model] */
+    static float film_in[FILM_FLOATS + NCOS]; /* a film's table, then the cosines */
     float cosines[NCOS], *ref, *out[NVARIANTS];
     size_t nout;
     vkrun v;
-    int i, m, k, vi, nmat;
+    int i, m, k, vi, nmat, highp_only = 1;
     const char *device = "cpu";
     if (argc > 1 && !strcmp(argv[1], "--device")) {
         if (argc < 3 || !vkrun_device_valid(argv[2])) {
@@ -324,6 +344,8 @@ int main(int argc, char **argv)
         return harness_exit();
     }
     nmat = sc.material_count;
+    for (m = 0; m < sc.model_count; m++)
+        highp_only &= (sc.models[m].row->offered & MODEL_FILM) != 0;
     nout = (size_t)3 * NCOS * (size_t)nmat;
     params = calloc((size_t)nmat, sizeof *params);
     spectra = calloc((size_t)nmat, sizeof *spectra);
@@ -335,7 +357,7 @@ int main(int argc, char **argv)
         if (!(out[vi] = malloc(nout * (size_t)sc.model_count * sizeof *out[vi])))
             return 1;
     for (i = 0; i < NCOS; i++)
-        cosines[i] = (float)(i + C_LO) / 1024.0f;
+        film_in[FILM_FLOATS + i] = cosines[i] = (float)(i + C_LO) / 1024.0f;
     for (i = 0; i < nmat; i++) {
         material_source ms = scene_material(&sc, i);
         if (derive_parameters(&gc, &ms, sc.sigma, sc.n1, &spectra[i], &params[i]))
@@ -419,8 +441,16 @@ int main(int argc, char **argv)
             for (i = 0; i < nmat && ok; i++) {
                 int32_t spec = i;
                 vkrun_pipe p;
+                const encoded_film *ef = models[i * sc.model_count + m].film;
+                const float *in = cosines;
+                size_t nin = NCOS;
+                if (ef) {
+                    memcpy(film_in, &ef->f32, sizeof ef->f32);
+                    in = film_in;
+                    nin = FILM_FLOATS + NCOS;
+                }
                 if (vkrun_pipeline(&v, words, nbytes, &spec, 1, 0, &p, err, sizeof err) ||
-                    vkrun_dispatch(&v, &p, NULL, cosines, NCOS, o + (size_t)3 * NCOS * (size_t)i, (size_t)3 * NCOS,
+                    vkrun_dispatch(&v, &p, NULL, in, nin, o + (size_t)3 * NCOS * (size_t)i, (size_t)3 * NCOS,
                                    (NCOS + GROUP - 1) / GROUP, err, sizeof err)) {
                     CHECK(name, 0, "%s: %s", sc.materials[i], err);
                     ok = 0;
@@ -450,7 +480,11 @@ int main(int argc, char **argv)
         }
         free(scene_src);
         ran[vi] = built == sc.model_count;
-        if (built) {
+        if (built && va->relaxed && highp_only) {
+            /* the film's port function is highp throughout */
+            NOTE("vulkan: %s %s: %d to %d RelaxedPrecision decorations per module (the scene's functions are "
+                 "highp throughout)", ident, va->name, relaxed_min, relaxed_max);
+        } else if (built) {
             char name[256];
             snprintf(name, sizeof name, "vulkan: %s %s: %s RelaxedPrecision decorations (%d to %d per module)", ident,
                      va->name, va->relaxed ? "the modules have" : "no module has", relaxed_min, relaxed_max);
