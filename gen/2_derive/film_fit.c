@@ -253,7 +253,8 @@ int film_fit_poles(const colorimetry *cm, const colour_space *cs, film_model *m,
     for (j = 0; j < J; j++) {
         m->nu[j] = theta[2 * j];
         m->gamma[j] = exp(theta[2 * j + 1]);
-        if (!(m->nu[j] > 1.0 / SPEC_HI_NM && m->nu[j] < 1.0 / SPEC_LO_NM && m->gamma[j] > 0.0))
+        /* (the binary32 runtime relies on 0 < nu, gamma < 1: src/f32/film.c) */
+        if (!(m->nu[j] > 1.0 / SPEC_HI_NM && m->nu[j] < 1.0 / SPEC_LO_NM && m->gamma[j] > 0.0 && m->gamma[j] < 1.0))
             goto done;
         for (k = 0; k < 3; k++)
             m->weight[k][j] = cs->xyz_to_rgb[k][0] * coef[0][j] + cs->xyz_to_rgb[k][1] * coef[1][j] +

@@ -130,7 +130,7 @@ fresnel_rgb_q15 fresnel_film_q15_rgb(const fresnel_film_q15 *m, int32_t c_in, fr
     const fresnel_film_node_q15 *lo, *hi;
     uint32_t c = fresnel_i_q15_arg(c_in), pos, d, x, y, opd, decay;
     int32_t t, zc[FRESNEL_FILM_POLES], zs[FRESNEL_FILM_POLES], acc[3];
-    int32_t fr[FRESNEL_FILM_POLES], fi[FRESNEL_FILM_POLES];
+    int32_t fr[FRESNEL_FILM_POLES], fi[FRESNEL_FILM_POLES], split[FRESNEL_FILM_POLES][4];
     int i, j, ch;
     fresnel_rgb_q15 out;
     d = d_in <= 0 ? 0u : (d_in >= FRESNEL_FILM_D_MAX_Q16 ? (uint32_t)FRESNEL_FILM_D_MAX_Q16 : (uint32_t)d_in);
@@ -264,24 +264,24 @@ fresnel_rgb_q15 fresnel_film_q15_rgb(const fresnel_film_q15 *m, int32_t c_in, fr
 
     /* R = a0 + sum_j Re(w_j F_j): w Q12 times F Q20, F split into its top
      * bits (F >> 15, below 2^15) and low 15 bits, whose products with w
-     * (below 2^30) are summed at 2^-3 of their scale; Q17 */
-    for (ch = 0; ch < 3; ch++)
-        acc[ch] = fresnel_i_film_lerp(lo->a0[ch], hi->a0[ch], t) * 8;
-    {
-        int32_t low[3] = {0, 0, 0};
-        for (j = 0; j < FRESNEL_FILM_POLES; j++) {
-            int32_t rh = fresnel_i_film_asr(fr[j], 15), rl = fr[j] & 0x7fff;
-            int32_t ih = fresnel_i_film_asr(fi[j], 15), il = fi[j] & 0x7fff;
-            for (ch = 0; ch < 3; ch++) {
-                int32_t wr = m->weight[ch][j][0], wi = m->weight[ch][j][1];
-                acc[ch] += rh * wr - ih * wi;
-                low[ch] += fresnel_i_film_asr(rl * wr - il * wi, 3);
-            }
+     * (below 2^30) are summed at 2^-3 of their scale; Q17. One channel at a
+     * time, the poles inside: few values live at once (a Cortex-M0 has
+     * eight low registers). */
+    for (j = 0; j < FRESNEL_FILM_POLES; j++) {
+        split[j][0] = fresnel_i_film_asr(fr[j], 15);
+        split[j][1] = fresnel_i_film_asr(fi[j], 15);
+        split[j][2] = fr[j] & 0x7fff;
+        split[j][3] = fi[j] & 0x7fff;
+    }
+    for (ch = 0; ch < 3; ch++) {
+        const int16_t *w = m->weight[ch][0];
+        int32_t high = fresnel_i_film_lerp(lo->a0[ch], hi->a0[ch], t) * 8, low = 0;
+        for (j = 0; j < FRESNEL_FILM_POLES; j++, w += 2) {
+            high += split[j][0] * w[0] - split[j][1] * w[1];
+            low += fresnel_i_film_asr(split[j][2] * w[0] - split[j][3] * w[1], 3);
         }
-        for (ch = 0; ch < 3; ch++) {
-            acc[ch] = fresnel_i_film_asr(acc[ch] + fresnel_i_film_asr(low[ch], 12) + 2, 2);
-            acc[ch] = acc[ch] < 0 ? 0 : (acc[ch] > 32768 ? 32768 : acc[ch]);
-        }
+        high = fresnel_i_film_asr(high + fresnel_i_film_asr(low, 12) + 2, 2);
+        acc[ch] = high < 0 ? 0 : (high > 32768 ? 32768 : high);
     }
     out.r = (fresnel_q15)acc[0];
     out.g = (fresnel_q15)acc[1];
