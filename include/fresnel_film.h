@@ -95,31 +95,48 @@
  * COST per RGB evaluation
  *   binary32: 53 interpolated table values, 6 complex exponentials (short
  *   polynomials, no libm call), 6 complex divisions, 36 multiply-adds for
- *   the channels, loops vectorised at -O2: 117.6 ns against 6.1 ns for
- *   fresnel_schlick_rgb, 19.1x (make bench OPT=-O2, rows film-f32 and
- *   schlick-rgb-f32, target film-vs-schlick-rgb; gcc 12, an AMD EPYC
- *   x86-64). By pole count (sh tests/speed/film_poles.sh: each count
- *   built on its own; CIEDE2000 against the spectral truth at
- *   build/tests/test_film's default sampling, 18180 samples; binary32 time
- *   and its ratio to fresnel_schlick_rgb in the same round, make bench
- *   gcc -O2; Cortex-M0 instructions per RGB call, make cross-count's
- *   thin-film row):
+ *   the channels; the poles' loop runs 8 lanes, padded, without a branch,
+ *   and compilers vectorise it (src/f32/film.c). make bench, rows film-f32
+ *   and schlick-rgb-f32, target film-vs-schlick-rgb (medians of the ratio
+ *   in the same round; gcc 12 and clang 14, an AMD EPYC x86-64):
+ *                               film ns   fresnel_schlick_rgb ns   ratio
+ *     gcc -O2                    65.4           6.1                10.7
+ *     gcc -O3 -march=native      67.8           5.1                13.2
+ *     clang -O2                  74.4           3.0                24.5
+ *     clang -O3 -march=native    72.9           2.2                33.5
+ *   The goal, 10x, is missed: the film costs 65-75 ns under every compiler
+ *   (at 4 lanes, two vectors of the poles' work, each an exponential, a
+ *   phase and a complex division, and the interpolation and channels' sums
+ *   around them), while fresnel_schlick_rgb costs 2-6 ns, the least with
+ *   clang. No pole count meets both the time and the CIEDE2000 maxima
+ *   (below).
+ *   By pole count (sh tests/speed/film_poles.sh: each count built on its
+ *   own; CIEDE2000 against the spectral truth at build/tests/test_film's
+ *   default sampling, 18180 samples; binary32 time and its ratio to
+ *   fresnel_schlick_rgb in the same round, make bench gcc -O2; Cortex-M0
+ *   instructions per RGB call, make cross-count's thin-film row):
  *             binary32      Q1.15        binary16     binary32     M0
  *     poles   mean   max    mean   max   mean   max   ns   ratio   instr
- *       3     0.829 12.13   0.829 12.16  0.837 12.23  104  16.0    1846
- *       4     0.458  8.07   0.458  8.04  0.468  8.05  104  17.0    2288
- *       5     0.125  2.66   0.127  2.66  0.151  2.75  110  17.0    2712
- *       6     0.079  1.02   0.081  1.02  0.111  1.09  117  19.1    3465
+ *       3     0.829 12.13   0.829 12.16  0.837 12.23  70.6  11.6   1809
+ *       4     0.458  8.07   0.458  8.04  0.468  8.05  66.7  10.3   2249
+ *       5     0.125  2.66   0.127  2.66  0.151  2.75  75.0  12.3   2665
+ *       6     0.079  1.02   0.081  1.02  0.111  1.09  65.4  10.7   3396
  *   Only six poles meet the CIEDE2000 maxima (binary32 2.0, Q1.15 2.5).
- *   The binary32 time hardly falls with fewer poles: its loops run eight
- *   lanes, padded, whatever the count (src/f32/film.c).
+ *   The binary32 time hardly changes with the count: the loop runs eight
+ *   lanes whatever it is.
  *   Q1.15 on a Cortex-M0 (make cross-count, row thin-film: gcc -Os, qemu
  *   trace over tests/cross/bench.c's 153 cosines, thicknesses 0-4096 nm):
- *   3465 instructions on average, 2089-4018 (4897 cycles with a 1-cycle
- *   multiplier, 15299 with a 32-cycle one); no division instruction (a
- *   257-entry reciprocal table after a shift normalisation), no soft-float
- *   helper; 1.2 KiB of shared tables (quarter sine, 2^-x, 1/x), 1.9 KiB of
- *   code. Bit-identical on the Cortex-M0, M4F and RV32IMC and the host
+ *   3396 instructions on average, 2020-3949 (4840 cycles with a 1-cycle
+ *   multiplier, 15242 with a 32-cycle one; Cortex-M4F 1945, RV32IMC
+ *   2373); no division instruction (a 257-entry reciprocal table after a
+ *   shift normalisation), no soft-float helper; 1.2 KiB of shared tables
+ *   (quarter sine, 2^-x, 1/x), 1.9 KiB of code. The goal, 2000, is
+ *   missed: each pole interpolates 8 values and forms a complex
+ *   exponential from tables and a complex division normalised by shifts,
+ *   and the channels' sums take 72 multiplications (16-bit weights by
+ *   30-bit terms split in two halves: the Cortex-M0 has no 64-bit
+ *   product); three poles would meet it and miss the CIEDE2000 maximum
+ *   sixfold. Bit-identical on the Cortex-M0, M4F and RV32IMC and the host
  *   (make cross-test).
  *   Table per material: sizeof(fresnel_film) 6976 bytes, fresnel_film_q15
  *   3560, fresnel_film_f16 3488.
@@ -141,7 +158,7 @@ extern "C" {
 #define FRESNEL_FILM_NODES 32  /* table cosines c_k = (k / 31)^2 */
 #define FRESNEL_FILM_D_MAX 5000.0f /* nm; thicker is clamped */
 #define FRESNEL_FILM_D_MAX_Q16 (5000 * 65536)
-#define FRESNEL_BOUND_FILM 1.5e-6f  /* binary32: 7.5e-7 measured (tests/test_film.c) */
+#define FRESNEL_BOUND_FILM 1.5e-6f  /* binary32: 7.1e-7 measured (tests/test_film.c) */
 #define FRESNEL_BOUND_FILM_Q15 24.0 /* Q1.15, LSB: 17.8 measured */
 #define FRESNEL_BOUND_FILM_F16 8e-3 /* binary16: 6.1e-3 measured */
 

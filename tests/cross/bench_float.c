@@ -6,10 +6,12 @@
  * With BENCH_BATCH_N (the AArch64 build, ports/cross.sh) the conductor
  * batches join the binary32 rows: each call covers BENCH_BATCH_N cosines
  * uniform in [0, 1], and the row's name line carries that number after a
- * tab, so that ports/count.sh reports instructions per cosine. */
+ * tab, so that ports/count.sh reports instructions per cosine, and so
+ * do Schlick's RGB and the thin film's (fresnel_film.h). */
 #include "conform.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
+#include "fresnel_film.h"
 #include "port.h"
 
 #define BENCH_CODES 33
@@ -53,6 +55,21 @@ static float e_rgb_batch(const float *m, float c)
     fresnel_conductor_rgb_batch(prep, batch_cos, batch_rgb, BENCH_BATCH_N);
     return batch_rgb[0].r;
 }
+/* RGB per cosine, the three channels summed: Schlick's, and the thin film
+ * (a 2.5 film on gold, 4096 c nm thick) */
+static float e_schlick_rgb(const float *m, float c)
+{
+    fresnel_rgb f0, r;
+    f0.r = m[2], f0.g = 0.5f * m[2], f0.b = 0.25f * m[2];
+    r = fresnel_schlick_rgb(f0, c);
+    return r.r + r.g + r.b;
+}
+static float e_film(const float *m, float c)
+{
+    fresnel_rgb r = fresnel_film_rgb(&conform_film_f32, c, 4096.0f * c);
+    (void)m;
+    return r.r + r.g + r.b;
+}
 #define BENCH_STR_(x) #x
 #define BENCH_STR(x) BENCH_STR_(x)
 #endif
@@ -80,6 +97,8 @@ static const struct {
     {"f32 exact-conductor prepared", e_prepared},
     {"f32 conductor-batch\t" BENCH_STR(BENCH_BATCH_N), e_batch},
     {"f32 conductor-rgb-batch\t" BENCH_STR(BENCH_BATCH_N), e_rgb_batch},
+    {"f32 schlick-rgb", e_schlick_rgb},
+    {"f32 thin-film", e_film},
 #endif
 };
 

@@ -49,7 +49,10 @@ extern const int8_t conform_lut_s8[2][CONFORM_LUT_N];
 extern const int conform_lut_frac16, conform_lut_frac8;
 extern const int32_t conform_lut_f0;
 
-/* A thin film's table (fresnel_film.h): a 2.5 film on gold in air, sRGB. */
+/* A thin film's tables (fresnel_film.h): a 2.5 film on gold in air, sRGB. */
 extern const fresnel_film_q15 conform_film;
+#if FRESNEL_HAS_FLOAT
+extern const fresnel_film conform_film_f32;
+#endif
 
 #endif

@@ -36,14 +36,33 @@ static void ints(const char *open, const void *v, int n, int is16, int is_signed
     }
 }
 
-/* The thin film's Q1.15 table (fresnel_film.h): a 2.5 film on gold in air,
- * sRGB, as `fresnel gen` fits and encodes it. */
+/* a binary32 value as a C float constant that reads back exactly */
+static void flt(const char *before, float v)
+{
+    char b[40];
+    snprintf(b, sizeof b, "%.9g", (double)v);
+    printf("%s%s%sf", before, b, strpbrk(b, ".e") ? "" : ".0");
+}
+
+static void floats(const char *open, const float *v, int n)
+{
+    int i;
+    printf("%s{", open);
+    for (i = 0; i < n; i++)
+        flt(i ? ", " : "", v[i]);
+    printf("}");
+}
+
+/* The thin film's tables (fresnel_film.h): a 2.5 film on gold in air,
+ * sRGB, as `fresnel gen` fits and encodes it, in Q1.15 and in binary32
+ * (the AArch64 count's row). */
 static int print_film(void)
 {
     gen_context *g = malloc(sizeof *g);
     film_model *m = malloc(sizeof *m);
     spectrum *s = malloc(sizeof *s);
     fresnel_film_q15 *q = malloc(sizeof *q);
+    static fresnel_film f32;
     film_stack f;
     int ch, j, k;
     if (!g || !m || !s || !q || gen_context_load(data_dir(NULL), "srgb", g) || spectrum_load(data_dir(NULL), "au", s) ||
@@ -55,6 +74,34 @@ static int print_film(void)
     f.substrate = s;
     if (film_fit_material(&f, &g->cm, &g->cs, m) || film_encode_q15(m, q))
         return 1;
+    film_encode_f32(m, &f32);
+    printf("\n#if FRESNEL_HAS_FLOAT\n/* a 2.5 film on gold in air, sRGB */\nconst fresnel_film conform_film_f32 = {\n");
+    floats("    ", f32.freq, FRESNEL_FILM_POLES);
+    floats(", ", f32.damp, FRESNEL_FILM_POLES);
+    printf(",\n    {");
+    for (ch = 0; ch < 3; ch++) {
+        printf(ch ? ", {" : "{");
+        for (j = 0; j < FRESNEL_FILM_POLES; j++)
+            floats(j ? ", " : "", f32.weight[ch][j], 2);
+        printf("}");
+    }
+    printf("},\n    {");
+    for (k = 0; k < FRESNEL_FILM_NODES; k++) {
+        const fresnel_film_node *n = &f32.node[k];
+        floats(k ? ",\n     {" : "{", n->a0, 3);
+        flt(", ", n->opd);
+        flt(", ", n->decay);
+        floats(", ", n->a_re, FRESNEL_FILM_POLES);
+        floats(", ", n->a_im, FRESNEL_FILM_POLES);
+        floats(", ", n->b_re, FRESNEL_FILM_POLES);
+        floats(", ", n->b_im, FRESNEL_FILM_POLES);
+        floats(", ", n->p_re, FRESNEL_FILM_POLES);
+        floats(", ", n->p_im, FRESNEL_FILM_POLES);
+        floats(", ", n->q_re, FRESNEL_FILM_POLES);
+        floats(", ", n->q_im, FRESNEL_FILM_POLES);
+        printf("}");
+    }
+    printf("}\n};\n#endif\n");
     printf("\n/* a 2.5 film on gold in air, sRGB */\nconst fresnel_film_q15 conform_film = {\n");
     ints("    ", q->turn_nu, FRESNEL_FILM_POLES, 0, 0);
     ints(", ", q->turn_gamma, FRESNEL_FILM_POLES, 0, 0);
