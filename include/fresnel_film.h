@@ -98,12 +98,16 @@
  *   the channels; the poles' loop runs 8 lanes, padded, without a branch,
  *   and compilers vectorise it (src/f32/film.c). make bench, rows film-f32
  *   and schlick-rgb-f32, target film-vs-schlick-rgb (medians of the ratio
- *   in the same round; gcc 12 and clang 14, an AMD EPYC x86-64):
+ *   in the same round; gcc 12 and clang 14, an AMD EPYC x86-64; the run
+ *   of make report, data/report/report.md's targets table):
  *                               film ns   fresnel_schlick_rgb ns   ratio
- *     gcc -O2                    65.4           6.1                10.7
- *     gcc -O3 -march=native      67.8           5.1                13.2
+ *     gcc -O2                    65.8           6.1                10.8
+ *     gcc -O3 -march=native      67.9           5.2                13.2
  *     clang -O2                  74.4           3.0                24.5
- *     clang -O3 -march=native    72.9           2.2                33.5
+ *     clang -O3 -march=native    72.4           2.2                33.3
+ *   On AArch64 (make cross-count, a64 rows f32 thin-film and f32
+ *   schlick-rgb, instructions per call): gcc -O2 679 against 102, clang
+ *   -O2 657 against 47.
  *   The goal, 10x, is missed: the film costs 65-75 ns under every compiler
  *   (at 4 lanes, two vectors of the poles' work, each an exponential, a
  *   phase and a complex division, and the interpolation and channels' sums
