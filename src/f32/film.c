@@ -49,8 +49,9 @@ typedef union fresnel_i_film_bits {
     (FRESNEL_I_FILM_IN_TAIL(k) ? tail[(k) * FRESNEL_FILM_POLES - FRESNEL_I_FILM_TAIL + (j)] : v[k][j])
 typedef char fresnel_i_film_tail_check[FRESNEL_I_FILM_TAIL >= 0 ? 1 : -1];
 
-/* 1 for the lanes of the poles, 0 past them */
+/* 1 for the lanes of the poles, 0 past them (eight lanes written out) */
 #define FRESNEL_I_FILM_LIVE(j) ((j) < FRESNEL_FILM_POLES ? 1.0f : 0.0f)
+typedef char fresnel_i_film_live_check[FRESNEL_I_FILM_PAD == 8 ? 1 : -1];
 static const float fresnel_i_film_live[FRESNEL_I_FILM_PAD] = {
     FRESNEL_I_FILM_LIVE(0), FRESNEL_I_FILM_LIVE(1), FRESNEL_I_FILM_LIVE(2), FRESNEL_I_FILM_LIVE(3),
     FRESNEL_I_FILM_LIVE(4), FRESNEL_I_FILM_LIVE(5), FRESNEL_I_FILM_LIVE(6), FRESNEL_I_FILM_LIVE(7),
@@ -83,7 +84,7 @@ fresnel_rgb fresnel_film_rgb(const fresnel_film *m, float c, float d_nm)
     /* the optical path, and its decay in total reflection inside the film,
      * held below 2^21 nm: with the poles' 0 < nu, gamma < 1 (the fit's
      * range, gen/2_derive/film_fit.c) the phase below stays within 2^22
-     * turns and the octaves of decay below 2^25, whatever the table's
+     * turns and the octaves of decay below 2^26, whatever the table's
      * node values */
     x = fresnel_i_clamp(d_nm * (u * lo->opd + t * hi->opd), 0.0f, 2097152.0f);
     y = fresnel_i_clamp(d_nm * (u * lo->decay + t * hi->decay), 0.0f, 2097152.0f);
