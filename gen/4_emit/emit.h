@@ -95,5 +95,9 @@ int emit_f16_material(FILE *f, const emit_input *in, int material, const char *p
  * the scene has the thin-film model: 0, or CLI_BAD_INPUT after a message (a
  * table the type's layout cannot hold). */
 int emit_film(FILE *f, const emit_input *in, int material, const char *prefix, number_type_id type);
+/* The initializer of one film table in number type `type` ("{...};" and a
+ * newline), as emit_film writes it: 0, or -1 (a value the type cannot hold,
+ * or a Q1.15 table outside its layout), nothing written. */
+int emit_film_initializer(FILE *f, const encoded_film *film, number_type_id type);
 
 #endif

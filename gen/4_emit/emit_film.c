@@ -176,22 +176,45 @@ static int not_finite(const emit_input *in, const char *prefix, const char *type
     return cli_error(where, "%s: the thin-film table holds a value no %s holds; no header written", prefix, type);
 }
 
+/* The table of `type` as values: 0, or -1 where the Q1.15 layout cannot
+ * hold it (film->q15_ok 0) or a value is not finite in the type. */
+static int film_values_of(const encoded_film *film, number_type_id type, film_values *v)
+{
+    if (type == TYPE_F32) {
+        values_f32(&film->f32, v);
+    } else if (type == TYPE_Q15) {
+        if (!film->q15_ok)
+            return -1;
+        values_q15(&film->q15, v);
+        return 0;
+    } else {
+#if FRESNEL_HAS_F16
+        values_f16(&film->f16, v);
+#else
+        return -1;
+#endif
+    }
+    return all_finite(v) ? 0 : -1;
+}
+
+int emit_film_initializer(FILE *f, const encoded_film *film, number_type_id type)
+{
+    film_values v;
+    if (film_values_of(film, type, &v))
+        return -1;
+    put_values(f, &v, type != TYPE_Q15);
+    return 0;
+}
+
 int emit_film(FILE *f, const emit_input *in, int mi, const char *prefix, number_type_id type)
 {
     const scene_entry *e = film_entry(in->sc);
     const encoded_film *film = in->films ? &in->films[mi] : NULL;
     film_values v;
-    if (!e || !film)
+    if (!e || !film || (!FRESNEL_HAS_F16 && type == TYPE_F16))
         return 0;
-    if (type == TYPE_F32) {
-        values_f32(&film->f32, &v);
-        if (!all_finite(&v))
-            return not_finite(in, prefix, "binary32");
-        film_comment(f, in, mi, e, "binary32", "fresnel_film_rgb(&table, c, d_nm)");
-        fprintf(f, "static const fresnel_film %s_%s FRESNEL_GEN_UNUSED = ", prefix, e->ident);
-        put_values(f, &v, 1);
-    } else if (type == TYPE_Q15) {
-        if (!film->q15_ok) {
+    if (film_values_of(film, type, &v)) {
+        if (type == TYPE_Q15) {
             char where[1100];
             snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->types_line);
             return cli_error(where,
@@ -199,20 +222,19 @@ int emit_film(FILE *f, const emit_input *in, int mi, const char *prefix, number_
                              "(include/fresnel_film.h); no header written",
                              prefix, film->n_film);
         }
-        values_q15(&film->q15, &v);
+        return not_finite(in, prefix, type == TYPE_F32 ? "binary32" : "binary16 (largest 65504)");
+    }
+    if (type == TYPE_F32) {
+        film_comment(f, in, mi, e, "binary32", "fresnel_film_rgb(&table, c, d_nm)");
+        fprintf(f, "static const fresnel_film %s_%s FRESNEL_GEN_UNUSED = ", prefix, e->ident);
+    } else if (type == TYPE_Q15) {
         film_comment(f, in, mi, e, "Q1.15 (layout: fresnel_film.h)",
                      "fresnel_film_q15_rgb(&table, c_q15, d_nm_q16)");
         fprintf(f, "static const fresnel_film_q15 %s_%s_q15 FRESNEL_GEN_UNUSED = ", prefix, e->ident);
-        put_values(f, &v, 0);
     } else {
-#if FRESNEL_HAS_F16
-        values_f16(&film->f16, &v);
-        if (!all_finite(&v))
-            return not_finite(in, prefix, "binary16 (largest 65504)");
         film_comment(f, in, mi, e, "binary16", "fresnel_film_f16_rgb(&table, c, d_nm)");
         fprintf(f, "static const fresnel_film_f16 %s_%s_f16 FRESNEL_GEN_UNUSED = ", prefix, e->ident);
-        put_values(f, &v, 1);
-#endif
     }
+    put_values(f, &v, type != TYPE_Q15);
     return 0;
 }

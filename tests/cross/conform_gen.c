@@ -12,6 +12,7 @@
 #include "2_derive/film_fit.h"
 #include "3_encode/film_encode.h"
 #include "3_encode/fixed_params.h"
+#include "4_emit/emit.h"
 #include "model/registry.h"
 #include "common/reference.h"
 
@@ -24,117 +25,39 @@ static void ior(const char *name, const fresnel_ior_prep_q15 *m)
            (int)m->n4.e, (unsigned)m->t1_inv.m, (int)m->t1_inv.e, (unsigned)m->inv_eta2.m, (int)m->inv_eta2.e);
 }
 
-static void ints(const char *open, const void *v, int n, int is16, int is_signed)
-{
-    int i;
-    printf("%s{", open);
-    for (i = 0; i < n; i++) {
-        long x = is16 ? (is_signed ? (long)((const int16_t *)v)[i] : (long)((const uint16_t *)v)[i])
-                      : (long)((const uint32_t *)v)[i];
-        printf("%ld%s", x, is16 ? "" : "u");
-        printf(i + 1 < n ? ", " : "}");
-    }
-}
-
-/* a binary32 value as a C float constant that reads back exactly */
-static void flt(const char *before, float v)
-{
-    char b[40];
-    snprintf(b, sizeof b, "%.9g", (double)v);
-    printf("%s%s%sf", before, b, strpbrk(b, ".e") ? "" : ".0");
-}
-
-static void floats(const char *open, const float *v, int n)
-{
-    int i;
-    printf("%s{", open);
-    for (i = 0; i < n; i++)
-        flt(i ? ", " : "", v[i]);
-    printf("}");
-}
-
 /* The thin film's tables (fresnel_film.h): a 2.5 film on gold in air,
- * sRGB, as `fresnel gen` fits and encodes it, in Q1.15 and in binary32
- * (the AArch64 count's row). */
+ * sRGB, as `fresnel gen` fits, encodes and writes them (the emitter's own
+ * initializers), in Q1.15 and in binary32 (the AArch64 count's row). */
 static int print_film(void)
 {
     gen_context *g = malloc(sizeof *g);
     film_model *m = malloc(sizeof *m);
     spectrum *s = malloc(sizeof *s);
-    fresnel_film_q15 *q = malloc(sizeof *q);
-    static fresnel_film f32;
+    encoded_film *e = malloc(sizeof *e);
     film_stack f;
-    int ch, j, k;
-    if (!g || !m || !s || !q || gen_context_load(data_dir(NULL), "srgb", g) || spectrum_load(data_dir(NULL), "au", s) ||
+    int status = 1;
+    if (!g || !m || !s || !e || gen_context_load(data_dir(NULL), "srgb", g) || spectrum_load(data_dir(NULL), "au", s) ||
         film_fit_poles(&g->cm, &g->cs, m, NULL))
-        return 1;
+        goto done;
     f.n1 = 1.0;
     f.film = NULL;
     f.film_n = 2.5;
     f.substrate = s;
-    if (film_fit_material(&f, &g->cm, &g->cs, m) || film_encode_q15(m, q))
-        return 1;
-    film_encode_f32(m, &f32);
-    printf("\n#if FRESNEL_HAS_FLOAT\n/* a 2.5 film on gold in air, sRGB */\nconst fresnel_film conform_film_f32 = {\n");
-    floats("    ", f32.freq, FRESNEL_FILM_POLES);
-    floats(", ", f32.damp, FRESNEL_FILM_POLES);
-    printf(",\n    {");
-    for (ch = 0; ch < 3; ch++) {
-        printf(ch ? ", {" : "{");
-        for (j = 0; j < FRESNEL_FILM_POLES; j++)
-            floats(j ? ", " : "", f32.weight[ch][j], 2);
-        printf("}");
-    }
-    printf("},\n    {");
-    for (k = 0; k < FRESNEL_FILM_NODES; k++) {
-        const fresnel_film_node *n = &f32.node[k];
-        floats(k ? ",\n     {" : "{", n->a0, 3);
-        flt(", ", n->opd);
-        flt(", ", n->decay);
-        floats(", ", n->a_re, FRESNEL_FILM_POLES);
-        floats(", ", n->a_im, FRESNEL_FILM_POLES);
-        floats(", ", n->b_re, FRESNEL_FILM_POLES);
-        floats(", ", n->b_im, FRESNEL_FILM_POLES);
-        floats(", ", n->p_re, FRESNEL_FILM_POLES);
-        floats(", ", n->p_im, FRESNEL_FILM_POLES);
-        floats(", ", n->q_re, FRESNEL_FILM_POLES);
-        floats(", ", n->q_im, FRESNEL_FILM_POLES);
-        printf("}");
-    }
-    printf("}\n};\n#endif\n");
-    printf("\n/* a 2.5 film on gold in air, sRGB */\nconst fresnel_film_q15 conform_film = {\n");
-    ints("    ", q->turn_nu, FRESNEL_FILM_POLES, 0, 0);
-    ints(", ", q->turn_gamma, FRESNEL_FILM_POLES, 0, 0);
-    ints(", ", q->octave_nu, FRESNEL_FILM_POLES, 0, 0);
-    ints(", ", q->octave_gamma, FRESNEL_FILM_POLES, 0, 0);
-    printf(",\n    {");
-    for (ch = 0; ch < 3; ch++) {
-        printf(ch ? ", {" : "{");
-        for (j = 0; j < FRESNEL_FILM_POLES; j++)
-            ints(j ? ", " : "", q->weight[ch][j], 2, 1, 1);
-        printf("}");
-    }
-    printf("},\n    {");
-    for (k = 0; k < FRESNEL_FILM_NODES; k++) {
-        const fresnel_film_node_q15 *n = &q->node[k];
-        ints(k ? ",\n     {" : "{", n->a0, 3, 1, 1);
-        printf(", %u, %u", (unsigned)n->opd, (unsigned)n->decay);
-        ints(", ", n->a_re, FRESNEL_FILM_POLES, 1, 1);
-        ints(", ", n->a_im, FRESNEL_FILM_POLES, 1, 1);
-        ints(", ", n->b_re, FRESNEL_FILM_POLES, 1, 1);
-        ints(", ", n->b_im, FRESNEL_FILM_POLES, 1, 1);
-        ints(", ", n->p_re, FRESNEL_FILM_POLES, 1, 1);
-        ints(", ", n->p_im, FRESNEL_FILM_POLES, 1, 1);
-        ints(", ", n->q_re, FRESNEL_FILM_POLES, 1, 1);
-        ints(", ", n->q_im, FRESNEL_FILM_POLES, 1, 1);
-        printf("}");
-    }
-    printf("}\n};\n");
+    if (film_fit_material(&f, &g->cm, &g->cs, m) || film_encode_q15(m, &e->q15))
+        goto done;
+    e->q15_ok = 1;
+    film_encode_f32(m, &e->f32);
+    printf("\n/* a 2.5 film on gold in air, sRGB */\n#if FRESNEL_HAS_FLOAT\nconst fresnel_film conform_film_f32 = ");
+    if (emit_film_initializer(stdout, e, TYPE_F32))
+        goto done;
+    printf("#endif\nconst fresnel_film_q15 conform_film = ");
+    status = emit_film_initializer(stdout, e, TYPE_Q15) ? 1 : 0;
+done:
     free(g);
     free(m);
     free(s);
-    free(q);
-    return 0;
+    free(e);
+    return status;
 }
 
 int main(void)
