@@ -6,20 +6,23 @@
 # each as a consumer would (C99 alone, C++17 as a unity build) and checks that
 # the AVX2 kernel's target reaches no other function.
 #
-# The header holds the type's public headers, then, under
-# FRESNEL_IMPLEMENTATION, every source of src/<type>/ in name order: each
-# #include "..." of include/ or src/<type>/ is replaced by that file: a header
-# that lies wholly inside its include guard the first time only (the rest
-# would be empty), any other each time, as the preprocessor reads it;
-# system headers stay.
+# The header holds the type's public headers and fresnel_film.h (the thin
+# film's tables and functions, which includes the three types' headers), so
+# a file without FRESNEL_IMPLEMENTATION and a generated scene header (which
+# includes a public header only where its guard is not yet defined) need
+# nothing else; then, under FRESNEL_IMPLEMENTATION, every source of
+# src/<type>/ in name order. Each #include "..." of include/ or src/<type>/
+# is replaced by that file: a header that lies wholly inside its include
+# guard the first time only (the rest would be empty), any other each time,
+# as the preprocessor reads it; system headers stay.
 # The implementation's pragmas that would last to the end of the including
 # file (src/f32/internal.h's no-contraction) are closed after it.
 set -eu
 type=${1:-}
 case $type in
-f32) public="fresnel.h" ;;
-q15) public="fresnel_fixed.h fresnel_fixed_fast.h" ;;
-f16) public="fresnel_f16.h" ;;
+f32) public="fresnel.h fresnel_film.h" ;;
+q15) public="fresnel_fixed.h fresnel_fixed_fast.h fresnel_film.h" ;;
+f16) public="fresnel_f16.h fresnel_film.h" ;;
 *)
     echo "usage: sh ports/single.sh f32|q15|f16 > fresnel_single_TYPE.h" >&2
     exit 2

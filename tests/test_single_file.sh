@@ -6,7 +6,11 @@
 # three implemented in one file; as C++17 by g++ and clang++ in a unity build
 # (the .c files included from one C++ file); each printing what the same
 # program (tests/consumer/single_file.c) prints against include/ and
-# libfresnel.a, bit for bit. The binary32 file also runs tests/test_batch.c
+# libfresnel.a, bit for bit. The thin film of each type likewise
+# (tests/consumer/single_film.c), C99 and C++17: used in a file without
+# FRESNEL_IMPLEMENTATION, its table from the header `fresnel gen` writes for
+# a thin-film scene, in a folder that holds that header and the single file
+# only. The binary32 file also runs tests/test_batch.c
 # (every batch kernel, lane by lane). Its AVX2 kernel's target pragma reaches
 # no other function: the combined file, compiled for plain x86-64 by gcc,
 # clang and g++, has VEX-encoded instructions (v...) only in the kernel's
@@ -92,6 +96,47 @@ for cxx in g++ clang++; do
     else
         echo "FAIL $label: $(head -5 "$t/err")"
     fi
+done
+
+# ---- the thin film: declared without FRESNEL_IMPLEMENTATION, its table from a generated scene header ----
+# Per type a folder holding only fresnel_single_TYPE.h and the header
+# `fresnel gen` writes for a thin-film scene of that type; the program's
+# file that uses the film (single_film.c) does not define
+# FRESNEL_IMPLEMENTATION, the one linked with it (single_film_main.c) does.
+for type in f32 q15 f16; do
+    T=$(echo $type | tr a-z A-Z)
+    case $type in f32) table=fresnel_film ;; *) table=fresnel_film_$type ;; esac
+    d=$t/film_$type
+    mkdir "$d" && cp "$t/$type/fresnel_single_$type.h" "$d/" || continue
+    printf 'name = film\nmaterials = cu\nmodels = thin-film\ntypes = %s\nfilm = 1.8\n' $type >"$t/film_$type.scene"
+    if ! "$BUILD/fresnel" gen "$t/film_$type.scene" -o "$d/scene_film.h" 2>"$t/err"; then
+        echo "FAIL fresnel gen of a $type thin-film scene: $(head -3 "$t/err")"
+        continue
+    fi
+    if ! cc -std=c99 $W -DWITH_$T -DFRESNEL_LIBRARY -Iinclude -I"$d" $C/single_film.c $C/single_film_main.c \
+        "$BUILD/libfresnel.a" -lm -o "$t/film_lib" 2>"$t/err" || ! "$t/film_lib" >"$t/film_lib.out" ||
+        [ ! -s "$t/film_lib.out" ]; then
+        echo "FAIL the $type thin-film program against libfresnel.a: $(head -3 "$t/err")"
+        continue
+    fi
+    for cc in gcc clang "g++ -x c++ -std=c++17" "clang++ -x c++ -std=c++17"; do
+        case $cc in *++*) std="" lang=C++17 ;; *) std=-std=c99 lang=C99 ;; esac
+        label="${cc%% *} $lang, $table in a file without FRESNEL_IMPLEMENTATION, a $type thin-film scene header beside fresnel_single_$type.h alone"
+        # shellcheck disable=SC2086
+        if $cc $std $W -O2 -DWITH_$T -I"$d" $C/single_film.c $C/single_film_main.c -lm -o "$t/film" 2>"$t/err" &&
+            [ ! -s "$t/err" ] && "$t/film" >"$t/film.out"; then
+            if [ $type = f16 ] && ! has_f16 "${cc%% *}"; then
+                [ ! -s "$t/film.out" ] && echo "PASS $label (no _Float16 in ${cc%% *}: the binary16 film builds to nothing)" ||
+                    echo "FAIL $label: printed binary16 lines without _Float16"
+            elif cmp -s "$t/film_lib.out" "$t/film.out"; then
+                echo "PASS $label: $(wc -l <"$t/film.out") colours, bit for bit those of libfresnel.a"
+            else
+                echo "FAIL $label: differs from libfresnel.a: $(diff "$t/film_lib.out" "$t/film.out" | sed -n 2,3p | tr '\n' ' ')"
+            fi
+        else
+            echo "FAIL $label: $(head -5 "$t/err")"
+        fi
+    done
 done
 
 # ---- every public function the library defines, the single files define ----
