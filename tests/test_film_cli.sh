@@ -67,6 +67,49 @@ done
 expect_error "curve --film less dense than --n1 refused" "total reflection inside the film" \
     curve --material au --n1 1.5 --film 1.33:100
 expect_error "curve thin-film without --film refused" "thin-film needs a film" curve --material au --models thin-film
+# substrates outside the model's domain (include/fresnel_film.h THE DOMAIN):
+# less dense than the ambient (glass / film / air: total reflection in the
+# substrate), an index below the ambient's in air, one of about the
+# ambient's index (BK7 under 1.5, water under water)
+printf 'wavelength_nm,n,k\n300,1.0,0\n900,1.0,0\n' >"$t/air.csv"
+printf 'wavelength_nm,n,k\n300,0.5,0\n900,0.5,0\n' >"$t/half.csv"
+expect_error "curve --film on a substrate less dense than n1 refused" \
+    "less dense than the incident medium's 1.5: it reflects totally" curve --nk "$t/air.csv" --n1 1.5 --film 2.0:150
+expect_error "curve --film on a substrate of index 0.5 in air refused" "less dense than the incident medium's 1:" \
+    curve --nk "$t/half.csv" --film 2.0:150
+expect_error "curve --film on BK7 under n1 1.5 refused" "too close to the incident medium's index 1.5" \
+    curve --material bk7 --n1 1.5 --film 2.5:150
+expect_error "curve --film on water under n1 1.33 refused" "water.*(too close to|less dense than) the incident medium" \
+    curve --material water --n1 1.33 --film 4:150
+# the same stacks in a scene: gen and report refuse them at the material's line, nothing written
+printf 'materials = bk7\nmodels = thin-film\nn1 = 1.5\nfilm = 2.5\n' >"$t/matched.scene"
+echo keep >"$t/matched.h"
+if ! "$F" gen "$t/matched.scene" -o "$t/matched.h" 2>"$t/err" &&
+    grep -q 'matched.scene:1: bk7 under a 2.5 film in n1 1.5: .*too close to the incident medium' "$t/err" &&
+    [ "$(cat "$t/matched.h")" = keep ]; then
+    echo "PASS gen refuses a substrate of about the ambient's index at its line, the output untouched"
+else
+    echo "FAIL gen matched-index substrate: $(cat "$t/err")"
+fi
+printf 'materials = au bk7\nmodels = schlick thin-film\nn1 = 1.5\nfilm = 2.5\n' >"$t/matched-r.scene"
+if ! "$F" report --scene "$t/matched-r.scene" -o "$t/matched-rep" --no-timing --no-instructions >/dev/null 2>"$t/err" &&
+    grep -q 'too close to the incident medium' "$t/err" && [ ! -e "$t/matched-rep" ]; then
+    echo "PASS report refuses a substrate of about the ambient's index, nothing written"
+else
+    echo "FAIL report matched-index substrate: $(cat "$t/err")"
+fi
+# inside the domain: BK7 under water (1.33), gold in glass under a 2.0 film
+expect_ok() { # name, args...
+    name=$1
+    shift
+    if "$F" "$@" >"$t/out" 2>"$t/err" && [ -s "$t/out" ]; then
+        echo "PASS $name"
+    else
+        echo "FAIL $name: $(cat "$t/err")"
+    fi
+}
+expect_ok "curve --film on BK7 under water (1.33) is in the domain" curve --material bk7 --n1 1.33 --film 2.0:150
+expect_ok "curve --film on gold in glass (1.5) is in the domain" curve --material au --n1 1.5 --film 2.0:150
 
 # gen: each type's table, named as the model's identifier
 printf 'name = f\nmaterials = au bk7\nmodels = thin-film\ntypes = %s\nfilm = 1.38\nfilm bk7 = 2.1\nfilm_thickness = 100 400\n' \

@@ -25,6 +25,7 @@
  * value. */
 #include <math.h>
 #include <stdlib.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "2_derive/film_fit.h"
@@ -519,6 +520,56 @@ static void refine_q(const node_fit *nf, double complex q[J][2], double complex 
             }
         }
     }
+}
+
+/* Distance of the complex z from the real segment [0, 1]. */
+static double segment_distance(double complex z)
+{
+    double re = creal(z), im = fabs(cimag(z));
+    if (re < 0.0)
+        return hypot(re, im);
+    if (re > 1.0)
+        return hypot(re - 1.0, im);
+    return im;
+}
+
+int film_stack_domain(const film_stack *f, char *why, size_t size)
+{
+    double worst = HUGE_VAL, worst_nm = 0.0, worst_n = 0.0, worst_k = 0.0;
+    int j;
+    if (f->film_n < f->n1) {
+        snprintf(why, size,
+                 "a film of index %g is less dense than the incident medium's %g: total reflection inside the film "
+                 "is outside the thin-film model's domain",
+                 f->film_n, f->n1);
+        return -1;
+    }
+    for (j = 0; j < SPEC_N; j += 10) {
+        double n = f->substrate->n[j], k = f->substrate->k[j];
+        double complex n3 = ref_complex(n, k), branch = 1.0 - n3 * n3 / (f->n1 * f->n1);
+        double dist = segment_distance(branch);
+        if (dist < worst) {
+            worst = dist;
+            worst_nm = SPEC_LO_NM + j * SPEC_STEP_NM;
+            worst_n = n;
+            worst_k = k;
+        }
+    }
+    if (!(worst >= FILM_DOMAIN_BRANCH)) {
+        if (worst_k < 1e-3 && worst_n < f->n1)
+            snprintf(why, size,
+                     "the substrate (n %.4g, k %.3g at %.0f nm) is less dense than the incident medium's %g: it "
+                     "reflects totally beyond its critical angle, outside the thin-film model's domain",
+                     worst_n, worst_k, worst_nm, f->n1);
+        else
+            snprintf(why, size,
+                     "the substrate (n %.4g, k %.3g at %.0f nm) is too close to the incident medium's index %g: "
+                     "1 - N^2 / n1^2 comes within %.3g of [0, 1], where its cosine of refraction vanishes (the "
+                     "domain asks %g), outside the thin-film model's domain",
+                     worst_n, worst_k, worst_nm, f->n1, worst, FILM_DOMAIN_BRANCH);
+        return -1;
+    }
+    return 0;
 }
 
 int film_fit_material(const film_stack *f, const colorimetry *cm, const colour_space *cs, film_model *m)

@@ -7,6 +7,8 @@
 #include "common/reference_film.h"
 #include "1_spectral/spectral.h"
 
+#include <stddef.h>
+
 /* The poles and their weights for the colour space: a least-squares fit of
  * the CIE observer's X, Y, Z sensitivities under D65 (the ground truth's
  * colorimetry), as functions of the optical path x in [0, FILM_FIT_X_MAX]
@@ -20,6 +22,23 @@ int film_fit_poles(const colorimetry *cm, const colour_space *cs, film_model *m,
 
 /* The thickness range whose truth the interface terms are fitted to. */
 #define FILM_FIT_D_MAX 1200.0
+
+/* The stacks the model represents (fresnel_film.h, THE DOMAIN), each
+ * condition a fact of the optics the table is interpolated from:
+ *   - a film at least as dense as the incident medium (n_f >= n1): no
+ *     total reflection inside the film;
+ *   - a substrate whose cosine of refraction stays clear of zero over
+ *     every angle and wavelength: the branch point of
+ *     xi_3 = sqrt(N3^2 - n1^2 (1 - c^2)) at c^2 = 1 - N3^2 / n1^2 at least
+ *     FILM_DOMAIN_BRANCH from the segment c^2 in [0, 1]. On it the
+ *     substrate reflects totally (a glass substrate under a denser
+ *     ambient); near it (a substrate of about the ambient's index) the
+ *     interface terms turn at a square-root edge between the table's
+ *     nodes and the table's constants grow until rounding dominates.
+ * 0 when f is in the domain; else -1 and why (a sentence naming the
+ * condition, the index and the wavelength) in why[size]. */
+#define FILM_DOMAIN_BRANCH 0.1
+int film_stack_domain(const film_stack *f, char *why, size_t size);
 
 /* The material's table, m's poles already set: a non-dispersive film
  * (f->film NULL, f->film_n >= 1e-3) of any real index in any real ambient

@@ -112,12 +112,14 @@ typedef struct encoded_film {
     fresnel_film f32;
     fresnel_film_q15 q15;
     int q15_ok; /* 0 where the Q1.15 layout holds no table of it (film_encode_q15) */
+    char why[256]; /* why encode_film refused the stack, or empty */
 #if FRESNEL_HAS_F16
     fresnel_film_f16 f16;
 #endif
 } encoded_film;
-/* 0; -1 when p has no film (film_n 0) or the fit fails (a film outside the
- * model's domain, out of memory). s: the material's spectrum. */
+/* 0; -1 when p has no film (film_n 0), the stack is outside the model's
+ * domain (film_stack_domain: out->why says which condition fails) or the
+ * fit fails (out of memory). s: the material's spectrum. */
 int encode_film(const spectrum *s, const gen_context *g, const material_params *p, encoded_film *out);
 
 #endif

@@ -207,6 +207,8 @@ int encode_film(const spectrum *s, const gen_context *g, const material_params *
     f.film = NULL;
     f.film_n = p->film_n;
     f.substrate = s;
+    if (film_stack_domain(&f, out->why, sizeof out->why))
+        return -1;
     if (film_fit_poles(&g->cm, &g->cs, &out->model, NULL) || film_fit_material(&f, &g->cm, &g->cs, &out->model))
         return -1;
     film_encode_f32(&out->model, &out->f32);

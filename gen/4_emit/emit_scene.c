@@ -83,8 +83,11 @@ int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loade
         for (i = 0; i < l->sc->material_count; i++)
             if (encode_film(l->spectra[i], l->g, &l->params[i], &l->films[i])) {
                 snprintf(where, sizeof where, "%s:%d", manifest, l->sc->material_line[i]);
-                status = cli_error(where, "%s: fitting the thin-film model of a %g film failed", l->sc->materials[i],
-                                   l->params[i].film_n);
+                status = l->films[i].why[0]
+                             ? cli_error(where, "%s under a %g film in n1 %g: %s", l->sc->materials[i],
+                                         l->params[i].film_n, l->params[i].n1, l->films[i].why)
+                             : cli_error(where, "%s: fitting the thin-film model of a %g film failed",
+                                         l->sc->materials[i], l->params[i].film_n);
                 goto done;
             }
     }

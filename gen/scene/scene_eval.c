@@ -23,8 +23,12 @@ int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectru
         if (!(m->film = malloc(sizeof *m->film)))
             return cli_oom("scene model");
         if (encode_film(s, g, p, m->film)) {
+            int status = m->film->why[0] ? cli_error(p->info.id, "under a %g film in n1 %g: %s", p->film_n, p->n1,
+                                                     m->film->why)
+                                         : cli_error(p->info.id, "fitting the thin-film model of a %g film in n1 %g failed",
+                                                     p->film_n, p->n1);
             scene_model_free(m);
-            return cli_error(p->info.id, "fitting the thin-film model of a %g film in n1 %g failed", p->film_n, p->n1);
+            return status;
         }
     }
     return 0;
