@@ -1,19 +1,18 @@
-/* The thin-film runtime (fresnel_film.h): each number type against the
- * double evaluation of its own constants (gen/common/reference_film.c),
- * hostile inputs, the fixed-point tables, and CIEDE2000 against the
+/* The thin-film runtime (fresnel_film.h): hostile inputs, the fixed-point tables, and CIEDE2000 against the
  * film's spectral truth over the goal matrix: films n_f 1.2-2.5 on Au, Cu,
  * Al, Ti, Fe and BK7 in air, theta 0-89 degrees, d 0-1000 nm.
  *
  * The default run samples that matrix: films 1.2, 1.8 and 2.5 (the ends
  * and the middle: the error grows with n_f, whose reflection at the film's
- * top makes the fringes deep, and tests/test_film.c's bounds run 1.5 and
- * 2.1 as well), theta every 10 degrees and 89, from 0 for the films 1.2
+ * top makes the fringes deep), theta every 10 degrees and 89, from 0 for the films 1.2
  * and 2.5 and from 5 for 1.8 (the table's nodes, every 1/31 in
  * sqrt(cos(theta)), lie 3 to 10 degrees apart below 60 degrees and closer
  * towards grazing, so these angles fall between nodes as often as on
  * them), d every 10 nm (a seventh of the fastest fringe period, 76 nm at
  * n_f 2.5 and 380 nm). FILM_FULL=1 runs the
- * whole matrix (n_f every 0.1, every degree, every 5 nm: minutes). */
+ * whole matrix (n_f every 0.1, every degree, every 5 nm: minutes). Each
+ * type against the double evaluation of its own constants is
+ * tests/test_film_search.c. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -169,79 +168,6 @@ static void de_matrix(const gen_context *g, const film_model *poles, spectrum *c
 #if FRESNEL_HAS_F16
     free(f16);
 #endif
-}
-
-/* ---- each type against the double model of its own stored constants */
-
-static double chan_err(const double ref[3], double r, double g, double b)
-{
-    return fmax(fabs(r - ref[0]), fmax(fabs(g - ref[1]), fabs(b - ref[2])));
-}
-
-static const double bound_d[] = {0.0, 0.25, 1.0, 7.5, 20.0, 33.3, 50.0, 80.0, 120.0, 175.0, 250.0, 333.0, 420.0,
-                                 512.0, 640.0, 777.7, 900.0, 1000.0, 1500.0, 2222.0, 3000.0, 4096.0, 5000.0};
-#define N_BOUND_D (int)(sizeof bound_d / sizeof bound_d[0])
-
-static void test_bounds(const gen_context *g, const film_model *poles, spectrum *const *s)
-{
-    film_model *m = malloc(sizeof *m), *ref = malloc(sizeof *ref);
-    fresnel_film *f32 = malloc(sizeof *f32);
-    fresnel_film_q15 *q15 = malloc(sizeof *q15);
-#if FRESNEL_HAS_F16
-    fresnel_film_f16 *f16 = malloc(sizeof *f16);
-    double worst16 = 0.0;
-#endif
-    double worst32 = 0.0, worst15 = 0.0;
-    int k, ci, di;
-    if (!m || !ref || !f32 || !q15)
-        return;
-    for (k = 0; k < N_SUB * N_FILMS; k++) {
-        const film_model *cached = fit_of(g, poles, s, k / N_FILMS, k % N_FILMS);
-        if (!cached || film_encode_q15(cached, q15))
-            continue;
-        *m = *cached;
-        film_encode_f32(m, f32);
-        for (ci = 0; ci <= 512; ci++)
-            for (di = 0; di < N_BOUND_D; di++) {
-                double c = ci / 512.0, d = bound_d[di], r[3];
-                fresnel_rgb o = fresnel_film_rgb(f32, (float)c, (float)d);
-                fresnel_rgb_q15 oq = fresnel_film_q15_rgb(q15, ci * 64, (fresnel_q16)(d * 65536.0));
-                film_decode_f32(f32, ref);
-                ref_film_model(ref, (float)c, (float)d, 1, r);
-                worst32 = fmax(worst32, chan_err(r, o.r, o.g, o.b));
-                film_decode_q15(q15, ref);
-                ref_film_model(ref, c, (fresnel_q16)(d * 65536.0) / 65536.0, 1, r);
-                worst15 = fmax(worst15, chan_err(r, oq.r / 32768.0, oq.g / 32768.0, oq.b / 32768.0));
-            }
-#if FRESNEL_HAS_F16
-        film_encode_f16(m, f16);
-        film_decode_f16(f16, ref);
-        for (ci = 0; ci <= 1024; ci++)
-            for (di = 0; di < N_BOUND_D; di++) {
-                fresnel_f16 c = (fresnel_f16)(ci / 1024.0f), d = (fresnel_f16)bound_d[di];
-                fresnel_rgb_f16 o = fresnel_film_f16_rgb(f16, c, d);
-                double r[3];
-                ref_film_model(ref, (double)c, (double)d, 1, r);
-                worst16 = fmax(worst16, chan_err(r, (double)o.r, (double)o.g, (double)o.b));
-            }
-#endif
-    }
-    CHECK("film binary32 within FRESNEL_BOUND_FILM of the double model of its constants",
-          worst32 <= FRESNEL_BOUND_FILM, "worst %.3g", worst32);
-    CHECK("film Q1.15 within FRESNEL_BOUND_FILM_Q15 LSB of the double model of its constants",
-          worst15 * 32768.0 <= FRESNEL_BOUND_FILM_Q15, "worst %.2f LSB", worst15 * 32768.0);
-    NOTE("film largest error against the double model of the same constants: binary32 %.3g, Q1.15 %.2f LSB",
-         worst32, worst15 * 32768.0);
-#if FRESNEL_HAS_F16
-    CHECK("film binary16 within FRESNEL_BOUND_FILM_F16 of the double model of its constants",
-          worst16 <= FRESNEL_BOUND_FILM_F16, "worst %.3g", worst16);
-    NOTE("film binary16 largest error against the double model of the same constants: %.3g", worst16);
-    free(f16);
-#endif
-    free(m);
-    free(ref);
-    free(f32);
-    free(q15);
 }
 
 /* ---- hostile inputs: every type's result is in [0, 1] and equals the
@@ -503,7 +429,6 @@ int main(void)
           pole_error);
     test_tables();
     test_hostile(fit_of(g, poles, s, 0, 2));
-    test_bounds(g, poles, s);
     test_outside_goal(g, poles, s);
     test_identities(g, poles, s);
     de_matrix(g, poles, s, getenv("FILM_FULL") != NULL);

@@ -1,0 +1,268 @@
+/* The thin film's error bounds (fresnel_film.h: FRESNEL_BOUND_FILM, _Q15,
+ * _F16) held to a search for the worst case (tests/search.h), each number
+ * type against the double model of its own stored constants
+ * (gen/common/reference_film.c), over the film model's domain.
+ * passes: first other (tests/test_film.c runs the film's runtime under the sanitizers)
+ *
+ * Per stack (incident medium n1, film n_f, substrate) and type, over
+ * (cosine, thickness):
+ *   - Q1.15: every cosine code 0-32768 at the thicknesses 0, 1/65536 nm,
+ *     FRESNEL_FILM_D_MAX and fourteen between (a fringe period of n_f 2.5
+ *     at 380 nm is 76 nm: the sweep sees every phase over the codes), then
+ *     random (c, d) codes and local maximisation from the worst;
+ *   - binary16: every binary16 cosine in [0, 1] at the same thicknesses,
+ *     then random and local in the binary16 values;
+ *   - binary32: cosines 0, 1 and every 1/4096 at those thicknesses, then
+ *     random and local maximisation in (c, d) as floats.
+ * Stacks: the fast pass (make test) takes the corpus's stacks (the worst
+ * found by the long pass, tests/worst_inputs/film.txt) and the goal
+ * substrates (Au, Cu, Al, Ti, Fe, BK7) under films 1.2 and 2.5 in air;
+ * the long pass (SEARCH_LONG=1, make search) films 1.0-4.0 by 0.25 on
+ * fifteen substrates (the goal's, Ag, Cr, Ni, Pt, W, Si, water, diamond,
+ * SF11) in air, water (1.33), 1.4 and glass (1.5), every stack that is in
+ * the model's domain (film_stack_domain). */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "harness.h"
+#include "search.h"
+#include "1_spectral/spectral.h"
+#include "2_derive/derive.h"
+#include "2_derive/film_fit.h"
+#include "3_encode/film_encode.h"
+
+#define CORPUS "tests/worst_inputs/film.txt"
+
+enum { T_F32, T_Q15, T_F16, T_TYPES };
+static const char *const type_key[] = {"f32", "q15", "f16"};
+
+typedef struct film_case {
+    film_model ref[T_TYPES]; /* each type's table decoded: the double model of its constants */
+    fresnel_film f32;
+    fresnel_film_q15 q15;
+#if FRESNEL_HAS_F16
+    fresnel_film_f16 f16;
+#endif
+    int type;
+} film_case;
+
+static double chan_err(const double ref[3], double r, double g, double b)
+{
+    return fmax(fabs(r - ref[0]), fmax(fabs(g - ref[1]), fabs(b - ref[2])));
+}
+
+/* x[0] cosine, x[1] thickness: Q1.15 in codes (c Q15, d Q16.16), else in
+ * the type's own values (rounded to it here). Error: binary32 and
+ * binary16 absolute, Q1.15 in LSB. */
+static double film_error(void *ctx, const double *x)
+{
+    film_case *k = ctx;
+    double r[3];
+    if (k->type == T_Q15) {
+        int32_t c = (int32_t)x[0], d = (int32_t)x[1];
+        fresnel_rgb_q15 o = fresnel_film_q15_rgb(&k->q15, c, d);
+        ref_film_model(&k->ref[T_Q15], c / 32768.0, d / 65536.0, 1, r);
+        return 32768.0 * chan_err(r, o.r / 32768.0, o.g / 32768.0, o.b / 32768.0);
+    }
+#if FRESNEL_HAS_F16
+    if (k->type == T_F16) {
+        fresnel_f16 c = (fresnel_f16)x[0], d = (fresnel_f16)x[1];
+        fresnel_rgb_f16 o = fresnel_film_f16_rgb(&k->f16, c, d);
+        ref_film_model(&k->ref[T_F16], (double)c, (double)d, 1, r);
+        return chan_err(r, (double)o.r, (double)o.g, (double)o.b);
+    }
+#endif
+    {
+        float c = (float)x[0], d = (float)x[1];
+        fresnel_rgb o = fresnel_film_rgb(&k->f32, c, d);
+        ref_film_model(&k->ref[T_F32], c, d, 1, r);
+        return chan_err(r, o.r, o.g, o.b);
+    }
+}
+
+static const double sweep_d[] = {0.0, 1.0 / 65536.0, 17.0, 49.5, 96.25, 131.0, 184.65, 222.2, 266.25, 350.0,
+                                 512.0, 777.7, 1000.0, 2500.0, 3333.3, 5000.0};
+#define N_SWEEP_D (int)(sizeof sweep_d / sizeof sweep_d[0])
+
+/* The next binary16 value above x (x >= 0, finite). */
+static double f16_next(double x)
+{
+    int e;
+    double m;
+    if (x < 6.103515625e-05)
+        return x + 5.9604644775390625e-08; /* 2^-24, the subnormal spacing */
+    m = frexp(x, &e);                      /* x = m 2^e, m in [0.5, 1) */
+    (void)m;
+    return x + ldexp(1.0, e - 11);
+}
+
+static const char *const tnames[] = {"binary32", "Q1.15", "binary16"};
+
+typedef struct worst_of {
+    double err;
+    char where[160];
+} worst_of;
+
+/* The search over one stack and type; returns the largest error found. */
+static double search_stack(film_case *k, int type, const char *stack_key, long random_n, int climb, worst_of *w)
+{
+    search_space sp;
+    search_state s;
+    char key[160];
+    int di;
+    memset(&sp, 0, sizeof sp);
+    sp.dims = 2;
+    k->type = type;
+    if (type == T_Q15) {
+        sp.hi[0] = 32768.0;
+        sp.hi[1] = FRESNEL_FILM_D_MAX_Q16;
+        sp.quantum[0] = sp.quantum[1] = 1.0;
+    } else {
+        sp.hi[0] = 1.0;
+        sp.hi[1] = FRESNEL_FILM_D_MAX;
+    }
+    search_init(&s, &sp, film_error, k, 0x51F7u + (uint64_t)type);
+    snprintf(key, sizeof key, "%s:%s", type_key[type], stack_key);
+    search_corpus(&s, CORPUS, key);
+    for (di = 0; di < N_SWEEP_D; di++) {
+        double x[2];
+        x[1] = type == T_Q15 ? floor(sweep_d[di] * 65536.0 + 0.5) : sweep_d[di];
+        if (type == T_Q15)
+            for (x[0] = 0.0; x[0] <= 32768.0; x[0] += 1.0)
+                search_eval(&s, x);
+        else if (type == T_F16)
+            for (x[0] = 0.0; x[0] <= 1.0; x[0] = f16_next(x[0]))
+                search_eval(&s, x);
+        else {
+            int i;
+            for (i = 0; i <= 4096; i++) {
+                x[0] = i / 4096.0;
+                search_eval(&s, x);
+            }
+        }
+    }
+    search_random(&s, random_n);
+    search_climb(&s, climb, 48);
+    search_corpus_write(&s, key, 3);
+    if (s.top[0].err > w->err) {
+        w->err = s.top[0].err;
+        if (type == T_Q15)
+            snprintf(w->where, sizeof w->where, "%s c %.0f d %.0f (Q16.16)", stack_key, s.top[0].x[0], s.top[0].x[1]);
+        else
+            snprintf(w->where, sizeof w->where, "%s c %.9g d %.9g", stack_key, s.top[0].x[0], s.top[0].x[1]);
+    }
+    return s.top[0].err;
+}
+
+typedef struct stack_spec {
+    double n1, nf;
+    const char *sub;
+} stack_spec;
+
+/* One stack: fit, domain, encode, search every type. */
+static void run_stack(const gen_context *g, const film_model *poles, const stack_spec *st, long random_n, int climb,
+                      film_case *k, worst_of w[T_TYPES])
+{
+    spectrum *sub = malloc(sizeof *sub);
+    film_model *m = malloc(sizeof *m);
+    film_stack f;
+    char key[96], why[256];
+    int ty;
+    if (!sub || !m || spectrum_load(data_dir(NULL), st->sub, sub)) {
+        CHECK("film search: substrate loads", 0, "%s", st->sub);
+        goto done;
+    }
+    f.n1 = st->n1;
+    f.film = NULL;
+    f.film_n = st->nf;
+    f.substrate = sub;
+    snprintf(key, sizeof key, "%s/%.2f/%.2f", st->sub, st->nf, st->n1);
+    if (film_stack_domain(&f, why, sizeof why))
+        goto done; /* outside the domain: refused by the tool, not bounded */
+    *m = *poles;
+    if (film_fit_material(&f, &g->cm, &g->cs, m) || film_encode_q15(m, &k->q15)) {
+        CHECK("film search: a stack in the domain fits and encodes", 0, "%s", key);
+        goto done;
+    }
+    film_encode_f32(m, &k->f32);
+    film_decode_f32(&k->f32, &k->ref[T_F32]);
+    film_decode_q15(&k->q15, &k->ref[T_Q15]);
+#if FRESNEL_HAS_F16
+    film_encode_f16(m, &k->f16);
+    film_decode_f16(&k->f16, &k->ref[T_F16]);
+#endif
+    for (ty = 0; ty < (FRESNEL_HAS_F16 ? T_TYPES : T_F16); ty++) {
+        double e = search_stack(k, ty, key, random_n, climb, &w[ty]);
+        if (getenv("FILM_SEARCH_VERBOSE"))
+            printf("NOTE film search %-16s %-8s %.4g\n", key, tnames[ty], e);
+    }
+done:
+    free(sub);
+    free(m);
+}
+
+int main(void)
+{
+    static const char *const goal[] = {"au", "cu", "al", "ti", "fe", "bk7"};
+    gen_context *g = malloc(sizeof *g);
+    film_model *poles = malloc(sizeof *poles);
+    film_case *k = malloc(sizeof *k);
+    worst_of w[T_TYPES];
+    int longpass = search_long(), i;
+    long random_n = longpass ? 60000 : 20000;
+    int climb = longpass ? 6 : 4;
+    const char *only = getenv("FILM_SEARCH_STACK"); /* "n1 nf substrate": one stack */
+    memset(w, 0, sizeof w);
+    if (!g || !poles || !k || gen_context_load(data_dir(NULL), "srgb", g) ||
+        film_fit_poles(&g->cm, &g->cs, poles, NULL)) {
+        CHECK("film search: data loads and the poles fit", 0, "failed");
+        return harness_exit();
+    }
+    if (only) {
+        stack_spec st;
+        char sub[32];
+        if (sscanf(only, "%lf %lf %31s", &st.n1, &st.nf, sub) == 3) {
+            st.sub = sub;
+            run_stack(g, poles, &st, random_n, climb, k, w);
+        }
+    } else if (longpass) {
+        static const char *const subs[] = {"au", "cu", "al", "ti", "fe", "ag", "cr", "ni", "pt", "w",
+                                           "si", "bk7", "water", "diamond", "sf11"};
+        static const double n1s[] = {1.0, 1.33, 1.4, 1.5};
+        int a, b, c;
+        for (a = 0; a < 4; a++)
+            for (b = 0; b < 15; b++)
+                for (c = 0; c <= 12; c++) {
+                    stack_spec st;
+                    st.n1 = n1s[a];
+                    st.nf = 1.0 + 0.25 * c;
+                    st.sub = subs[b];
+                    if (st.nf >= st.n1)
+                        run_stack(g, poles, &st, random_n, climb, k, w);
+                }
+    } else {
+        for (i = 0; i < 12; i++) {
+            stack_spec st;
+            st.n1 = 1.0;
+            st.nf = i % 2 ? 2.5 : 1.2;
+            st.sub = goal[i / 2];
+            run_stack(g, poles, &st, random_n, climb, k, w);
+        }
+    }
+    NOTE("film search, worst found against the double model of the same constants: binary32 %.3g (%s), "
+         "Q1.15 %.2f LSB (%s), binary16 %.3g (%s)",
+         w[T_F32].err, w[T_F32].where, w[T_Q15].err, w[T_Q15].where, w[T_F16].err, w[T_F16].where);
+    CHECK("film binary32 within FRESNEL_BOUND_FILM of the double model of its constants (searched)",
+          w[T_F32].err <= FRESNEL_BOUND_FILM, "%.3g at %s", w[T_F32].err, w[T_F32].where);
+    CHECK("film Q1.15 within FRESNEL_BOUND_FILM_Q15 LSB of the double model of its constants (searched)",
+          w[T_Q15].err <= FRESNEL_BOUND_FILM_Q15, "%.2f LSB at %s", w[T_Q15].err, w[T_Q15].where);
+#if FRESNEL_HAS_F16
+    CHECK("film binary16 within FRESNEL_BOUND_FILM_F16 of the double model of its constants (searched)",
+          w[T_F16].err <= FRESNEL_BOUND_FILM_F16, "%.3g at %s", w[T_F16].err, w[T_F16].where);
+#endif
+    free(g);
+    free(poles);
+    free(k);
+    return harness_exit();
+}

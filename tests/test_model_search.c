@@ -1,0 +1,191 @@
+/* Every model of the model table (gen/model/registry.h) in every number
+ * type, held to its stated bound by a search for the worst case
+ * (tests/search.h) over the domain the header states, not over a grid or
+ * a material set:
+ *   binary32 (fresnel.h CONVENTIONS): eta in [0.01, 100], kappa 0 or in
+ *     [1e-3, 1000], an incident medium n1 in [1, 2.42] (the grid's media),
+ *     every c; bound FRESNEL_BOUND_<MODEL>;
+ *   Q1.15 (fresnel_fixed.h ERROR BOUNDS): eta in [2^-10, 32767], kappa 0
+ *     or in [1e-9, 32767], every cos code; FRESNEL_BOUND_<MODEL>_Q15 (LSB);
+ *   binary16 (fresnel_f16.h): eta in [2^-10, 16], kappa 0 or in [1e-3,
+ *     16], every binary16 c; FRESNEL_DOMAIN_<MODEL>_F16 (the rows whose
+ *     domain bound is 1, the exact forms at a dielectric's critical angle,
+ *     are held to their range only).
+ * eta and kappa are searched in log10 (a kappa below the range's low end
+ * stands for 0: a twelfth of the box), the parameters derived from them
+ * as the generator derives them (model_derive) and rounded to the type.
+ * Results outside [0, 1] count as an infinite error. The corpus
+ * (tests/worst_inputs/models.txt) replays the worst points of the long
+ * pass (SEARCH_LONG=1, make search). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "fresnel.h"
+#include "fresnel_f16.h"
+#include "fresnel_fixed.h"
+#include "harness.h"
+#include "search.h"
+#include "model/registry.h"
+#include "common/reference.h"
+
+#define CORPUS "tests/worst_inputs/models.txt"
+
+enum { T_F32, T_Q15, T_F16 };
+static const char *const type_key[] = {"f32", "q15", "f16"};
+
+typedef struct model_case {
+    const model *m;
+    int type;
+    double kappa_lo; /* log10 of the smallest non-zero kappa */
+} model_case;
+
+static double kappa_of(const model_case *k, double x)
+{
+    return x < k->kappa_lo ? 0.0 : pow(10.0, x);
+}
+
+/* x: log10 eta, log10 kappa (or below: 0), c (Q1.15: its code), n1 (binary32 only) */
+static double model_error(void *ctx, const double *x)
+{
+    const model_case *k = ctx;
+    model_params mp;
+    double eta = pow(10.0, x[0]), kappa = kappa_of(k, x[1]);
+    if (k->type == T_F32) {
+        float c = (float)x[2], got;
+        model_derive(eta, kappa, x[3], 1.0, 5.0, &mp);
+        model_params_round_f32(&mp);
+        got = k->m->f32(&mp, c);
+        if (!(got >= 0.0f && got <= 1.0f))
+            return HUGE_VAL;
+        return fabs((double)got - k->m->f64(&mp, c));
+    }
+    if (k->type == T_Q15) {
+        model_fixed mf;
+        int32_t c = (int32_t)x[2], got;
+        model_derive(eta, kappa, 1.0, 1.0, 5.0, &mp);
+        model_params_round_fixed(&mp);
+        model_fixed_from_params(&mp, &mf);
+        got = k->m->q15(&mf, c);
+        if (got < 0 || got > 32768)
+            return HUGE_VAL;
+        return fabs(got / 32768.0 - k->m->f64(&mp, c / 32768.0)) * 32768.0;
+    }
+#if FRESNEL_HAS_F16
+    {
+        double c = (double)(fresnel_f16)x[2], got;
+        model_derive(eta, kappa, 1.0, 1.0, 5.0, &mp);
+        model_params_round_f16(&mp);
+        got = k->m->f16(&mp, c);
+        if (!(got >= 0.0 && got <= 1.0))
+            return HUGE_VAL;
+        return fabs(got - k->m->f64(&mp, c));
+    }
+#else
+    return 0.0;
+#endif
+}
+
+/* The binary16 bound over the whole domain, by the row's function; 0: none
+ * below 1 (held to its range only). */
+static double f16_domain_bound(const model *m)
+{
+    static const struct {
+        const char *name;
+        double bound;
+    } b[] = {{"schlick", FRESNEL_DOMAIN_SCHLICK_F16},
+             {"schlick-gen", FRESNEL_DOMAIN_SCHLICK_GEN_F16},
+             {"lsk", FRESNEL_DOMAIN_LSK_F16},
+             {"lsk-comp", FRESNEL_DOMAIN_LSK_COMP_F16},
+             {"f82", FRESNEL_DOMAIN_F82_F16},
+             {"gulbrandsen", FRESNEL_DOMAIN_GULBRANDSEN_F16},
+             {"approx-conductor", FRESNEL_DOMAIN_APPROX_CONDUCTOR_F16}};
+    size_t i;
+    for (i = 0; i < sizeof b / sizeof b[0]; i++)
+        if (!strcmp(m->name, b[i].name))
+            return b[i].bound;
+    return 0.0;
+}
+
+static int duplicate_row(int mi)
+{
+    int j;
+    for (j = 0; j < mi; j++)
+        if (model_table[j].f32 == model_table[mi].f32 && model_table[j].q15 == model_table[mi].q15)
+            return 1;
+    return 0;
+}
+
+int main(void)
+{
+    int longpass = search_long(), mi, ty;
+    long random_n = longpass ? 2000000 : 60000;
+    for (mi = 0; mi < model_count; mi++) {
+        const model *m = &model_table[mi];
+        if (!m->f32 || !(m->offered & MODEL_EVAL) || duplicate_row(mi))
+            continue; /* the thin film: tests/test_film_search.c */
+        for (ty = T_F32; ty <= T_F16; ty++) {
+            model_case k;
+            search_space sp;
+            search_state s;
+            char key[96], label[160];
+            double bound;
+            static const double sweep_c[] = {0.0, 1.0, 0.5, 1.0 / 7.0, 1e-3, 0.999};
+            int i, j;
+            memset(&sp, 0, sizeof sp);
+            k.m = m;
+            k.type = ty;
+            if (ty == T_F16 && !(FRESNEL_HAS_F16 && m->f16))
+                continue;
+            if (ty == T_F32) {
+                sp.dims = 4;
+                sp.lo[0] = -2.0, sp.hi[0] = 2.0;
+                k.kappa_lo = -3.0, sp.lo[1] = -3.5, sp.hi[1] = 3.0;
+                sp.hi[2] = 1.0;
+                sp.lo[3] = 1.0, sp.hi[3] = 2.42;
+                bound = m->bound;
+            } else if (ty == T_Q15) {
+                sp.dims = 3;
+                sp.lo[0] = -10.0 * log10(2.0), sp.hi[0] = log10(32767.0);
+                k.kappa_lo = -9.0, sp.lo[1] = -10.2, sp.hi[1] = log10(32767.0);
+                sp.hi[2] = 32768.0, sp.quantum[2] = 1.0;
+                bound = m->q15_bound;
+            } else {
+                sp.dims = 3;
+                sp.lo[0] = -10.0 * log10(2.0), sp.hi[0] = log10(16.0);
+                k.kappa_lo = -3.0, sp.lo[1] = -3.4, sp.hi[1] = log10(16.0);
+                sp.hi[2] = 1.0;
+                bound = f16_domain_bound(m);
+            }
+            search_init(&s, &sp, model_error, &k, 0xF5E5u + (uint64_t)(mi * 3 + ty));
+            snprintf(key, sizeof key, "%s:%s", type_key[ty], m->name);
+            search_corpus(&s, CORPUS, key);
+            /* the ends and the marked cosines at the corners and the middle of the box */
+            for (i = 0; i < 6; i++)
+                for (j = 0; j < 9; j++) {
+                    double x[SEARCH_DIMS];
+                    x[0] = sp.lo[0] + (sp.hi[0] - sp.lo[0]) * (j % 3) / 2.0;
+                    x[1] = sp.lo[1] + (sp.hi[1] - sp.lo[1]) * (j / 3) / 2.0;
+                    x[2] = sweep_c[i] * sp.hi[2];
+                    x[3] = 1.0;
+                    search_eval(&s, x);
+                }
+            search_random(&s, random_n);
+            search_climb(&s, longpass ? 12 : 6, 48);
+            search_corpus_write(&s, key, 3);
+            if (ty == T_Q15)
+                printf("NOTE search %-6s %-18s max|err| %.4g LSB at eta %.6g kappa %.6g c %.0f, %ld evaluations\n",
+                       type_key[ty], m->name, s.top[0].err, pow(10.0, s.top[0].x[0]),
+                       kappa_of(&k, s.top[0].x[1]), s.top[0].x[2], s.evals);
+            else
+                printf("NOTE search %-6s %-18s max|err| %.4g at eta %.6g kappa %.6g c %.9g%s, %ld evaluations\n",
+                       type_key[ty], m->name, s.top[0].err, pow(10.0, s.top[0].x[0]), kappa_of(&k, s.top[0].x[1]),
+                       s.top[0].x[2], ty == T_F32 ? " (n1 given)" : "", s.evals);
+            snprintf(label, sizeof label, "%s %s: results in [0, 1]%s (searched)", type_key[ty], m->name,
+                     bound > 0.0 ? " and within the stated bound" : "");
+            CHECK(label, bound > 0.0 ? s.top[0].err <= bound : s.top[0].err < HUGE_VAL, "max|err| %.4g, bound %.4g",
+                  s.top[0].err, bound);
+        }
+    }
+    return harness_exit();
+}
