@@ -7,7 +7,8 @@
  *      and the regression corpus of earlier worst inputs, through
  *      search_eval;
  *   2. search_random: uniform samples over the box (deterministic: the
- *      generator is seeded, so a run is repeatable and a failure replays);
+ *      generator is seeded, so a run is repeatable and a failure replays;
+ *      SEARCH_SEED=N moves a run to other points);
  *   3. search_climb: from each of the best points kept so far, a local
  *      random search whose radius shrinks from a sixteenth of the box to
  *      one input code (or 1e-9 of the range for a continuous input):
@@ -60,6 +61,9 @@ typedef struct search_state {
 
 static void search_init(search_state *s, const search_space *sp, search_error_fn *fn, void *ctx, uint64_t seed)
 {
+    const char *extra = getenv("SEARCH_SEED"); /* another long run explores other points */
+    if (extra)
+        seed += 0x10000u * (uint64_t)strtoul(extra, NULL, 10);
     memset(s, 0, sizeof *s);
     s->sp = *sp;
     s->fn = fn;

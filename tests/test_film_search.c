@@ -17,10 +17,13 @@
  * Stacks: the fast pass (make test) takes the corpus's stacks (the worst
  * found by the long pass, tests/worst_inputs/film.txt) and the goal
  * substrates (Au, Cu, Al, Ti, Fe, BK7) under films 1.2 and 2.5 in air;
- * the long pass (SEARCH_LONG=1, make search) films 1.0-4.0 by 0.25 on
- * fifteen substrates (the goal's, Ag, Cr, Ni, Pt, W, Si, water, diamond,
- * SF11) in air, water (1.33), 1.4 and glass (1.5), every stack that is in
- * the model's domain (film_stack_domain). */
+ * the long pass (SEARCH_LONG=1, make search) a film of the ambient's
+ * index and films 1.0-4.0 by 0.5 on twelve substrates (the goal's, Ag,
+ * Cr, Si, water, diamond, SF11) in air, water (1.33), 1.4,
+ * glass (1.5) and the densest ambient that keeps a dielectric substrate in
+ * the model's domain (its edge, by bisection), every stack in the domain
+ * (film_stack_domain). FILM_SEARCH_STACK="n1 n_f substrate" searches one
+ * stack, FILM_SEARCH_VERBOSE=1 prints each stack's maxima. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -177,7 +180,7 @@ static void run_stack(const gen_context *g, const film_model *poles, const stack
     f.film = NULL;
     f.film_n = st->nf;
     f.substrate = sub;
-    snprintf(key, sizeof key, "%s/%.2f/%.2f", st->sub, st->nf, st->n1);
+    snprintf(key, sizeof key, "%s/%.4g/%.4g", st->sub, st->nf, st->n1);
     if (film_stack_domain(&f, why, sizeof why))
         goto done; /* outside the domain: refused by the tool, not bounded */
     *m = *poles;
@@ -200,6 +203,110 @@ static void run_stack(const gen_context *g, const film_model *poles, const stack
 done:
     free(sub);
     free(m);
+}
+
+/* The stacks of the corpus with the largest errors, `per_type` distinct
+ * ones per type (keys "TYPE:SUBSTRATE/N_F/N1"); the count. */
+static int corpus_stacks(stack_spec *out, char (*subs)[32], int per_type)
+{
+    struct {
+        double err;
+        int type;
+        char sub[32];
+        double nf, n1;
+    } best[T_TYPES][8];
+    char line[512];
+    int n = 0, ty, i, j;
+    FILE *f = fopen(CORPUS, "r");
+    memset(best, 0, sizeof best);
+    if (!f)
+        return 0;
+    while (fgets(line, sizeof line, f)) {
+        char type[8], sub[32];
+        double nf, n1, err;
+        const char *hash = strchr(line, '#');
+        if (!hash || sscanf(line, "%7[^:]:%31[^/]/%lf/%lf", type, sub, &nf, &n1) != 4 ||
+            sscanf(hash + 1, "%lf", &err) != 1)
+            continue;
+        for (ty = 0; ty < T_TYPES && strcmp(type, type_key[ty]); ty++)
+            ;
+        if (ty == T_TYPES)
+            continue;
+        for (i = 0; i < per_type && !(best[ty][i].nf == nf && best[ty][i].n1 == n1 && !strcmp(best[ty][i].sub, sub));
+             i++)
+            ;
+        if (i < per_type) { /* the stack is kept: its best error */
+            if (err > best[ty][i].err)
+                best[ty][i].err = err;
+        } else if (err > best[ty][per_type - 1].err) {
+            i = per_type - 1;
+            best[ty][i].err = err;
+            snprintf(best[ty][i].sub, sizeof best[ty][i].sub, "%s", sub);
+            best[ty][i].nf = nf;
+            best[ty][i].n1 = n1;
+        } else
+            continue;
+        for (; i > 0 && best[ty][i - 1].err < best[ty][i].err; i--) {
+            double e = best[ty][i].err;
+            char sv[32];
+            double a = best[ty][i].nf, b = best[ty][i].n1;
+            snprintf(sv, sizeof sv, "%s", best[ty][i].sub);
+            best[ty][i] = best[ty][i - 1];
+            best[ty][i - 1].err = e;
+            snprintf(best[ty][i - 1].sub, sizeof best[ty][i - 1].sub, "%s", sv);
+            best[ty][i - 1].nf = a;
+            best[ty][i - 1].n1 = b;
+        }
+    }
+    fclose(f);
+    for (ty = 0; ty < T_TYPES; ty++)
+        for (i = 0; i < per_type && best[ty][i].err > 0.0; i++) {
+            for (j = 0; j < n && !(out[j].nf == best[ty][i].nf && out[j].n1 == best[ty][i].n1 &&
+                                   !strcmp(out[j].sub, best[ty][i].sub));
+                 j++)
+                ;
+            if (j < n)
+                continue;
+            snprintf(subs[n], 32, "%s", best[ty][i].sub);
+            out[n].sub = subs[n];
+            out[n].nf = best[ty][i].nf;
+            out[n].n1 = best[ty][i].n1;
+            n++;
+        }
+    return n;
+}
+
+/* The densest incident medium (n1 <= 4) in which the substrate is still in
+ * the domain, by bisection: the stacks at the domain's edge; 0 where every
+ * n1 up to 4 is inside (a metal). */
+static double domain_edge_n1(const char *sub_id)
+{
+    spectrum *sub = malloc(sizeof *sub);
+    film_stack f;
+    char why[256];
+    double lo = 1.0, hi = 4.0;
+    int i;
+    if (!sub || spectrum_load(data_dir(NULL), sub_id, sub)) {
+        free(sub);
+        return 0.0;
+    }
+    f.film = NULL;
+    f.film_n = 4.0;
+    f.substrate = sub;
+    f.n1 = hi;
+    if (film_stack_domain(&f, why, sizeof why) == 0) {
+        free(sub);
+        return 0.0;
+    }
+    for (i = 0; i < 40; i++) {
+        f.n1 = 0.5 * (lo + hi);
+        if (film_stack_domain(&f, why, sizeof why) == 0)
+            lo = f.n1;
+        else
+            hi = f.n1;
+    }
+    free(sub);
+    return lo;
 }
 
 int main(void)
@@ -227,28 +334,38 @@ int main(void)
             run_stack(g, poles, &st, random_n, climb, k, w);
         }
     } else if (longpass) {
-        static const char *const subs[] = {"au", "cu", "al", "ti", "fe", "ag", "cr", "ni", "pt", "w",
-                                           "si", "bk7", "water", "diamond", "sf11"};
-        static const double n1s[] = {1.0, 1.33, 1.4, 1.5};
+        static const char *const subs[] = {"au", "cu", "al", "ti", "fe", "ag", "cr", "si",
+                                           "bk7", "water", "diamond", "sf11"};
         int a, b, c;
-        for (a = 0; a < 4; a++)
-            for (b = 0; b < 15; b++)
-                for (c = 0; c <= 12; c++) {
+        for (b = 0; b < 12; b++) {
+            double n1s[5] = {1.0, 1.33, 1.4, 1.5, 0.0};
+            n1s[4] = domain_edge_n1(subs[b]);
+            for (a = 0; a < 5; a++)
+                for (c = -1; c <= 6; c++) {
                     stack_spec st;
                     st.n1 = n1s[a];
-                    st.nf = 1.0 + 0.25 * c;
+                    st.nf = c < 0 ? st.n1 : 1.0 + 0.5 * c; /* a film of the ambient's index, then the grid */
                     st.sub = subs[b];
-                    if (st.nf >= st.n1)
+                    if (st.n1 > 0.0 && st.nf >= st.n1 && (c < 0 || st.nf > st.n1))
                         run_stack(g, poles, &st, random_n, climb, k, w);
                 }
-    } else {
-        for (i = 0; i < 12; i++) {
-            stack_spec st;
-            st.n1 = 1.0;
-            st.nf = i % 2 ? 2.5 : 1.2;
-            st.sub = goal[i / 2];
-            run_stack(g, poles, &st, random_n, climb, k, w);
         }
+    } else {
+        stack_spec st[12 + 3 * T_TYPES];
+        char subs[3 * T_TYPES][32];
+        int n = corpus_stacks(st, subs, 3), j;
+        for (i = 0; i < 12; i++) {
+            stack_spec goal_st;
+            goal_st.n1 = 1.0;
+            goal_st.nf = i % 2 ? 2.5 : 1.2;
+            goal_st.sub = goal[i / 2];
+            for (j = 0; j < n && !(st[j].n1 == 1.0 && st[j].nf == goal_st.nf && !strcmp(st[j].sub, goal_st.sub)); j++)
+                ;
+            if (j == n)
+                st[n++] = goal_st;
+        }
+        for (i = 0; i < n; i++)
+            run_stack(g, poles, &st[i], random_n, climb, k, w);
     }
     NOTE("film search, worst found against the double model of the same constants: binary32 %.3g (%s), "
          "Q1.15 %.2f LSB (%s), binary16 %.3g (%s)",
