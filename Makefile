@@ -217,11 +217,16 @@ viewer: $(BUILD)/fresnel
 	$(BUILD)/fresnel viewer $(VIEWER_SCENE) -o $(BUILD)/viewer \
 	    $(if $(wildcard $(BUILD)/report/cross-count.txt),--cross $(BUILD)/report/cross-count.txt)
 
+# DESTDIR and PREFIX reach ports/install.sh as written, any character but a
+# newline kept, a $ too (make's value function: not expanded by make); each
+# argument one single-quoted shell word ('it'\''s').
+shell_word = '$(subst ','\'',$(1))'
 install: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(BUILD)/hlsl/fresnel.hlsl
-	@sh ports/install.sh install '$(DESTDIR)' '$(PREFIX)' '$(BUILD)'
+	@sh ports/install.sh install $(call shell_word,$(value DESTDIR)) $(call shell_word,$(value PREFIX)) \
+	    $(call shell_word,$(BUILD))
 
 uninstall:
-	@sh ports/install.sh uninstall '$(DESTDIR)' '$(PREFIX)'
+	@sh ports/install.sh uninstall $(call shell_word,$(value DESTDIR)) $(call shell_word,$(value PREFIX))
 
 clean:
 	rm -rf $(BUILD)

@@ -188,9 +188,16 @@ for h in include/*.h; do put 644 include "$h"; done
 put 644 lib "$build/libfresnel.a"
 put 755 bin "$build/fresnel"
 mkdirs lib/pkgconfig
-# The prefix may hold any character but a newline: escape what sed's
-# replacement gives a meaning to (\, & and the | delimiter).
-prefix_sed=$(printf '%s' "$prefix" | sed 's/[\\&|]/\\&/g')
+# The prefix may hold any character but a newline. In fresnel.pc it is
+# escaped as pkg-config reads a variable that its flags use: a backslash
+# before each byte outside [A-Za-z0-9/._+,:=@%^~-] (pkg-config's shell-style
+# splitting of the flags takes it away; \$ and \{ keep ${ from being a
+# variable), and "\#" for # (the backslash keeps the line reader from
+# taking a comment, the quotes keep GLib's splitting in freedesktop
+# pkg-config from taking one after an escaped space). Then what sed's
+# replacement gives a meaning to (\, & and the | delimiter) is escaped.
+prefix_pc=$(printf '%s\n' "$prefix" | LC_ALL=C sed -e 's/[^A-Za-z0-9/._+,:=@%^~#-]/\\&/g' -e 's/#/"\\#"/g')
+prefix_sed=$(printf '%s' "$prefix_pc" | sed 's/[\\&|]/\\&/g')
 sed -e "s|@PREFIX@|$prefix_sed|" -e "s|@FRESNEL_VERSION@|$version|" ports/fresnel.pc.in \
     >"$root/lib/pkgconfig/fresnel.pc" || exit 1
 echo "f lib/pkgconfig/fresnel.pc" >>"$list"

@@ -8,6 +8,8 @@
 # and C++17 (g++ and clang++) against the installed libfresnel.a. Every build
 # is warning-free with -Werror and prints the same numbers. Then the installed
 # tool finds its data pack, and `make uninstall` leaves nothing behind.
+# Last, installs to prefixes with a space, an apostrophe and # & $ " in
+# them, each consumed through pkg-config and CMake and uninstalled.
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 W="-std=c99 -Wall -Wextra -Wpedantic -Werror"
@@ -200,3 +202,38 @@ elif grep -q 'install_manifest.txt' "$t/log"; then
 else
     echo "FAIL make uninstall without an install: $(tail -3 "$t/log")"
 fi
+
+# ---- prefixes with odd characters: a space, an apostrophe, # & $ " ----
+# make install takes PREFIX as written; fresnel.pc holds it escaped as
+# pkg-config reads it, and pkg-config prints the flags as shell text, which
+# a shell (here eval) or a Makefile recipe reads back into the paths; CMake
+# finds the package relative to itself; make uninstall leaves nothing.
+# (pkg-config prints a $ unescaped: one followed by a name would be a
+# variable to the shell that reads the flags, hence US$ before a slash.
+# CMake writes the path of the package's files unescaped into its own
+# CMakeFiles/Makefile.cmake, which a " breaks, so that prefix skips CMake.)
+for name in "a b" "it's" 'odd #&US$' 'q"q'; do
+    p=$t/odd/$name
+    label="PREFIX ending in '$name'"
+    if ! make --no-print-directory -s install PREFIX="$p" >"$t/log" 2>&1 || [ ! -f "$p/include/fresnel.h" ]; then
+        echo "FAIL make install $label: $(tail -3 "$t/log")"
+        continue
+    fi
+    flags=$(PKG_CONFIG_PATH="$p/lib/pkgconfig" pkg-config --cflags --libs fresnel 2>"$t/pcerr")
+    rm -f "$t/odd.bin"
+    if [ -n "$flags" ] && eval "cc \$W tests/consumer/consumer.c $flags -o \"\$t/odd.bin\"" 2>"$t/cc5" &&
+        [ ! -s "$t/cc5" ] && "$t/odd.bin" >"$t/o5" && cmp -s "$t/o1" "$t/o5"; then
+        echo "PASS $label: the consumer builds warning-free from pkg-config --cflags --libs fresnel ($flags) and agrees"
+    else
+        echo "FAIL $label, pkg-config: flags '$flags' $(cat "$t/pcerr" "$t/cc5" 2>/dev/null | head -5)"
+    fi
+    case $name in
+    *'"'*) echo "NOTE CMake find_package, $label: not tried (a \" in the path breaks CMake's own build files)" ;;
+    *) cmake_route "find_package(fresnel), $label" -DROUTE=find_package -DCMAKE_PREFIX_PATH="$p" ;;
+    esac
+    if make --no-print-directory -s uninstall PREFIX="$p" >"$t/log" 2>&1 && [ ! -e "$t/odd" ]; then
+        echo "PASS make uninstall $label removes everything install put there"
+    else
+        echo "FAIL make uninstall $label left: $(find "$t/odd" 2>/dev/null | head -5) $(tail -3 "$t/log")"
+    fi
+done
