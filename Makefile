@@ -300,6 +300,21 @@ fuzz: fuzz-bins
 	    [ $$rc -eq 0 ] || { echo "$$t: failing input in $(BUILD)/fuzz/artifacts/$$t/, log $(BUILD)/fuzz/$$t.log"; exit 1; }; \
 	done
 
+# The long pass of the worst-case searches behind the stated bounds
+# (tests/search.h; make test runs their fast pass): each search with
+# SEARCH_LONG=1, its best points rewritten into tests/worst_inputs/, which
+# the fast pass replays. Minutes (the thin film's: about half an hour on two
+# cores); fails when a search beats a bound, the corpus written all the same.
+SEARCHES := film_search:film model_search:models fast_search:fast
+search: $(BUILD)/tests/test_film_search $(BUILD)/tests/test_model_search $(BUILD)/tests/test_fast_search
+	@status=0; for s in $(SEARCHES); do \
+	    out=tests/worst_inputs/$${s#*:}.txt; rm -f $$out.new; \
+	    echo "== test_$${s%%:*} (SEARCH_LONG=1)"; \
+	    SEARCH_LONG=1 SEARCH_CORPUS_OUT=$$out.new $(BUILD)/tests/test_$${s%%:*} || status=1; \
+	    mv $$out.new $$out || status=1; \
+	done; exit $$status
+.PHONY: search
+
 # ---- fixed point, fp16 and cross targets ----
 # Everything below belongs to the fixed-point / binary16 runtime and its
 # cross builds (include/fresnel_fixed.h, include/fresnel_f16.h, ports/).

@@ -174,21 +174,21 @@ extern "C" {
 
 /* Error bounds of the binary32 functions (see CONVENTIONS): about 2-10
  * units in the last place of 1 (binary32 ulp(1) = 1.19e-7). */
-#define FRESNEL_BOUND_SCHLICK          3e-7f
-#define FRESNEL_BOUND_SCHLICK_GEN      3e-7f
-#define FRESNEL_BOUND_SCHLICK_INTERNAL 3e-7f
+#define FRESNEL_BOUND_SCHLICK          3.6e-7f
+#define FRESNEL_BOUND_SCHLICK_GEN      3.6e-7f
+#define FRESNEL_BOUND_SCHLICK_INTERNAL 3.5e-7f
 #define FRESNEL_BOUND_F0_FROM_IOR               3e-7f /* fresnel_f0_from_ior */
 #define FRESNEL_BOUND_F0_IN_MEDIUM     5e-7f
-#define FRESNEL_BOUND_LSK              5e-7f
+#define FRESNEL_BOUND_LSK              5.2e-7f
 #define FRESNEL_BOUND_LSK_COMP         6e-7f
-#define FRESNEL_BOUND_F82              5e-7f
+#define FRESNEL_BOUND_F82              5.5e-7f
 #define FRESNEL_BOUND_GULBRANDSEN      4e-7f
 #define FRESNEL_BOUND_GULBRANDSEN_RG    4e-7f /* g of fresnel_gulbrandsen_rg */
-#define FRESNEL_BOUND_APPROX_CONDUCTOR 3e-7f
+#define FRESNEL_BOUND_APPROX_CONDUCTOR 3.6e-7f
 #define FRESNEL_BOUND_COOK_TORRANCE    6e-7f
 #define FRESNEL_BOUND_CONDUCTOR        4e-7f
 #define FRESNEL_BOUND_CONDUCTOR_PREPARED 4e-7f /* fresnel_conductor_prepared, _batch */
-#define FRESNEL_BOUND_DIELECTRIC       3e-7f
+#define FRESNEL_BOUND_DIELECTRIC       3.7e-7f
 /* The hemispherical averages (fresnel_*_avg) against the double closed form. */
 #define FRESNEL_BOUND_SCHLICK_AVG      2e-7f
 #define FRESNEL_BOUND_SCHLICK_GEN_AVG  3e-7f

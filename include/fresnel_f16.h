@@ -103,14 +103,14 @@
  * clamped to 16), F0 and F82 far apart (F82), and near-dielectric
  * conductors (kappa 1e-3) at their critical angle. They are measured
  * maxima rounded up, not proven, but for the LUTs'. */
-#define FRESNEL_DOMAIN_SCHLICK_F16 2.6e-3
-#define FRESNEL_DOMAIN_SCHLICK_GEN_F16 2.6e-3
-#define FRESNEL_DOMAIN_F82_F16 4.2e-3
+#define FRESNEL_DOMAIN_SCHLICK_F16 2.8e-3
+#define FRESNEL_DOMAIN_SCHLICK_GEN_F16 2.8e-3
+#define FRESNEL_DOMAIN_F82_F16 4.4e-3
 #define FRESNEL_DOMAIN_SCHLICK_INTERNAL_F16 1.0
 #define FRESNEL_DOMAIN_F0_FROM_IOR_F16 2.1e-3
 #define FRESNEL_DOMAIN_F0_IN_MEDIUM_F16 5.2e-3
-#define FRESNEL_DOMAIN_LSK_F16 3.5e-3
-#define FRESNEL_DOMAIN_LSK_COMP_F16 3.7e-3
+#define FRESNEL_DOMAIN_LSK_F16 4.1e-3
+#define FRESNEL_DOMAIN_LSK_COMP_F16 4.1e-3
 #define FRESNEL_DOMAIN_GULBRANDSEN_F16 0.15
 #define FRESNEL_DOMAIN_APPROX_CONDUCTOR_F16 3.0e-2
 #define FRESNEL_DOMAIN_COOK_TORRANCE_F16 1.0

@@ -36,7 +36,10 @@
  * ERROR BOUNDS (LSB of Q15, FRESNEL_BOUND_*_Q15_FAST) bound
  * |result/32768 - reference| over every cos code 0..32768, against the
  * references of fresnel_fixed.h's ERROR BOUNDS; tests/README.md names the
- * tests and parameter sets.
+ * tests and parameter sets. Schlick's is the largest error over every
+ * (F0, c) code pair; F82's and the exact conductor's the largest a search
+ * for the worst case found over their domains, plus at least 10%
+ * (tests/test_fast_search.c, make search).
  */
 #if FRESNEL_HAS_FIXED
 
@@ -48,8 +51,8 @@
 #define FRESNEL_I_INLINE static inline
 #endif
 
-#define FRESNEL_BOUND_SCHLICK_Q15_FAST 2.9
-#define FRESNEL_BOUND_F82_Q15_FAST 5.2
+#define FRESNEL_BOUND_SCHLICK_Q15_FAST 2.94
+#define FRESNEL_BOUND_F82_Q15_FAST 5.6
 #define FRESNEL_BOUND_LUT_Q15_FAST 1.0         /* 2 <= n <= 64 */
 #define FRESNEL_BOUND_LUT_Q15_FAST_1024 2.8    /* n <= 1024 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST 3.4      /* n <= 64 */

@@ -14,6 +14,10 @@
  * eta and kappa are searched in log10 (a kappa below the range's low end
  * stands for 0: a twelfth of the box), the parameters derived from them
  * as the generator derives them (model_derive) and rounded to the type.
+ * And the binary32 functions outside the table, each over its bound's
+ * domain: fresnel_f0_from_ior, fresnel_f0_in_medium (F0 from 1e-8 to
+ * 1 - 1e-6), fresnel_gulbrandsen_rg's g (the whole eta, kappa domain),
+ * fresnel_conductor_prepared.
  * Results outside [0, 1] count as an infinite error. The corpus
  * (tests/worst_inputs/models.txt) replays the worst points of the long
  * pass (SEARCH_LONG=1, make search). */
@@ -107,6 +111,90 @@ static double f16_domain_bound(const model *m)
     return 0.0;
 }
 
+/* ---- the binary32 functions outside the model table, each over the
+ * domain of its bound (fresnel.h) */
+
+static double pow10_or_zero(double x, double lo) { return x < lo ? 0.0 : pow(10.0, x); }
+
+/* x: log10 eta in [-2, 2], log10 kappa in [-3.5, 3] (below -3: 0) */
+static double f0_from_ior_error(void *ctx, const double *x)
+{
+    float e = (float)pow(10.0, x[0]), k = (float)pow10_or_zero(x[1], -3.0);
+    (void)ctx;
+    return fabs((double)fresnel_f0_from_ior(e, k) - ref_f0_from_ior(e, k));
+}
+
+/* x: F0 = 10^x0 for x0 <= 0, 1 - 10^-x0 above (F0 from 1e-8 to 1 - 1e-6),
+ * log10 eta_e in [log10 FRESNEL_ETA_MIN, 2] */
+static double f0_in_medium_error(void *ctx, const double *x)
+{
+    float f0 = (float)(x[0] <= 0.0 ? pow(10.0, x[0]) : 1.0 - pow(10.0, -x[0])), e = (float)pow(10.0, x[1]);
+    float got = fresnel_f0_in_medium(f0, e);
+    (void)ctx;
+    return got >= 0.0f && got <= 1.0f ? fabs((double)got - ref_f0_in_medium(f0, e)) : HUGE_VAL;
+}
+
+/* g of Gulbrandsen's inverse over the whole domain: log10 n in
+ * [log10 FRESNEL_ETA_MIN, 5], log10 k in [-20, 5] (below -19: 0) */
+static double gulbrandsen_rg_error(void *ctx, const double *x)
+{
+    float n = (float)pow(10.0, x[0]), k = (float)pow10_or_zero(x[1], -19.0);
+    fresnel_rg o = fresnel_gulbrandsen_rg(n, k);
+    double r, g;
+    (void)ctx;
+    ref_gulbrandsen_rg(n, k, &r, &g);
+    return fabs((double)o.g - g);
+}
+
+/* fresnel_conductor_prepared, as the exact model: log10 eta, log10 kappa
+ * relative to an incident n1 in [1, 2.42], c */
+static double conductor_prepared_error(void *ctx, const double *x)
+{
+    float eta = (float)(pow(10.0, x[0]) / x[3]), kappa = (float)(pow10_or_zero(x[1], -3.0) / x[3]), c = (float)x[2];
+    fresnel_conductor_prep p = fresnel_conductor_prepare(eta, kappa);
+    float got = fresnel_conductor_prepared(&p, c);
+    (void)ctx;
+    return got >= 0.0f && got <= 1.0f ? fabs((double)got - ref_conductor(eta, kappa, c)) : HUGE_VAL;
+}
+
+static void search_helpers(int longpass)
+{
+    static const struct {
+        const char *name;
+        search_error_fn *fn;
+        int dims;
+        double lo[SEARCH_DIMS], hi[SEARCH_DIMS];
+        double bound;
+    } h[] = {{"f0_from_ior", f0_from_ior_error, 2, {-2.0, -3.5}, {2.0, 3.0}, FRESNEL_BOUND_F0_FROM_IOR},
+             {"f0_in_medium", f0_in_medium_error, 2, {-8.0, -3.0103}, {6.0, 2.0}, FRESNEL_BOUND_F0_IN_MEDIUM},
+             {"gulbrandsen_rg", gulbrandsen_rg_error, 2, {-3.0103, -20.0}, {5.0, 5.0}, FRESNEL_BOUND_GULBRANDSEN_RG},
+             {"conductor_prepared", conductor_prepared_error, 4, {-2.0, -3.5, 0.0, 1.0}, {2.0, 3.0, 1.0, 2.42},
+              FRESNEL_BOUND_CONDUCTOR_PREPARED}};
+    size_t i;
+    for (i = 0; i < sizeof h / sizeof h[0]; i++) {
+        search_space sp;
+        search_state s;
+        char key[64], label[160];
+        int d;
+        memset(&sp, 0, sizeof sp);
+        sp.dims = h[i].dims;
+        for (d = 0; d < sp.dims; d++)
+            sp.lo[d] = h[i].lo[d], sp.hi[d] = h[i].hi[d];
+        search_init(&s, &sp, h[i].fn, NULL, 0x4E1Fu + (uint64_t)i);
+        snprintf(key, sizeof key, "f32:%s", h[i].name);
+        search_corpus(&s, CORPUS, key);
+        search_random(&s, longpass ? 2000000 : 60000);
+        search_climb(&s, longpass ? 12 : 6, 48);
+        search_corpus_write(&s, key, 3);
+        printf("NOTE search f32    %-18s max|err| %.4g at", h[i].name, s.top[0].err);
+        for (d = 0; d < sp.dims; d++)
+            printf(" %.9g", s.top[0].x[d]);
+        printf(" (search coordinates), %ld evaluations\n", s.evals);
+        snprintf(label, sizeof label, "f32 %s: within the stated bound (searched)", h[i].name);
+        CHECK(label, s.top[0].err <= h[i].bound, "max|err| %.4g, bound %.4g", s.top[0].err, h[i].bound);
+    }
+}
+
 static int duplicate_row(int mi)
 {
     int j;
@@ -187,5 +275,6 @@ int main(void)
                   s.top[0].err, bound);
         }
     }
+    search_helpers(longpass);
     return harness_exit();
 }
