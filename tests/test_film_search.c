@@ -7,9 +7,10 @@
  * Per stack (incident medium n1, film n_f, substrate) and type, over
  * (cosine, thickness):
  *   - Q1.15: every cosine code 0-32768 at the thicknesses 0, 1/65536 nm,
- *     FRESNEL_FILM_D_MAX and fourteen between (a fringe period of n_f 2.5
- *     at 380 nm is 76 nm: the sweep sees every phase over the codes), then
- *     random (c, d) codes and local maximisation from the worst;
+ *     FRESNEL_FILM_D_MAX and thirteen between (a fringe period of n_f 2.5
+ *     at 380 nm is 76 nm: the sweep sees every phase over the codes; the
+ *     fast pass every third of them), then random (c, d) codes and local
+ *     maximisation from the worst;
  *   - binary16: every binary16 cosine in [0, 1] at the same thicknesses,
  *     then random and local in the binary16 values;
  *   - binary32: cosines 0, 1 and every 1/4096 at those thicknesses, then
@@ -23,7 +24,8 @@
  * glass (1.5) and the densest ambient that keeps a dielectric substrate in
  * the model's domain (its edge, by bisection), every stack in the domain
  * (film_stack_domain). FILM_SEARCH_STACK="n1 n_f substrate" searches one
- * stack, FILM_SEARCH_VERBOSE=1 prints each stack's maxima. */
+ * stack, FILM_SEARCH_STACK="edge substrate" the films at its domain's
+ * edge; FILM_SEARCH_VERBOSE=1 prints each stack's maxima. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -128,7 +130,7 @@ static double search_stack(film_case *k, int type, const char *stack_key, long r
     search_init(&s, &sp, film_error, k, 0x51F7u + (uint64_t)type);
     snprintf(key, sizeof key, "%s:%s", type_key[type], stack_key);
     search_corpus(&s, CORPUS, key);
-    for (di = 0; di < N_SWEEP_D; di++) {
+    for (di = 0; di < N_SWEEP_D; di += search_long() ? 1 : 3) { /* the fast pass: every third */
         double x[2];
         x[1] = type == T_Q15 ? floor(sweep_d[di] * 65536.0 + 0.5) : sweep_d[di];
         if (type == T_Q15)
@@ -306,7 +308,27 @@ static double domain_edge_n1(const char *sub_id)
             hi = f.n1;
     }
     free(sub);
-    return lo;
+    return floor(lo * 1000.0) / 1000.0; /* inside, and exact in the corpus's keys */
+}
+
+/* The long pass's stacks on one substrate: a film of the ambient's index
+ * and films 1.0-4.0 by 0.5 in air, 1.33, 1.4, 1.5 and at the domain's edge
+ * (edge_only: there alone). */
+static void long_substrate(const gen_context *g, const film_model *poles, const char *sub, int edge_only,
+                           long random_n, int climb, film_case *k, worst_of w[T_TYPES])
+{
+    double n1s[5] = {1.0, 1.33, 1.4, 1.5, 0.0};
+    int a, c;
+    n1s[4] = domain_edge_n1(sub);
+    for (a = edge_only ? 4 : 0; a < 5; a++)
+        for (c = -1; c <= 6; c++) {
+            stack_spec st;
+            st.n1 = n1s[a];
+            st.nf = c < 0 ? st.n1 : 1.0 + 0.5 * c; /* a film of the ambient's index, then the grid */
+            st.sub = sub;
+            if (st.n1 > 0.0 && st.nf >= st.n1 && (c < 0 || st.nf > st.n1))
+                run_stack(g, poles, &st, random_n, climb, k, w);
+        }
 }
 
 int main(void)
@@ -319,7 +341,7 @@ int main(void)
     int longpass = search_long(), i;
     long random_n = longpass ? 60000 : 20000;
     int climb = longpass ? 6 : 4;
-    const char *only = getenv("FILM_SEARCH_STACK"); /* "n1 nf substrate": one stack */
+    const char *only = getenv("FILM_SEARCH_STACK"); /* "n1 nf substrate", or "edge substrate" */
     memset(w, 0, sizeof w);
     if (!g || !poles || !k || gen_context_load(data_dir(NULL), "srgb", g) ||
         film_fit_poles(&g->cm, &g->cs, poles, NULL)) {
@@ -329,27 +351,17 @@ int main(void)
     if (only) {
         stack_spec st;
         char sub[32];
-        if (sscanf(only, "%lf %lf %31s", &st.n1, &st.nf, sub) == 3) {
+        if (sscanf(only, "edge %31s", sub) == 1)
+            long_substrate(g, poles, sub, 1, random_n, climb, k, w);
+        else if (sscanf(only, "%lf %lf %31s", &st.n1, &st.nf, sub) == 3) {
             st.sub = sub;
             run_stack(g, poles, &st, random_n, climb, k, w);
         }
     } else if (longpass) {
         static const char *const subs[] = {"au", "cu", "al", "ti", "fe", "ag", "cr", "si",
                                            "bk7", "water", "diamond", "sf11"};
-        int a, b, c;
-        for (b = 0; b < 12; b++) {
-            double n1s[5] = {1.0, 1.33, 1.4, 1.5, 0.0};
-            n1s[4] = domain_edge_n1(subs[b]);
-            for (a = 0; a < 5; a++)
-                for (c = -1; c <= 6; c++) {
-                    stack_spec st;
-                    st.n1 = n1s[a];
-                    st.nf = c < 0 ? st.n1 : 1.0 + 0.5 * c; /* a film of the ambient's index, then the grid */
-                    st.sub = subs[b];
-                    if (st.n1 > 0.0 && st.nf >= st.n1 && (c < 0 || st.nf > st.n1))
-                        run_stack(g, poles, &st, random_n, climb, k, w);
-                }
-        }
+        for (i = 0; i < 12; i++)
+            long_substrate(g, poles, subs[i], 0, random_n, climb, k, w);
     } else {
         stack_spec st[12 + 3 * T_TYPES];
         char subs[3 * T_TYPES][32];

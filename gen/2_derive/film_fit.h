@@ -37,7 +37,7 @@ int film_fit_poles(const colorimetry *cm, const colour_space *cs, film_model *m,
  *     nodes and the table's constants grow until rounding dominates.
  * 0 when f is in the domain; else -1 and why (a sentence naming the
  * condition, the index and the wavelength) in why[size]. */
-#define FILM_DOMAIN_BRANCH 0.1
+#define FILM_DOMAIN_BRANCH 0.2 /* where the runtime's errors stay near a film's in air (fresnel_film.h) */
 int film_stack_domain(const film_stack *f, char *why, size_t size);
 
 /* The material's table, m's poles already set: a non-dispersive film
