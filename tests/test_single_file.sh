@@ -103,6 +103,8 @@ done
 # `fresnel gen` writes for a thin-film scene of that type; the program's
 # file that uses the film (single_film.c) does not define
 # FRESNEL_IMPLEMENTATION, the one linked with it (single_film_main.c) does.
+# At -O0: the declarations and the link are the question here (the builds
+# above compile the code at -O2), and the results are the same bits.
 for type in f32 q15 f16; do
     T=$(echo $type | tr a-z A-Z)
     case $type in f32) table=fresnel_film ;; *) table=fresnel_film_$type ;; esac
@@ -123,7 +125,7 @@ for type in f32 q15 f16; do
         case $cc in *++*) std="" lang=C++17 ;; *) std=-std=c99 lang=C99 ;; esac
         label="${cc%% *} $lang, $table in a file without FRESNEL_IMPLEMENTATION, a $type thin-film scene header beside fresnel_single_$type.h alone"
         # shellcheck disable=SC2086
-        if $cc $std $W -O2 -DWITH_$T -I"$d" $C/single_film.c $C/single_film_main.c -lm -o "$t/film" 2>"$t/err" &&
+        if $cc $std $W -O0 -DWITH_$T -I"$d" $C/single_film.c $C/single_film_main.c -lm -o "$t/film" 2>"$t/err" &&
             [ ! -s "$t/err" ] && "$t/film" >"$t/film.out"; then
             if [ $type = f16 ] && ! has_f16 "${cc%% *}"; then
                 [ ! -s "$t/film.out" ] && echo "PASS $label (no _Float16 in ${cc%% *}: the binary16 film builds to nothing)" ||
