@@ -9,7 +9,14 @@
  *         metal's table within 0.01 mean / 0.05 max of its own curve's cost.
  *   keep: the table follows the unclipped truth, above 1 too, within
  *         0.01 mean / 0.05 max in both runtimes.
- *   A material inside the gamut gets the same curve under every policy. */
+ *   A material inside the gamut gets the same curve under every policy.
+ * The gamut's boundary (gamut_contains, GAMUT_TOLERANCE): in linear
+ * Rec.2020 every material's truth at grazing incidence is white a rounding
+ * above 1; water, BK7 and four metals there are inside the gamut for the map
+ * policy's nodes and the report, with the same curve under every policy,
+ * while gold in sRGB (red F0 1.04) is outside; colours a tolerance outside
+ * either end are inside, 1e-9 outside is outside; a step of the tolerance is
+ * a CIEDE2000 below 1e-8 at black, white and the primaries. */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -68,6 +75,119 @@ static int measure(const gen_context *g, const lab_space *ls, const char *id, sp
     return 0;
 }
 
+/* The boundary of the gamut: rounding is not a colour outside it. */
+static void boundary(gen_context *g, spectrum *s)
+{
+    static const char *const inside[] = {"water", "bk7", "cu", "au", "ag", "al", NULL};
+    static const double pts[][3] = {{0, 0, 0}, {1, 1, 1}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {0.02, 0.02, 0.02}};
+    static const char *const de_spaces[] = {"srgb", "display-p3", "rec2020", "acescg", NULL};
+    const double tol = GAMUT_TOLERANCE;
+    const double in[][3] = {{1.0 + tol, 0.5, 0.5}, {-tol, 0.5, 1.0}, {0.0, 1.0 + tol / 2.0, -tol / 2.0}},
+                 out[][3] = {{1.0 + 1e-9, 0.5, 0.5}, {0.5, -1e-9, 0.5}, {0.5, 0.5, 2.0 * tol + 1.0}};
+    double worst_excess = 0.0, worst_de = 0.0;
+    int i, k, ch, ok_nodes = 1, ok_same = 1, ok_report = 1, ok_in = 1, ok_out = 1;
+    char name[300];
+    lab_space ls;
+    material_params p;
+    for (i = 0; i < 3; i++) {
+        ok_in &= gamut_contains(in[i]);
+        ok_out &= !gamut_contains(out[i]);
+    }
+    CHECK("gamut_contains: a colour within GAMUT_TOLERANCE outside 0 or 1 is inside", ok_in, "outside");
+    {
+        const double nan_rgb[3] = {0.5, nan(""), 0.5};
+        ok_out &= !gamut_contains(nan_rgb);
+    }
+    CHECK("gamut_contains: 1e-9 below 0 or above 1, twice the tolerance above 1, and NaN are outside", ok_out,
+          "inside");
+    if (gen_context_load(data_dir(NULL), "rec2020", g) || lab_space_init(&ls, &g->cs)) {
+        CHECK("load rec2020", 0, "cannot load");
+        return;
+    }
+    for (i = 0; inside[i]; i++) {
+        report_material rm;
+        double raw[3];
+        int a, pi;
+        g->gamut = GAMUT_MAP;
+        if (derive_parameters(g, &(material_source){inside[i], NULL, NK_FORMAT_AUTO, 0.0}, 25.0, 1.0, s, &p)) {
+            CHECK(inside[i], 0, "cannot derive in rec2020");
+            return;
+        }
+        ground_truth(s, &g->cm, &g->cs, 1.0, 0.0, raw);
+        for (ch = 0; ch < 3; ch++)
+            worst_excess = fmax(worst_excess, raw[ch] - 1.0);
+        if (p.gamut_mapped) {
+            ok_nodes = 0;
+            NOTE("rec2020 %s: the map policy moved a node", inside[i]);
+        }
+        /* the same curve under map, clip and keep, at every 0.1 degree */
+        for (a = 0; a <= 900; a++) {
+            double c = a == 900 ? 0.0 : cos(a * 0.1 * 3.14159265358979323846 / 180.0), v[3][3];
+            for (pi = 0; pi < 3; pi++) {
+                g->gamut = (gamut_policy)pi;
+                ground_truth_gamut(s, g, &p, c, v[pi]);
+            }
+            for (ch = 0; ch < 3; ch++)
+                if (v[GAMUT_MAP][ch] != v[GAMUT_CLIP][ch] || v[GAMUT_MAP][ch] != v[GAMUT_KEEP][ch]) {
+                    if (ok_same)
+                        NOTE("rec2020 %s at theta %.1f: map %.17g, clip %.17g, keep %.17g", inside[i], a * 0.1,
+                             v[GAMUT_MAP][ch], v[GAMUT_CLIP][ch], v[GAMUT_KEEP][ch]);
+                    ok_same = 0;
+                }
+        }
+        g->gamut = GAMUT_MAP;
+        rm.p = p;
+        rm.s = s;
+        report_ground_truth(g, &ls, &rm);
+        if (rm.out_of_gamut) {
+            ok_report = 0;
+            NOTE("rec2020 %s: the report calls it outside the gamut", inside[i]);
+        }
+    }
+    NOTE("rec2020: the truth at grazing incidence is 1 + %.3g at most (GAMUT_TOLERANCE %g)", worst_excess, tol);
+    CHECK("gamut rec2020: white at grazing incidence is within GAMUT_TOLERANCE of 1", worst_excess <= tol,
+          "1 + %.3g", worst_excess);
+    CHECK("gamut rec2020: the map policy moves no node of water, bk7, cu, au, ag, al", ok_nodes, "see NOTE lines");
+    CHECK("gamut rec2020: water, bk7, cu, au, ag, al get the same curve under map, clip and keep (at 1, not above)",
+          ok_same, "see NOTE lines");
+    CHECK("gamut rec2020: the report calls none of water, bk7, cu, au, ag, al outside the gamut", ok_report,
+          "see NOTE lines");
+    /* a colour truly outside is still found */
+    if (gen_context_load(data_dir(NULL), "srgb", g) || lab_space_init(&ls, &g->cs) ||
+        derive_parameters(g, &(material_source){"au", NULL, NK_FORMAT_AUTO, 0.0}, 25.0, 1.0, s, &p)) {
+        CHECK("load srgb, au", 0, "cannot derive");
+        return;
+    }
+    {
+        report_material rm;
+        rm.p = p;
+        rm.s = s;
+        report_ground_truth(g, &ls, &rm);
+        CHECK("gamut srgb: gold is outside (F0, the map policy's nodes, the report)",
+              !gamut_contains(p.f0_unclamped) && p.gamut_mapped && rm.out_of_gamut, "red F0 %.4f, mapped %d, report %d",
+              p.f0_unclamped[0], p.gamut_mapped, rm.out_of_gamut);
+    }
+    /* what a step of the tolerance is worth */
+    for (k = 0; de_spaces[k]; k++) {
+        if (gen_context_load(data_dir(NULL), de_spaces[k], g)) {
+            CHECK("load", 0, "%s", de_spaces[k]);
+            return;
+        }
+        for (i = 0; i < (int)(sizeof pts / sizeof pts[0]); i++)
+            for (ch = 0; ch < 3; ch++) {
+                double b[3];
+                memcpy(b, pts[i], sizeof b);
+                b[ch] += pts[i][ch] > 0.5 ? -tol : tol;
+                worst_de = fmax(worst_de, delta_e2000_rgb(&g->cs, pts[i], b));
+            }
+    }
+    snprintf(name, sizeof name,
+             "GAMUT_TOLERANCE in one channel is a CIEDE2000 below 1e-8 at black, white, the primaries and dark grey "
+             "(srgb, display-p3, rec2020, acescg: at most %.3g)",
+             worst_de);
+    CHECK(name, worst_de < 1e-8, "%.3g", worst_de);
+}
+
 int main(void)
 {
     gen_context *g = malloc(sizeof *g);
@@ -103,10 +223,9 @@ int main(void)
                         double c = a == 900 ? 0.0 : cos(a * 0.1 * 3.14159265358979323846 / 180.0), raw[3], v[3];
                         ground_truth(s, &g->cm, &g->cs, 1.0, c, raw);
                         ground_truth_gamut(s, g, &p, c, v);
-                        for (ch = 0; ch < 3; ch++) {
-                            outside |= raw[ch] < 0.0 || raw[ch] > 1.0;
+                        outside |= !gamut_contains(raw);
+                        for (ch = 0; ch < 3; ch++)
                             ok_range &= v[ch] >= 0.0 && v[ch] <= 1.0;
-                        }
                     }
                 }
             }
@@ -187,6 +306,7 @@ int main(void)
                   got[2] <= 1.0,
               "%.4f vs clip %.4f", d, dclip);
     }
+    boundary(g, s);
     free(g);
     free(s);
     return harness_exit();

@@ -3,6 +3,8 @@
 # table of every target, and bad input (exit 2, the valid targets named, no
 # output); the `targets` scene key: the same parameters in the header's
 # comments, in C, GLSL and HLSL.
+# The gamut: water and BK7 in linear Rec.2020 (white at grazing incidence a
+# rounding above 1) are inside it, gold in sRGB outside.
 F="$BUILD/fresnel"
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
@@ -61,6 +63,22 @@ if "$F" params --material cu --for all >"$t/out" 2>"$t/err" &&
     echo "PASS params --for all: one row per target, fitted mean <= naive mean"
 else
     echo "FAIL params --for all: $(cat "$t/err") $(tr '\n' '|' <"$t/out")"
+fi
+
+# The gamut's boundary: rounding is not a colour outside it.
+bad=""
+for m in water bk7; do
+    "$F" params --material "$m" --space rec2020 --for openpbr >"$t/out" 2>"$t/err" || bad="$bad [$m: $(cat "$t/err")]"
+    ! grep -q 'outside the rec2020 gamut' "$t/out" || bad="$bad [$m --for openpbr: $(grep outside "$t/out")]"
+    "$F" params --material "$m" --space rec2020 --for all >"$t/out" 2>"$t/err" || bad="$bad [$m: $(cat "$t/err")]"
+    grep -qx 'target,fitted_mean,fitted_max,naive_mean,naive_max' "$t/out" || bad="$bad [$m --for all: $(grep '^target' "$t/out")]"
+done
+"$F" params --material au --for all >"$t/out" 2>"$t/err"
+if [ -z "$bad" ] && grep -qx 'target,fitted_mean,fitted_max,naive_mean,naive_max,fitted_mean_unclipped,fitted_max_unclipped' "$t/out" &&
+    "$F" params --material au --for openpbr | grep -q '^# against the unclipped ground truth (outside the srgb gamut)'; then
+    echo "PASS params --for: water and bk7 inside the rec2020 gamut, gold outside srgb's"
+else
+    echo "FAIL params --for gamut:$bad $(grep '^target' "$t/out")"
 fi
 
 # The scene key: each material's comment holds what params --for prints.

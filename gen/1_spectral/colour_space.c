@@ -7,7 +7,10 @@
  * spaces whose nominal white is (0.3127, 0.3290). Treating every space the
  * same way avoids a "close enough to D65" threshold; for the D65 spaces the
  * adaptation is then a change of about 1e-4, and the final per-channel scale
- * makes a perfect reflector exactly (1,1,1) either way. */
+ * makes a perfect reflector (1,1,1) either way, to the last place: each row
+ * meets white with a rounding of its own (Rec.2020's green is 1 + 2.2e-16,
+ * build/tests/test_gamut; gamut_contains in 2_derive/derive.h counts that
+ * as the boundary). */
 #include <math.h>
 #include <string.h>
 #include <strings.h>
@@ -226,7 +229,8 @@ int colour_space_load(const char *dir, const char *id, const colorimetry *cm, co
     adapt = bradford_adaptation(spd_white, space_white);
     composite = mat_mul(&xyz_to_space, &adapt);
     /* The composite maps spd_white to (1,1,1) only up to rounding; the
-     * explicit rescale makes the perfect reflector exact, so a white metal
+     * explicit rescale brings the perfect reflector to (1,1,1) in the last
+     * place (the rescaled row's own rounding remains), so a white metal
      * cannot come out tinted by the arithmetic. */
     mat_vec(&composite, spd_white, unit_rgb);
     for (i = 0; i < 3; i++)

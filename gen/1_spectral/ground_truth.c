@@ -2,7 +2,7 @@
  * [Hof20 "Computing RGB parameter values": spectral Fresnel x illuminant x
  * CMFs -> XYZ -> adapted RGB]. Exact Fresnel at each 1 nm CMF sample, lit by
  * D65, normalised by the illuminant's Y so a perfect reflector has Y = 1;
- * colour_space's per-channel scale then makes it exactly (1,1,1).
+ * colour_space's per-channel scale then makes it (1,1,1) to the last place.
  *
  * The integration is ground_truth_of; ground_truth gives it the bare
  * interface's reflectance, film_truth.c a thin film's. */

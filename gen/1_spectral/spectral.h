@@ -167,7 +167,8 @@ typedef struct colour_space {
     double white[2];      /* the space's white, xy */
     /* XYZ (D65-illuminated) -> linear RGB of the space: Bradford from the D65
      * SPD's white to the space's white where they differ, then the space's
-     * matrix, then a per-channel scale so a perfect reflector is exactly (1,1,1). */
+     * matrix, then a per-channel scale so a perfect reflector is (1,1,1) to
+     * the last place (colour_space.c). */
     double xyz_to_rgb[3][3];
 } colour_space;
 int colour_space_load(const char *dir, const char *id, const colorimetry *cm, colour_space *cs);

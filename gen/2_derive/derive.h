@@ -79,8 +79,24 @@ void hemispherical_average(void (*curve)(const void *ctx, double mu, double rgb[
 void ground_truth_average(const spectrum *s, const gen_context *g, const material_params *p, int under_policy,
                           int panels, double avg[3]);
 
-/* gamut.c. The ground truth at cosine c under g->gamut, for the material
- * whose map derive_parameters built into p. */
+/* gamut.c. Whether a colour lies in the gamut [0, 1]^3: every channel
+ * within GAMUT_TOLERANCE of [0, 1]. A colour on the gamut's boundary comes
+ * out of the spectral ground truth a rounding away from it: a perfect
+ * reflector (every material at grazing incidence, c = 0) is
+ * 1.0000000000000002 in linear Rec.2020's green, because the rows of the
+ * XYZ-to-RGB matrix, each scaled so that white maps to 1, meet white with a
+ * rounding of their own. The tolerance lies above that arithmetic's error
+ * (471 positive products summed, then a row of three: about 1e-13 at most,
+ * a few 1e-16 in practice) and far below what a colour difference sees (a
+ * step of 1e-12 in one channel is a CIEDE2000 below 1e-8, tests/test_gamut.c).
+ * Every decision that a colour leaves the gamut is this one, at both ends:
+ * the map policy's nodes, the keep policy's values at 1, `fresnel params`,
+ * the report. */
+#define GAMUT_TOLERANCE 1e-12
+int gamut_contains(const double rgb[3]);
+/* The ground truth at cosine c under g->gamut, for the material whose map
+ * derive_parameters built into p. A channel within GAMUT_TOLERANCE outside
+ * [0, 1] is on the boundary under every policy (keep too). */
 void ground_truth_gamut(const spectrum *s, const gen_context *g, const material_params *p, double c,
                         double rgb[3]);
 /* The map policy's nodes for p (p->n1 set); nothing for the other policies. */

@@ -78,9 +78,13 @@ double gamut_nearest(const lab_space *ls, const double truth[3], double out[3])
     return d_scaled < d_clip ? d_scaled : d_clip;
 }
 
-static int in_gamut(const double rgb[3])
+int gamut_contains(const double rgb[3])
 {
-    return rgb[0] >= 0.0 && rgb[0] <= 1.0 && rgb[1] >= 0.0 && rgb[1] <= 1.0 && rgb[2] >= 0.0 && rgb[2] <= 1.0;
+    int ch;
+    for (ch = 0; ch < 3; ch++)
+        if (!(rgb[ch] >= -GAMUT_TOLERANCE && rgb[ch] <= 1.0 + GAMUT_TOLERANCE))
+            return 0;
+    return 1;
 }
 
 static double node_cos(int k)
@@ -99,7 +103,7 @@ void gamut_map_build(const spectrum *s, const gen_context *g, material_params *p
     for (k = 0; k < GAMUT_NODES; k++) {
         double truth[3], near[3];
         ground_truth(s, &g->cm, &g->cs, p->n1, node_cos(k), truth);
-        if (in_gamut(truth)) {
+        if (gamut_contains(truth)) {
             p->gamut_shift[k][0] = p->gamut_shift[k][1] = p->gamut_shift[k][2] = 0.0;
             continue;
         }
@@ -135,7 +139,7 @@ void ground_truth_gamut(const spectrum *s, const gen_context *g, const material_
     for (ch = 0; ch < 3; ch++) {
         if (rgb[ch] < 0.0)
             rgb[ch] = 0.0;
-        else if (rgb[ch] > 1.0 && g->gamut != GAMUT_KEEP)
+        else if (rgb[ch] > 1.0 && (g->gamut != GAMUT_KEEP || rgb[ch] <= 1.0 + GAMUT_TOLERANCE))
             rgb[ch] = 1.0;
     }
 }

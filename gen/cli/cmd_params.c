@@ -90,13 +90,12 @@ static int print_targets(const char *which, const spectrum *s, const gen_context
     double truth[TARGET_ANGLES][3], raw[TARGET_ANGLES][3];
     target_anchor a, a_raw;
     lab_space ls;
-    int i, k, out_of_gamut = 0;
+    int i, out_of_gamut = 0;
     lab_space_init(&ls, &g->cs);
     target_material_curve(s, g, p, 1, truth, &a);
     target_material_curve(s, g, p, 0, raw, &a_raw);
     for (i = 0; i < TARGET_ANGLES; i++)
-        for (k = 0; k < 3; k++)
-            out_of_gamut |= raw[i][k] < 0.0 || raw[i][k] > 1.0;
+        out_of_gamut |= !gamut_contains(raw[i]);
     if (strcmp(which, "all")) {
         target_fit f;
         const target *t = target_find(which);

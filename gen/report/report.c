@@ -335,9 +335,7 @@ static int compute_hoffman(report_run *r)
         material_source pack = {hoffman[i].id, NULL, NK_FORMAT_AUTO, 0.0};
         if ((status = derive_parameters(g, &pack, 25.0, 1.0, s, &p)))
             goto done;
-        r->hoffman_in_gamut[i] = 1;
-        for (ch = 0; ch < 3; ch++)
-            r->hoffman_in_gamut[i] &= p.f0_unclamped[ch] >= 0.0 && p.f0_unclamped[ch] <= 1.0;
+        r->hoffman_in_gamut[i] = gamut_contains(p.f0_unclamped);
         for (a = 0; a < REPORT_ANGLES; a++) {
             double c = report_cos(a);
             ground_truth_gamut(s, g, &p, c, gt[a]);

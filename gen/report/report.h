@@ -25,7 +25,7 @@ typedef struct report_material {
     spectrum *s;
     double gt[REPORT_ANGLES][3];     /* ground truth under the gamut policy: what models are measured against */
     double gt_raw[REPORT_ANGLES][3]; /* the unclipped spectral ground truth */
-    int out_of_gamut;                /* gt_raw leaves [0, 1] at some angle */
+    int out_of_gamut;                /* gt_raw leaves the gamut at some angle (gamut_contains) */
     /* CIEDE2000 mean and max against gt_raw of each policy's own curve
      * (gamut_policy order: map, clip, keep). */
     double policy_de_mean[3], policy_de_max[3];
@@ -77,7 +77,7 @@ typedef struct report_run {
     double *instr;      /* [model][type] host instructions per RGB evaluation (callgrind); NaN when not measured */
     int timed_material; /* the material timings use */
     double hoffman_rms[REPORT_HOFFMAN][3]; /* ours in ACEScg: Schlick, fitted eta/kappa, point-sampled */
-    int hoffman_in_gamut[REPORT_HOFFMAN];  /* F0 inside ACEScg, unclamped */
+    int hoffman_in_gamut[REPORT_HOFFMAN];  /* F0 inside ACEScg, unclamped (gamut_contains) */
     const char *cross_path;                /* `make cross-count` output, or NULL */
     const char *size_path;                 /* `make size` output, or NULL */
     /* `make bench` outputs (--speed FILE, one per flag set), already read */

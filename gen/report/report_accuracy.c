@@ -35,13 +35,12 @@ void report_ground_truth(const gen_context *g, const lab_space *ls, report_mater
     double curve[REPORT_ANGLES][3], rms;
     gen_context other = *g;
     material_params mapped = rm->p;
-    int a, ch, pol;
+    int a, pol;
     rm->out_of_gamut = 0;
     for (a = 0; a < REPORT_ANGLES; a++) {
         ground_truth(rm->s, &g->cm, &g->cs, rm->p.n1, report_cos(a), rm->gt_raw[a]);
         ground_truth_gamut(rm->s, g, &rm->p, report_cos(a), rm->gt[a]);
-        for (ch = 0; ch < 3; ch++)
-            rm->out_of_gamut |= rm->gt_raw[a][ch] < 0.0 || rm->gt_raw[a][ch] > 1.0;
+        rm->out_of_gamut |= !gamut_contains(rm->gt_raw[a]);
     }
     /* Every policy's own cost, whichever the scene uses (map needs its nodes). */
     other.gamut = GAMUT_MAP;
