@@ -6,11 +6,15 @@
  *   OpenPBR's F82-tint; the project's F82 model is the same curve named by
  *   its edge value.
  *   The fit, on Hoffman's 14 metals in linear sRGB: every fitted parameter
- *   inside its target's range, never worse than the naive conversion, the
- *   reported figures reproducible, MaterialX (a superset of OpenPBR's curves)
- *   never worse than OpenPBR, and the naive OpenPBR conversion the project's
- *   own F82 model where its tint needs no clamp. */
+ *   inside its target's range, its mean CIEDE2000 never above the naive
+ *   conversion's (the mean is what it minimises; of the max, which it does
+ *   not, nothing is asserted), the reported figures reproducible, MaterialX's
+ *   mean (a superset of OpenPBR's curves) never above OpenPBR's, and the
+ *   naive OpenPBR conversion the project's own F82 model where its tint
+ *   needs no clamp. How many fits end with a max above the naive max is a
+ *   NOTE line, and README.md and tests/README.md state that count. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -110,6 +114,38 @@ static void identities(void)
     CHECK("the project's F82 model is F82-tint named by its value at 1/7", worst_f82 < 1e-14, "%.3g", worst_f82);
 }
 
+/* Whether the text of file `name` (beside data/), its whitespace runs read as
+ * one space, holds `want`. */
+static int doc_says(const char *name, const char *want)
+{
+    char path[4096], *text;
+    long n = 0;
+    int c, space = 0, found;
+    FILE *f;
+    snprintf(path, sizeof path, "%s/../%s", FRESNEL_DATA_DIR, name);
+    if (!(f = fopen(path, "r")))
+        return 0;
+    if (!(text = malloc(1 << 20))) {
+        fclose(f);
+        return 0;
+    }
+    while ((c = getc(f)) != EOF && n < (1 << 20) - 1) {
+        if (c == ' ' || c == '\n' || c == '\t') {
+            space = 1;
+            continue;
+        }
+        if (space && n)
+            text[n++] = ' ';
+        space = 0;
+        text[n++] = (char)c;
+    }
+    text[n] = '\0';
+    fclose(f);
+    found = strstr(text, want) != NULL;
+    free(text);
+    return found;
+}
+
 static int params_inside(const target *t, const double *x)
 {
     int i, ch, n = 0;
@@ -128,7 +164,9 @@ static void fits(void)
     const target *openpbr = target_find("openpbr"), *materialx = target_find("materialx");
     lab_space ls;
     int m, i, inside = 1, not_worse = 1, reproducible = 1, superset = 1, same_as_f82 = 1, f82_checked = 0;
-    double worst_gain = 1e9, worst_repro = 0.0, worst_f82 = 0.0;
+    int max_above = 0;
+    double worst_gain = 1e9, worst_repro = 0.0, worst_f82 = 0.0, worst_max_above = 0.0;
+    const char *max_metal = "", *max_target = "";
     if (!g || !s || !p || gen_context_load(FRESNEL_DATA_DIR, "srgb", g) || lab_space_init(&ls, &g->cs)) {
         CHECK("load srgb", 0, "failed");
         return;
@@ -157,6 +195,14 @@ static void fits(void)
                 NOTE("%s %s: fitted %.6f, naive %.6f", metals[m], t->name, f.fit_mean, f.naive_mean);
             }
             worst_gain = fmin(worst_gain, f.naive_mean - f.fit_mean);
+            if (f.fit_max > f.naive_max) {
+                max_above++;
+                if (f.fit_max - f.naive_max > worst_max_above) {
+                    worst_max_above = f.fit_max - f.naive_max;
+                    max_metal = metals[m];
+                    max_target = t->name;
+                }
+            }
             target_curve_de(t, &ls, (const double(*)[3])truth, f.fitted, &mean, &max);
             worst_repro = fmax(worst_repro, fmax(fabs(mean - f.fit_mean), fabs(max - f.fit_max)));
             reproducible &= mean == f.fit_mean && max == f.fit_max;
@@ -187,11 +233,20 @@ static void fits(void)
     }
     CHECK("every fitted and naive parameter inside its target's range (14 metals x 7 targets)", inside,
           "see NOTE lines");
-    CHECK("the fit is never worse than the naive conversion", not_worse, "smallest gain %.3g", worst_gain);
+    CHECK("the fit's mean dE2000 is never above the naive conversion's (14 metals x 7 targets)", not_worse,
+          "smallest gain %.3g", worst_gain);
     NOTE("smallest gain of the fit over the naive conversion (mean dE2000): %.4f", worst_gain);
+    NOTE("the fit's max (not minimised) above the naive max in %d of %d fits, by %.4f dE2000 at most (%s %s)",
+         max_above, 14 * target_count, worst_max_above, max_metal, max_target);
+    {
+        char said[64];
+        snprintf(said, sizeof said, "in %d of the %d fits", max_above, 14 * target_count);
+        CHECK("README.md and tests/README.md count the fits whose max is above the naive max as measured here",
+              doc_says("README.md", said) && doc_says("tests/README.md", said), "expected '%s'", said);
+    }
     CHECK("the fit's reported mean and max are what target_curve_de measures for its parameters", reproducible,
           "%.3g", worst_repro);
-    CHECK("MaterialX's fit never worse than OpenPBR's (its curves include OpenPBR's)", superset, "see NOTE lines");
+    CHECK("MaterialX's fitted mean never above OpenPBR's (its curves include OpenPBR's)", superset, "see NOTE lines");
     CHECK("naive OpenPBR is the project's F82 model where the tint needs no clamp", same_as_f82 && f82_checked >= 10,
           "%d metals, %.3g", f82_checked, worst_f82);
     free(g);

@@ -6,8 +6,11 @@
  * the channels, the ranges are boxes, and a target's formula may be
  * clamped (kinks), so the search is derivative-free: a compass search with
  * pattern moves (Hooke and Jeeves 1961), every step clamped to the box,
- * started from the naive parameters. It accepts only improvements, so the
- * result is never worse than the naive conversion. */
+ * started from the naive parameters. It accepts only improvements of the
+ * mean, so the fitted mean is never above the naive conversion's. The max
+ * is no part of the cost: it can end well above the naive max (chromium for
+ * MaterialX in linear sRGB, `fresnel params --material cr --for materialx`;
+ * tests/test_targets.c counts the fits where it does). */
 #include <math.h>
 #include <string.h>
 

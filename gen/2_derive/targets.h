@@ -10,7 +10,10 @@
  * naive conversion (F0 at normal incidence, the edge value at cos = 1/7,
  * "82 degrees"), and the parameters minimising the mean CIEDE2000 over
  * theta = 0, 1, ..., 90 degrees inside the target's ranges, started from the
- * naive ones and so never worse. Host only. */
+ * naive ones, so that their mean is never above the naive conversion's. The
+ * max is not minimised and can end well above the naive max (chromium for
+ * MaterialX in linear sRGB: `fresnel params --material cr --for materialx`).
+ * Host only. */
 #ifndef FRESNEL_TARGETS_H
 #define FRESNEL_TARGETS_H
 

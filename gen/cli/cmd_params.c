@@ -1,4 +1,5 @@
 /* fresnel params: every parameter the generator derives for one material. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -73,8 +74,10 @@ static void print_target(const target *t, const target_fit *f, const gen_context
            f->fit_mean, f->fit_max, gamut_policy_names[g->gamut]);
     printf("# naive (%s): mean dE2000 %.4f, max %.4f\n", t->naive_rule, f->naive_mean, f->naive_max);
     target_rows(t, f->naive, "# naive ");
-    printf("# gain of the fit: mean dE2000 %.4f lower (%.1fx), max %+.4f\n", f->naive_mean - f->fit_mean,
-           f->fit_mean > 0.0 ? f->naive_mean / f->fit_mean : 1.0, f->fit_max - f->naive_max);
+    printf("# gain of the fit: mean dE2000 %.4f lower (%.1fx), max %.4f %s (the fitted mean is never above the naive "
+           "conversion's; the max is not minimised)\n",
+           f->naive_mean - f->fit_mean, f->fit_mean > 0.0 ? f->naive_mean / f->fit_mean : 1.0,
+           fabs(f->fit_max - f->naive_max), f->fit_max > f->naive_max ? "higher" : "lower");
     if (out_of_gamut) {
         double mean, max;
         target_curve_de(t, ls, raw, f->fitted, &mean, &max);
@@ -149,7 +152,9 @@ int cmd_params(int argc, char **argv)
                    "  --for TARGET    instead, the parameters another renderer's metal takes, fitted\n"
                    "                  through that renderer's own Fresnel formula to the GT under the\n"
                    "                  --gamut policy (mean CIEDE2000 over theta 0-90 deg, inside the\n"
-                   "                  renderer's ranges): rows name,r,g,b (a scalar repeated), then\n"
+                   "                  renderer's ranges, started from the naive conversion, so the\n"
+                   "                  fitted mean is never above the naive one's; the max is not\n"
+                   "                  minimised and can be): rows name,r,g,b (a scalar repeated), then\n"
                    "                  # lines with the fit's mean and max dE2000, the naive conversion\n"
                    "                  (F0; an edge parameter from the GT at cos theta = 1/7, or\n"
                    "                  Gulbrandsen's g), its dE2000 and the gain.\n"
