@@ -180,14 +180,14 @@ extern "C" {
 #define FRESNEL_BOUND_SCHLICK_GEN      3.6e-7f
 #define FRESNEL_BOUND_SCHLICK_INTERNAL 3.5e-7f
 #define FRESNEL_BOUND_F0_FROM_IOR               3e-7f /* fresnel_f0_from_ior */
-#define FRESNEL_BOUND_F0_IN_MEDIUM     5e-7f
+#define FRESNEL_BOUND_F0_IN_MEDIUM     5.3e-7f
 #define FRESNEL_BOUND_LSK              5.2e-7f
 #define FRESNEL_BOUND_LSK_COMP         6e-7f
 #define FRESNEL_BOUND_F82              5.5e-7f
 #define FRESNEL_BOUND_GULBRANDSEN      4e-7f
 #define FRESNEL_BOUND_GULBRANDSEN_RG    4e-7f /* g of fresnel_gulbrandsen_rg */
 #define FRESNEL_BOUND_APPROX_CONDUCTOR 3.6e-7f
-#define FRESNEL_BOUND_COOK_TORRANCE    6e-7f
+#define FRESNEL_BOUND_COOK_TORRANCE    6.4e-7f
 #define FRESNEL_BOUND_CONDUCTOR        4e-7f
 #define FRESNEL_BOUND_CONDUCTOR_PREPARED 4e-7f /* fresnel_conductor_prepared, _batch */
 #define FRESNEL_BOUND_DIELECTRIC       3.7e-7f

@@ -52,7 +52,7 @@
 #endif
 
 #define FRESNEL_BOUND_SCHLICK_Q15_FAST 2.94
-#define FRESNEL_BOUND_F82_Q15_FAST 5.6
+#define FRESNEL_BOUND_F82_Q15_FAST 5.7
 #define FRESNEL_BOUND_LUT_Q15_FAST 1.0         /* 2 <= n <= 64 */
 #define FRESNEL_BOUND_LUT_Q15_FAST_1024 2.8    /* n <= 1024 */
 #define FRESNEL_BOUND_LUT_PL_Q15_FAST 3.4      /* n <= 64 */

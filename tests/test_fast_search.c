@@ -5,8 +5,8 @@
  *   fresnel_schlick_q15_fast: (F0 code, c code), FRESNEL_BOUND_SCHLICK_Q15_FAST
  *     (the long pass: every pair);
  *   fresnel_f82_q15_fast: (F0 code, F82 code, c code), a_q12 as the host
- *     prepares it, against fresnel_f82 at the codes,
- *     FRESNEL_BOUND_F82_Q15_FAST;
+ *     prepares it, against fresnel_f82 at the codes, every c code at the
+ *     four (F0, F82) corners first; FRESNEL_BOUND_F82_Q15_FAST;
  *   fresnel_conductor_q15_fast: (log10 eta, log10 kappa, c code) inside
  *     FRESNEL_CONDUCTOR_*_Q15_FAST's domain (fixed_conductor_fast_in_domain;
  *     a point outside it counts as no error), FRESNEL_BOUND_CONDUCTOR_Q15_FAST.
@@ -15,6 +15,7 @@
  * tests/worst_inputs/fast.txt that the fast pass replays. */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "fresnel_fixed.h"
@@ -68,6 +69,15 @@ static void run(const char *name, search_error_fn *fn, const search_space *sp, d
     search_corpus(&s, CORPUS, name);
     for (i = 0; i < n_seeds; i++)
         search_eval(&s, seeds[i]);
+    if (fn == f82_error) { /* every c code at the four (F0, F82) corners, where a is largest */
+        double x[SEARCH_DIMS] = {0};
+        for (i = 0; i < 4 * 32769; i++) {
+            x[0] = i / 32769 % 2 ? 32768.0 : 0.0;
+            x[1] = i / 32769 / 2 ? 32768.0 : 0.0;
+            x[2] = i % 32769;
+            search_eval(&s, x);
+        }
+    }
     search_random(&s, random_n);
     search_climb(&s, search_long() ? 12 : 6, 64);
     search_corpus_write(&s, name, 3);
@@ -95,6 +105,14 @@ static void schlick_exhaustive(void)
             }
         }
     printf("NOTE q15 fast schlick, every (F0, c) code: max|err| %.4g LSB at %d %d\n", worst, (int)wf, (int)wc);
+    {
+        const char *path = getenv("SEARCH_CORPUS_OUT");
+        FILE *f = path ? fopen(path, "a") : NULL;
+        if (f) {
+            fprintf(f, "schlick %d %d # %.6g\n", (int)wf, (int)wc, worst);
+            fclose(f);
+        }
+    }
     CHECK("fixed fast schlick: every (F0, c) code within the stated bound", worst <= FRESNEL_BOUND_SCHLICK_Q15_FAST,
           "max|err| %.4g LSB at F0 %d c %d", worst, (int)wf, (int)wc);
 }

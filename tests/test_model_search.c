@@ -18,6 +18,8 @@
  * domain: fresnel_f0_from_ior, fresnel_f0_in_medium (F0 from 1e-8 to
  * 1 - 1e-6), fresnel_gulbrandsen_rg's g (the whole eta, kappa domain),
  * fresnel_conductor_prepared.
+ * Sweeps first: the matched index (where the error peaks in a narrow
+ * band), and in the long pass the whole grid of tests/test_float_bounds.c.
  * Results outside [0, 1] count as an infinite error. The corpus
  * (tests/worst_inputs/models.txt) replays the worst points of the long
  * pass (SEARCH_LONG=1, make search). */
@@ -29,6 +31,7 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
+#include "grid.h"
 #include "search.h"
 #include "model/registry.h"
 #include "common/reference.h"
@@ -195,6 +198,48 @@ static void search_helpers(int longpass)
     }
 }
 
+/* Near the matched index (eta = n1, small kappa) the reflectance is the
+ * ratio of small differences and the error peaks in a narrow band the
+ * random points rarely reach: relative eta 1 +- 1e-4..0.2, kappa 0 and
+ * 1e-3..0.1, 64 cosines, each incident medium of the box's corners. */
+static void matched_index_sweep(search_state *s, int type)
+{
+    static const double n1s[] = {1.0, 1.33, 1.5, 2.42};
+    int in, id, ik, ic;
+    for (in = 0; in < (type == T_F32 ? 4 : 1); in++)
+        for (id = 0; id < 16; id++)
+            for (ik = 0; ik < 5; ik++)
+                for (ic = 0; ic <= 64; ic++) {
+                    double x[SEARCH_DIMS], rel = 1.0 + (id % 2 ? -1.0 : 1.0) * 1e-4 * pow(2000.0, (id / 2) / 7.0);
+                    double kappa_log[] = {-99.0, -3.0, -2.5, -2.0, -1.0};
+                    x[0] = log10(rel * n1s[in]);
+                    x[1] = kappa_log[ik] < -10.0 ? s->sp.lo[1] : kappa_log[ik];
+                    x[2] = ic / 64.0 * s->sp.hi[2];
+                    x[3] = n1s[in];
+                    search_eval(s, x);
+                }
+}
+
+/* The long pass starts from the whole grid of tests/test_float_bounds.c
+ * (tests/grid.h: 8.7 million points), so a bound it holds is never below
+ * the grid's maximum, and the local searches climb from the grid's peaks. */
+static void grid_sweep(search_state *s)
+{
+    static float cs[2048];
+    int nc = grid_cos(cs, 2048), in, ie, ik, ic;
+    for (in = 0; in < GRID_N1_N; in++)
+        for (ie = 0; ie < GRID_ETA_N; ie++)
+            for (ik = 0; ik < GRID_KAPPA_N; ik++)
+                for (ic = 0; ic < nc; ic++) {
+                    double x[SEARCH_DIMS];
+                    x[0] = log10(grid_eta(ie));
+                    x[1] = ik == 0 ? s->sp.lo[1] : log10(grid_kappa(ik));
+                    x[2] = cs[ic];
+                    x[3] = grid_n1[in];
+                    search_eval(s, x);
+                }
+}
+
 static int duplicate_row(int mi)
 {
     int j;
@@ -258,6 +303,9 @@ int main(void)
                     x[3] = 1.0;
                     search_eval(&s, x);
                 }
+            matched_index_sweep(&s, ty);
+            if (longpass && ty == T_F32)
+                grid_sweep(&s);
             search_random(&s, random_n);
             search_climb(&s, longpass ? 12 : 6, 48);
             search_corpus_write(&s, key, 3);

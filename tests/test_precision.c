@@ -26,7 +26,7 @@
  *  generalized Schlick, large p         powf(1 - c, p): p times the rounding of 1-c  p 40:               1.2e-6   8.5e-8
  *  F0 in a medium, F0 -> 1              ((sqrt F0 - s)/(1 - sqrt F0 s))^2             F0 0.999997:        9.0e-6   4.1e-7
  *
- *  (FRESNEL_BOUND_F0_IN_MEDIUM, 5e-7, is measured near F0 = 1, where this
+ *  (FRESNEL_BOUND_F0_IN_MEDIUM, 5.3e-7, is measured near F0 = 1, where this
  *      case lies.)
  *
  * Why the runtime does not lose them (see src/f32/exact.c, src/f32/internal.h):
