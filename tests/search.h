@@ -19,9 +19,9 @@
  * caller's rounding) are rounded to it before each evaluation, so every
  * point evaluated is an input the runtime can receive.
  *
- * The corpus (tests/worst_inputs/NAME.txt) holds lines "key x0 x1 ... # err"
- * for the best points of earlier long runs; search_corpus replays the lines
- * of one key, and with SEARCH_CORPUS_OUT set a run appends its best points
+ * The corpus (one file per check in tests/worst_inputs/) holds lines
+ * "key x0 x1 ... # err" for the best points of earlier long runs;
+ * search_corpus replays the lines of one key, and with SEARCH_CORPUS_OUT set a run appends its best points
  * there (`make search` rewrites the corpus from the long pass). */
 #ifndef FRESNEL_TESTS_SEARCH_H
 #define FRESNEL_TESTS_SEARCH_H
