@@ -14,7 +14,8 @@
 # Then the report against the header: for water (a dielectric with a
 # total-reflection edge for n1 > 1.33), gold (outside the sRGB gamut) and
 # diamond, every scene model (the thin film with grazing spacing: a film no
-# less dense than n1, gold's its own, at thicknesses across the scene's
+# less dense than n1, gold's its own, on the materials its domain admits in
+# n1 (in a scene of its own where one leaves it), at thicknesses across the scene's
 # range and the runtime's, 0, 5000 nm and beyond) x number type (f32, q15 and, where the build
 # has _Float16, f16: `fresnel gen --help` lists them) x LUT size in {4, 8,
 # 12, 16, 64, 128, 256} (grazing-pl: N <= 64, q15 only) x spacing x n1,
@@ -54,6 +55,12 @@ compile() {
     done
 }
 
+# in_film_domain MATERIAL N1: the thin-film model represents the material
+# under a film in n1 (include/fresnel_film.h, THE DOMAIN)
+in_film_domain() {
+    "$F" curve --material "$1" --n1 "$2" --film 4:0 --samples 2 >/dev/null 2>&1
+}
+
 # scene NAME SPACING N1 TYPES MODELS [MATERIALS [MORE_LINES]]
 scene() {
     printf 'name = %s\nmaterials = %s\nmodels = %s\ntypes = %s\nn1 = %s\nlut_spacing = %s\n%s' \
@@ -82,7 +89,7 @@ done
 for types in $all_types; do
     scene "m_only_$types" grazing 1.5 "$types" "$named lut4 lut16-residual lut16-cubic" &&
         compile "m_only_$types (types = $types alone)" "$t/m_only_$types.h"
-    scene "f_only_$types" grazing 1.5 "$types" "thin-film" "au bk7" 'film = 1.5
+    scene "f_only_$types" grazing 1.5 "$types" "thin-film" "au diamond" 'film = 1.5
 film au = 2.2
 ' && compile "f_only_$types (thin-film, types = $types alone)" "$t/f_only_$types.h"
 done
@@ -101,17 +108,37 @@ for spacing in grazing uniform grazing-pl; do
         name=r_$(echo "$spacing" | tr -c 'a-z0-9\n' _)_$(echo "$n1" | tr . _)
         # the thin film (independent of the spacing: grazing only): a film no
         # less dense than n1 on each material, gold's its own, over a range
-        film="" film_lines=""
+        # (the materials the film's domain admits in n1: every one in air; in
+        # denser media water and then diamond leave it, and their film is a
+        # scene of its own, rf_*, on the others)
+        film="" film_lines="" film_mats="" film_scene=""
         if [ "$spacing" = grazing ]; then
-            film=" thin-film"
             film_lines="film = $(awk -v n="$n1" 'BEGIN { print (n > 2.42 ? n : 2.42) }')
 film au = 4
 film_thickness = 80 640
 "
+            for mat in water au diamond; do
+                in_film_domain "$mat" "$n1" && film_mats="$film_mats $mat"
+            done
+            if [ "$film_mats" = " water au diamond" ]; then
+                film=" thin-film"
+            else
+                film_scene=rf_$(echo "$n1" | tr . _)
+                if [ -z "$film_mats" ] || [ "${film_mats#* au}" = "$film_mats" ]; then
+                    echo "FAIL gen matrix $film_scene: gold under a film in n1 $n1 left the film's domain"
+                    film_scene=""
+                fi
+            fi
         fi
-        scene "$name" "$spacing" "$n1" "$types" "$named$luts$film" "water au diamond" "$film_lines" || continue
+        r_lines=""
+        [ -n "$film" ] && r_lines=$film_lines
+        scene "$name" "$spacing" "$n1" "$types" "$named$luts$film" "water au diamond" "$r_lines" || continue
         [ "$n1" = 1.5 ] && compile "$name" "$t/$name.h"
         "$t/check" "$t/$name.h" "$spacing" "$name (${spacing}, n1 $n1)" "$t/$name.scene" 2>"$t/check.err"
+        if [ -n "$film_scene" ] && scene "$film_scene" grazing "$n1" "$types" "thin-film" "$film_mats" "$film_lines"; then
+            "$t/check" "$t/$film_scene.h" grazing "$film_scene (thin-film on$film_mats, n1 $n1)" "$t/$film_scene.scene" \
+                2>"$t/check.err"
+        fi
         # fresnel curve --type evaluates the same values (grazing-pl has no curve)
         if [ "$spacing" != grazing-pl ] && [ "$n1" = 1.5 ]; then
             for mat in water au diamond; do
@@ -130,6 +157,18 @@ film_thickness = 80 640
                     else
                         echo "FAIL gen matrix $name: fresnel curve --type $ty: $(head -2 "$t/curve.err")"
                     fi
+                    # the film's own scene: its column alone, where the domain admits mat
+                    case "$film_scene:$film_mats " in
+                    rf_*" $mat "*)
+                        if "$F" curve --material "$mat" --n1 "$n1" --type "$ty" --samples 181 --models thin-film \
+                            --film "$( [ "$mat" = au ] && echo 4 || echo 2.42 ):480" >"$t/curve.csv" 2>"$t/curve.err"; then
+                            "$t/check" "$t/$film_scene.h" grazing "$film_scene curve" "$t/$film_scene.scene" \
+                                "$t/curve.csv" "$mat" "$ty" 480 2>"$t/check.err"
+                        else
+                            echo "FAIL gen matrix $film_scene: fresnel curve --type $ty: $(head -2 "$t/curve.err")"
+                        fi
+                        ;;
+                    esac
                 done
             done
         fi
