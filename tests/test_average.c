@@ -250,8 +250,36 @@ static void check_lut_averages(void)
               f.b == fresnel_lut_cubic_avg(tf + 32, 16);
         ok &= r.r == fresnel_lut_avg_u16_q15(q, 16) && r.g == fresnel_lut_avg_u16_q15(q + 16, 16) &&
               r.b == fresnel_lut_avg_u16_q15(q + 32, 16);
+        r = fresnel_lut_cubic_avg_u16_q15_rgb(q, 16);
+        ok &= r.r == fresnel_lut_cubic_avg_u16_q15(q, 16) && r.g == fresnel_lut_cubic_avg_u16_q15(q + 16, 16) &&
+              r.b == fresnel_lut_cubic_avg_u16_q15(q + 32, 16);
+        r = fresnel_lut_linear_avg_u16_q15_rgb(q, 16);
+        ok &= r.r == fresnel_lut_linear_avg_u16_q15(q, 16) && r.g == fresnel_lut_linear_avg_u16_q15(q + 16, 16) &&
+              r.b == fresnel_lut_linear_avg_u16_q15(q + 32, 16);
         ok &= fresnel_lut_avg(tf, 0) == 0.0f && fresnel_lut_linear_avg_u16_q15(q, -5) == 0;
         CHECK("LUT average RGB forms equal the scalar ones; n <= 0 gives 0", ok, "differ");
+    }
+    {
+        /* Schlick's and F82's Q1.15 averages: the RGB form is the scalar
+         * one per channel, on codes across [0, one] and beyond */
+        static const int32_t codes[] = {-5, 0, 1, 1311, 16384, 31130, 32767, 32768, 40000};
+        int ok = 1, a, b;
+        for (a = 0; a < 9; a++)
+            for (b = 0; b < 9; b++) {
+                fresnel_rgb_q15 f0, f82, r;
+                f0.r = (fresnel_q15)codes[a];
+                f0.g = (fresnel_q15)codes[b];
+                f0.b = (fresnel_q15)codes[(a + b) % 9];
+                f82.r = f0.g, f82.g = f0.b, f82.b = f0.r;
+                r = fresnel_schlick_avg_q15_rgb(f0);
+                ok &= r.r == fresnel_schlick_avg_q15(f0.r) && r.g == fresnel_schlick_avg_q15(f0.g) &&
+                      r.b == fresnel_schlick_avg_q15(f0.b);
+                r = fresnel_f82_avg_q15_rgb(f0, f82);
+                ok &= r.r == fresnel_f82_avg_q15(f0.r, f82.r) && r.g == fresnel_f82_avg_q15(f0.g, f82.g) &&
+                      r.b == fresnel_f82_avg_q15(f0.b, f82.b);
+            }
+        CHECK("fresnel_schlick_avg_q15_rgb and fresnel_f82_avg_q15_rgb equal the scalar forms per channel", ok,
+              "differ");
     }
 }
 
