@@ -102,15 +102,16 @@
  * medium (F0 in medium), Gulbrandsen with g near 0 and r near 1 (k
  * clamped to 16), F0 and F82 far apart (F82), and near-dielectric
  * conductors (kappa 1e-3) at their critical angle. They are measured
- * maxima rounded up, not proven, but for the LUTs': the models' at least
- * 10% above the largest error a search for the worst case found over the
- * domain (tests/test_model_search.c; make search). */
+ * maxima rounded up, not proven, but for the LUTs': the models' and the
+ * F0 helpers' at least 10% above the largest error a search for the worst
+ * case or the fuzzer found over the domain (tests/test_model_search.c;
+ * make search, make fuzz). */
 #define FRESNEL_DOMAIN_SCHLICK_F16 2.8e-3
 #define FRESNEL_DOMAIN_SCHLICK_GEN_F16 2.8e-3
 #define FRESNEL_DOMAIN_F82_F16 4.9e-3
 #define FRESNEL_DOMAIN_SCHLICK_INTERNAL_F16 1.0
-#define FRESNEL_DOMAIN_F0_FROM_IOR_F16 2.1e-3
-#define FRESNEL_DOMAIN_F0_IN_MEDIUM_F16 5.2e-3
+#define FRESNEL_DOMAIN_F0_FROM_IOR_F16 2.3e-3
+#define FRESNEL_DOMAIN_F0_IN_MEDIUM_F16 6.1e-3
 #define FRESNEL_DOMAIN_LSK_F16 4.1e-3
 #define FRESNEL_DOMAIN_LSK_COMP_F16 4.5e-3
 #define FRESNEL_DOMAIN_GULBRANDSEN_F16 0.15

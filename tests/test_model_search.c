@@ -17,7 +17,8 @@
  * And the binary32 functions outside the table, each over its bound's
  * domain: fresnel_f0_from_ior, fresnel_f0_in_medium (F0 from 1e-8 to
  * 1 - 1e-6), fresnel_gulbrandsen_rg's g (the whole eta, kappa domain),
- * fresnel_conductor_prepared.
+ * fresnel_conductor_prepared; and in binary16 fresnel_f0_from_ior_f16 and
+ * fresnel_f0_in_medium_f16 over the binary16 domain (FRESNEL_DOMAIN_*_F16).
  * Sweeps first: the matched index (where the error peaks in a narrow
  * band), and in the long pass the whole grid of tests/test_float_bounds.c.
  * Results outside [0, 1] count as an infinite error. The corpus
@@ -160,6 +161,26 @@ static double conductor_prepared_error(void *ctx, const double *x)
     return got >= 0.0f && got <= 1.0f ? fabs((double)got - ref_conductor(eta, kappa, c)) : HUGE_VAL;
 }
 
+#if FRESNEL_HAS_F16
+/* The binary16 helpers over the binary16 domain: x as above, rounded to halves */
+static double f0_from_ior_f16_error(void *ctx, const double *x)
+{
+    fresnel_f16 e = (fresnel_f16)pow(10.0, x[0]), k = (fresnel_f16)pow10_or_zero(x[1], -3.0);
+    double got = (double)fresnel_f0_from_ior_f16(e, k);
+    (void)ctx;
+    return got >= 0.0 && got <= 1.0 ? fabs(got - ref_f0_from_ior((double)e, (double)k)) : HUGE_VAL;
+}
+
+static double f0_in_medium_f16_error(void *ctx, const double *x)
+{
+    fresnel_f16 f0 = (fresnel_f16)(x[0] <= 0.0 ? pow(10.0, x[0]) : 1.0 - pow(10.0, -x[0]));
+    fresnel_f16 e = (fresnel_f16)pow(10.0, x[1]);
+    double got = (double)fresnel_f0_in_medium_f16(f0, e);
+    (void)ctx;
+    return got >= 0.0 && got <= 1.0 ? fabs(got - ref_f0_in_medium((double)f0, (double)e)) : HUGE_VAL;
+}
+#endif
+
 static void search_helpers(int longpass)
 {
     static const struct {
@@ -172,7 +193,15 @@ static void search_helpers(int longpass)
              {"f0_in_medium", f0_in_medium_error, 2, {-8.0, -3.0103}, {6.0, 2.0}, FRESNEL_BOUND_F0_IN_MEDIUM},
              {"gulbrandsen_rg", gulbrandsen_rg_error, 2, {-3.0103, -20.0}, {5.0, 5.0}, FRESNEL_BOUND_GULBRANDSEN_RG},
              {"conductor_prepared", conductor_prepared_error, 4, {-2.0, -3.5, 0.0, 1.0}, {2.0, 3.0, 1.0, 2.42},
-              FRESNEL_BOUND_CONDUCTOR_PREPARED}};
+              FRESNEL_BOUND_CONDUCTOR_PREPARED},
+#if FRESNEL_HAS_F16
+             /* binary16: eta in [2^-10, 16], kappa 0 or in [1e-3, 16]; F0 from 2^-14 */
+             {"f16 f0_from_ior", f0_from_ior_f16_error, 2, {-3.0103, -3.4}, {1.2041, 1.2041},
+              FRESNEL_DOMAIN_F0_FROM_IOR_F16},
+             {"f16 f0_in_medium", f0_in_medium_f16_error, 2, {-4.2144, -3.0103}, {3.0, 1.2041},
+              FRESNEL_DOMAIN_F0_IN_MEDIUM_F16},
+#endif
+    };
     size_t i;
     for (i = 0; i < sizeof h / sizeof h[0]; i++) {
         search_space sp;
@@ -184,16 +213,19 @@ static void search_helpers(int longpass)
         for (d = 0; d < sp.dims; d++)
             sp.lo[d] = h[i].lo[d], sp.hi[d] = h[i].hi[d];
         search_init(&s, &sp, h[i].fn, NULL, 0x4E1Fu + (uint64_t)i);
-        snprintf(key, sizeof key, "f32:%s", h[i].name);
+        snprintf(key, sizeof key, "%s%s", strncmp(h[i].name, "f16 ", 4) ? "f32:" : "f16:",
+                 strncmp(h[i].name, "f16 ", 4) ? h[i].name : h[i].name + 4);
         search_corpus(&s, CORPUS, key);
         search_random(&s, longpass ? 2000000 : 60000);
         search_climb(&s, longpass ? 12 : 6, 48);
         search_corpus_write(&s, key, 3);
-        printf("NOTE search f32    %-18s max|err| %.4g at", h[i].name, s.top[0].err);
+        printf("NOTE search %-6s %-18s max|err| %.4g at", strncmp(h[i].name, "f16 ", 4) ? "f32" : "f16",
+               strncmp(h[i].name, "f16 ", 4) ? h[i].name : h[i].name + 4, s.top[0].err);
         for (d = 0; d < sp.dims; d++)
             printf(" %.9g", s.top[0].x[d]);
         printf(" (search coordinates), %ld evaluations\n", s.evals);
-        snprintf(label, sizeof label, "f32 %s: within the stated bound (searched)", h[i].name);
+        snprintf(label, sizeof label, "%s%s: within the stated bound (searched)",
+                 strncmp(h[i].name, "f16 ", 4) ? "f32 " : "", h[i].name);
         CHECK(label, s.top[0].err <= h[i].bound, "max|err| %.4g, bound %.4g", s.top[0].err, h[i].bound);
     }
 }
