@@ -28,7 +28,7 @@
 #include "glctx.h"
 #include "harness.h"
 #include "scene/scene.h"
-#include "scene/scene_eval.h"
+#include "scene/encoded_scene.h"
 #include "1_spectral/spectral.h"
 
 #include FR_TEX_HEADER

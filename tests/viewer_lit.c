@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "4_emit/emit.h"
-#include "scene/scene_eval.h"
+#include "scene/encoded_scene.h"
 #include "viewer/viewer.h"
 
 #define PI 3.14159265358979
@@ -151,32 +151,26 @@ int main(int argc, char **argv)
     char line[512], mat[64], model[64];
     double worst = 0.0, *refs, *film_refs, d0;
     int count = 0, bad = 0, i, k;
-    scene_model *models;
-    if (argc != 2 || emit_load(argv[1], NULL, 1, &l))
+    if (argc != 2 || emit_load(argv[1], NULL, emit_backend_find("--glsl"), &l))
         return 2;
     d0 = viewer_film_d(l.sc, VIEWER_FILM_START);
-    models = calloc((size_t)(l.sc->material_count * l.sc->model_count), sizeof *models);
     refs = malloc((size_t)l.sc->material_count * VIEWER_REF_NODES * 3 * sizeof *refs);
     film_refs = malloc((size_t)l.sc->material_count * VIEWER_FILM_REF_NODES * 3 * sizeof *film_refs);
-    if (!models || !refs || !film_refs)
+    if (!refs || !film_refs)
         return 2;
     for (i = 0; i < l.sc->material_count; i++) {
-        for (k = 0; k < l.sc->model_count; k++)
-            if (scene_model_prepare(&l.sc->models[k], l.sc->spacing, l.spectra[i], l.g, &l.params[i],
-                                    &models[i * l.sc->model_count + k]))
-                return 2;
         for (k = 0; k < VIEWER_REF_NODES; k++) {
             double x = (double)k / (VIEWER_REF_NODES - 1);
-            ground_truth(l.spectra[i], &l.g->cm, &l.g->cs, l.params[i].n1, x * x, refs + (i * VIEWER_REF_NODES + k) * 3);
+            ground_truth(l.es.spectra[i], &l.es.g->cm, &l.es.g->cs, l.es.params[i].n1, x * x, refs + (i * VIEWER_REF_NODES + k) * 3);
         }
-        for (k = 0; l.params[i].film_n > 0.0 && k < VIEWER_FILM_REF_NODES; k++) { /* the film's, at d0 */
+        for (k = 0; l.es.params[i].film_n > 0.0 && k < VIEWER_FILM_REF_NODES; k++) { /* the film's, at d0 */
             double x = (double)k / (VIEWER_FILM_REF_NODES - 1);
             film_stack f;
-            f.n1 = l.params[i].n1;
+            f.n1 = l.es.params[i].n1;
             f.film = NULL;
-            f.film_n = l.params[i].film_n;
-            f.substrate = l.spectra[i];
-            film_truth(&f, &l.g->cm, &l.g->cs, x * x, d0, film_refs + (i * VIEWER_FILM_REF_NODES + k) * 3);
+            f.film_n = l.es.params[i].film_n;
+            f.substrate = l.es.spectra[i];
+            film_truth(&f, &l.es.g->cm, &l.es.g->cs, x * x, d0, film_refs + (i * VIEWER_FILM_REF_NODES + k) * 3);
         }
     }
     while (fgets(line, sizeof line, stdin)) {
@@ -197,7 +191,7 @@ int main(int argc, char **argv)
             bad++;
             continue;
         }
-        r.model = mo < 0 ? NULL : &models[mi * l.sc->model_count + mo];
+        r.model = mo < 0 ? NULL : encoded_scene_model(&l.es, mi, mo);
         r.d_nm = d0;
         if (!strcmp(model, "film-reference")) {
             r.ref = film_refs + mi * VIEWER_FILM_REF_NODES * 3;
@@ -213,9 +207,6 @@ int main(int argc, char **argv)
         count += 3;
     }
     printf("%.3g %d %d\n", worst, count, bad);
-    for (i = 0; i < l.sc->material_count * l.sc->model_count; i++)
-        scene_model_free(&models[i]);
-    free(models);
     free(refs);
     free(film_refs);
     emit_loaded_free(&l);

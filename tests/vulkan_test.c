@@ -47,7 +47,7 @@
 #include "harness.h"
 #include "model/registry.h"
 #include "scene/scene.h"
-#include "scene/scene_eval.h"
+#include "scene/encoded_scene.h"
 #include "1_spectral/spectral.h"
 #include "vkrun.h"
 

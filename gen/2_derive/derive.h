@@ -27,6 +27,7 @@
 
 #include "1_spectral/colour_difference.h"
 #include "1_spectral/spectral.h"
+#include "catalog/parameters.h"
 
 typedef enum gamut_policy { GAMUT_MAP, GAMUT_CLIP, GAMUT_KEEP } gamut_policy;
 /* Node angles of the map policy: theta_k = k 90 / (GAMUT_NODES - 1) degrees. */
@@ -44,15 +45,19 @@ typedef struct material_params {
     double film_n;              /* the thin film's index on it (material_source); 0: none */
     double nm[3];               /* dominant wavelengths of the space's primaries */
     double f0_unclamped[3];     /* ground truth at normal incidence */
-    double f0[3], f82[3];       /* ground truth under the gamut policy at c = 1 and c = 1/7 */
-    double f_avg[3], f_avg_unclamped[3]; /* 2 x integral of F(mu) mu over [0, 1]: under the policy and not */
-    double eta_gauss[3], kappa_gauss[3]; /* Metzgar's Gaussian window, sigma nm */
-    double eta_point[3], kappa_point[3]; /* point-sampled at the dominant wavelengths (Hoffman's "PS") */
-    double eta_fit[3], kappa_fit[3];     /* Hoffman's black-box fit to the ground truth */
-    double fit_rms[3];
-    double lsk_a[3], lsk_alpha[3];       /* compensation of LSK on the fitted eta, kappa */
-    double gulb_r[3], gulb_g[3];         /* r = F0, g from F0 and the fitted eta */
-    double ct_eta, ct_kappa;             /* Cook-Torrance: the IOR at the green wavelength */
+    double f_avg_unclamped[3];  /* 2 x integral of F(mu) mu over [0, 1], unclipped */
+    double fit_rms[3];          /* of the fitted eta, kappa */
+    /* every parameter of catalog/parameters.h, derived under the gamut
+     * policy: f0 and f82 the ground truth at c = 1 and c = 1/7, f_avg its
+     * hemispherical average, eta_gauss, kappa_gauss Metzgar's Gaussian window
+     * (sigma nm), eta_point, kappa_point point-sampled at the dominant
+     * wavelengths (Hoffman's "PS"), eta_fit, kappa_fit Hoffman's black-box
+     * fit, lsk_a, lsk_alpha LSK's compensation on the fitted eta, kappa,
+     * gulb_r = F0 and gulb_g from F0 and the fitted eta, ct_eta, ct_kappa
+     * Cook-Torrance's IOR at the green wavelength */
+#define MATERIAL_PARAM_MEMBER(field, count, group, constant, row, why, q15, q15_why) double field PARAM_ARRAY_##count;
+    DERIVED_PARAMETERS(MATERIAL_PARAM_MEMBER)
+#undef MATERIAL_PARAM_MEMBER
     int gamut_mapped;                    /* the map policy moved some node (gamut.c) */
     double gamut_shift[GAMUT_NODES][3];  /* nearest in-gamut colour - truth at theta_k */
 } material_params;

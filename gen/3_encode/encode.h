@@ -53,13 +53,24 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
 /* Which eta, kappa of material_params a model reads. */
 typedef enum model_eta { ETA_FIT, ETA_GAUSS, ETA_POINT, ETA_SOURCES } model_eta;
 
+/* The members of a parameter (catalog/parameters.h) in each type. */
+#define ENCODED_F32_3(field) fresnel_rgb field;
+#define ENCODED_F32_1(field) float field;
+#define ENCODED_Q15_Q15_NONE(field)
+#define ENCODED_Q15_Q15_CODE(field) fresnel_rgb_q15 q_##field;
+#define ENCODED_Q15_Q15_CODE_ONE(field) fresnel_rgb_q15 q_##field;
+#define ENCODED_Q15_Q15_CODE_HELD(field) fresnel_rgb_q15 q_##field;
+#define ENCODED_F32_MEMBER(field, count, group, constant, row, why, q15, q15_why) ENCODED_F32_##count(field)
+#define ENCODED_Q15_MEMBER(field, count, group, constant, row, why, q15, q15_why) ENCODED_Q15_##q15(field)
+#define ENCODED_F16_MEMBER(field, count, group, constant, row, why, q15, q15_why) fresnel_f16 h_##field PARAM_ARRAY_##count;
+
 typedef struct encoded_material {
-    /* binary32 */
-    fresnel_rgb f0, f_avg, f82, eta[ETA_SOURCES], kappa[ETA_SOURCES], lsk_a, lsk_alpha, gulb_r, gulb_g;
-    float ct_eta, ct_kappa;
-    /* Q1.15: codes round(v 32768) clamped to [0, 65535] (the emitters refuse
-     * a value that leaves its type before writing it) */
-    fresnel_rgb_q15 q_f0, q_f_avg, q_f82, q_gulb_r, q_gulb_g;
+    /* binary32: every parameter */
+    DERIVED_PARAMETERS(ENCODED_F32_MEMBER)
+    /* Q1.15: the parameters held as codes, round(v 32768) clamped to [0,
+     * 65535] (every scene's range check refuses a value that leaves its
+     * type) */
+    DERIVED_PARAMETERS(ENCODED_Q15_MEMBER)
     /* q_f0 is held to one (32768): every Q1.15 function reads F0 above one
      * as one, and the fast paths (fresnel_fixed_fast.h) take f0 only up to
      * one; 1 where gamut = keep put a channel above. */
@@ -71,12 +82,17 @@ typedef struct encoded_material {
     fresnel_conductor_prep_q15_fast q_ior_fast[3];     /* the fitted eta, kappa, where q_ior_fast_out is -1 */
     int q_ior_fast_out; /* the first channel outside fresnel_conductor_q15_fast's domain, or -1 */
 #if FRESNEL_HAS_F16
-    /* binary16, per channel (the binary16 runtime is scalar) */
-    fresnel_f16 h_f0[3], h_f_avg[3], h_f82[3], h_eta[ETA_SOURCES][3], h_kappa[ETA_SOURCES][3], h_lsk_a[3],
-        h_lsk_alpha[3], h_gulb_r[3], h_gulb_g[3], h_ct_eta, h_ct_kappa;
+    /* binary16, per channel (the binary16 runtime is scalar): every parameter */
+    DERIVED_PARAMETERS(ENCODED_F16_MEMBER)
 #endif
 } encoded_material;
 void encode_material(const material_params *p, encoded_material *out);
+/* The eta, kappa a model reads (its row's model_eta), in binary32 and
+ * binary16. */
+fresnel_rgb encoded_eta(const encoded_material *e, model_eta source, int kappa);
+#if FRESNEL_HAS_F16
+const fresnel_f16 *encoded_eta_f16(const encoded_material *e, model_eta source, int kappa);
+#endif
 
 typedef struct encoded_lut {
     int n; /* nodes per channel; 0: no table */

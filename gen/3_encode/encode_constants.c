@@ -45,36 +45,56 @@ static void f16_3(const double v[3], fresnel_f16 out[3])
 }
 #endif
 
+fresnel_rgb encoded_eta(const encoded_material *e, model_eta source, int kappa)
+{
+    switch (source) {
+    case ETA_GAUSS: return kappa ? e->kappa_gauss : e->eta_gauss;
+    case ETA_POINT: return kappa ? e->kappa_point : e->eta_point;
+    default: return kappa ? e->kappa_fit : e->eta_fit;
+    }
+}
+
+#if FRESNEL_HAS_F16
+const fresnel_f16 *encoded_eta_f16(const encoded_material *e, model_eta source, int kappa)
+{
+    switch (source) {
+    case ETA_GAUSS: return kappa ? e->h_kappa_gauss : e->h_eta_gauss;
+    case ETA_POINT: return kappa ? e->h_kappa_point : e->h_eta_point;
+    default: return kappa ? e->h_kappa_fit : e->h_eta_fit;
+    }
+}
+#endif
+
+/* One parameter in binary32, and in binary16 */
+#define F32_3(v) f32_rgb(v)
+#define F32_1(v) ((float)(v))
+#define ENCODE_F32(field, count, group, constant, row, why, q15, q15_why) e->field = F32_##count(p->field);
+#if FRESNEL_HAS_F16
+#define F16_3(v, out) f16_3(v, out)
+#define F16_1(v, out) (out = (fresnel_f16)(v))
+#define ENCODE_F16(field, count, group, constant, row, why, q15, q15_why) F16_##count(p->field, e->h_##field);
+#endif
+/* The codes: held to one for Q15_CODE_HELD */
+#define ENCODE_Q15_Q15_NONE(field)
+#define ENCODE_Q15_Q15_CODE(field) e->q_##field = q15_rgb(p->field);
+#define ENCODE_Q15_Q15_CODE_ONE(field) e->q_##field = q15_rgb(p->field);
+#define ENCODE_Q15_Q15_CODE_HELD(field)                                                                                \
+    {                                                                                                                  \
+        double held[3];                                                                                                \
+        for (ch = 0; ch < 3; ch++) {                                                                                   \
+            held[ch] = p->field[ch] > 1.0 ? 1.0 : p->field[ch];                                                        \
+            e->q_##field##_held |= p->field[ch] > 1.0;                                                                 \
+        }                                                                                                              \
+        e->q_##field = q15_rgb(held);                                                                                  \
+    }
+#define ENCODE_Q15(field, count, group, constant, row, why, q15, q15_why) ENCODE_Q15_##q15(field)
+
 void encode_material(const material_params *p, encoded_material *e)
 {
     int src, ch;
     memset(e, 0, sizeof *e);
-    e->f0 = f32_rgb(p->f0);
-    e->f_avg = f32_rgb(p->f_avg);
-    e->f82 = f32_rgb(p->f82);
-    e->lsk_a = f32_rgb(p->lsk_a);
-    e->lsk_alpha = f32_rgb(p->lsk_alpha);
-    e->gulb_r = f32_rgb(p->gulb_r);
-    e->gulb_g = f32_rgb(p->gulb_g);
-    e->ct_eta = (float)p->ct_eta;
-    e->ct_kappa = (float)p->ct_kappa;
-    for (src = 0; src < ETA_SOURCES; src++) {
-        e->eta[src] = f32_rgb(eta_source(p, src, 0));
-        e->kappa[src] = f32_rgb(eta_source(p, src, 1));
-    }
-
-    {
-        double f0[3];
-        for (ch = 0; ch < 3; ch++) {
-            f0[ch] = p->f0[ch] > 1.0 ? 1.0 : p->f0[ch];
-            e->q_f0_held |= p->f0[ch] > 1.0;
-        }
-        e->q_f0 = q15_rgb(f0);
-    }
-    e->q_f_avg = q15_rgb(p->f_avg);
-    e->q_f82 = q15_rgb(p->f82);
-    e->q_gulb_r = q15_rgb(p->gulb_r);
-    e->q_gulb_g = q15_rgb(p->gulb_g);
+    DERIVED_PARAMETERS(ENCODE_F32)
+    DERIVED_PARAMETERS(ENCODE_Q15)
     fixed_ior(p->ct_eta, p->ct_kappa, &e->q_ct);
     e->q_ior_fast_out = -1;
     for (ch = 0; ch < 3; ch++) {
@@ -92,19 +112,7 @@ void encode_material(const material_params *p, encoded_material *e)
             fixed_conductor_fast(p->eta_fit[ch], p->kappa_fit[ch], &e->q_ior_fast[ch]);
 
 #if FRESNEL_HAS_F16
-    f16_3(p->f0, e->h_f0);
-    f16_3(p->f_avg, e->h_f_avg);
-    f16_3(p->f82, e->h_f82);
-    f16_3(p->lsk_a, e->h_lsk_a);
-    f16_3(p->lsk_alpha, e->h_lsk_alpha);
-    f16_3(p->gulb_r, e->h_gulb_r);
-    f16_3(p->gulb_g, e->h_gulb_g);
-    for (src = 0; src < ETA_SOURCES; src++) {
-        f16_3(eta_source(p, src, 0), e->h_eta[src]);
-        f16_3(eta_source(p, src, 1), e->h_kappa[src]);
-    }
-    e->h_ct_eta = (fresnel_f16)p->ct_eta;
-    e->h_ct_kappa = (fresnel_f16)p->ct_kappa;
+    DERIVED_PARAMETERS(ENCODE_F16)
 #endif
 }
 

@@ -1,14 +1,18 @@
-/* Stage 4: emitting a scene's header (C: emit_header.c, Q15: emit_fixed.c, GLSL: emit_glsl.c,
- * HLSL: emit_hlsl.c). */
+/* Stage 4: printing an encoded scene (scene/encoded_scene.h) as a C header
+ * (binary32: emit_header.c, Q15: emit_fixed.c, binary16: emit_f16.c), GLSL
+ * (emit_glsl.c) or HLSL (emit_hlsl.c). The back ends print what the encoded
+ * scene holds; none fits or encodes a value. */
 #ifndef FRESNEL_EMIT_H
 #define FRESNEL_EMIT_H
 
 #include <stdio.h>
 
 #include "3_encode/encode.h"
+#include "scene/encoded_scene.h"
 #include "scene/scene.h"
 
 typedef struct emit_input {
+    const encoded_scene *es;   /* what every back end prints */
     const scene *sc;
     const char *name;          /* C identifier part: fresnel_<name>_<material>_<param> */
     const char *manifest_name; /* for the leading comment */
@@ -18,37 +22,44 @@ typedef struct emit_input {
     spectrum *const *spectra;      /* the same */
     const encoded_material *enc;   /* the same, encoded: every constant the back ends write */
     const encoded_film *films;     /* the same: each material's film; NULL for a scene without thin-film */
-    int glsl; /* EMIT_C: C header for include/fresnel.h; EMIT_GLSL, EMIT_HLSL: shader source */
+    const target_fit *fits;        /* [material * sc->target_count + target]: the targets key's fits */
 } emit_input;
 
-/* The back ends of `fresnel gen`: the C header, GLSL for ports/glsl/fresnel.glsl,
- * HLSL for ports/hlsl/fresnel.hlsl. */
-enum { EMIT_C, EMIT_GLSL, EMIT_HLSL };
+/* The back ends of `fresnel gen` (emit_backends.c): the C header, GLSL for
+ * ports/glsl/fresnel.glsl, HLSL for ports/hlsl/fresnel.hlsl. */
+typedef struct emit_backend {
+    const char *option; /* the gen option that chooses it; NULL: the C header, the default */
+    int shader;         /* 1: a shader port's source, which emit_shader_check admits a scene to */
+    int texture;        /* 1: it also writes the LUT texture (--glsl-texture) */
+    /* Print the scene to f (and its texture to tex, if not NULL): 0, or
+     * CLI_BAD_INPUT after a message (the caller discards the output). */
+    int (*print)(FILE *f, FILE *tex, const emit_input *in);
+} emit_backend;
+extern const emit_backend emit_backends[];
+extern const int emit_backend_count;
+/* The back end chosen by option (NULL: the default); NULL if none. */
+const emit_backend *emit_backend_find(const char *option);
 
 int emit_header(FILE *f, const emit_input *in); /* 0 or CLI_BAD_INPUT */
-/* A manifest loaded and every material derived (emit_scene.c): what the
+/* A manifest loaded and encoded (encode_scene, emit_scene.c): what the
  * back ends read. emit_load returns 0 or a CLI_* status after a message
- * (then nothing is held); glsl EMIT_GLSL or EMIT_HLSL also checks that back
- * end can express the scene. emit_loaded_free releases it. */
+ * (then nothing is held); a shader back end also checks that it can
+ * express the scene. emit_loaded_free releases it. */
 typedef struct emit_loaded {
     scene *sc;
-    gen_context *g;
-    material_params *params;
-    spectrum **spectra;
-    encoded_material *enc;
-    encoded_film *films;
+    encoded_scene es;
     char name[SCENE_PREFIX_SIZE];
     emit_input in;
 } emit_loaded;
-int emit_load(const char *manifest, const char *dir_option, int glsl, emit_loaded *l);
+int emit_load(const char *manifest, const char *dir_option, const emit_backend *backend, emit_loaded *l);
 void emit_loaded_free(emit_loaded *l);
-/* `fresnel gen`: load the manifest, derive every material, emit the C header
- * (glsl EMIT_C), the GLSL source and, if tex_path, its LUT texture, or the
- * HLSL source (EMIT_HLSL), each written
- * to a temporary beside its target and renamed over it only on success
- * (dir_option NULL: the default data directory). 0 or a CLI_* status after a
- * message. */
-int emit_scene(const char *manifest, const char *out_path, const char *tex_path, const char *dir_option, int glsl);
+/* `fresnel gen`: load and encode the manifest's scene, print it with the
+ * back end (and, if tex_path, its LUT texture), each written to a
+ * temporary beside its target and renamed over it only on success
+ * (dir_option NULL: the default data directory). 0 or a CLI_* status after
+ * a message. */
+int emit_scene(const char *manifest, const char *out_path, const char *tex_path, const char *dir_option,
+               const emit_backend *backend);
 void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
 /* The opening comment's list of materials and where each came from: a data
  * pack file, or a user's file by name, format, size and SHA-256. */
@@ -62,35 +73,31 @@ typedef void (*emit_rgb_fn)(FILE *f, const char *prefix, const char *name, const
 typedef void (*emit_float_fn)(FILE *f, const char *prefix, const char *name, double v, const char *why);
 void emit_material_params(FILE *f, const scene *sc, const encoded_material *e, const char *prefix, emit_rgb_fn rgb,
                           emit_float_fn flt);
+#define EMIT_FLOATS_MEMBER(field, count, group, constant, row, why, q15, q15_why) double field PARAM_ARRAY_##count;
 typedef struct emit_floats {
-    double f0[3], f_avg[3], f82[3], eta[ETA_SOURCES][3], kappa[ETA_SOURCES][3], lsk_a[3], lsk_alpha[3], gulb_r[3],
-        gulb_g[3], ct_eta, ct_kappa;
+    DERIVED_PARAMETERS(EMIT_FLOATS_MEMBER) /* catalog/parameters.h */
 } emit_floats;
 void emit_float_params(FILE *f, const scene *sc, const emit_floats *v, const char *prefix, emit_rgb_fn rgb,
                        emit_float_fn flt);
 /* A C float literal that reads back to the same binary32 value (9
  * significant digits, a '.' or an exponent, the 'f' suffix). */
 void emit_c_float(FILE *f, double v);
-/* LUT model e's table for material i of the input in every number type
- * (encode_table): 0, or -1 when out of memory. */
-int emit_lut_encode(const emit_input *in, const scene_entry *e, int i, encoded_lut *t);
-/* Its binary32 nodes as doubles (3n values, malloc'd; NULL when out of
- * memory), for the shader back ends. */
-double *emit_lut_table(const emit_input *in, const scene_entry *e, int i);
+/* Model m's table for material i in every number type (n 0 for a model
+ * without one). */
+const encoded_lut *emit_lut(const emit_input *in, int material, int model);
 
 /* Material i's heading comment and, for a scene with the targets key, the
  * comment holding other renderers' parameters (emit_targets.c). */
 void emit_material_heading(FILE *f, const emit_input *in, int material);
 
 /* The C header's back end of each number type: one material's constants and
- * tables (luts[m]: model m's table, encoded once for every type; n 0 for
- * the other models); prefix is fresnel_<scene>_<material>. 0, or
- * CLI_BAD_INPUT after a message. emit_header.c: binary32; emit_fixed.c:
- * Q1.15; emit_f16.c: binary16. */
-typedef int (*emit_type_fn)(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
-int emit_f32_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
-int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
-int emit_f16_material(FILE *f, const emit_input *in, int material, const char *prefix, const encoded_lut *luts);
+ * tables; prefix is fresnel_<scene>_<material>. 0, or CLI_BAD_INPUT after a
+ * message. emit_header.c: binary32; emit_fixed.c: Q1.15; emit_f16.c:
+ * binary16. */
+typedef int (*emit_type_fn)(FILE *f, const emit_input *in, int material, const char *prefix);
+int emit_f32_material(FILE *f, const emit_input *in, int material, const char *prefix);
+int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix);
+int emit_f16_material(FILE *f, const emit_input *in, int material, const char *prefix);
 /* Material i's thin-film table in number type `type` (emit_film.c), where
  * the scene has the thin-film model: 0, or CLI_BAD_INPUT after a message (a
  * table the type's layout cannot hold). */

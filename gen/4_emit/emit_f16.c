@@ -53,45 +53,29 @@ static void emit_lut_f16(FILE *f, const emit_input *in, const char *prefix, cons
 }
 #endif
 
-int emit_f16_material(FILE *f, const emit_input *in, int mi, const char *prefix, const encoded_lut *luts)
+#if FRESNEL_HAS_F16
+#define AS_DOUBLE_3(h, out) h3(h, out)
+#define AS_DOUBLE_1(h, out) (out = (double)(h))
+#define AS_DOUBLE(field, count, group, constant, row, why, q15, q15_why) AS_DOUBLE_##count(e->h_##field, v.field);
+#endif
+
+int emit_f16_material(FILE *f, const emit_input *in, int mi, const char *prefix)
 {
 #if FRESNEL_HAS_F16
     const encoded_material *e = &in->enc[mi];
     emit_floats v;
-    const double *all = &v.f0[0];
-    size_t i, count = sizeof v / sizeof v.f0[0];
-    int src, m;
-    h3(e->h_f0, v.f0);
-    h3(e->h_f_avg, v.f_avg);
-    h3(e->h_f82, v.f82);
-    h3(e->h_lsk_a, v.lsk_a);
-    h3(e->h_lsk_alpha, v.lsk_alpha);
-    h3(e->h_gulb_r, v.gulb_r);
-    h3(e->h_gulb_g, v.gulb_g);
-    for (src = 0; src < ETA_SOURCES; src++) {
-        h3(e->h_eta[src], v.eta[src]);
-        h3(e->h_kappa[src], v.kappa[src]);
-    }
-    v.ct_eta = (double)e->h_ct_eta;
-    v.ct_kappa = (double)e->h_ct_kappa;
-    /* a parameter beyond 65504 rounds to an infinity, which no literal holds
-     * (emit_floats is all doubles: one array) */
-    for (i = 0; i < count; i++)
-        if (!isfinite(all[i])) {
-            char where[1100];
-            snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->types_line);
-            return cli_error(where, "%s: a parameter does not fit binary16 (largest 65504); no header written", prefix);
-        }
+    int m;
+    DERIVED_PARAMETERS(AS_DOUBLE)
     fputs("#if FRESNEL_HAS_F16\n", f);
     emit_float_params(f, in->sc, &v, prefix, f16_rgb, f16_scalar);
     for (m = 0; m < in->sc->model_count; m++)
-        if (luts[m].n)
-            emit_lut_f16(f, in, prefix, &in->sc->models[m], &luts[m]);
+        if (emit_lut(in, mi, m)->n)
+            emit_lut_f16(f, in, prefix, &in->sc->models[m], emit_lut(in, mi, m));
     m = emit_film(f, in, mi, prefix, TYPE_F16);
     fputs("#endif\n", f);
     return m;
 #else
-    (void)f, (void)in, (void)mi, (void)prefix, (void)luts;
+    (void)f, (void)in, (void)mi, (void)prefix;
     return 0; /* never asked: the registry's f16 row is not available here */
 #endif
 }

@@ -227,7 +227,7 @@ static void emit_lut_q15(fx_out *o, const char *prefix, const scene_entry *e, co
     fprintf(f, "\n};\n");
 }
 
-int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefix, const encoded_lut *luts)
+int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefix)
 {
     const scene *sc = in->sc;
     const material_params *p = &in->params[mi];
@@ -291,7 +291,7 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
         fputs(";\n", f);
     }
     for (m = 0; m < sc->model_count && !o.bad; m++)
-        if (luts[m].n)
-            emit_lut_q15(&o, prefix, &sc->models[m], &luts[m]);
+        if (emit_lut(in, mi, m)->n)
+            emit_lut_q15(&o, prefix, &sc->models[m], emit_lut(in, mi, m));
     return o.bad ? CLI_BAD_INPUT : emit_film(f, in, mi, prefix, TYPE_Q15);
 }

@@ -103,7 +103,7 @@ typedef struct glsl_lut {
     int material, model, n;
     lut_form form;
     char name[32];
-    double *t; /* 3n nodes */
+    const float *t; /* 3n nodes: the encoded scene's binary32 table */
     int x0, row; /* first texel and row in the texture */
 } glsl_lut;
 
@@ -123,9 +123,6 @@ static int pow2_at_least(int v)
 
 static void layout_free(glsl_layout *l)
 {
-    int i;
-    for (i = 0; i < l->count; i++)
-        free(l->luts[i].t);
     free(l->luts);
     l->luts = NULL;
     l->count = 0;
@@ -154,11 +151,7 @@ static int layout_build(const emit_input *in, glsl_layout *l)
             u->n = e->lut_n;
             u->form = e->row->form;
             snprintf(u->name, sizeof u->name, "%s", e->ident);
-            u->t = emit_lut_table(in, e, i);
-            if (!u->t) {
-                layout_free(l);
-                return cli_error(WHERE, "out of memory");
-            }
+            u->t = emit_lut(in, i, m)->f32;
             l->count++;
             if (u->n > nmax)
                 nmax = u->n;

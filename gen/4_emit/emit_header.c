@@ -3,10 +3,7 @@
  * scene does not need"]. Output depends only on the manifest and the data:
  * no dates, no absolute paths, fixed number formatting. */
 #include <ctype.h>
-#include <float.h>
-#include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "common/cli.h"
@@ -31,7 +28,7 @@ static void emit_float(FILE *f, const char *prefix, const char *name, double v, 
     fputs(";\n", f);
 }
 
-static void emit_lut(FILE *f, const emit_input *in, const char *prefix, const scene_entry *e, const encoded_lut *t)
+static void emit_f32_lut(FILE *f, const emit_input *in, const char *prefix, const scene_entry *e, const encoded_lut *t)
 {
     int n = t->n, i, residual = t->form == LUT_RESIDUAL;
     lut_spacing spacing = in->sc->spacing;
@@ -52,41 +49,14 @@ static void emit_lut(FILE *f, const emit_input *in, const char *prefix, const sc
     fprintf(f, "\n};\n");
 }
 
-int emit_f32_material(FILE *f, const emit_input *in, int mi, const char *prefix, const encoded_lut *luts)
+int emit_f32_material(FILE *f, const emit_input *in, int mi, const char *prefix)
 {
     int m;
     emit_material_params(f, in->sc, &in->enc[mi], prefix, emit_rgb, emit_float);
     for (m = 0; m < in->sc->model_count; m++)
-        if (luts[m].n)
-            emit_lut(f, in, prefix, &in->sc->models[m], &luts[m]);
+        if (emit_lut(in, mi, m)->n)
+            emit_f32_lut(f, in, prefix, &in->sc->models[m], emit_lut(in, mi, m));
     return emit_film(f, in, mi, prefix, TYPE_F32);
-}
-
-/* Every derived constant the header may hold as a float must be a finite
- * binary32 (a literal beyond FLT_MAX would read inf.0f and not compile). */
-static int params_fit_float(const emit_input *in, const material_params *p)
-{
-    const struct {
-        const char *what;
-        const double *v;
-        int count;
-    } all[] = {{"F0", p->f0, 3},           {"F82", p->f82, 3},           {"F_avg", p->f_avg, 3},           {"eta", p->eta_fit, 3},
-               {"kappa", p->kappa_fit, 3}, {"LSK a", p->lsk_a, 3},      {"LSK alpha", p->lsk_alpha, 3},
-               {"eta'", p->eta_gauss, 3},  {"kappa'", p->kappa_gauss, 3}, {"eta point", p->eta_point, 3},
-               {"kappa point", p->kappa_point, 3}, {"Gulbrandsen r", p->gulb_r, 3},
-               {"Gulbrandsen g", p->gulb_g, 3}, {"Cook-Torrance eta", &p->ct_eta, 1},
-               {"Cook-Torrance kappa", &p->ct_kappa, 1}};
-    size_t i;
-    int ch;
-    for (i = 0; i < sizeof all / sizeof all[0]; i++)
-        for (ch = 0; ch < all[i].count; ch++)
-            if (!(fabs(all[i].v[ch]) <= FLT_MAX)) {
-                char where[1100];
-                snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->materials_line);
-                return cli_error(where, "material %s: %s = %g does not fit a binary32 float; no header written",
-                                 p->info.id, all[i].what, all[i].v[ch]);
-            }
-    return 0;
 }
 
 /* The ground truth's definition and the scene's gamut policy, for the C and
@@ -133,35 +103,6 @@ static const struct {
 } emit_types[] = {{TYPE_Q15, emit_fixed_material}, {TYPE_F32, emit_f32_material}, {TYPE_F16, emit_f16_material}};
 typedef char emit_types_cover_the_registry[sizeof emit_types / sizeof emit_types[0] == NUMBER_TYPES ? 1 : -1];
 
-/* Every LUT of material i, encoded once for all its types (luts[m].n 0 for
- * the other models): 0, or CLI_* after a message (then nothing is held). */
-static int encode_luts(const emit_input *in, int i, const char *prefix, encoded_lut *luts)
-{
-    const scene *sc = in->sc;
-    int m, k;
-    for (m = 0; m < sc->model_count; m++) {
-        memset(&luts[m], 0, sizeof luts[m]);
-        if (!sc->models[m].lut_n)
-            continue;
-        if (emit_lut_encode(in, &sc->models[m], i, &luts[m])) {
-            for (k = 0; k < m; k++)
-                encoded_lut_free(&luts[k]);
-            return cli_oom("fresnel gen");
-        }
-        if (luts[m].bad >= 0) {
-            char where[1100];
-            snprintf(where, sizeof where, "%s:%d", in->manifest_path, sc->models_line);
-            cli_error(where, "%s: %s node %d is %g, which no %s table holds; no header written", prefix,
-                      sc->models[m].name, luts[m].bad, luts[m].nodes[luts[m].bad],
-                      luts[m].form == LUT_RESIDUAL ? "Q1.15 residual (int16_t at 14 fraction bits)" : "Q1.15 [0, 2)");
-            for (k = 0; k <= m; k++)
-                encoded_lut_free(&luts[k]);
-            return CLI_BAD_INPUT;
-        }
-    }
-    return 0;
-}
-
 /* #include "name" unless its guard (FRESNEL_FIXED_H for fresnel_fixed.h)
  * is defined already. */
 static void include_guarded(FILE *f, const char *name)
@@ -179,9 +120,6 @@ int emit_header(FILE *f, const emit_input *in)
     const gen_context *g = in->g;
     char guard[96];
     int i, m, k, status = 0;
-    encoded_lut *luts = calloc((size_t)sc->model_count, sizeof *luts);
-    if (!luts)
-        return cli_oom("fresnel gen");
     for (i = 0; in->name[i] && i < (int)sizeof guard - 1; i++)
         guard[i] = (char)toupper((unsigned char)in->name[i]);
     guard[i] = '\0';
@@ -218,18 +156,11 @@ int emit_header(FILE *f, const emit_input *in)
         const material_params *p = &in->params[i];
         char prefix[96];
         snprintf(prefix, sizeof prefix, "fresnel_%s_%s", in->name, p->info.id);
-        if (params_fit_float(in, p) || (status = encode_luts(in, i, prefix, luts))) {
-            status = CLI_BAD_INPUT;
-            break;
-        }
         emit_material_heading(f, in, i);
         for (k = 0; k < NUMBER_TYPES && !status; k++)
             if (scene_has_type(sc, emit_types[k].type))
-                status = emit_types[k].emit(f, in, i, prefix, luts);
-        for (m = 0; m < sc->model_count; m++)
-            encoded_lut_free(&luts[m]);
+                status = emit_types[k].emit(f, in, i, prefix);
     }
-    free(luts);
     if (status)
         return status;
     fprintf(f, "\n#endif\n");

@@ -11,7 +11,6 @@
 
 #include "common/cli.h"
 
-#define WHERE "fresnel gen"
 
 static void hlsl_rgb(FILE *f, const char *prefix, const char *name, const double v[3], const char *why)
 {
@@ -24,12 +23,11 @@ static void hlsl_float(FILE *f, const char *prefix, const char *name, double v, 
 }
 
 /* LUT model e of material i as a static const array. */
-static int hlsl_lut(FILE *f, const emit_input *in, int i, const scene_entry *e, const char *prefix)
+static void hlsl_lut(FILE *f, const emit_input *in, int i, int m, const char *prefix)
 {
-    double *t = emit_lut_table(in, e, i);
+    const scene_entry *e = &in->sc->models[m];
+    const float *t = emit_lut(in, i, m)->f32;
     int k, n = e->lut_n;
-    if (!t)
-        return cli_error(WHERE, "out of memory");
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
                " * fitted to the ground truth through %s interpolation. */\n",
             e->ident, n, in->sc->spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
@@ -42,8 +40,6 @@ static int hlsl_lut(FILE *f, const emit_input *in, int i, const scene_entry *e, 
             fputc(',', f);
     }
     fputs("\n};\n", f);
-    free(t);
-    return 0;
 }
 
 int emit_hlsl(FILE *f, const emit_input *in)
@@ -69,8 +65,8 @@ int emit_hlsl(FILE *f, const emit_input *in)
         emit_material_params(f, sc, &in->enc[i], prefix, hlsl_rgb, hlsl_float);
         for (m = 0; m < sc->model_count; m++) {
             const scene_entry *e = &sc->models[m];
-            if (e->lut_n && hlsl_lut(f, in, i, e, prefix))
-                return CLI_BAD_INPUT;
+            if (e->lut_n)
+                hlsl_lut(f, in, i, m, prefix);
             if (e->row->offered & MODEL_FILM)
                 emit_shader_film_table(f, in, i, prefix, e, "static const float", "{", "}");
             fprintf(f, "float3 %s_%s_rgb(float c%s)\n{\n    %s", prefix, e->ident, emit_shader_more_params(e, "float"),

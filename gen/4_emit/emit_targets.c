@@ -6,7 +6,6 @@
  * deterministic fit keep the header byte-identical for identical input. */
 #include <stdio.h>
 
-#include "1_spectral/colour_difference.h"
 #include "2_derive/targets.h"
 #include "4_emit/emit.h"
 
@@ -14,28 +13,22 @@ static void targets_comment(FILE *f, const emit_input *in, int material)
 {
     const scene *sc = in->sc;
     const material_params *p = &in->params[material];
-    double truth[TARGET_ANGLES][3];
-    target_anchor a;
-    lab_space ls;
     int i, k, n, ch;
-    lab_space_init(&ls, &in->g->cs);
-    target_material_curve(in->spectra[material], in->g, p, 1, truth, &a);
     fprintf(f, "/* Other renderers' parameters for %s (fresnel params --for TARGET), fitted through each one's\n"
                " * Fresnel formula to the ground truth above; CIEDE2000 over theta 0-90 deg, mean / max:\n",
             p->info.id);
     for (i = 0; i < sc->target_count; i++) {
         const target *t = sc->targets[i];
-        target_fit fit;
-        target_fit_curve(t, &ls, (const double(*)[3])truth, &a, &fit);
+        const target_fit *fit = &in->fits[material * sc->target_count + i];
         for (k = n = 0; k < t->param_count; k++) {
             fprintf(f, " *   %-12s %-16s", k ? "" : t->name, t->param[k].name);
             for (ch = 0; ch < 3; ch++)
-                fprintf(f, " %.6f", fit.fitted[t->param[k].scalar ? n : n + ch]);
+                fprintf(f, " %.6f", fit->fitted[t->param[k].scalar ? n : n + ch]);
             fputc('\n', f);
             n += t->param[k].scalar ? 1 : 3;
         }
-        fprintf(f, " *   %-12s dE2000 %.4f / %.4f (naive conversion %.4f / %.4f)\n", "", fit.fit_mean, fit.fit_max,
-                fit.naive_mean, fit.naive_max);
+        fprintf(f, " *   %-12s dE2000 %.4f / %.4f (naive conversion %.4f / %.4f)\n", "", fit->fit_mean, fit->fit_max,
+                fit->naive_mean, fit->naive_max);
     }
     fprintf(f, " */\n");
 }

@@ -43,10 +43,8 @@ int cmd_bench(int argc, char **argv)
     static const char *const options[] = {"--scene", "--material", "--nk", "--model", "--type", "--data", "--count",
                                           "--runs", "--targets", "--help", NULL};
     const char *v;
-    scene sc;
-    gen_context *g = NULL;
-    spectrum *s = NULL;
-    material_params p;
+    static scene sc; /* large; the one run of the command */
+    encoded_scene es;
     for (i = 1; i < argc; i++) {
         const char *o = argv[i];
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
@@ -130,26 +128,24 @@ int cmd_bench(int argc, char **argv)
         names[m] = NULL;
         return cli_unknown(WHERE, "model (of the scene)", only_model, names);
     }
-    if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
-        status = cli_oom(WHERE);
-        goto done;
-    }
-    if ((status = gen_context_load(data_dir(dir_option), sc.space, g)))
-        goto done;
-    g->gamut = sc.gamut;
-    if ((status = derive_parameters(g, &source, sc.sigma, sc.n1, s, &p)))
-        goto done;
+    /* the scene's models on the one material */
+    if (strlen(source.id) >= sizeof sc.materials[0] || (nk_file && strlen(nk_file) >= sizeof sc.material_file[0]))
+        return cli_error(WHERE, "expected a material id of at most %d bytes and a path of at most %d",
+                         (int)sizeof sc.materials[0] - 1, (int)sizeof sc.material_file[0] - 1);
+    strcpy(sc.materials[0], source.id);
+    strcpy(sc.material_file[0], nk_file ? nk_file : "");
+    sc.material_count = 1;
+    sc.film_count = 0;
+    sc.film_n = source.film_n;
+    if ((status = encode_scene(&sc, NULL, WHERE, dir_option, &es)))
+        return status;
     if (runs > 0)
         printf("model,type,ns_per_rgb_eval\n");
     for (m = 0; m < sc.model_count; m++) {
-        scene_model sm;
         model_rgb q;
         if (only_model && strcmp(only_model, sc.models[m].name))
             continue;
-        if ((status = scene_model_prepare(&sc.models[m], sc.spacing,
-                                          s, g, &p, &sm)))
-            goto done;
-        q = scene_model_rgb(&sm);
+        q = scene_model_rgb(encoded_scene_model(&es, 0, m));
         for (t = 0; t < number_types_available; t++) {
             double ns;
             if (only_type && only_type != &number_types[t])
@@ -158,10 +154,7 @@ int cmd_bench(int argc, char **argv)
             if (runs > 0)
                 printf("%s,%s,%.3f\n", sc.models[m].name, number_types[t].name, ns);
         }
-        scene_model_free(&sm);
     }
-done:
-    free(g);
-    free(s);
+    encoded_scene_free(&es);
     return status;
 }

@@ -9,10 +9,9 @@
 #include "common/reference.h"
 #include "cli/material_options.h"
 #include "scene/scene.h"
-#include "scene/scene_eval.h"
+#include "scene/encoded_scene.h"
 
 #define WHERE "fresnel curve"
-#define MAX_MODELS 32
 
 
 /* --film N:D: 0, or -1 for anything but an index in [1, 4] and a thickness
@@ -35,10 +34,11 @@ static int parse_film(const char *val, double *n, double *d)
 int cmd_curve(int argc, char **argv)
 {
     material_options o;
-    gen_context *g = NULL;
-    spectrum *s = NULL;
-    material_params p;
-    scene_model models[MAX_MODELS];
+    scene *sc = NULL;
+    encoded_scene es;
+    const gen_context *g;
+    const spectrum *s;
+    const material_params *p;
     char *names = NULL, *tok;
     const char *model_list = model_curve_default;
     static const char *const options[] = {"--material", "--nk",      "--name",   "--format",      "--space",
@@ -47,6 +47,7 @@ int cmd_curve(int argc, char **argv)
     const number_type *type = &number_types[TYPE_F32];
     const char *val;
     int samples = 91, n_models = 0, i, r, status = 0, models_given = 0;
+    memset(&es, 0, sizeof es);
     double film_d = 0.0;
     film_stack film;
     lut_spacing spacing = LUT_GRAZING;
@@ -111,7 +112,7 @@ int cmd_curve(int argc, char **argv)
             }
         }
     }
-    if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s)) || !(names = malloc(strlen(model_list) + 1))) {
+    if (!(sc = malloc(sizeof *sc)) || !(names = malloc(strlen(model_list) + 1))) {
         status = cli_oom(WHERE);
         goto done;
     }
@@ -124,25 +125,26 @@ int cmd_curve(int argc, char **argv)
     }
     if (o.film_n > 0.0 && !models_given)
         model_list = model_curve_film;
-    if ((status = material_options_derive(WHERE, &o, g, s, &p)))
+    if ((status = material_options_scene(WHERE, &o, sc)))
         goto done;
+    sc->spacing = spacing;
+    strcpy(names, model_list);
+    for (tok = strtok(names, " \t,"); tok; tok = strtok(NULL, " \t,"))
+        if ((status = scene_add_model(sc, tok, WHERE)))
+            goto done;
+    n_models = sc->model_count;
+    if ((status = encode_scene(sc, NULL, WHERE, o.data, &es)))
+        goto done;
+    g = es.g;
+    s = es.spectra[0];
+    p = &es.params[0];
     film.n1 = o.n1;
     film.film = NULL;
     film.film_n = o.film_n;
     film.substrate = s;
-    strcpy(names, model_list);
-    for (tok = strtok(names, " \t,"); tok; tok = strtok(NULL, " \t,")) {
-        if (n_models == MAX_MODELS) {
-            status = cli_error(WHERE, "at most %d models", MAX_MODELS);
-            goto done;
-        }
-        if ((status = scene_model_prepare_name(tok, spacing, s, g, &p, &models[n_models])))
-            goto done;
-        n_models++;
-    }
     printf("theta_deg,cos,gt_r,gt_g,gt_b,unclipped_r,unclipped_g,unclipped_b");
     for (i = 0; i < n_models; i++)
-        printf(",%s_r,%s_g,%s_b", models[i].name, models[i].name, models[i].name);
+        printf(",%s_r,%s_g,%s_b", sc->models[i].name, sc->models[i].name, sc->models[i].name);
     printf("\n");
     for (r = 0; r < samples; r++) {
         double theta = 90.0 * r / (samples - 1), c = r == samples - 1 ? 0.0 : cos(theta * (3.14159265358979323846 / 180.0));
@@ -153,12 +155,12 @@ int cmd_curve(int argc, char **argv)
             for (m = 0; m < 3; m++)
                 gt[m] = ref_clamp(raw[m], 0.0, 1.0);
         } else {
-            ground_truth_gamut(s, g, &p, c, gt);
-            ground_truth(s, &g->cm, &g->cs, p.n1, c, raw);
+            ground_truth_gamut(s, g, p, c, gt);
+            ground_truth(s, &g->cm, &g->cs, p->n1, c, raw);
         }
         printf("%.6g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g", theta, c, gt[0], gt[1], gt[2], raw[0], raw[1], raw[2]);
         for (m = 0; m < n_models; m++) {
-            model_rgb q = scene_model_rgb(&models[m]);
+            model_rgb q = scene_model_rgb(encoded_scene_model(&es, 0, m));
             double v[3];
             q.d_nm = film_d;
             type->eval(&q, c, v);
@@ -167,10 +169,8 @@ int cmd_curve(int argc, char **argv)
         printf("\n");
     }
 done:
-    for (i = 0; i < n_models; i++)
-        scene_model_free(&models[i]);
+    encoded_scene_free(&es);
     free(names);
-    free(g);
-    free(s);
+    free(sc);
     return status;
 }

@@ -79,25 +79,34 @@ static void gen_usage(FILE *out)
 int cmd_gen(int argc, char **argv)
 {
     const char *manifest = NULL, *out_path = NULL, *dir_option = NULL, *tex_path = NULL;
-    int i, glsl = EMIT_C;
-    static const char *const options[] = {"-o", "--glsl", "--hlsl", "--glsl-texture", "--data", "--help", NULL};
+    const emit_backend *backend = emit_backend_find(NULL), *chosen;
+    const char *options[8 + 8];
+    int i, n = 0;
+    options[n++] = "-o";
+    for (i = 0; i < emit_backend_count && n < 8; i++)
+        if (emit_backends[i].option)
+            options[n++] = emit_backends[i].option;
+    options[n++] = "--glsl-texture";
+    options[n++] = "--data";
+    options[n++] = "--help";
+    options[n] = NULL;
 
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             gen_usage(stdout);
             return 0;
-        } else if (!strcmp(argv[i], "--glsl") || !strcmp(argv[i], "--hlsl")) {
-            int want = argv[i][2] == 'g' ? EMIT_GLSL : EMIT_HLSL;
-            if (glsl != EMIT_C && glsl != want)
-                return cli_error(WHERE, "--glsl and --hlsl: one back end per run (see fresnel gen --help)");
-            glsl = want;
+        } else if ((chosen = emit_backend_find(argv[i])) != NULL) {
+            if (backend->option && backend != chosen)
+                return cli_error(WHERE, "%s and %s: one back end per run (see fresnel gen --help)", backend->option,
+                                 chosen->option);
+            backend = chosen;
         } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data") || !strcmp(argv[i], "--glsl-texture")) {
-            const char *val = cli_option_value(WHERE, argc, argv, &i);
+            const char *opt = argv[i], *val = cli_option_value(WHERE, argc, argv, &i);
             if (!val)
                 return CLI_BAD_INPUT;
-            if (argv[i - 1][1] == 'o')
+            if (!strcmp(opt, "-o"))
                 out_path = val;
-            else if (argv[i - 1][2] == 'g')
+            else if (!strcmp(opt, "--glsl-texture"))
                 tex_path = val;
             else
                 dir_option = val;
@@ -111,11 +120,11 @@ int cmd_gen(int argc, char **argv)
     }
     if (!manifest || !out_path)
         return cli_error(WHERE, "usage: fresnel gen SCENE -o OUT.h (see fresnel gen --help)");
-    if (tex_path && glsl != EMIT_GLSL)
+    if (tex_path && !backend->texture)
         return cli_error(WHERE, "--glsl-texture needs --glsl (see fresnel gen --help)");
     /* Neither may be a file the run reads (the manifest, a material's file,
      * the data pack): cli_out_open refuses those. */
     if (tex_path && (!strcmp(tex_path, out_path) || cli_out_is_input(tex_path, out_path)))
         return cli_error(WHERE, "--glsl-texture and -o name the same file '%s'", tex_path);
-    return emit_scene(manifest, out_path, tex_path, dir_option, glsl);
+    return emit_scene(manifest, out_path, tex_path, dir_option, backend);
 }

@@ -8,6 +8,7 @@
 #include "2_derive/targets.h"
 #include "common/cli.h"
 #include "cli/material_options.h"
+#include "scene/encoded_scene.h"
 #include "scene/scene.h"
 
 #define WHERE "fresnel params"
@@ -88,35 +89,34 @@ static void print_target(const target *t, const target_fit *f, const gen_context
     }
 }
 
-static int print_targets(const char *which, const spectrum *s, const gen_context *g, const material_params *p)
+/* The scene's targets (one, or every one for "all"), as encode_scene
+ * fitted them. */
+static int print_targets(const char *which, const encoded_scene *es)
 {
-    double truth[TARGET_ANGLES][3], raw[TARGET_ANGLES][3];
-    target_anchor a, a_raw;
+    const gen_context *g = es->g;
+    double raw[TARGET_ANGLES][3];
+    target_anchor a_raw;
     lab_space ls;
     int i, out_of_gamut = 0;
     lab_space_init(&ls, &g->cs);
-    target_material_curve(s, g, p, 1, truth, &a);
-    target_material_curve(s, g, p, 0, raw, &a_raw);
+    target_material_curve(es->spectra[0], g, &es->params[0], 0, raw, &a_raw);
     for (i = 0; i < TARGET_ANGLES; i++)
         out_of_gamut |= !gamut_contains(raw[i]);
     if (strcmp(which, "all")) {
-        target_fit f;
-        const target *t = target_find(which);
-        target_fit_curve(t, &ls, (const double(*)[3])truth, &a, &f);
-        print_target(t, &f, g, &ls, (const double(*)[3])raw, out_of_gamut);
+        print_target(es->sc->targets[0], &es->fits[0], g, &ls, (const double(*)[3])raw, out_of_gamut);
         return 0;
     }
     printf("# every target's fitted and naive parameters through its own formula: CIEDE2000 over theta 0-90 deg in "
            "1 deg steps, against the ground truth under the gamut policy %s\n",
            gamut_policy_names[g->gamut]);
     printf("target,fitted_mean,fitted_max,naive_mean,naive_max%s\n", out_of_gamut ? ",fitted_mean_unclipped,fitted_max_unclipped" : "");
-    for (i = 0; i < target_count; i++) {
-        target_fit f;
-        target_fit_curve(&target_table[i], &ls, (const double(*)[3])truth, &a, &f);
-        printf("%s,%.4f,%.4f,%.4f,%.4f", target_table[i].name, f.fit_mean, f.fit_max, f.naive_mean, f.naive_max);
+    for (i = 0; i < es->sc->target_count; i++) {
+        const target_fit *f = &es->fits[i];
+        printf("%s,%.4f,%.4f,%.4f,%.4f", es->sc->targets[i]->name, f->fit_mean, f->fit_max, f->naive_mean,
+               f->naive_max);
         if (out_of_gamut) {
             double mean, max;
-            target_curve_de(&target_table[i], &ls, (const double(*)[3])raw, f.fitted, &mean, &max);
+            target_curve_de(es->sc->targets[i], &ls, (const double(*)[3])raw, f->fitted, &mean, &max);
             printf(",%.4f,%.4f", mean, max);
         }
         printf("\n");
@@ -128,11 +128,11 @@ static int print_targets(const char *which, const spectrum *s, const gen_context
 int cmd_params(int argc, char **argv)
 {
     material_options o;
-    gen_context *g = NULL;
-    spectrum *s = NULL;
-    material_params p;
+    scene *sc = NULL;
+    encoded_scene es;
+    const gen_context *g;
     const char *val, *for_target = NULL;
-    int i, status = 0;
+    int i, k, status = 0;
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
@@ -179,19 +179,28 @@ int cmd_params(int argc, char **argv)
         } else if (material_option(WHERE, argv[i - 1], val, &o) == CLI_BAD_INPUT)
             return CLI_BAD_INPUT;
     }
-    if (!(g = malloc(sizeof *g)) || !(s = malloc(sizeof *s))) {
+    memset(&es, 0, sizeof es);
+    if (!(sc = malloc(sizeof *sc))) {
         status = cli_oom(WHERE);
         goto done;
     }
-    if ((status = material_options_derive(WHERE, &o, g, s, &p)))
+    if ((status = material_options_scene(WHERE, &o, sc)))
         goto done;
+    if (for_target)
+        for (k = 0; k < target_count; k++)
+            if (!strcmp(for_target, "all") || !strcmp(for_target, target_table[k].name))
+                sc->targets[sc->target_count++] = &target_table[k];
+    if ((status = encode_scene(sc, NULL, WHERE, o.data, &es)))
+        goto done;
+    g = es.g;
     {
+        const material_params p = es.params[0];
         double ct_eta[3] = {p.ct_eta, p.ct_eta, p.ct_eta}, ct_kappa[3] = {p.ct_kappa, p.ct_kappa, p.ct_kappa};
         printf("# material %s (%s; %s), measured %.1f-%.1f nm\n", p.info.id, p.info.name, p.info.dataset,
                p.measured_lo, p.measured_hi);
         printf("# space %s, sigma %g nm, n1 %g\n", g->cs.id, p.sigma, p.n1);
         if (for_target) {
-            status = print_targets(for_target, s, g, &p);
+            status = print_targets(for_target, &es);
             goto done;
         }
         printf("parameter,r,g,b\n");
@@ -216,7 +225,7 @@ int cmd_params(int argc, char **argv)
         row("cook_torrance_kappa", ct_kappa);
     }
 done:
-    free(g);
-    free(s);
+    encoded_scene_free(&es);
+    free(sc);
     return status;
 }

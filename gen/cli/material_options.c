@@ -97,10 +97,8 @@ int material_option(const char *where, const char *opt, const char *val, materia
     return 1;
 }
 
-int material_options_derive(const char *where, material_options *o, gen_context *g, spectrum *s,
-                            material_params *p)
+int material_options_scene(const char *where, material_options *o, scene *sc)
 {
-    material_source m;
     if (o->material && o->nk)
         return cli_error(where, "expected --material ID or --nk FILE, not both");
     if (!o->material && !o->nk)
@@ -110,19 +108,28 @@ int material_options_derive(const char *where, material_options *o, gen_context 
     if (o->material && strpbrk(o->material, "./"))
         return cli_error(where, "--material takes a data-pack id, got '%s'; a file of your own is read with --nk FILE",
                          o->material);
-    if (gen_context_load(data_dir(o->data), o->space, g))
-        return CLI_BAD_INPUT;
-    g->gamut = o->gamut;
-    m.id = o->material;
-    m.path = o->nk;
-    m.format = o->format;
-    m.film_n = o->film_n;
+    scene_defaults(sc);
+    if (strlen(o->space) >= sizeof sc->space)
+        return cli_error(where, "unknown colour space '%s'", o->space);
+    strcpy(sc->space, o->space);
+    sc->sigma = o->sigma;
+    sc->n1 = o->n1;
+    sc->gamut = o->gamut;
+    sc->film_n = o->film_n;
+    sc->material_count = 1;
     if (o->nk) {
         if (o->name)
             snprintf(o->id, sizeof o->id, "%s", o->name);
         else
             material_id_from_path(o->nk, o->id);
-        m.id = o->id;
-    }
-    return derive_parameters(g, &m, o->sigma, o->n1, s, p);
+        if (strlen(o->nk) >= sizeof sc->material_file[0])
+            return cli_error(where, "--nk: a path of at most %d bytes expected", (int)sizeof sc->material_file[0] - 1);
+        strcpy(sc->material_file[0], o->nk);
+        sc->material_format[0] = o->format;
+        snprintf(sc->materials[0], sizeof sc->materials[0], "%s", o->id);
+    } else if (strlen(o->material) >= sizeof sc->materials[0])
+        return cli_error(where, "unknown material '%s' (fresnel materials lists the ids)", o->material);
+    else
+        strcpy(sc->materials[0], o->material);
+    return 0;
 }

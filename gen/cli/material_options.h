@@ -6,6 +6,7 @@
 
 #include "2_derive/derive.h"
 #include "model/number_type.h"
+#include "scene/scene.h"
 
 typedef struct material_options {
     const char *material;
@@ -33,9 +34,10 @@ int type_option(const char *where, const char *val, const number_type **out);
 /* The shared options' names, NULL-terminated (with --help). */
 extern const char *const material_option_names[];
 
-/* Load the colour space and derive the material's parameters; 0 or
- * CLI_BAD_INPUT. */
-int material_options_derive(const char *where, material_options *o, gen_context *g, spectrum *s,
-                            material_params *p);
+/* The options as a scene of one material and no models (encode_scene
+ * takes it through the stages; the caller adds its models with
+ * scene_add_model): 0, or CLI_BAD_INPUT after a message for options that
+ * name no material or two. */
+int material_options_scene(const char *where, material_options *o, scene *sc);
 
 #endif

@@ -174,8 +174,8 @@ static double h_internal(const model_params *m, double c)
 #define M (q->mat)
 #define L (q->lut)
 #define E (q->def->eta)
-#define ETA(q) ((q)->mat->eta[(q)->def->eta])
-#define KAPPA(q) ((q)->mat->kappa[(q)->def->eta])
+#define ETA(q) encoded_eta((q)->mat, (q)->def->eta, 0)
+#define KAPPA(q) encoded_eta((q)->mat, (q)->def->eta, 1)
 static double ch3(fresnel_rgb v, int ch) { return ch == 0 ? v.r : (ch == 1 ? v.g : v.b); }
 
 static fresnel_rgb r_schlick(const model_rgb *q, float c) { return fresnel_schlick_rgb(M->f0, c); }
@@ -314,10 +314,10 @@ static double rh_film(const model_rgb *q, int ch, double c)
 }
 #define HC(fn_args) return (double)(fn_args)
 static double rh_schlick(const model_rgb *q, int ch, double c) { HC(fresnel_schlick_f16(M->h_f0[ch], H(c))); }
-static double rh_lsk(const model_rgb *q, int ch, double c) { HC(fresnel_lsk_f16(M->h_eta[E][ch], M->h_kappa[E][ch], H(c))); }
+static double rh_lsk(const model_rgb *q, int ch, double c) { HC(fresnel_lsk_f16(encoded_eta_f16(M, E, 0)[ch], encoded_eta_f16(M, E, 1)[ch], H(c))); }
 static double rh_lsk_comp(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_lsk_comp_f16(M->h_eta[E][ch], M->h_kappa[E][ch], M->h_lsk_a[ch], M->h_lsk_alpha[ch], H(c)));
+    HC(fresnel_lsk_comp_f16(encoded_eta_f16(M, E, 0)[ch], encoded_eta_f16(M, E, 1)[ch], M->h_lsk_a[ch], M->h_lsk_alpha[ch], H(c)));
 }
 static double rh_f82(const model_rgb *q, int ch, double c) { HC(fresnel_f82_f16(M->h_f0[ch], M->h_f82[ch], H(c))); }
 static double rh_gulbrandsen(const model_rgb *q, int ch, double c)
@@ -330,11 +330,11 @@ static double rh_cook_torrance(const model_rgb *q, int ch, double c)
 }
 static double rh_conductor(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_conductor_f16(M->h_eta[E][ch], M->h_kappa[E][ch], H(c)));
+    HC(fresnel_conductor_f16(encoded_eta_f16(M, E, 0)[ch], encoded_eta_f16(M, E, 1)[ch], H(c)));
 }
 static double rh_approx(const model_rgb *q, int ch, double c)
 {
-    HC(fresnel_approx_conductor_f16(M->h_eta[E][ch], M->h_kappa[E][ch], H(c)));
+    HC(fresnel_approx_conductor_f16(encoded_eta_f16(M, E, 0)[ch], encoded_eta_f16(M, E, 1)[ch], H(c)));
 }
 static double rh_lut(const model_rgb *q, int ch, double c) { HC(fresnel_lut_f16(L->f16 + ch * L->n, L->n, H(c))); }
 static double rh_lut_lin(const model_rgb *q, int ch, double c)

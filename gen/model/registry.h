@@ -17,6 +17,7 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "3_encode/encode.h"
+#include "catalog/parameters.h"
 
 /* Where a row is offered. */
 #define MODEL_EVAL 1u  /* a function of eta, kappa, c: `fresnel eval`, `extremes`, the bound tests */
@@ -26,25 +27,8 @@
 #define MODEL_FILM 16u /* the thin film (fresnel_film.h): reads the material's film (encoded_film) at
                         * model_rgb's thickness; a scene with it names the film's index */
 
-/* The derived parameters (material_params) a scene model reads, one bit per
- * group, in the order the C and GLSL emitters write them (emit_header.c). */
-#define MP_F0 0x01u
-#define MP_F82 0x02u
-#define MP_ETA_FIT 0x04u
-#define MP_LSK 0x08u
-#define MP_ETA_GAUSS 0x10u
-#define MP_ETA_POINT 0x20u
-#define MP_GULB 0x40u
-#define MP_CT 0x80u
-/* Prepared Q15 constants (fresnel_fixed.h) a scene model reads, in the order
- * the Q15 emitter writes them (emit_fixed.c), after the MP_ groups. */
-#define MQ_LSK 0x01u
-#define MQ_LSK_COMP 0x02u
-#define MQ_IOR 0x04u
-#define MQ_IOR_GAUSS 0x08u
-#define MQ_IOR_POINT 0x10u
-#define MQ_NK 0x20u
-#define MQ_CT 0x40u
+/* The derived parameters a scene model reads (MP_*) and the prepared Q15
+ * constants (MQ_*): catalog/parameters.h. */
 
 /* The most nodes a scene LUT has (scene.h: SCENE_LUT_MAX). */
 #define MODEL_LUT_NODES_MAX 256

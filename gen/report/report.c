@@ -317,32 +317,35 @@ static void write_approaches(report_run *r, FILE *f)
  * sampling, RMS CIEDE2000 over 91 angles. */
 static int compute_hoffman(report_run *r)
 {
-    gen_context *g = malloc(sizeof *g);
-    spectrum *s = malloc(sizeof *s);
+    scene *sc = malloc(sizeof *sc);
+    encoded_scene es;
     lab_space ls;
     int i, a, ch, status = 0;
-    if (!g || !s) {
+    memset(&es, 0, sizeof es);
+    if (!sc) {
         status = cli_oom(WHERE);
         goto done;
     }
-    if ((status = gen_context_load(r->g->dir, "acescg", g)))
+    scene_defaults(sc);
+    strcpy(sc->space, "acescg");
+    for (i = 0; i < REPORT_HOFFMAN; i++)
+        strcpy(sc->materials[i], hoffman[i].id);
+    sc->material_count = REPORT_HOFFMAN;
+    if ((status = encode_scene(sc, NULL, WHERE, r->g->dir, &es)))
         goto done;
-    lab_space_init(&ls, &g->cs);
+    lab_space_init(&ls, &es.g->cs);
     for (i = 0; i < REPORT_HOFFMAN; i++) {
-        material_params p;
+        const material_params *p = &es.params[i];
         double gt[REPORT_ANGLES][3], sch[REPORT_ANGLES][3], fit[REPORT_ANGLES][3], ps[REPORT_ANGLES][3];
         double mean, max;
-        material_source pack = {hoffman[i].id, NULL, NK_FORMAT_AUTO, 0.0};
-        if ((status = derive_parameters(g, &pack, 25.0, 1.0, s, &p)))
-            goto done;
-        r->hoffman_in_gamut[i] = gamut_contains(p.f0_unclamped);
+        r->hoffman_in_gamut[i] = gamut_contains(p->f0_unclamped);
         for (a = 0; a < REPORT_ANGLES; a++) {
             double c = report_cos(a);
-            ground_truth_gamut(s, g, &p, c, gt[a]);
+            ground_truth_gamut(es.spectra[i], es.g, p, c, gt[a]);
             for (ch = 0; ch < 3; ch++) {
-                sch[a][ch] = ref_schlick(p.f0[ch], c);
-                fit[a][ch] = ref_conductor(p.eta_fit[ch], p.kappa_fit[ch], c);
-                ps[a][ch] = ref_conductor(p.eta_point[ch], p.kappa_point[ch], c);
+                sch[a][ch] = ref_schlick(p->f0[ch], c);
+                fit[a][ch] = ref_conductor(p->eta_fit[ch], p->kappa_fit[ch], c);
+                ps[a][ch] = ref_conductor(p->eta_point[ch], p->kappa_point[ch], c);
             }
         }
         report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])sch, &mean, &r->hoffman_rms[i][0], &max);
@@ -350,8 +353,8 @@ static int compute_hoffman(report_run *r)
         report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])ps, &mean, &r->hoffman_rms[i][2], &max);
     }
 done:
-    free(g);
-    free(s);
+    encoded_scene_free(&es);
+    free(sc);
     return status;
 }
 
@@ -549,8 +552,11 @@ int report_write(const report_options *o)
             break;
         }
     }
-    if (!status)
-        status = scene_load(scene_path, &r.sc);
+    if (!status && !(status = scene_load(scene_path, &r.full))) {
+        if (o->gamut_given)
+            r.full.gamut = o->gamut;
+        r.sc = r.full;
+    }
     if (status) {
         for (i = 0; i < r.speed_count; i++)
             free((void *)r.speed[i]);
@@ -562,39 +568,32 @@ int report_write(const report_options *o)
                                      "type; its targets table measures them itself");
     if ((status = report_film_take(&r, scene_path)))
         goto done;
-    r.g = malloc(sizeof *r.g);
     r.mats = calloc((size_t)r.sc.material_count, sizeof *r.mats);
     r.cells = calloc((size_t)r.sc.material_count * r.sc.model_count * number_types_available, sizeof *r.cells);
     r.ns = malloc((size_t)r.sc.model_count * number_types_available * sizeof *r.ns);
     r.instr = malloc((size_t)r.sc.model_count * number_types_available * sizeof *r.instr);
     sig_de = calloc((size_t)r.sc.material_count, sizeof *sig_de);
     sig_err = calloc((size_t)r.sc.material_count, sizeof *sig_err);
-    if (!r.g || !r.mats || !r.cells || !r.ns || !r.instr || !sig_de || !sig_err) {
+    if (!r.mats || !r.cells || !r.ns || !r.instr || !sig_de || !sig_err) {
         status = cli_oom(WHERE);
         goto done;
     }
-    if ((status = gen_context_load(data_dir(o->data_dir), r.sc.space, r.g)))
+    if ((status = encode_scene(&r.full, scene_path, WHERE, o->data_dir, &r.es)))
         goto done;
-    r.g->gamut = o->gamut_given ? o->gamut : r.sc.gamut;
+    r.g = r.es.g;
     lab_space_init(&r.ls, &r.g->cs);
     for (i = 0; i < r.sc.material_count; i++) {
         report_material *rm = &r.mats[i];
-        char where[1100];
-        material_source source = scene_material(&r.sc, i);
-        snprintf(where, sizeof where, "%s:%d", scene_path, r.sc.material_line[i]);
-        if (!source.path && (status = material_lookup(r.g->dir, r.sc.materials[i], &rm->p.info, where)))
-            goto done;
-        if (!(rm->s = malloc(sizeof *rm->s)) || !(rm->models = calloc((size_t)r.sc.model_count, sizeof *rm->models))) {
+        if (!(rm->models = calloc((size_t)r.sc.model_count + 1, sizeof *rm->models))) {
             status = cli_oom(WHERE);
             goto done;
         }
-        if ((status = derive_parameters(r.g, &source, r.sc.sigma, r.sc.n1, rm->s, &rm->p)))
-            goto done;
+        rm->p = r.es.params[i];
+        rm->s = r.es.spectra[i];
         report_ground_truth(r.g, &r.ls, rm);
         for (m = 0; m < r.sc.model_count; m++) {
-            lut_spacing sp = r.sc.spacing;
-            if ((status = scene_model_prepare(&r.sc.models[m], sp, rm->s, r.g, &rm->p, &rm->models[m])))
-                goto done;
+            /* the report's models are the scene's without the film's row */
+            rm->models[m] = *encoded_scene_model(&r.es, i, r.film.present && m >= r.film.row ? m + 1 : m);
             for (t = 0; t < number_types_available; t++)
                 report_measure(&r.ls, rm, m, &number_types[t], report_cell_at(&r, i, m, t));
         }
@@ -680,18 +679,14 @@ done:
     if (status && made_dir)
         rmdir(r.out_dir);
     if (r.mats)
-        for (i = 0; i < r.sc.material_count; i++) {
-            for (m = 0; r.mats[i].models && m < r.sc.model_count; m++)
-                scene_model_free(&r.mats[i].models[m]);
+        for (i = 0; i < r.sc.material_count; i++)
             free(r.mats[i].models);
-            free(r.mats[i].s);
-        }
     report_film_free(&r);
     free(r.mats);
     free(r.cells);
     free(r.ns);
     free(r.instr);
-    free(r.g);
+    encoded_scene_free(&r.es);
     for (i = 0; i < r.speed_count; i++)
         free((void *)r.speed[i]);
     free(sig_de);

@@ -11,7 +11,7 @@
 #include "2_derive/derive.h"
 #include "model/number_type.h"
 #include "scene/scene.h"
-#include "scene/scene_eval.h"
+#include "scene/encoded_scene.h"
 
 #define REPORT_ANGLES 91 /* theta = 0, 1, ..., 90 degrees */
 #define REPORT_MAX_TYPES 4
@@ -29,7 +29,7 @@ typedef struct report_material {
     /* CIEDE2000 mean and max against gt_raw of each policy's own curve
      * (gamut_policy order: map, clip, keep). */
     double policy_de_mean[3], policy_de_max[3];
-    scene_model *models;             /* one per report model: the encoder's constants and tables */
+    scene_model *models;             /* one per report model: views of the encoded scene's (not freed) */
 } report_material;
 
 /* The report measures every available number type (model/number_type.h:
@@ -58,8 +58,9 @@ typedef struct report_film_cell {
 typedef struct report_film {
     int present;        /* the scene has the thin-film model */
     scene_entry entry;  /* its entry, taken out of the scene's models */
+    int row;            /* its index in the encoded scene's models */
     double *film_n;     /* [material] the film's index */
-    scene_model *models; /* [material] */
+    scene_model *models; /* [material]: views of the encoded scene's (not freed) */
     report_film_cell *cells; /* [material][type] */
     long samples;            /* angle x thickness samples per material */
     double ns[NUMBER_TYPES], schlick_ns; /* ns per RGB evaluation; NaN when not timed */
@@ -68,8 +69,10 @@ typedef struct report_film {
 /* One run of the report: the scene, its materials and every measurement. */
 typedef struct report_run {
     const char *out_dir;
-    scene sc;
-    gen_context *g;
+    scene full;         /* the scene as its manifest says (and --gamut), which es encodes */
+    scene sc;           /* the models of angle alone: full without the thin-film row */
+    encoded_scene es;
+    gen_context *g;     /* es.g */
     lab_space ls;
     report_material *mats;
     report_cell *cells; /* [material][model][type] */

@@ -40,6 +40,7 @@ int report_film_take(report_run *r, const char *scene_path)
                          r->sc.models[m].name);
     }
     f->entry = r->sc.models[m];
+    f->row = m;
     f->present = 1;
     f->film_n = calloc((size_t)r->sc.material_count, sizeof *f->film_n);
     f->models = calloc((size_t)r->sc.material_count, sizeof *f->models);
@@ -59,9 +60,6 @@ int report_film_take(report_run *r, const char *scene_path)
 void report_film_free(report_run *r)
 {
     report_film *f = &r->film;
-    int i;
-    for (i = 0; f->models && i < r->sc.material_count; i++)
-        scene_model_free(&f->models[i]);
     free(f->models);
     free(f->film_n);
     free(f->cells);
@@ -81,13 +79,12 @@ int report_film_measure(report_run *r, int i)
     material_params p = rm->p;
     film_stack stack;
     model_rgb q;
-    int a, k, t, nd = r->sc.film_d_lo == r->sc.film_d_hi ? 1 : FILM_THICKNESSES, status;
+    int a, k, t, nd = r->sc.film_d_lo == r->sc.film_d_hi ? 1 : FILM_THICKNESSES;
     long n = 0;
     if (!f->present)
         return 0;
     p.film_n = f->film_n[i];
-    if ((status = scene_model_prepare(&f->entry, r->sc.spacing, rm->s, r->g, &p, &f->models[i])))
-        return status;
+    f->models[i] = *encoded_scene_model(&r->es, i, f->row);
     q = scene_model_rgb(&f->models[i]);
     stack.n1 = p.n1;
     stack.film = NULL;

@@ -149,6 +149,16 @@ static char *next_token(char **cursor)
 
 int scene_choice(const char *const *names, const char *name) { return table_index(names, name); }
 
+int scene_add_model(scene *s, const char *name, const char *where)
+{
+    if (s->model_count == SCENE_MAX_MODELS)
+        return cli_error(where, "at most %d models", SCENE_MAX_MODELS);
+    if (scene_entry_parse(name, s->spacing, &s->models[s->model_count]))
+        return cli_error(where, "unknown model '%s' (fresnel gen --help lists the models)", name);
+    s->model_count++;
+    return 0;
+}
+
 int scene_entry_parse(const char *name, lut_spacing spacing, scene_entry *e)
 {
     int i;
@@ -424,9 +434,12 @@ static int parse_value(const char *path, int line, int key, char *value, scene *
     }
 }
 
-static void set_defaults(scene *s)
+void scene_defaults(scene *s)
 {
+    int i;
     memset(s, 0, sizeof *s);
+    for (i = 0; i < SCENE_MAX_MATERIALS; i++)
+        s->material_format[i] = NK_FORMAT_AUTO;
     strcpy(s->space, "srgb");
     s->spacing = LUT_GRAZING;
     s->gamut = GAMUT_MAP;
@@ -521,7 +534,7 @@ int scene_load(const char *path, scene *out)
     size_t cap = 0;
     ssize_t len;
     int line = 0, rc = 0, read_errno, errors = 0, m;
-    set_defaults(out);
+    scene_defaults(out);
     if ((rc = cli_open_input(path, &f)))
         return rc;
     for (;;) {
@@ -606,7 +619,7 @@ material_source scene_material(const scene *sc, int i)
     material_source m;
     m.id = sc->materials[i];
     m.path = sc->material_file[i][0] ? sc->material_file[i] : NULL;
-    m.format = NK_FORMAT_AUTO;
+    m.format = sc->material_format[i];
     m.film_n = scene_film_n(sc, i);
     return m;
 }

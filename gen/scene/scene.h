@@ -162,6 +162,7 @@ typedef struct scene {
     int material_count; /* in the order the file names them */
     char materials[SCENE_MAX_MATERIALS][SCENE_ID_SIZE];
     char material_file[SCENE_MAX_MATERIALS][SCENE_PATH_SIZE]; /* "" for the data pack's */
+    nk_format material_format[SCENE_MAX_MATERIALS];           /* a user's file's format (a manifest's: auto) */
     int material_line[SCENE_MAX_MATERIALS];
     int model_count;
     scene_entry models[SCENE_MAX_MODELS];
@@ -189,6 +190,16 @@ typedef struct scene {
  * one message; *out is filled on success and unspecified on error. Lists
  * keep the file's order. */
 int scene_load(const char *path, scene *out);
+
+/* A scene with every key at its default and nothing in it: what a command
+ * line that names one material and some models fills in (--material or
+ * --nk, --models, --space, ...), and the report's tables of other
+ * materials. */
+void scene_defaults(scene *out);
+/* Append the model named name (scene_entry_parse, at out->spacing): 0, or
+ * CLI_BAD_INPUT after a message (where) for a name no scene model answers
+ * to or a full list. */
+int scene_add_model(scene *out, const char *name, const char *where);
 
 /* 1 if name is a valid value of the name key, else 0. */
 int scene_name_ok(const char *name);

@@ -24,7 +24,7 @@
 #include "4_emit/emit_glsl.h"
 #include "bench/bench.h"
 #include "report/report.h"
-#include "scene/scene_eval.h"
+#include "scene/encoded_scene.h"
 
 #define WHERE "fresnel viewer"
 
@@ -118,17 +118,17 @@ static int film_reference(const emit_loaded *l, int i, double *rgb)
 {
     film_stack stack;
     int k, step;
-    stack.n1 = l->params[i].n1;
+    stack.n1 = l->es.params[i].n1;
     stack.film = NULL;
-    stack.film_n = l->params[i].film_n;
-    stack.substrate = l->spectra[i];
+    stack.film_n = l->es.params[i].film_n;
+    stack.substrate = l->es.spectra[i];
     for (k = 0; k < VIEWER_FILM_REF_NODES; k++) {
         double x = (double)k / (VIEWER_FILM_REF_NODES - 1);
         film_optics_table *t = film_truth_prepare(&stack, x * x);
         if (!t)
             return -1;
         for (step = 0; step < VIEWER_FILM_STEPS; step++)
-            film_truth_at(t, &l->g->cm, &l->g->cs, viewer_film_d(l->sc, step),
+            film_truth_at(t, &l->es.g->cm, &l->es.g->cs, viewer_film_d(l->sc, step),
                           rgb + 3 * (step * VIEWER_FILM_REF_NODES + k));
         free(t);
     }
@@ -187,15 +187,11 @@ static int write_matrix(FILE *f, const gen_context *g, const lab_space *ls, cons
  * cross-count` output, the Q15 function's instructions on the Cortex-M0. */
 static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_path)
 {
-    scene_model sm;
-    double ns = NAN, m0 = NAN;
-    if (!scene_model_prepare(&l->sc->models[m], l->sc->spacing, l->spectra[0], l->g, &l->params[0], &sm)) {
-        model_rgb q = scene_model_rgb(&sm);
-        ns = report_time(&number_types[TYPE_F32], &q, 1 << 16, 3);
-        if (cross_path && sm.def->cross_row)
-            m0 = report_m0_count(cross_path, sm.def->cross_row);
-        scene_model_free(&sm);
-    }
+    const scene_model *sm = encoded_scene_model(&l->es, 0, m);
+    model_rgb q = scene_model_rgb(sm);
+    double ns = report_time(&number_types[TYPE_F32], &q, 1 << 16, 3), m0 = NAN;
+    if (cross_path && sm->def->cross_row)
+        m0 = report_m0_count(cross_path, sm->def->cross_row);
     char cost[512] = "";
     size_t used = 0;
     if (!isnan(ns))
@@ -251,7 +247,7 @@ static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
         fprintf(f, "%s%.9g", step ? "," : "", (double)(float)viewer_film_d(sc, step));
     fprintf(f, "],\"n\":[");
     for (i = 0; i < sc->material_count; i++)
-        fprintf(f, "%s%g", i ? "," : "", l->params[i].film_n);
+        fprintf(f, "%s%g", i ? "," : "", l->es.params[i].film_n);
     fprintf(f, "],\n\"reference\":[");
     for (i = 0; i < sc->material_count; i++) {
         if (film_reference(l, i, ref)) {
@@ -267,22 +263,18 @@ static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
      * degree x every step against the truth clipped per channel */
     fprintf(f, "],\n\"curves\":[");
     for (i = 0; i < sc->material_count; i++) {
-        scene_model sm;
+        const scene_model *sm = encoded_scene_model(&l->es, i, fm);
         film_stack stack;
         double sum = 0.0, max = 0.0;
-        if (scene_model_prepare(&sc->models[fm], sc->spacing, l->spectra[i], l->g, &l->params[i], &sm)) {
-            free(de);
-            return CLI_BAD_INPUT;
-        }
-        stack.n1 = l->params[i].n1;
+        stack.n1 = l->es.params[i].n1;
         stack.film = NULL;
-        stack.film_n = l->params[i].film_n;
-        stack.substrate = l->spectra[i];
+        stack.film_n = l->es.params[i].film_n;
+        stack.substrate = l->es.spectra[i];
         fprintf(f, "%s[", i ? "," : "");
         for (step = 0; step < VIEWER_FILM_STEPS; step++) {
             fprintf(f, "%s[", step ? "," : "");
             for (a = 0; a < REPORT_ANGLES; a++) {
-                model_rgb q = scene_model_rgb(&sm);
+                model_rgb q = scene_model_rgb(sm);
                 fresnel_rgb v;
                 double d[3], truth[3], l1[3], l2[3], de;
                 q.d_nm = viewer_film_d(sc, step);
@@ -290,7 +282,7 @@ static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
                 d[0] = v.r, d[1] = v.g, d[2] = v.b;
                 fprintf(f, "%s", a ? "," : "");
                 put_rgb(f, d);
-                film_truth(&stack, &l->g->cm, &l->g->cs, report_cos(a), q.d_nm, truth);
+                film_truth(&stack, &l->es.g->cm, &l->es.g->cs, report_cos(a), q.d_nm, truth);
                 for (ch = 0; ch < 3; ch++)
                     truth[ch] = ref_clamp(truth[ch], 0.0, 1.0);
                 lab_space_lab(ls, truth, l1);
@@ -302,7 +294,6 @@ static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
             fprintf(f, "]");
         }
         fprintf(f, "]");
-        scene_model_free(&sm);
         de[2 * i] = sum / (VIEWER_FILM_STEPS * REPORT_ANGLES);
         de[2 * i + 1] = max;
     }
@@ -317,7 +308,7 @@ static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
 static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, const char *tex)
 {
     const scene *sc = l->sc;
-    const gen_context *g = l->g;
+    const gen_context *g = l->es.g;
     lab_space ls;
     int i, m, k;
     lab_space_init(&ls, &g->cs);
@@ -337,7 +328,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
         fprintf(f, "%s{\"id\":", i ? "," : "");
         put_json_string(f, sc->materials[i]);
         fputs(",\"name\":", f);
-        put_json_string(f, l->params[i].info.name);
+        put_json_string(f, l->es.params[i].info.name);
         fputs("}", f);
     }
     fprintf(f, "],\n\"models\":[");
@@ -355,7 +346,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
     for (i = 0; i < sc->material_count; i++)
         for (k = 0; k < VIEWER_REF_NODES; k++) {
             double x = (double)k / (VIEWER_REF_NODES - 1), rgb[3];
-            ground_truth(l->spectra[i], &g->cm, &g->cs, l->params[i].n1, x * x, rgb);
+            ground_truth(l->es.spectra[i], &g->cm, &g->cs, l->es.params[i].n1, x * x, rgb);
             fprintf(f, "%s%.9g,%.9g,%.9g", i + k ? "," : "", rgb[0], rgb[1], rgb[2]);
         }
     fprintf(f, "],\n\"unclipped\":[");
@@ -363,7 +354,7 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
         fprintf(f, "%s[", i ? "," : "");
         for (k = 0; k < VIEWER_ANGLES; k++) {
             double rgb[3];
-            ground_truth(l->spectra[i], &g->cm, &g->cs, l->params[i].n1, viewer_cos(k), rgb);
+            ground_truth(l->es.spectra[i], &g->cm, &g->cs, l->es.params[i].n1, viewer_cos(k), rgb);
             fprintf(f, "%s", k ? "," : "");
             put_rgb(f, rgb);
         }
@@ -373,14 +364,12 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
     for (i = 0; i < sc->material_count; i++) {
         fprintf(f, "%s[", i ? "," : "");
         for (m = 0; m < sc->model_count; m++) {
-            scene_model sm;
-            if (scene_model_prepare(&sc->models[m], sc->spacing, l->spectra[i], g, &l->params[i], &sm))
-                return CLI_BAD_INPUT;
+            const scene_model *sm = encoded_scene_model(&l->es, i, m);
             fprintf(f, "%s[", m ? "," : "");
             for (k = 0; k < VIEWER_ANGLES; k++) {
                 float v[3];
                 double d[3];
-                scene_model_eval(&sm, (float)viewer_cos(k), v);
+                scene_model_eval(sm, (float)viewer_cos(k), v);
                 d[0] = v[0];
                 d[1] = v[1];
                 d[2] = v[2];
@@ -388,7 +377,6 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
                 put_rgb(f, d);
             }
             fprintf(f, "]");
-            scene_model_free(&sm);
         }
         fprintf(f, "]");
     }
@@ -400,20 +388,17 @@ static int write_data(FILE *f, const emit_loaded *l, const char *cross_path, con
         for (m = 0; m < sc->model_count; m++) {
             static double gt[REPORT_ANGLES][3], raw[REPORT_ANGLES][3], v[REPORT_ANGLES][3];
             double mean, rms, max, raw_mean, raw_max;
-            scene_model sm;
+            const scene_model *sm = encoded_scene_model(&l->es, i, m);
             int a;
-            if (scene_model_prepare(&sc->models[m], sc->spacing, l->spectra[i], g, &l->params[i], &sm))
-                return CLI_BAD_INPUT;
             for (a = 0; a < REPORT_ANGLES; a++) {
                 float rgb[3];
-                ground_truth_gamut(l->spectra[i], g, &l->params[i], report_cos(a), gt[a]);
-                ground_truth(l->spectra[i], &g->cm, &g->cs, l->params[i].n1, report_cos(a), raw[a]);
-                scene_model_eval(&sm, (float)report_cos(a), rgb);
+                ground_truth_gamut(l->es.spectra[i], g, &l->es.params[i], report_cos(a), gt[a]);
+                ground_truth(l->es.spectra[i], &g->cm, &g->cs, l->es.params[i].n1, report_cos(a), raw[a]);
+                scene_model_eval(sm, (float)report_cos(a), rgb);
                 v[a][0] = rgb[0];
                 v[a][1] = rgb[1];
                 v[a][2] = rgb[2];
             }
-            scene_model_free(&sm);
             report_curve_de(&ls, (const double(*)[3])gt, (const double(*)[3])v, &mean, &rms, &max);
             report_curve_de(&ls, (const double(*)[3])raw, (const double(*)[3])v, &raw_mean, &rms, &raw_max);
             fprintf(f, "%s{\"mean\":%.6g,\"max\":%.6g,\"raw_mean\":%.6g,\"raw_max\":%.6g}", m ? "," : "", mean, max,
@@ -489,7 +474,7 @@ int viewer_write(const char *manifest, const char *out_dir, const char *dir_opti
     size_t glsl_len = 0, tex_len = 0;
     FILE *mem, *tex_mem;
     int status, m, made_dir = 0;
-    if ((status = emit_load(manifest, dir_option, 1, &l)))
+    if ((status = emit_load(manifest, dir_option, emit_backend_find("--glsl"), &l)))
         return status;
     if (!(mem = open_memstream(&glsl, &glsl_len)) || !(tex_mem = open_memstream(&tex, &tex_len))) {
         if (mem)

@@ -1,0 +1,301 @@
+/* A scene through stages 1-3, once (encoded_scene.h). */
+#include "scene/encoded_scene.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/cli.h"
+#include "common/reference.h"
+
+#define WHERE_SIZE 1100
+
+/* Where a message about the scene's line `line` points: manifest:line, or
+ * the command's name for a command line's scene. */
+static const char *where_at(const encoded_scene *es, int line, char where[WHERE_SIZE])
+{
+    if (!es->manifest)
+        return es->where;
+    snprintf(where, WHERE_SIZE, "%s:%d", es->manifest, line);
+    return where;
+}
+
+/* A model's table and film for a material whose constants m->mat holds. */
+static int encode_model_tables(const scene_entry *e, lut_spacing spacing, const spectrum *s, const gen_context *g,
+                               const material_params *p, scene_model *m)
+{
+    if (e->lut_n && encode_table(s, g, p, spacing, e->lut_n, e->row->form, &m->lut))
+        return cli_oom("scene model");
+    return 0;
+}
+
+static void scene_model_init(const scene_entry *e, scene_model *m)
+{
+    memset(m, 0, sizeof *m);
+    m->lut.bad = -1;
+    m->def = e->row;
+    strcpy(m->name, e->name);
+}
+
+/* Why no film table is: the domain's condition, or a failed fit. */
+static int film_failed(const char *where, const char *id, const material_params *p, const encoded_film *film)
+{
+    return film->why[0] ? cli_error(where, "%s under a %g film in n1 %g: %s", id, p->film_n, p->n1, film->why)
+                        : cli_error(where, "%s: fitting the thin-film model of a %g film in n1 %g failed", id,
+                                    p->film_n, p->n1);
+}
+
+int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectrum *s, const gen_context *g,
+                        const material_params *p, scene_model *m)
+{
+    int status;
+    scene_model_init(e, m);
+    encode_material(p, &m->mat);
+    if ((status = encode_model_tables(e, spacing, s, g, p, m)))
+        return status;
+    if (e->row->offered & MODEL_FILM) {
+        if (!(p->film_n > 0.0))
+            return cli_error(p->info.id, "%s needs a film (a scene's film key, curve's --film N:D)", e->name);
+        if (!(m->film_owned = malloc(sizeof *m->film_owned)))
+            return cli_oom("scene model");
+        m->film = m->film_owned;
+        if (encode_film(s, g, p, m->film_owned)) {
+            status = film_failed(p->info.id, p->info.id, p, m->film_owned);
+            scene_model_free(m);
+            return status;
+        }
+    }
+    return 0;
+}
+
+int scene_model_prepare_name(const char *name, lut_spacing spacing, const spectrum *s, const gen_context *g,
+                             const material_params *p, scene_model *m)
+{
+    scene_entry e;
+    memset(m, 0, sizeof *m);
+    m->lut.bad = -1;
+    if (scene_entry_parse(name, spacing, &e))
+        return cli_error("scene model", "unknown model '%s' (fresnel gen --help lists the models)", name);
+    return scene_model_prepare(&e, spacing, s, g, p, m);
+}
+
+void scene_model_free(scene_model *m)
+{
+    encoded_lut_free(&m->lut);
+    free(m->film_owned);
+    m->film_owned = NULL;
+    m->film = NULL;
+}
+
+model_rgb scene_model_rgb(const scene_model *m)
+{
+    model_rgb q;
+    q.def = m->def;
+    q.mat = &m->mat;
+    q.lut = m->lut.n ? &m->lut : NULL;
+    q.film = m->film;
+    q.d_nm = 0.0;
+    return q;
+}
+
+void scene_model_eval(const scene_model *m, float c, float out[3])
+{
+    model_rgb q = scene_model_rgb(m);
+    fresnel_rgb r = m->def->rgb_f32(&q, c);
+    out[0] = r.r;
+    out[1] = r.g;
+    out[2] = r.b;
+}
+
+void scene_model_eval_ref(const scene_model *m, double c, double out[3])
+{
+    model_rgb q = scene_model_rgb(m);
+    int ch;
+    c = ref_clamp(c, 0.0, 1.0);
+    for (ch = 0; ch < 3; ch++)
+        out[ch] = ref_clamp(m->def->ch_ref(&q, ch, c), 0.0, 1.0);
+}
+
+const scene_model *encoded_scene_model(const encoded_scene *es, int material, int model)
+{
+    return &es->models[material * es->sc->model_count + model];
+}
+
+void encoded_scene_free(encoded_scene *es)
+{
+    int i, n = es->sc ? es->material_count * es->sc->model_count : 0;
+    for (i = 0; es->models && i < n; i++)
+        scene_model_free(&es->models[i]);
+    for (i = 0; es->spectra && i < es->material_count; i++)
+        free(es->spectra[i]);
+    free(es->models);
+    free(es->spectra);
+    free(es->params);
+    free(es->enc);
+    free(es->films);
+    free(es->fits);
+    free(es->g);
+    memset(es, 0, sizeof *es);
+}
+
+/* Every derived parameter is a finite binary32 (a literal beyond FLT_MAX
+ * would read inf.0f and not compile) and, in a scene with binary16
+ * constants, a finite binary16 (beyond 65504 it rounds to an infinity). */
+#define FIT_FLOAT_3(constant, v)                                                                                       \
+    for (ch = 0; ch < 3 && !status; ch++)                                                                              \
+        status = fit_float(es, p, constant, (v)[ch]);
+#define FIT_FLOAT_1(constant, v) status = status ? status : fit_float(es, p, constant, v);
+#define FIT_FLOAT(field, count, group, constant, row, why, q15, q15_why) FIT_FLOAT_##count(constant, p->field)
+#define FIT_F16_3(v)                                                                                                   \
+    for (ch = 0; ch < 3; ch++)                                                                                         \
+        finite &= isfinite((double)(v)[ch]) != 0;
+#define FIT_F16_1(v) finite &= isfinite((double)(v)) != 0;
+#define FIT_F16(field, count, group, constant, row, why, q15, q15_why) FIT_F16_##count(e->h_##field)
+
+static int fit_float(const encoded_scene *es, const material_params *p, const char *constant, double v)
+{
+    char where[WHERE_SIZE];
+    if (fabs(v) <= FLT_MAX)
+        return 0;
+    return cli_error(where_at(es, es->sc->materials_line, where), "material %s: %s = %g does not fit a binary32 float",
+                     p->info.id, constant, v);
+}
+
+static int params_fit(const encoded_scene *es, int i)
+{
+    const material_params *p = &es->params[i];
+    int ch, status = 0;
+    DERIVED_PARAMETERS(FIT_FLOAT)
+#if FRESNEL_HAS_F16
+    if (!status && scene_has_type(es->sc, TYPE_F16)) {
+        const encoded_material *e = &es->enc[i];
+        char where[WHERE_SIZE];
+        int finite = 1;
+        DERIVED_PARAMETERS(FIT_F16)
+        if (!finite)
+            return cli_error(where_at(es, es->sc->types_line, where),
+                             "material %s: a parameter does not fit binary16 (largest 65504)", p->info.id);
+    }
+#endif
+    return status;
+}
+
+/* A table every number type can hold: finite nodes, each a Q1.15 code. */
+static int lut_fits(const encoded_scene *es, int i, int m)
+{
+    const encoded_lut *t = &encoded_scene_model(es, i, m)->lut;
+    char where[WHERE_SIZE];
+    if (t->bad < 0)
+        return 0;
+    return cli_error(where_at(es, es->sc->models_line, where), "%s: %s node %d is %g, which no %s table holds",
+                     es->params[i].info.id, es->sc->models[m].name, t->bad, t->nodes[t->bad],
+                     t->form == LUT_RESIDUAL ? "Q1.15 residual (int16_t at 14 fraction bits)" : "Q1.15 [0, 2)");
+}
+
+/* Stage 1 and 2 of every material: every unknown material reported first. */
+static int derive_all(encoded_scene *es)
+{
+    const scene *sc = es->sc;
+    char where[WHERE_SIZE];
+    int i, k, status = 0;
+    for (i = 0; i < sc->material_count; i++) {
+        material_info info;
+        if (!sc->material_file[i][0] &&
+            material_lookup(es->g->dir, sc->materials[i], &info, where_at(es, sc->material_line[i], where)))
+            status = CLI_BAD_INPUT;
+    }
+    if (status)
+        return status;
+    for (i = 0; i < sc->material_count; i++) {
+        material_source m = scene_material(sc, i);
+        double truth[TARGET_ANGLES][3];
+        target_anchor a;
+        lab_space ls;
+        if (!(es->spectra[i] = malloc(sizeof *es->spectra[i])))
+            return cli_oom("encode scene");
+        if ((status = derive_parameters(es->g, &m, sc->sigma, sc->n1, es->spectra[i], &es->params[i])))
+            return status;
+        if (!sc->target_count)
+            continue;
+        lab_space_init(&ls, &es->g->cs);
+        target_material_curve(es->spectra[i], es->g, &es->params[i], 1, truth, &a);
+        for (k = 0; k < sc->target_count; k++)
+            target_fit_curve(sc->targets[k], &ls, (const double(*)[3])truth, &a, &es->fits[i * sc->target_count + k]);
+    }
+    return 0;
+}
+
+/* Stage 3: constants, films (for the thin-film row), tables. */
+static int encode_all(encoded_scene *es)
+{
+    const scene *sc = es->sc;
+    char where[WHERE_SIZE];
+    int i, m, status;
+    for (i = 0; i < sc->material_count; i++)
+        encode_material(&es->params[i], &es->enc[i]);
+    for (m = 0; m < sc->model_count; m++)
+        if (sc->models[m].row->offered & MODEL_FILM)
+            break;
+    if (m < sc->model_count) { /* the scene has the thin-film model: every material has a film */
+        if (!(es->films = malloc((size_t)sc->material_count * sizeof *es->films)))
+            return cli_oom("encode scene");
+        for (i = 0; i < sc->material_count; i++) {
+            const material_params *p = &es->params[i];
+            if (!(p->film_n > 0.0))
+                return cli_error(where_at(es, sc->material_line[i], where),
+                                 "%s needs a film (a scene's film key, curve's --film N:D)", sc->models[m].name);
+            if (encode_film(es->spectra[i], es->g, p, &es->films[i]))
+                return film_failed(where_at(es, sc->material_line[i], where), sc->materials[i], p, &es->films[i]);
+        }
+    }
+    for (i = 0; i < sc->material_count; i++) {
+        if ((status = params_fit(es, i)))
+            return status;
+        for (m = 0; m < sc->model_count; m++) {
+            scene_model *sm = &es->models[i * sc->model_count + m];
+            scene_model_init(&sc->models[m], sm);
+            sm->mat = es->enc[i];
+            if (sc->models[m].row->offered & MODEL_FILM)
+                sm->film = &es->films[i];
+            if ((status = encode_model_tables(&sc->models[m], sc->spacing, es->spectra[i], es->g, &es->params[i], sm)) ||
+                (status = lut_fits(es, i, m)))
+                return status;
+        }
+    }
+    return 0;
+}
+
+int encode_scene(const scene *sc, const char *manifest, const char *where, const char *dir_option,
+                 encoded_scene *out)
+{
+    size_t n = (size_t)sc->material_count;
+    int status;
+    memset(out, 0, sizeof *out);
+    out->sc = sc;
+    out->manifest = manifest;
+    out->where = where;
+    out->material_count = sc->material_count;
+    out->g = malloc(sizeof *out->g);
+    out->params = calloc(n ? n : 1, sizeof *out->params);
+    out->spectra = calloc(n ? n : 1, sizeof *out->spectra);
+    out->enc = calloc(n ? n : 1, sizeof *out->enc);
+    out->models = calloc(n * (size_t)sc->model_count + 1, sizeof *out->models);
+    out->fits = calloc(n * (size_t)sc->target_count + 1, sizeof *out->fits);
+    if (!out->g || !out->params || !out->spectra || !out->enc || !out->models || !out->fits) {
+        status = cli_oom("encode scene");
+        goto done;
+    }
+    if ((status = gen_context_load(data_dir(dir_option), sc->space, out->g)))
+        goto done;
+    out->g->gamut = sc->gamut;
+    if (!(status = derive_all(out)))
+        status = encode_all(out);
+done:
+    if (status) {
+        /* the models encode_all has not reached are zeroed: freeing them is a no-op */
+        encoded_scene_free(out);
+    }
+    return status;
+}
