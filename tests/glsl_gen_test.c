@@ -217,7 +217,7 @@ int main(int argc, char **argv)
                         model_rgb q = scene_model_rgb(sm);
                         fresnel_rgb v;
                         q.d_nm = film_d(x);
-                        v = q.def->rgb_f32(&q, c);
+                        v = q.def->f32->scene(&q, c);
                         ref[0] = refq[0] = v.r, ref[1] = refq[1] = v.g, ref[2] = refq[2] = v.b;
                     }
                     for (ch = 0; ch < 3; ch++) {

@@ -113,13 +113,13 @@ static void test_q15_codes(void)
         for (mi = 0; mi < model_count; mi++) {
             const model *m = &model_table[mi];
             int32_t at0, at1;
-            if (!m->q15)
+            if (!m->q15->scalar)
                 continue;
-            at0 = m->q15(&q, 0);
-            at1 = m->q15(&q, 32768);
+            at0 = m->q15->scalar(&q, 0);
+            at1 = m->q15->scalar(&q, 32768);
             bad += !(at0 >= 0 && at0 <= 32768 && at1 >= 0 && at1 <= 32768);
             for (i = 0; i < 5; i++)
-                bad += m->q15(&q, low[i]) != at0 || m->q15(&q, high[i]) != at1;
+                bad += m->q15->scalar(&q, low[i]) != at0 || m->q15->scalar(&q, high[i]) != at1;
         }
     }
     CHECK("extremes q15: cosine codes below 0 (to INT32_MIN) give f(0), above 32768 (to INT32_MAX) f(one)", bad == 0,
@@ -182,7 +182,7 @@ static void test_matched_index(const extreme_type *ty)
             for (ci = 0; ci < extreme_cosine_count; ci++) {
                 double c = extreme_cos_input(ty, &extreme_cosines[ci]), got, ref_c;
                 if (ty->eval(m, &t, c, &got, &ref_c))
-                    bad += got != 0.0 || m->f64(&t.p, ref_c) != 0.0;
+                    bad += got != 0.0 || m->ref->scalar(&t.p, ref_c) != 0.0;
             }
         }
     }
@@ -332,7 +332,7 @@ static void test_critical_angle(const extreme_type *ty)
                 double x = c0 + i * ulp, got, ref_c, r, err;
                 if (x > 1.0 || !ty->eval(m, &t, x, &got, &ref_c))
                     continue;
-                r = m->f64(&t.p, ref_c);
+                r = m->ref->scalar(&t.p, ref_c);
                 err = fabs(got - r);
                 if (ref_c < cc && got != 1.0)
                     not_one++;

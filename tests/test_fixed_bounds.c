@@ -49,7 +49,7 @@ static void check_models(const test_material *mat, int nmat)
         worst w;
         long bad = 0;
         memset(&w, 0, sizeof w);
-        if (!m->q15) /* the thin film: tests/test_film.c */
+        if (!m->q15->scalar) /* the thin film: tests/test_film.c */
             continue;
         for (k = 0; k < nmat; k++) {
             model_params mp;
@@ -59,8 +59,8 @@ static void check_models(const test_material *mat, int nmat)
             model_params_round_fixed(&mp);
             model_fixed_from_params(&mp, &mf);
             for (c = 0; c <= ONE; c++) {
-                int32_t got = m->q15(&mf, c);
-                double ref = m->f64(&mp, c / 32768.0);
+                int32_t got = m->q15->scalar(&mf, c);
+                double ref = m->ref->scalar(&mp, c / 32768.0);
                 if (got < 0 || got > ONE)
                     bad++;
                 note_worst(&w, fabs(got / 32768.0 - ref) * 32768.0, mat[k].name, c / 32768.0);
@@ -552,9 +552,9 @@ static void check_small_eta(const model *m)
         model_params_round_fixed(&mp);
         model_fixed_from_params(&mp, &mf);
         for (c = ONE - 511; c <= ONE; c++) {
-            int32_t got = m->q15(&mf, c);
+            int32_t got = m->q15->scalar(&mf, c);
             bad += got < 0 || got > ONE;
-            note_worst(&w, fabs(got / 32768.0 - m->f64(&mp, c / 32768.0)) * 32768.0, name, c / 32768.0);
+            note_worst(&w, fabs(got / 32768.0 - m->ref->scalar(&mp, c / 32768.0)) * 32768.0, name, c / 32768.0);
         }
     }
     check_bound("exact-dielectric, eta -> 0 near normal incidence", &w, m->q15_bound, bad);
@@ -602,7 +602,7 @@ static void check_domain(void)
         long bad = 0;
         char what[96];
         memset(&w, 0, sizeof w);
-        if (!m->q15) /* the thin film: tests/test_film.c */
+        if (!m->q15->scalar) /* the thin film: tests/test_film.c */
             continue;
         for (k = 0; k < n; k++) {
             model_params mp;
@@ -612,8 +612,8 @@ static void check_domain(void)
             model_params_round_fixed(&mp);
             model_fixed_from_params(&mp, &mf);
             for (c = 0; c <= ONE; c += (c < 64 || c >= ONE - 64) ? 1 : 5) {
-                int32_t got = m->q15(&mf, c);
-                double ref = m->f64(&mp, c / 32768.0);
+                int32_t got = m->q15->scalar(&mf, c);
+                double ref = m->ref->scalar(&mp, c / 32768.0);
                 if (got < 0 || got > ONE)
                     bad++;
                 note_worst(&w, fabs(got / 32768.0 - ref) * 32768.0, t[k].name, c / 32768.0);

@@ -268,8 +268,8 @@ int main(void)
                     model_derive(grid_eta(ie), grid_kappa(ik), grid_n1[in], 1.0, 5.0, &mp);
                     model_params_round_f32(&mp);
                     for (ic = 0; ic < nc; ic++) {
-                        float got = m->f32(&mp, cs[ic]);
-                        double ref = m->f64(&mp, (double)cs[ic]);
+                        float got = m->f32->scalar(&mp, cs[ic]);
+                        double ref = m->ref->scalar(&mp, (double)cs[ic]);
                         double err = fabs((double)got - ref);
                         count++;
                         if (!(got >= 0.0f && got <= 1.0f))

@@ -63,10 +63,10 @@ static double model_error(void *ctx, const double *x)
         float c = (float)x[2], got;
         model_derive(eta, kappa, x[3], 1.0, 5.0, &mp);
         model_params_round_f32(&mp);
-        got = k->m->f32(&mp, c);
+        got = k->m->f32->scalar(&mp, c);
         if (!(got >= 0.0f && got <= 1.0f))
             return HUGE_VAL;
-        return fabs((double)got - k->m->f64(&mp, c));
+        return fabs((double)got - k->m->ref->scalar(&mp, c));
     }
     if (k->type == T_Q15) {
         model_fixed mf;
@@ -74,20 +74,20 @@ static double model_error(void *ctx, const double *x)
         model_derive(eta, kappa, 1.0, 1.0, 5.0, &mp);
         model_params_round_fixed(&mp);
         model_fixed_from_params(&mp, &mf);
-        got = k->m->q15(&mf, c);
+        got = k->m->q15->scalar(&mf, c);
         if (got < 0 || got > 32768)
             return HUGE_VAL;
-        return fabs(got / 32768.0 - k->m->f64(&mp, c / 32768.0)) * 32768.0;
+        return fabs(got / 32768.0 - k->m->ref->scalar(&mp, c / 32768.0)) * 32768.0;
     }
 #if FRESNEL_HAS_F16
     {
         double c = (double)(fresnel_f16)x[2], got;
         model_derive(eta, kappa, 1.0, 1.0, 5.0, &mp);
         model_params_round_f16(&mp);
-        got = k->m->f16(&mp, c);
+        got = k->m->f16->scalar(&mp, c);
         if (!(got >= 0.0 && got <= 1.0))
             return HUGE_VAL;
-        return fabs(got - k->m->f64(&mp, c));
+        return fabs(got - k->m->ref->scalar(&mp, c));
     }
 #else
     return 0.0;
@@ -300,7 +300,7 @@ int main(void)
             memset(&sp, 0, sizeof sp);
             k.m = m;
             k.type = ty;
-            if (ty == T_F16 && !(FRESNEL_HAS_F16 && m->f16))
+            if (ty == T_F16 && !(FRESNEL_HAS_F16 && m->f16->scalar))
                 continue;
             if (ty == T_F32) {
                 sp.dims = 4;

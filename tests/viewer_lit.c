@@ -54,7 +54,7 @@ static vec3 fresnel(const row *r, double c)
         model_rgb q = scene_model_rgb(r->model);
         fresnel_rgb v;
         q.d_nm = r->d_nm;
-        v = q.def->rgb_f32(&q, (float)c);
+        v = q.def->f32->scene(&q, (float)c);
         return v3(v.r, v.g, v.b);
     } else {
         double x = sqrt(clampd(c, 0.0, 1.0)) * (r->n - 1), t;

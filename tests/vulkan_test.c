@@ -371,7 +371,7 @@ int main(int argc, char **argv)
                 model_rgb q = scene_model_rgb(sm);
                 fresnel_rgb v;
                 q.d_nm = film_d(k); /* read by the thin film only */
-                v = q.def->rgb_f32(&q, cosines[k]);
+                v = q.def->f32->scene(&q, cosines[k]);
                 r[0] = v.r, r[1] = v.g, r[2] = v.b;
             }
         }

@@ -8,29 +8,17 @@
 #include <stdint.h>
 
 #include "2_derive/derive.h"
+#include "catalog/models.h"
 #include "3_encode/film_encode.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
 #include "fresnel_film.h"
 #include "fresnel_fixed.h"
 
-/* LUT_GRAZING: nodes uniform in sqrt(c); LUT_UNIFORM: in c; LUT_GRAZING_PL:
- * uniform in fresnel_fixed_fast.h's 64-piece linear stand-in for sqrt(c), the
- * position of fresnel_lut_pl_u16_q15_fast. LUT_WARP2, LUT_WARP16: uniform in
- * the root-free warps c (2 - c) = 1 - (1 - c)^2 and (1 + c - (1 - c)^16)/2,
- * whose slope at c = 0 (2; 8.5) crowds the nodes toward grazing incidence
- * at the cost of a few multiplications instead of a square root; no runtime
- * function reads them: the report's LUT table measures them against sqrt(c)
- * at equal size. */
-typedef enum lut_spacing { LUT_GRAZING, LUT_UNIFORM, LUT_GRAZING_PL, LUT_WARP2, LUT_WARP16 } lut_spacing;
 /* cos theta of node i of n. */
 double lut_node_cos(lut_spacing spacing, int i, int n);
 /* The position in [0, 1] along the nodes of cos theta = c (node i at i/(n-1)). */
 double lut_position(lut_spacing spacing, double c);
-/* The runtime's LUT forms: linear interpolation of the curve (fresnel_lut),
- * of its residual from Schlick(F0) (fresnel_lut_residual), Catmull-Rom of
- * the curve (fresnel_lut_cubic). */
-typedef enum lut_form { LUT_PLAIN, LUT_RESIDUAL, LUT_CUBIC } lut_form;
 /* table[ch * n + i]: node i of channel ch, least-squares fitted through the
  * form's interpolation to the ground truth under the gamut policy (minus
  * Schlick(F0) for LUT_RESIDUAL) at theta every 0.05 degrees and at the
@@ -50,8 +38,6 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
  * and the tests evaluate these values (model_rgb in model/registry.h), so
  * every figure they print is a figure of the emitted header. */
 
-/* Which eta, kappa of material_params a model reads. */
-typedef enum model_eta { ETA_FIT, ETA_GAUSS, ETA_POINT, ETA_SOURCES } model_eta;
 
 /* The members of a parameter (catalog/parameters.h) in each type. */
 #define ENCODED_F32_3(field) fresnel_rgb field;

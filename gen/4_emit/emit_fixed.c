@@ -227,45 +227,55 @@ static void emit_lut_q15(fx_out *o, const char *prefix, const scene_entry *e, co
     fprintf(f, "\n};\n");
 }
 
+/* F82's fast coefficient, after F82's codes (fresnel_f82_q15_rgb_fast
+ * reads both). */
+static void emit_f82_a(fx_out *o, const char *prefix, const material_params *p, const encoded_material *e)
+{
+    int ch;
+    char id[160];
+    long a[3];
+    snprintf(id, sizeof id, "%s_f82_a_q12", prefix);
+    for (ch = 0; ch < 3; ch++) {
+        fx_finite(o, p->f0[ch], "F0", id);
+        fx_finite(o, p->f82[ch], "F82", id);
+        /* fresnel_f82_q15_fast documents |a_q12| <= 73000 */
+        a[ch] = fx_check(o, (double)e->q_f82_a[ch], -73000.0, 73000.0, "a_q12 [-73000, 73000]", "F82's a", id);
+    }
+    fprintf(o->f, "/* F82's a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) times 4096, from the Q1.15 F0 and F82\n"
+                  " * (fresnel_f82_q15_rgb_fast(f0, a, c) in fresnel_fixed_fast.h) */\n"
+                  "static const int32_t %s[3] FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
+            id, a[0], a[1], a[2]);
+}
+
+/* The parameters held as codes (catalog/parameters.h), each where its
+ * models read it; F0 says when it is held to one. */
+#define EMIT_CODE_Q15_NONE(field, constant, why)
+#define EMIT_CODE_Q15_CODE(field, constant, why) emit_q15_rgb(&o, prefix, constant, p->field, e->q_##field, 65535, why);
+#define EMIT_CODE_Q15_CODE_ONE(field, constant, why) emit_q15_rgb(&o, prefix, constant, p->field, e->q_##field, 32768, why);
+#define EMIT_CODE_Q15_CODE_HELD(field, constant, why)                                                                  \
+    emit_q15_rgb(&o, prefix, constant, p->field, e->q_##field, 65535,                                                  \
+                 e->q_##field##_held ? why ", held to one where the gamut policy keeps it above (every Q1.15 function " \
+                                       "reads it\n * so, and the fast paths of fresnel_fixed_fast.h take f0 only up to one)" \
+                                     : why);
+#define EMIT_CODE(field, count, group, constant, row, why, q15, q15_why)                                               \
+    if (reads & (group)) {                                                                                             \
+        EMIT_CODE_##q15(field, constant, q15_why)                                                                      \
+        if (PARAM_ADDRESS_##count(p->field) == p->f82)                                                                 \
+            emit_f82_a(&o, prefix, p, e);                                                                              \
+    }
+
 int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefix)
 {
     const scene *sc = in->sc;
     const material_params *p = &in->params[mi];
     const encoded_material *e = &in->enc[mi];
-    unsigned reads = scene_reads(sc, 0), q15_reads = scene_reads(sc, 1);
+    unsigned reads = scene_reads(sc, 0) | (sc->f_avg ? MP_F_AVG : 0u), q15_reads = scene_reads(sc, 1);
     int m;
     fx_out o;
     o.f = f;
     o.in = in;
     o.bad = 0;
-    if (reads & MP_F0)
-        emit_q15_rgb(&o, prefix, "f0", p->f0, e->q_f0, 65535,
-                     e->q_f0_held ? "F0, held to one where the gamut policy keeps it above (every Q1.15 function reads it\n"
-                                    " * so, and the fast paths of fresnel_fixed_fast.h take f0 only up to one)"
-                                  : "F0");
-    if (sc->f_avg)
-        emit_q15_rgb(&o, prefix, "f_avg", p->f_avg, e->q_f_avg, 65535, "F_avg = 2 int F(mu) mu dmu of the ground truth");
-    if (reads & MP_F82) {
-        int ch;
-        char id[160];
-        long a[3];
-        emit_q15_rgb(&o, prefix, "f82", p->f82, e->q_f82, 65535, "F82");
-        snprintf(id, sizeof id, "%s_f82_a_q12", prefix);
-        for (ch = 0; ch < 3; ch++) {
-            fx_finite(&o, p->f0[ch], "F0", id);
-            fx_finite(&o, p->f82[ch], "F82", id);
-            /* fresnel_f82_q15_fast documents |a_q12| <= 73000 */
-            a[ch] = fx_check(&o, (double)e->q_f82_a[ch], -73000.0, 73000.0, "a_q12 [-73000, 73000]", "F82's a", id);
-        }
-        fprintf(f, "/* F82's a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) times 4096, from the Q1.15 F0 and F82\n"
-                   " * (fresnel_f82_q15_rgb_fast(f0, a, c) in fresnel_fixed_fast.h) */\n"
-                   "static const int32_t %s[3] FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
-                id, a[0], a[1], a[2]);
-    }
-    if (reads & MP_GULB) {
-        emit_q15_rgb(&o, prefix, "gulbrandsen_r", p->gulb_r, e->q_gulb_r, 32768, "Gulbrandsen r");
-        emit_q15_rgb(&o, prefix, "gulbrandsen_g", p->gulb_g, e->q_gulb_g, 32768, "Gulbrandsen g");
-    }
+    DERIVED_PARAMETERS(EMIT_CODE)
     if (q15_reads & MQ_LSK)
         emit_lsk3(&o, prefix, "lsk", p, 0, e->q_lsk);
     if (q15_reads & MQ_LSK_COMP)

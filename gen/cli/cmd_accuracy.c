@@ -37,7 +37,7 @@ static void internal_row(const char *id, double nm, double eta, int steps)
     model_derive(1.0, 0.0, eta, 1.0, 5.0, &mp);
     for (a = 0; a <= steps; a++) {
         double c = cos(a * 1.5707963267948966 / steps);
-        double e = fabs(m->f64(&mp, c) - ref_dielectric(mp.eta, c));
+        double e = fabs(m->ref->scalar(&mp, c) - ref_dielectric(mp.eta, c));
         if (e > worst)
             worst = e;
     }
@@ -187,8 +187,8 @@ int cmd_accuracy(int argc, char **argv)
                 for (a = 0; a <= steps; a++) {
                     double c = cos(a * (1.5707963267948966) / steps);
                     float cf = (float)c;
-                    double e = fabs(m->f64(&mp, c) - ref_conductor(mp.eta, mp.kappa, c));
-                    double r = fabs((double)m->f32(&mp32, cf) - m->f64(&mp32, (double)cf));
+                    double e = fabs(m->ref->scalar(&mp, c) - ref_conductor(mp.eta, mp.kappa, c));
+                    double r = fabs((double)m->f32->scalar(&mp32, cf) - m->ref->scalar(&mp32, (double)cf));
                     if (e > worst)
                         worst = e;
                     if (r > rounding[k])

@@ -202,7 +202,7 @@ int cmd_eval(int argc, char **argv)
             out = grown;
         }
         if (f64) {
-            out[count++] = m->f64(&mp, v[2]);
+            out[count++] = m->ref->scalar(&mp, v[2]);
         } else {
             type->round(&mp);
             out[count++] = type->eval_params(m, &mp, v[2]);

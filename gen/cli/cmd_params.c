@@ -125,6 +125,15 @@ static int print_targets(const char *which, const encoded_scene *es)
     return 0;
 }
 
+/* A parameter's row (catalog/parameters.h); one number repeated in r, g, b. */
+#define PARAM_ROW_3(name, v) row(name, v);
+#define PARAM_ROW_1(name, v)                                                                                           \
+    {                                                                                                                  \
+        const double rgb[3] = {v, v, v};                                                                               \
+        row(name, rgb);                                                                                                \
+    }
+#define PARAM_ROW(field, count, group, constant, name, why, q15, q15_why) PARAM_ROW_##count(name, p.field)
+
 int cmd_params(int argc, char **argv)
 {
     material_options o;
@@ -195,7 +204,6 @@ int cmd_params(int argc, char **argv)
     g = es.g;
     {
         const material_params p = es.params[0];
-        double ct_eta[3] = {p.ct_eta, p.ct_eta, p.ct_eta}, ct_kappa[3] = {p.ct_kappa, p.ct_kappa, p.ct_kappa};
         printf("# material %s (%s; %s), measured %.1f-%.1f nm\n", p.info.id, p.info.name, p.info.dataset,
                p.measured_lo, p.measured_hi);
         printf("# space %s, sigma %g nm, n1 %g\n", g->cs.id, p.sigma, p.n1);
@@ -206,23 +214,9 @@ int cmd_params(int argc, char **argv)
         printf("parameter,r,g,b\n");
         row("dominant_nm", p.nm);
         row("f0_unclamped", p.f0_unclamped);
-        row("f0", p.f0);
-        row("f82", p.f82);
         row("f_avg_unclamped", p.f_avg_unclamped);
-        row("f_avg", p.f_avg);
-        row("eta_gaussian", p.eta_gauss);
-        row("kappa_gaussian", p.kappa_gauss);
-        row("eta_point", p.eta_point);
-        row("kappa_point", p.kappa_point);
-        row("eta_fit", p.eta_fit);
-        row("kappa_fit", p.kappa_fit);
+        DERIVED_PARAMETERS(PARAM_ROW)
         row("fit_rms", p.fit_rms);
-        row("lsk_a", p.lsk_a);
-        row("lsk_alpha", p.lsk_alpha);
-        row("gulbrandsen_r", p.gulb_r);
-        row("gulbrandsen_g", p.gulb_g);
-        row("cook_torrance_eta", ct_eta);
-        row("cook_torrance_kappa", ct_kappa);
     }
 done:
     encoded_scene_free(&es);

@@ -9,31 +9,31 @@
 
 static void eval_f32(const model_rgb *q, double c, double rgb[3])
 {
-    fresnel_rgb v = q->def->rgb_f32(q, (float)c);
+    fresnel_rgb v = q->def->f32->scene(q, (float)c);
     rgb[0] = v.r;
     rgb[1] = v.g;
     rgb[2] = v.b;
 }
-static model_batch batch_f32(const model *row) { return row->batch_f32; }
-static int has_f32(const model *row) { return (row->offered & MODEL_EVAL) && row->f32 != NULL; }
-static double params_f32(const model *row, const model_params *p, double c) { return row->f32(p, (float)c); }
+static model_batch batch_f32(const model *row) { return row->f32->batch; }
+static int has_f32(const model *row) { return (row->offered & MODEL_EVAL) && row->f32->scalar != NULL; }
+static double params_f32(const model *row, const model_params *p, double c) { return row->f32->scalar(p, (float)c); }
 static double bound_f32(const model *row) { return row->bound; }
 
 /* c as its Q1.15 code: round(c 32768) */
 static void eval_q15(const model_rgb *q, double c, double rgb[3])
 {
-    fresnel_rgb_q15 v = q->def->rgb_q15(q, (int32_t)lround(c * 32768.0));
+    fresnel_rgb_q15 v = q->def->q15->scene(q, (int32_t)lround(c * 32768.0));
     rgb[0] = v.r / 32768.0;
     rgb[1] = v.g / 32768.0;
     rgb[2] = v.b / 32768.0;
 }
-static model_batch batch_q15(const model *row) { return row->batch_q15; }
-static int has_q15(const model *row) { return (row->offered & MODEL_EVAL) && row->q15 != NULL; }
+static model_batch batch_q15(const model *row) { return row->q15->batch; }
+static int has_q15(const model *row) { return (row->offered & MODEL_EVAL) && row->q15->scalar != NULL; }
 static double params_q15(const model *row, const model_params *p, double c)
 {
     model_fixed q;
     model_fixed_from_params(p, &q);
-    return row->q15(&q, fixed_q15(c)) / 32768.0;
+    return row->q15->scalar(&q, fixed_q15(c)) / 32768.0;
 }
 static double bound_q15(const model *row) { return row->q15_bound / 32768.0; }
 
@@ -43,11 +43,11 @@ static void eval_f16(const model_rgb *q, double c, double rgb[3])
 {
     int ch;
     for (ch = 0; ch < 3; ch++)
-        rgb[ch] = q->def->ch_f16(q, ch, c);
+        rgb[ch] = q->def->f16->scene(q, ch, c);
 }
-static model_batch batch_f16(const model *row) { return row->batch_f16; }
-static int has_f16(const model *row) { return (row->offered & MODEL_EVAL) && row->f16 != NULL; }
-static double params_f16(const model *row, const model_params *p, double c) { return row->f16(p, c); }
+static model_batch batch_f16(const model *row) { return row->f16->batch; }
+static int has_f16(const model *row) { return (row->offered & MODEL_EVAL) && row->f16->scalar != NULL; }
+static double params_f16(const model *row, const model_params *p, double c) { return row->f16->scalar(p, c); }
 #define F16_EVAL eval_f16, batch_f16, has_f16, model_params_round_f16, params_f16
 #else
 #define F16_EVAL NULL, NULL, NULL, NULL, NULL

@@ -1,12 +1,14 @@
 /* The model registry: every model the tool knows is one row of model_table
- * (registry.c), holding its names, where it is offered, the parameters it
- * reads, and its evaluators in every number type. Scene parsing and
- * evaluation, `eval`, `curve`, `accuracy`, `report`, `extremes`, `bench` and
- * the three emitters read the rows; no other file names a model to choose
- * or list models (tests/test_gen_layout.sh checks it).
+ * (registry.c): its data, a row of catalog/models.h, and its evaluators in
+ * every number type, one line per type in model/eval_ref.c, eval_f32.c,
+ * eval_q15.c and eval_f16.c. Scene parsing and evaluation, `eval`, `curve`,
+ * `accuracy`, `report`, `extremes`, `bench` and the back ends read the
+ * rows; no other file names a model to choose or list models
+ * (tests/gen/test_gen_layout.sh checks it).
  *
  * Adding a model: gen/README.md lists every place it touches (its runtime
- * functions, its double reference, its shader function, one row here). */
+ * functions, its double reference, its shader function, its catalog row
+ * and its line in each evaluator table). */
 #ifndef FRESNEL_REGISTRY_H
 #define FRESNEL_REGISTRY_H
 
@@ -17,15 +19,8 @@
 #include "fresnel_f16.h"
 #include "fresnel_fixed.h"
 #include "3_encode/encode.h"
+#include "catalog/models.h"
 #include "catalog/parameters.h"
-
-/* Where a row is offered. */
-#define MODEL_EVAL 1u  /* a function of eta, kappa, c: `fresnel eval`, `extremes`, the bound tests */
-#define MODEL_SCENE 2u /* a scene model: manifests, `gen`, `curve`, `report`, `bench` */
-#define MODEL_LUT 4u   /* a LUT form; its scene names are lutN, lutN-residual, lutN-cubic */
-#define MODEL_EXACT 8u /* the Fresnel equations themselves (the reference `accuracy` measures against) */
-#define MODEL_FILM 16u /* the thin film (fresnel_film.h): reads the material's film (encoded_film) at
-                        * model_rgb's thickness; a scene with it names the film's index */
 
 /* The derived parameters a scene model reads (MP_*) and the prepared Q15
  * constants (MQ_*): catalog/parameters.h. */
@@ -69,48 +64,54 @@ typedef struct model_rgb {
  * no dispatch sits inside the loop (bench.h's bench_batch). */
 typedef double (*model_batch)(const void *q, const float *c, const int32_t *cq, int n);
 
+/* A row's evaluators in each number type (NULL where it has none):
+ * as a function of eta, kappa, c (MODEL_EVAL rows: `scalar`) and as a
+ * scene model of one material (`scene`: model_rgb), its timed loop
+ * (`batch`), and in binary32 the runtime's closed-form hemispherical
+ * average (fresnel_*_avg_rgb). */
+typedef struct model_eval_ref { /* the double reference; scene: on the binary32-rounded constants, channel ch */
+    double (*scalar)(const model_params *m, double c);
+    double (*scene)(const model_rgb *q, int ch, double c);
+} model_eval_ref;
+typedef struct model_eval_f32 {
+    float (*scalar)(const model_params *m, float c);
+    fresnel_rgb (*scene)(const model_rgb *q, float c);
+    model_batch batch;
+    fresnel_rgb (*avg)(const model_rgb *q);
+} model_eval_f32;
+typedef struct model_eval_q15 { /* scalar: the result code at cos code c (0..32768) */
+    int32_t (*scalar)(const model_fixed *m, int32_t c);
+    fresnel_rgb_q15 (*scene)(const model_rgb *q, int32_t c);
+    model_batch batch;
+} model_eval_q15;
+typedef struct model_eval_f16 { /* every parameter and c rounded to binary16; all NULL without _Float16 */
+    double (*scalar)(const model_params *m, double c);
+    double (*scene)(const model_rgb *q, int ch, double c);
+    model_batch batch;
+} model_eval_f16;
+extern const model_eval_ref model_evals_ref[MODEL_ROWS];
+extern const model_eval_f32 model_evals_f32[MODEL_ROWS];
+extern const model_eval_q15 model_evals_q15[MODEL_ROWS];
+extern const model_eval_f16 model_evals_f16[MODEL_ROWS];
+
+/* A row: the catalog's data (catalog/models.h says what each field holds)
+ * and its evaluators. */
 typedef struct model {
-    const char *name;   /* the one name: manifests, --model, report and curve columns */
-    unsigned offered;   /* MODEL_* */
-    const char *params; /* which parameters it reads, for --help */
-
-    /* As a function of eta, kappa, c (MODEL_EVAL) */
-    double (*f64)(const model_params *m, double c);
-    float (*f32)(const model_params *m, float c);
-    float bound; /* documented binary32 error bound, FRESNEL_BOUND_* */
-    /* Q15 runtime: the result code at cos code c (0..32768), and its
-     * documented bound in LSB, FRESNEL_BOUND_*_Q15 */
-    int32_t (*q15)(const model_fixed *m, int32_t c);
-    double q15_bound;
-    /* binary16 runtime with every parameter and c rounded to binary16 (NULL
-     * where the compiler has no _Float16), and FRESNEL_BOUND_*_F16 */
-    double (*f16)(const model_params *m, double c);
-    double f16_bound;
-
-    /* As a scene model (MODEL_SCENE) */
-    unsigned reads;     /* MP_* */
-    unsigned q15_reads; /* MQ_* */
-    model_eta eta;      /* which eta, kappa its exact forms read (encode.h) */
-    lut_form form;      /* MODEL_LUT rows */
-    int uniform;        /* MODEL_LUT rows: 1 nodes uniform in c, 0 in sqrt(c) */
-    /* Shader return expression (ports/glsl/fresnel.glsl, the one source of
-     * the GLSL and HLSL ports); '@' stands for the material's
-     * identifier prefix and '_' (the MODEL_FILM row's is a function body,
-     * a statement macro). NULL for LUT rows, whose shader code the
-     * emitters build from the form; NULL in a scene row: no shader form. */
+    const char *name;
+    unsigned offered;
+    const char *params;
+    float bound;
+    double q15_bound, f16_bound;
+    unsigned reads, q15_reads;
+    model_eta eta;
+    lut_form form;
+    int uniform;
     const char *glsl;
-    fresnel_rgb (*rgb_f32)(const model_rgb *q, float c);
-    fresnel_rgb_q15 (*rgb_q15)(const model_rgb *q, int32_t c);
-    double (*ch_f16)(const model_rgb *q, int ch, double c); /* NULL without _Float16 */
-    /* The double reference on the binary32-rounded parameters, channel ch */
-    double (*ch_ref)(const model_rgb *q, int ch, double c);
-    model_batch batch_f32, batch_q15, batch_f16; /* batch_f16 NULL without _Float16 */
-    /* The runtime's closed-form hemispherical average (fresnel_*_avg_rgb,
-     * binary32); NULL where the runtime has none. */
-    fresnel_rgb (*avg_f32)(const model_rgb *q);
-    /* Its row in `make cross-count`'s tables (tests/cross/fixed_models.h),
-     * the Q15 function a firmware calls for it; NULL where there is none. */
     const char *cross_row;
+    const model_eval_ref *ref;
+    const model_eval_f32 *f32;
+    const model_eval_q15 *q15;
+    const model_eval_f16 *f16;
 } model;
 
 extern const model model_table[];

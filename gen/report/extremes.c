@@ -119,7 +119,7 @@ static void f32_prepare(const extreme_case *e, extreme_typed *t)
 static int f32_eval(const model *m, const extreme_typed *t, double x, double *got, double *ref_c)
 {
     float c = (float)x;
-    *got = m->f32(&t->p, c);
+    *got = m->f32->scalar(&t->p, c);
     *ref_c = c;
     return 1;
 }
@@ -153,7 +153,7 @@ static int q15_eval(const model *m, const extreme_typed *t, double x, double *go
     if (x != x)
         return 0;
     code = extreme_q15_code(x);
-    *got = m->q15(&t->q, code) / 32768.0;
+    *got = m->q15->scalar(&t->q, code) / 32768.0;
     *ref_c = code / 32768.0;
     return 1;
 }
@@ -181,7 +181,7 @@ static void f16_prepare(const extreme_case *e, extreme_typed *t)
 }
 static int f16_eval(const model *m, const extreme_typed *t, double x, double *got, double *ref_c)
 {
-    *got = m->f16(&t->p, x);
+    *got = m->f16->scalar(&t->p, x);
     *ref_c = (double)(fresnel_f16)x;
     return 1;
 }
@@ -243,7 +243,7 @@ static void table_cosines(const extreme_case *e)
                     printf(" n/a |");
                     continue;
                 }
-                err = fabs(got - m->f64(&t.p, ref_c));
+                err = fabs(got - m->ref->scalar(&t.p, ref_c));
                 bad |= !(got >= 0.0 && got <= 1.0);
                 if (err > worst)
                     worst = err;
@@ -270,7 +270,7 @@ double extreme_max_err(const model *m, const extreme_type *ty, const extreme_typ
         double got, ref_c, err;
         if (!ty->eval(m, t, grid[ci], &got, &ref_c))
             continue;
-        err = fabs(got - m->f64(&t->p, ref_c));
+        err = fabs(got - m->ref->scalar(&t->p, ref_c));
         *bad |= !(got >= 0.0 && got <= 1.0);
         if (!(err <= worst))
             worst = err;
@@ -348,7 +348,7 @@ static void table_exact(void)
         extreme_params(e, &p);
         printf("| %s | %.6g | %.6g |", e->name, p.eta, p.kappa);
         for (ci = 0; ci < (int)(sizeof cs / sizeof cs[0]); ci++)
-            printf(" %.7g (%.7g) |", (double)m->f32(&p, cs[ci]), m->f64(&p, (double)cs[ci]));
+            printf(" %.7g (%.7g) |", (double)m->f32->scalar(&p, cs[ci]), m->ref->scalar(&p, (double)cs[ci]));
         printf(" %s |\n", e->note);
     }
 }

@@ -123,9 +123,9 @@ static void write_average_closed_forms(report_run *r, FILE *f)
             model_rgb q = scene_model_rgb(sm);
             fresnel_rgb v;
             double e;
-            if (!sm->def->avg_f32)
+            if (!sm->def->f32->avg)
                 break;
-            v = sm->def->avg_f32(&q);
+            v = sm->def->f32->avg(&q);
 
             e = fmax(fabs(v.r - rm->p.f_avg[0]), fmax(fabs(v.g - rm->p.f_avg[1]), fabs(v.b - rm->p.f_avg[2])));
             sum += e;

@@ -145,7 +145,7 @@ void report_film_time(report_run *r)
     q[t] = scene_model_rgb(&f->models[r->timed_material]); /* the same material's F0 */
     q[t].def = model_schlick;
     q[t].film = NULL;
-    fns[t] = model_schlick->batch_f32;
+    fns[t] = model_schlick->f32->batch;
     ctxs[t] = &q[t];
     /* short samples (2048 evaluations) in many rounds: on a loaded machine a
      * long sample of the film would be preempted more often than Schlick's */

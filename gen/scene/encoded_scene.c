@@ -103,7 +103,7 @@ model_rgb scene_model_rgb(const scene_model *m)
 void scene_model_eval(const scene_model *m, float c, float out[3])
 {
     model_rgb q = scene_model_rgb(m);
-    fresnel_rgb r = m->def->rgb_f32(&q, c);
+    fresnel_rgb r = m->def->f32->scene(&q, c);
     out[0] = r.r;
     out[1] = r.g;
     out[2] = r.b;
@@ -115,7 +115,7 @@ void scene_model_eval_ref(const scene_model *m, double c, double out[3])
     int ch;
     c = ref_clamp(c, 0.0, 1.0);
     for (ch = 0; ch < 3; ch++)
-        out[ch] = ref_clamp(m->def->ch_ref(&q, ch, c), 0.0, 1.0);
+        out[ch] = ref_clamp(m->def->ref->scene(&q, ch, c), 0.0, 1.0);
 }
 
 const scene_model *encoded_scene_model(const encoded_scene *es, int material, int model)

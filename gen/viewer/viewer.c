@@ -278,7 +278,7 @@ static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
                 fresnel_rgb v;
                 double d[3], truth[3], l1[3], l2[3], de;
                 q.d_nm = viewer_film_d(sc, step);
-                v = q.def->rgb_f32(&q, (float)report_cos(a));
+                v = q.def->f32->scene(&q, (float)report_cos(a));
                 d[0] = v.r, d[1] = v.g, d[2] = v.b;
                 fprintf(f, "%s", a ? "," : "");
                 put_rgb(f, d);

@@ -130,9 +130,9 @@ static void fuzz_prepared(fuzz_bytes *b, int32_t c)
     for (mi = 0; mi < model_count; mi++) {
         const model *m = &model_table[mi];
         double bound = m->q15_bound;
-        if (!m->q15)
+        if (!m->q15->scalar)
             continue;
-        check(m->name, m->q15(&mf, c), m->f64(&mp, ref_clamp(unit_code(c), 0.0, 1.0)), bound, in, args);
+        check(m->name, m->q15->scalar(&mf, c), m->ref->scalar(&mp, ref_clamp(unit_code(c), 0.0, 1.0)), bound, in, args);
     }
     /* The exact conductor's fast path on its own domain (fresnel_fixed_fast.h,
      * the generator's test: c in [0, one] is a precondition, so c is
