@@ -251,6 +251,7 @@ FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize
 FUZZ_GEN     := gen/common/reference.c gen/common/reference_targets.c gen/common/cli.c gen/1_spectral/load_nk.c \
                 gen/1_spectral/resample.c gen/scene/scene.c gen/2_derive/targets.c gen/1_spectral/colour_space.c \
                 gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/fixed_params.c \
+                gen/model/eval_ref.c gen/model/eval_f32.c gen/model/eval_q15.c gen/model/eval_f16.c gen/3_encode/encoded_eta.c \
                 gen/common/reference_film.c
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 

@@ -45,26 +45,6 @@ static void f16_3(const double v[3], fresnel_f16 out[3])
 }
 #endif
 
-fresnel_rgb encoded_eta(const encoded_material *e, model_eta source, int kappa)
-{
-    switch (source) {
-    case ETA_GAUSS: return kappa ? e->kappa_gauss : e->eta_gauss;
-    case ETA_POINT: return kappa ? e->kappa_point : e->eta_point;
-    default: return kappa ? e->kappa_fit : e->eta_fit;
-    }
-}
-
-#if FRESNEL_HAS_F16
-const fresnel_f16 *encoded_eta_f16(const encoded_material *e, model_eta source, int kappa)
-{
-    switch (source) {
-    case ETA_GAUSS: return kappa ? e->h_kappa_gauss : e->h_eta_gauss;
-    case ETA_POINT: return kappa ? e->h_kappa_point : e->h_eta_point;
-    default: return kappa ? e->h_kappa_fit : e->h_eta_fit;
-    }
-}
-#endif
-
 /* One parameter in binary32, and in binary16 */
 #define F32_3(v) f32_rgb(v)
 #define F32_1(v) ((float)(v))
