@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/commands.h"
 #include "common/cli.h"
 #include "model/registry.h"
 #include "common/reference.h"

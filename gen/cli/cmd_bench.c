@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/commands.h"
 #include "bench/bench.h"
 #include "bench/bench_targets.h"
 #include "common/cli.h"

@@ -3,6 +3,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/commands.h"
 #include "common/cli.h"
 #include "cli/material_options.h"
 #include "model/registry.h"

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli/commands.h"
 #include "common/cli.h"
 #include "4_emit/emit.h"
 #include "2_derive/targets.h"

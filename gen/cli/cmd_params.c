@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "cli/commands.h"
 #include "1_spectral/colour_difference.h"
 #include "2_derive/targets.h"
 #include "common/cli.h"

@@ -2,6 +2,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli/commands.h"
 #include "common/cli.h"
 #include "viewer/viewer.h"
 

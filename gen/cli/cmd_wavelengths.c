@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "cli/commands.h"
 #include "common/cli.h"
 #include "1_spectral/spectral.h"
 

@@ -130,9 +130,11 @@ double ref_f82(double f0, double f82, double c)
     f82 = unit(f82);
     c = unit(c);
     x = 1.0 - c;
-    a = (823543.0 / 46656.0) * (f0 - f82) + (49.0 / 6.0) * (1.0 - f0);
+    a = ref_f82_a(f0, f82);
     return unit(f0 + (1.0 - f0) * pow(x, 5.0) - a * c * pow(x, 6.0));
 }
+
+double ref_f82_a(double f0, double f82) { return (823543.0 / 46656.0) * (f0 - f82) + (49.0 / 6.0) * (1.0 - f0); }
 
 void ref_gulbrandsen_nk(double r, double g, double *n, double *k)
 {

@@ -26,6 +26,10 @@ void ref_lsk_fit(double n, double k, double *a, double *alpha);
 void ref_lsk_fit_target(double n, double k, double target_015, double *a, double *alpha);
 
 double ref_f82(double f0, double f82, double c);
+/* F82's coefficient a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) of
+ * F = Schlick(F0) - a c (1 - c)^6 (Hoffman's F82 model), F0 and F82 as
+ * given. */
+double ref_f82_a(double f0, double f82);
 
 void ref_gulbrandsen_nk(double r, double g, double *n, double *k);
 void ref_gulbrandsen_rg(double n, double k, double *r, double *g);

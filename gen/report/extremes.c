@@ -104,7 +104,7 @@ double extreme_f82_unclamped(double f0, double f82, double c)
     double x = 1.0 - c, a;
     f0 = ref_clamp(f0, 0.0, 1.0);
     f82 = ref_clamp(f82, 0.0, 1.0);
-    a = (823543.0 / 46656.0) * (f0 - f82) + (49.0 / 6.0) * (1.0 - f0);
+    a = ref_f82_a(f0, f82);
     return f0 + (1.0 - f0) * pow(x, 5.0) - a * c * pow(x, 6.0);
 }
 
