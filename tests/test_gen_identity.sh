@@ -4,8 +4,9 @@
 # The generator's output, byte for byte: every back end of `fresnel gen` (the
 # C header in the manifest's types and, where the manifest allows, in every
 # type; GLSL with its texture; HLSL) for every scene of data/scenes,
-# tests/scenes, tests/identity and tests/speed/film.scene, its SHA-256 and
-# exit status, against tests/identity/expected.txt. A change to the
+# tests/scenes, tests/identity and tests/speed/film.scene, its SHA-256 (of
+# the output and the messages, the checkout's path taken out) and exit
+# status, against tests/identity/expected.txt. A change to the
 # generator's structure keeps these equal; a change to what it writes
 # updates the file on purpose (UPDATE=1 sh tests/test_gen_identity.sh) and
 # says why in its commit.
@@ -23,14 +24,17 @@ if [ "${1-}" = --one ]; then
     done
     "$F" gen "$scene" -o "$d/out" "$@" 2>"$d/err"
     rc=$?
-    sum=$(cat "$d/out" "$d/tex" "$d/err" 2>/dev/null | sha256sum | cut -c1-64)
+    # messages name the data pack by its absolute path: the checkout's own
+    sed "s|$ROOT/||g" "$d/err" >"$d/err.rel"
+    sum=$(cat "$d/out" "$d/tex" "$d/err.rel" 2>/dev/null | sha256sum | cut -c1-64)
     echo "$label rc=$rc $sum"
     exit 0
 fi
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
 
-export F T="$t"
+ROOT=$(pwd)
+export F T="$t" ROOT
 
 # The runs, one per line: LABEL SCENE ARGS ($T/tex: the texture)
 for s in data/scenes/*.scene tests/scenes/*.scene tests/identity/*.scene tests/speed/film.scene; do

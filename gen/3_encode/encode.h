@@ -73,6 +73,12 @@ typedef struct encoded_material {
 #endif
 } encoded_material;
 void encode_material(const material_params *p, encoded_material *out);
+/* Whether every Q1.15 constant of the material that models reading reads
+ * (MP_*) and q15_reads (MQ_*) hold has its value in its C type and the
+ * range fresnel_fixed.h's LAYOUT documents (encode_check.c): 0, or -1 with
+ * the first that does not in why. */
+int encode_q15_fits(const material_params *p, const encoded_material *e, unsigned reads, unsigned q15_reads,
+                    char *why, size_t size);
 /* The eta, kappa a model reads (its row's model_eta), in binary32 and
  * binary16. */
 fresnel_rgb encoded_eta(const encoded_material *e, model_eta source, int kappa);
@@ -114,6 +120,7 @@ typedef struct encoded_film {
     fresnel_film f32;
     fresnel_film_q15 q15;
     int q15_ok; /* 0 where the Q1.15 layout holds no table of it (film_encode_q15) */
+    int f32_finite, f16_finite; /* 1 where every value of the binary32, binary16 table is finite */
     char why[256]; /* why encode_film refused the stack, or empty */
 #if FRESNEL_HAS_F16
     fresnel_film_f16 f16;

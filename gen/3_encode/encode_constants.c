@@ -184,6 +184,27 @@ int encode_table(const spectrum *s, const gen_context *g, const material_params 
     return 0;
 }
 
+/* The film tables are arrays of one type each (fresnel_film.h): a literal
+ * of a float type must be finite (inf.0f does not compile). */
+static int floats_finite(const float *v, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (!isfinite(v[i]))
+            return 0;
+    return 1;
+}
+#if FRESNEL_HAS_F16
+static int halves_finite(const fresnel_f16 *v, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++)
+        if (!isfinite((double)v[i]))
+            return 0;
+    return 1;
+}
+#endif
+
 int encode_film(const spectrum *s, const gen_context *g, const material_params *p, encoded_film *out)
 {
     film_stack f;
@@ -202,8 +223,10 @@ int encode_film(const spectrum *s, const gen_context *g, const material_params *
     film_encode_f32(&out->model, &out->f32);
     film_decode_f32(&out->f32, &out->model_f32);
     out->q15_ok = film_encode_q15(&out->model, &out->q15) == 0;
+    out->f32_finite = floats_finite((const float *)(const void *)&out->f32, sizeof out->f32 / sizeof(float));
 #if FRESNEL_HAS_F16
     film_encode_f16(&out->model, &out->f16);
+    out->f16_finite = halves_finite((const fresnel_f16 *)(const void *)&out->f16, sizeof out->f16 / sizeof(fresnel_f16));
 #endif
     return 0;
 }

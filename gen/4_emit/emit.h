@@ -98,13 +98,20 @@ typedef int (*emit_type_fn)(FILE *f, const emit_input *in, int material, const c
 int emit_f32_material(FILE *f, const emit_input *in, int material, const char *prefix);
 int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix);
 int emit_f16_material(FILE *f, const emit_input *in, int material, const char *prefix);
+/* The Q1.15 prepared structs' initializers (fresnel_fixed.h LAYOUT;
+ * positional, in declaration order), as the Q1.15 back end writes them
+ * (emit_fixed.c). */
+void emit_q15_qf(FILE *f, fresnel_qf q);
+void emit_q15_ior(FILE *f, fresnel_ior_prep_q15 q);
+void emit_q15_nk(FILE *f, fresnel_nk_prep_q15 q);
+void emit_q15_lsk(FILE *f, fresnel_lsk_prep_q15 q);
+void emit_q15_conductor_fast(FILE *f, fresnel_conductor_prep_q15_fast q);
 /* Material i's thin-film table in number type `type` (emit_film.c), where
- * the scene has the thin-film model: 0, or CLI_BAD_INPUT after a message (a
- * table the type's layout cannot hold). */
+ * the scene has the thin-film model: 0. */
 int emit_film(FILE *f, const emit_input *in, int material, const char *prefix, number_type_id type);
 /* The initializer of one film table in number type `type` ("{...};" and a
- * newline), as emit_film writes it: 0, or -1 (a value the type cannot hold,
- * or a Q1.15 table outside its layout), nothing written. */
-int emit_film_initializer(FILE *f, const encoded_film *film, number_type_id type);
+ * newline), as emit_film writes it; encode_film says whether the type holds
+ * it (encoded_film: q15_ok, f32_finite, f16_finite). */
+void emit_film_initializer(FILE *f, const encoded_film *film, number_type_id type);
 
 #endif

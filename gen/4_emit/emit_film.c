@@ -158,72 +158,32 @@ static const scene_entry *film_entry(const scene *sc)
     return NULL;
 }
 
-/* A literal of a float type must be finite (inf.0f does not compile). */
-static int all_finite(const film_values *v)
+/* The table of `type` as values. */
+static void film_values_of(const encoded_film *film, number_type_id type, film_values *v)
 {
-    const double *d = &v->pole[0][0];
-    size_t i, n = (sizeof *v - offsetof(film_values, pole)) / sizeof *d;
-    for (i = 0; i < n; i++)
-        if (!isfinite(d[i]))
-            return 0;
-    return 1;
-}
-
-static int not_finite(const emit_input *in, const char *prefix, const char *type)
-{
-    char where[1100];
-    snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->models_line);
-    return cli_error(where, "%s: the thin-film table holds a value no %s holds; no header written", prefix, type);
-}
-
-/* The table of `type` as values: 0, or -1 where the Q1.15 layout cannot
- * hold it (film->q15_ok 0) or a value is not finite in the type. */
-static int film_values_of(const encoded_film *film, number_type_id type, film_values *v)
-{
-    if (type == TYPE_F32) {
+    if (type == TYPE_F32)
         values_f32(&film->f32, v);
-    } else if (type == TYPE_Q15) {
-        if (!film->q15_ok)
-            return -1;
+    else if (type == TYPE_Q15)
         values_q15(&film->q15, v);
-        return 0;
-    } else {
 #if FRESNEL_HAS_F16
+    else
         values_f16(&film->f16, v);
-#else
-        return -1;
 #endif
-    }
-    return all_finite(v) ? 0 : -1;
 }
 
-int emit_film_initializer(FILE *f, const encoded_film *film, number_type_id type)
+void emit_film_initializer(FILE *f, const encoded_film *film, number_type_id type)
 {
     film_values v;
-    if (film_values_of(film, type, &v))
-        return -1;
+    film_values_of(film, type, &v);
     put_values(f, &v, type != TYPE_Q15);
-    return 0;
 }
 
 int emit_film(FILE *f, const emit_input *in, int mi, const char *prefix, number_type_id type)
 {
     const scene_entry *e = film_entry(in->sc);
     const encoded_film *film = in->films ? &in->films[mi] : NULL;
-    film_values v;
     if (!e || !film || (!FRESNEL_HAS_F16 && type == TYPE_F16))
         return 0;
-    if (film_values_of(film, type, &v)) {
-        if (type == TYPE_Q15) {
-            char where[1100];
-            snprintf(where, sizeof where, "%s:%d", in->manifest_path, in->sc->types_line);
-            return cli_error(where,
-                             "%s: the thin-film table of a %g film leaves the Q1.15 layout's ranges "
-                             "(include/fresnel_film.h); no header written",
-                             prefix, film->n_film);
-        }
-        return not_finite(in, prefix, type == TYPE_F32 ? "binary32" : "binary16 (largest 65504)");
-    }
     if (type == TYPE_F32) {
         film_comment(f, in, mi, e, "binary32", "fresnel_film_rgb(&table, c, d_nm)");
         fprintf(f, "static const fresnel_film %s_%s FRESNEL_GEN_UNUSED = ", prefix, e->ident);
@@ -235,6 +195,6 @@ int emit_film(FILE *f, const emit_input *in, int mi, const char *prefix, number_
         film_comment(f, in, mi, e, "binary16", "fresnel_film_f16_rgb(&table, c, d_nm)");
         fprintf(f, "static const fresnel_film_f16 %s_%s_f16 FRESNEL_GEN_UNUSED = ", prefix, e->ident);
     }
-    put_values(f, &v, type != TYPE_Q15);
+    emit_film_initializer(f, film, type);
     return 0;
 }

@@ -163,23 +163,46 @@ static int fit_float(const encoded_scene *es, const material_params *p, const ch
                      p->info.id, constant, v);
 }
 
+/* What a scene's number types hold of material i: its parameters (every
+ * one a finite binary32; in binary16 where the scene has it), its Q1.15
+ * constants where the scene has Q1.15, its film's table in each type. */
 static int params_fit(const encoded_scene *es, int i)
 {
     const material_params *p = &es->params[i];
+    const encoded_film *film = es->films ? &es->films[i] : NULL;
+    const scene *sc = es->sc;
+    char where[WHERE_SIZE], why[512];
     int ch, status = 0;
     DERIVED_PARAMETERS(FIT_FLOAT)
+    if (status)
+        return status;
+    if (film && !film->f32_finite)
+        return cli_error(where_at(es, sc->models_line, where),
+                         "%s: the thin-film table holds a value no binary32 holds", p->info.id);
+    if (scene_has_type(sc, TYPE_Q15)) {
+        if (encode_q15_fits(p, &es->enc[i], scene_reads(sc, 0) | (sc->f_avg ? MP_F_AVG : 0u), scene_reads(sc, 1),
+                            why, sizeof why))
+            return cli_error(where_at(es, sc->models_line, where), "%s", why);
+        if (film && !film->q15_ok)
+            return cli_error(where_at(es, sc->types_line, where),
+                             "%s: the thin-film table of a %g film leaves the Q1.15 layout's ranges "
+                             "(include/fresnel_film.h)",
+                             p->info.id, film->n_film);
+    }
 #if FRESNEL_HAS_F16
-    if (!status && scene_has_type(es->sc, TYPE_F16)) {
+    if (scene_has_type(sc, TYPE_F16)) {
         const encoded_material *e = &es->enc[i];
-        char where[WHERE_SIZE];
         int finite = 1;
         DERIVED_PARAMETERS(FIT_F16)
         if (!finite)
-            return cli_error(where_at(es, es->sc->types_line, where),
+            return cli_error(where_at(es, sc->types_line, where),
                              "material %s: a parameter does not fit binary16 (largest 65504)", p->info.id);
+        if (film && !film->f16_finite)
+            return cli_error(where_at(es, sc->models_line, where),
+                             "%s: the thin-film table holds a value no binary16 (largest 65504) holds", p->info.id);
     }
 #endif
-    return status;
+    return 0;
 }
 
 /* A table every number type can hold: finite nodes, each a Q1.15 code. */

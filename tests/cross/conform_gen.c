@@ -16,13 +16,12 @@
 #include "model/registry.h"
 #include "common/reference.h"
 
-static void qf(const char *name, fresnel_qf v) { printf(" .%s = {%uu, %d},", name, (unsigned)v.m, (int)v.e); }
-
-static void ior(const char *name, const fresnel_ior_prep_q15 *m)
+/* Each prepared struct as `fresnel gen`'s Q1.15 back end writes it. */
+static void ior(const char *name, fresnel_ior_prep_q15 m)
 {
-    printf(" .%s = {%d, %d, %d,", name, (int)m->a0, (int)m->a0_lo, (int)m->shift);
-    printf(" {%uu, %d}, {%uu, %d}, {%uu, %d}, {%uu, %d}},", (unsigned)m->b.m, (int)m->b.e, (unsigned)m->n4.m,
-           (int)m->n4.e, (unsigned)m->t1_inv.m, (int)m->t1_inv.e, (unsigned)m->inv_eta2.m, (int)m->inv_eta2.e);
+    printf(" .%s = ", name);
+    emit_q15_ior(stdout, m);
+    putchar(',');
 }
 
 /* The thin film's tables (fresnel_film.h): a 2.5 film on gold in air,
@@ -48,10 +47,10 @@ static int print_film(void)
     e->q15_ok = 1;
     film_encode_f32(m, &e->f32);
     printf("\n/* a 2.5 film on gold in air, sRGB */\n#if FRESNEL_HAS_FLOAT\nconst fresnel_film conform_film_f32 = ");
-    if (emit_film_initializer(stdout, e, TYPE_F32))
-        goto done;
+    emit_film_initializer(stdout, e, TYPE_F32);
     printf("#endif\nconst fresnel_film_q15 conform_film = ");
-    status = emit_film_initializer(stdout, e, TYPE_Q15) ? 1 : 0;
+    emit_film_initializer(stdout, e, TYPE_Q15);
+    status = 0;
 done:
     free(g);
     free(m);
@@ -80,20 +79,19 @@ int main(void)
         model_fixed_from_params(&mp, &mf);
         printf("    /* %s */ {%d, %d, %d, %d, %d, %d,", mat[k].name, (int)mf.f0, (int)mf.f82, (int)mf.f90,
                (int)mf.r, (int)mf.g, (int)mf.p);
-        ior("ior", &mf.ior);
-        ior("dior", &mf.dior);
-        printf(" .nk = {");
-        qf("n", mf.nk.n);
-        qf("nk2", mf.nk.nk2);
-        printf("}, .gnk = {");
-        qf("n", mf.gnk.n);
-        qf("nk2", mf.gnk.nk2);
-        printf("}, .lsk = {%uu, {%uu, %d}, %d},", (unsigned)mf.lsk.f0, (unsigned)mf.lsk.a.m, (int)mf.lsk.a.e,
-               (int)mf.lsk.alpha);
+        ior("ior", mf.ior);
+        ior("dior", mf.dior);
+        printf(" .nk = ");
+        emit_q15_nk(stdout, mf.nk);
+        printf(", .gnk = ");
+        emit_q15_nk(stdout, mf.gnk);
+        printf(", .lsk = ");
+        emit_q15_lsk(stdout, mf.lsk);
         fixed_conductor_fast(mat[k].eta, mat[k].kappa, &cf);
-        printf(" .eta = %d, .kappa = %d, .f82_a = %d, .cfast = {%d, %d, %d, %d, %d, %d, %d, %uu}},\n",
-               (int)fixed_q16(mat[k].eta), (int)fixed_q16(mat[k].kappa), (int)fixed_f82_a_q12(mf.f0, mf.f82), (int)cf.a0,
-               (int)cf.a0_lo, (int)cf.shift, (int)cf.b1, (int)cf.b2, (int)cf.bm, (int)cf.be, (unsigned)cf.span);
+        printf(", .eta = %d, .kappa = %d, .f82_a = %d, .cfast = ", (int)fixed_q16(mat[k].eta), (int)fixed_q16(mat[k].kappa),
+               (int)fixed_f82_a_q12(mf.f0, mf.f82));
+        emit_q15_conductor_fast(stdout, cf);
+        printf("},\n");
         if (!strcmp(mat[k].name, "cu 550")) {
             bench = k;
             bench_mp = mp;
