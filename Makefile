@@ -172,7 +172,8 @@ report: $(BUILD)/fresnel
 	done
 	$(BUILD)/fresnel report -o $(BUILD)/report --cross $(BUILD)/report/cross-count.txt --size $(BUILD)/report/size.txt \
 	    $(foreach cc,$(BENCH_CCS),--speed $(BUILD)/report/speed-$(cc)-O2.txt --speed $(BUILD)/report/speed-$(cc)-O3-native.txt)
-	@echo "make report: build/report/report.md (targets, accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/"
+	@echo "make report: build/report/report.md (accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/;"
+	@echo "             build/report/targets.md (for the developers: the project's goals, each measured and marked)"
 
 # `make bench` times the library against the peers' algorithms and floor
 # loops (tests/speed/speed.c; the file format is in gen/bench/speed_targets.h),

@@ -67,7 +67,7 @@ typedef struct report_film {
 
 /* One run of the report: the scene, its materials and every measurement. */
 typedef struct report_run {
-    const char *out_dir;
+    const char *out_dir, *scene_path;
     scene sc;
     gen_context *g;
     lab_space ls;
@@ -104,7 +104,8 @@ typedef struct report_hoffman_row {
 extern const report_hoffman_row report_hoffman[REPORT_HOFFMAN];
 /* Index of material id in the run, or -1. */
 int report_material_index(const report_run *r, const char *id);
-/* The library's targets: each with its measured value and a pass/miss mark
+/* The project's targets for the library, each with its measured value and a
+ * pass/miss mark: targets.md, the developers' file beside report.md
  * (report_targets.c). Needs hoffman_rms filled. */
 void report_targets(report_run *r, FILE *f);
 
@@ -143,6 +144,8 @@ int report_film_take(report_run *r, const char *scene_path);
 int report_film_measure(report_run *r, int i);
 void report_film_time(report_run *r);
 void report_film_write(report_run *r, FILE *f);
+/* The film's rows of the targets table (targets.md). */
+void report_film_targets(const report_run *r, FILE *f);
 void report_film_free(report_run *r);
 
 /* What `fresnel report` was asked for; report_write measures and writes it:

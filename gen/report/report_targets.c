@@ -1,4 +1,5 @@
-/* The library's targets, each with the value this run measured and a pass/miss
+/* The project's targets for the library (targets.md, the developers' file
+ * beside report.md), each with the value this run measured and a pass/miss
  * mark, plus the LUT ablation that shows which encoding choice bought what.
  * Accuracy comes from the run's own materials (the 14 metals of Hoffman's
  * table must be in the scene), host speed from the output of `make bench`
@@ -451,10 +452,11 @@ void report_targets(report_run *r, FILE *f)
 {
     lut_result luts[N_VARIANTS];
     lut_measure(r, luts);
-    fprintf(f, "## Targets\n\nEach target of the library with the value this run measured. Accuracy: "
+    fprintf(f, "# Targets\n\nThe project's goals for the library, for its developers, each with the value this run "
+               "measured (`build/fresnel report --scene %s`; the measurements themselves: report.md). Accuracy: "
                "theta 0-90 deg in 1 deg steps, linear %s, against the spectral ground truth under the gamut policy, on the 14 "
                "metals of Hoffman's table.\n\n| target | goal | measured | |\n|---|---|---|---|\n",
-            r->sc.space);
+            r->scene_path, r->sc.space);
     lut_target(f, "LUT, 16 nodes per channel in Q1.15 (96 bytes per material): lut16-cubic", &luts[V_LUT16_CUBIC],
                0.01, 0.05);
     lut_target(f, "LUT, 32 nodes per channel in Q1.15 (192 bytes): lut32", &luts[V_LUT32], 0.005, 0.03);
@@ -472,6 +474,7 @@ void report_targets(report_run *r, FILE *f)
                luts[V_LUT16_CUBIC].gold_max, luts[V_LUT32].gold_mean, luts[V_LUT32].gold_max);
     host_speed_targets(r, f);
     m0_targets(r, f);
+    report_film_targets(r, f);
     write_ablation(f, luts);
     fprintf(f, "\n");
 }
