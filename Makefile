@@ -320,7 +320,7 @@ search: $(BUILD)/tests/test_film_search $(BUILD)/tests/test_model_search $(BUILD
 
 # ---- fixed point, fp16 and cross targets ----
 # Everything below belongs to the fixed-point / binary16 runtime and its
-# cross builds (include/fresnel_fixed.h, include/fresnel_f16.h, ports/).
+# cross builds (include/fresnel_q15.h, include/fresnel_f16.h, ports/).
 
 # _Float16 on x86-64 without F16C converts through libgcc (__extendhfsf2,
 # __truncsfhf2): with -mf16c each conversion is one instruction, the values

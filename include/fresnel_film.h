@@ -57,7 +57,7 @@
  *
  * DOMAIN AND RESULTS
  *   c: cosine in the incident medium, clamped to [0, 1] (NaN and -Inf 0,
- *   +Inf 1; Q15: any int32, as fresnel_fixed.h). d: thickness in nm,
+ *   +Inf 1; Q15: any int32, as fresnel_q15.h). d: thickness in nm,
  *   clamped to [0, FRESNEL_FILM_D_MAX] (NaN and negative 0, +Inf the
  *   maximum; Q15: Q16.16 nm, any int32), the range the spectral truth
  *   resolves (at 5000 nm the fringes are 5.8 samples of the 1 nm sum apart
@@ -143,7 +143,7 @@
 #include <stdint.h>
 
 #include "fresnel.h"
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 #include "fresnel_f16.h"
 
 #ifdef __cplusplus
@@ -200,7 +200,7 @@ typedef struct fresnel_film_q15 {
     int16_t weight[3][FRESNEL_FILM_POLES][2];
     fresnel_film_node_q15 node[FRESNEL_FILM_NODES];
 } fresnel_film_q15;
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 /* c Q15, d Q16.16 nm. Error <= FRESNEL_BOUND_FILM_Q15 LSB. */
 fresnel_rgb_q15 fresnel_film_q15_rgb(const fresnel_film_q15 *m, int32_t c, fresnel_q16 d_nm);
 #endif

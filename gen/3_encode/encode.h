@@ -12,7 +12,7 @@
 #include "fresnel.h"
 #include "fresnel_f16.h"
 #include "fresnel_film.h"
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 
 /* LUT_GRAZING: nodes uniform in sqrt(c); LUT_UNIFORM: in c; LUT_GRAZING_PL:
  * uniform in fresnel_fixed_fast.h's 64-piece linear stand-in for sqrt(c), the

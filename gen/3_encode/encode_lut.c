@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fresnel_fixed_fast.h"
+#include "fresnel_q15_fast.h"
 #include "3_encode/encode.h"
 #include "common/reference.h"
 

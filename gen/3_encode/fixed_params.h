@@ -5,8 +5,8 @@
 #ifndef FRESNEL_FIXED_PARAMS_H
 #define FRESNEL_FIXED_PARAMS_H
 
-#include "fresnel_fixed.h"
-#include "fresnel_fixed_fast.h"
+#include "fresnel_q15.h"
+#include "fresnel_q15_fast.h"
 
 fresnel_qf fixed_qf(double x);          /* x >= 0; 0 for x <= 0 or NaN */
 int32_t fixed_q15(double x);            /* round(x 32768), x clamped to [0, 65535/32768] (Q15 headroom) */

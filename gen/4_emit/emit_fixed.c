@@ -102,7 +102,7 @@ static void put_ior(fx_out *o, double eta, double kappa, fresnel_ior_prep_q15 q,
     fputc('}', o->f);
 }
 
-#define IOR_FIELDS "fields a0, a0_lo, shift, b, n4, t1_inv, inv_eta2 (fresnel_fixed.h LAYOUT)"
+#define IOR_FIELDS "fields a0, a0_lo, shift, b, n4, t1_inv, inv_eta2 (fresnel_q15.h LAYOUT)"
 
 static void emit_ior3(fx_out *o, const char *prefix, const char *name, const double *eta, const double *kappa,
                       const fresnel_ior_prep_q15 q[3], const char *why)
@@ -132,11 +132,11 @@ static void emit_ior_fast3(fx_out *o, const char *prefix, const double *eta, con
     snprintf(id, sizeof id, "%s_ior_fast_q15", prefix);
     if (ch >= 0) {
         fprintf(o->f, "/* no %s: the %s channel's eta %.6g, kappa %.6g lie outside\n * fresnel_conductor_q15_fast's "
-                      "domain (fresnel_fixed_fast.h) */\n",
+                      "domain (fresnel_q15_fast.h) */\n",
                 id, channel[ch], eta[ch], kappa[ch]);
         return;
     }
-    fprintf(o->f, "/* the same eta, kappa for fresnel_conductor_q15_rgb_fast (fresnel_fixed_fast.h; one\n"
+    fprintf(o->f, "/* the same eta, kappa for fresnel_conductor_q15_rgb_fast (fresnel_q15_fast.h; one\n"
                   " * channel: fresnel_conductor_q15_fast); fields a0, a0_lo, shift, b1, b2, bm, be, span */\n"
                   "static const fresnel_conductor_prep_q15_fast %s[3] FRESNEL_GEN_UNUSED = {\n",
             id);
@@ -211,7 +211,7 @@ static void emit_lut_q15(fx_out *o, const char *prefix, const scene_entry *e, co
                 model, t->frac, spacing == LUT_UNIFORM ? "linear_" : "", n, prefix, name, prefix, name, t->frac, id,
                 3 * n);
     else if (spacing == LUT_GRAZING_PL)
-        fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_fixed_fast.h's\n"
+        fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_q15_fast.h's\n"
                    " * piecewise-linear sqrt(c). Evaluate per channel with\n"
                    " * fresnel_lut_pl_u16_q15_fast(table + ch * %d, %d, c). */\n"
                    "static const uint16_t %s[%d] FRESNEL_GEN_UNUSED = {",
@@ -241,7 +241,7 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
     if (reads & MP_F0)
         emit_q15_rgb(&o, prefix, "f0", p->f0, e->q_f0, 65535,
                      e->q_f0_held ? "F0, held to one where the gamut policy keeps it above (every Q1.15 function reads it\n"
-                                    " * so, and the fast paths of fresnel_fixed_fast.h take f0 only up to one)"
+                                    " * so, and the fast paths of fresnel_q15_fast.h take f0 only up to one)"
                                   : "F0");
     if (sc->f_avg)
         emit_q15_rgb(&o, prefix, "f_avg", p->f_avg, e->q_f_avg, 65535, "F_avg = 2 int F(mu) mu dmu of the ground truth");
@@ -258,7 +258,7 @@ int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefi
             a[ch] = fx_check(&o, (double)e->q_f82_a[ch], -73000.0, 73000.0, "a_q12 [-73000, 73000]", "F82's a", id);
         }
         fprintf(f, "/* F82's a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) times 4096, from the Q1.15 F0 and F82\n"
-                   " * (fresnel_f82_q15_rgb_fast(f0, a, c) in fresnel_fixed_fast.h) */\n"
+                   " * (fresnel_f82_q15_rgb_fast(f0, a, c) in fresnel_q15_fast.h) */\n"
                    "static const int32_t %s[3] FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
                 id, a[0], a[1], a[2]);
     }

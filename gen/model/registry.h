@@ -15,7 +15,7 @@
 
 #include "fresnel.h"
 #include "fresnel_f16.h"
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 #include "3_encode/encode.h"
 
 /* Where a row is offered. */

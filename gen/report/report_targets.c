@@ -15,8 +15,8 @@
 #include "bench/bench_targets.h"
 #include "bench/speed_targets.h"
 #include "3_encode/fixed_params.h"
-#include "fresnel_fixed.h"
-#include "fresnel_fixed_fast.h"
+#include "fresnel_q15.h"
+#include "fresnel_q15_fast.h"
 #include "report/report.h"
 
 enum { MISS, PASS, UNMEASURED };
