@@ -144,8 +144,6 @@ int report_film_take(report_run *r, const char *scene_path);
 int report_film_measure(report_run *r, int i);
 void report_film_time(report_run *r);
 void report_film_write(report_run *r, FILE *f);
-/* The film's rows of the targets table (targets.md). */
-void report_film_targets(const report_run *r, FILE *f);
 void report_film_free(report_run *r);
 
 /* What `fresnel report` was asked for; report_write measures and writes it:

@@ -16,12 +16,6 @@
 /* Thicknesses measured across the scene's range (one where it is one). */
 #define FILM_THICKNESSES 201
 
-/* The thin film's goals (targets.md), per number type id: mean and max
- * CIEDE2000; 0 where the goal names none. */
-static const double goal_mean[NUMBER_TYPES] = {0.5, 0.6, 1.0};
-static const double goal_max[NUMBER_TYPES] = {2.0, 2.5, 0.0};
-#define GOAL_M0_INSTRUCTIONS 2000.0
-
 int report_film_take(report_run *r, const char *scene_path)
 {
     report_film *f = &r->film;
@@ -228,34 +222,3 @@ void report_film_write(report_run *r, FILE *out)
                 m0);
 }
 
-/* One row of the targets table per type with a goal, and the Cortex-M0's. */
-void report_film_targets(const report_run *r, FILE *out)
-{
-    const report_film *f = &r->film;
-    const scene *sc = &r->sc;
-    int i, t;
-    double m0;
-    if (!f->present)
-        return;
-    for (t = 0; t < number_types_available; t++) {
-        int id = number_types[t].id, ok;
-        double mean = 0.0, max = 0.0;
-        char goal[64];
-        for (i = 0; i < sc->material_count; i++) {
-            mean += f->cells[i * number_types_available + t].de_mean / sc->material_count;
-            max = fmax(max, f->cells[i * number_types_available + t].de_max);
-        }
-        if (goal_max[id] > 0.0)
-            snprintf(goal, sizeof goal, "<= %g mean, <= %g max dE2000", goal_mean[id], goal_max[id]);
-        else
-            snprintf(goal, sizeof goal, "<= %g mean dE2000", goal_mean[id]);
-        ok = mean <= goal_mean[id] && (goal_max[id] <= 0.0 || max <= goal_max[id]);
-        fprintf(out, "| Thin film (%s) in %s against its spectral truth, the scene's materials | %s | mean %.3f, max %.3f | %s |\n",
-                f->entry.name, number_types[t].name, goal, mean, max, ok ? "**pass**" : "**MISS**");
-    }
-    m0 = r->cross_path && f->entry.row->cross_row ? report_m0_count(r->cross_path, f->entry.row->cross_row) : NAN;
-    if (!isnan(m0))
-        fprintf(out, "| Cortex-M0 fixed point, thin film: instructions per RGB evaluation of fresnel_film_q15_rgb (qemu trace) "
-                     "| <= %g | %.0f | %s |\n",
-                GOAL_M0_INSTRUCTIONS, m0, m0 <= GOAL_M0_INSTRUCTIONS ? "**pass**" : "**MISS**");
-}
