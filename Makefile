@@ -172,7 +172,8 @@ report: $(BUILD)/fresnel
 	done
 	$(BUILD)/fresnel report -o $(BUILD)/report --cross $(BUILD)/report/cross-count.txt --size $(BUILD)/report/size.txt \
 	    $(foreach cc,$(BENCH_CCS),--speed $(BUILD)/report/speed-$(cc)-O2.txt --speed $(BUILD)/report/speed-$(cc)-O3-native.txt)
-	@echo "make report: build/report/report.md (targets, accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/"
+	@echo "make report: build/report/report.md (accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/;"
+	@echo "             build/report/targets.md (for the developers: the project's goals, each measured and marked)"
 
 # `make bench` times the library against the peers' algorithms and floor
 # loops (tests/speed/speed.c; the file format is in gen/bench/speed_targets.h),
@@ -320,7 +321,7 @@ search: $(BUILD)/tests/test_film_search $(BUILD)/tests/test_model_search $(BUILD
 
 # ---- fixed point, fp16 and cross targets ----
 # Everything below belongs to the fixed-point / binary16 runtime and its
-# cross builds (include/fresnel_fixed.h, include/fresnel_f16.h, ports/).
+# cross builds (include/fresnel_q15.h, include/fresnel_f16.h, ports/).
 
 # _Float16 on x86-64 without F16C converts through libgcc (__extendhfsf2,
 # __truncsfhf2): with -mf16c each conversion is one instruction, the values

@@ -16,7 +16,7 @@
  *     fresnel_rgb cu = fresnel_conductor_rgb(eta, kappa, c);
  *   Link src/f32/\*.c (or the installed libfresnel.a) and -lm. Each number
  *   type's code is one self-contained folder: src/f32/ (this header),
- *   src/q15/ (fresnel_fixed.h), src/f16/ (fresnel_f16.h). A vendoring
+ *   src/q15/ (fresnel_q15.h), src/f16/ (fresnel_f16.h). A vendoring
  *   project copies include/ and the folders of the types it uses.
  *
  * NAMING (the rule of every public name of include/\*.h; the word lists,
@@ -76,8 +76,8 @@
  *       model's tables;
  *       SIZE = POLES NODES;
  *     CONFIG, CFG_<FLAG>, HAS_<FEATURE> (fresnel_config.h);
- *       FLAG = NO_FLOAT NO_F16 NO_FIXED NO_SIMD KNOWN_FLAGS;
- *       FEATURE = FLOAT F16 FIXED SIMD;
+ *       FLAG = NO_FLOAT NO_F16 NO_Q15 NO_SIMD KNOWN_FLAGS;
+ *       FEATURE = FLOAT F16 Q15 SIMD;
  *     <HEADER>_H, the include guard of fresnel_<header>.h (FRESNEL_H).
  *   The runtime's internal helpers are fresnel_i_* and FRESNEL_I_*
  *   (fresnel_config.h), not API. A header's ALIASES block #defines second
@@ -103,7 +103,7 @@
  *   Colours outside the display's gamut: the generator's gamut policy
  *   (README) decides what the constants and tables hold. Under `keep`
  *   (values above 1 kept, for HDR and wide-gamut pipelines) only the curve
- *   tables carry them, here and in fresnel_fixed.h (uint16_t nodes, up to
+ *   tables carry them, here and in fresnel_q15.h (uint16_t nodes, up to
  *   2 - 2^-15) and fresnel_f16.h; every other function, the residual tables
  *   included, clamps F0 and its result to 1 as above, so gold's F0 of 1.04
  *   in linear sRGB is evaluated as 1 by them.

@@ -18,7 +18,7 @@
  *                         built by a compiler that has it (gcc, g++) against
  *                         a library built by one that has not (clang 14 on
  *                         x86-64) must say NO_F16 too.
- *   FRESNEL_CFG_NO_FIXED  no fixed-point functions (fresnel_fixed.h,
+ *   FRESNEL_CFG_NO_Q15    no Q1.15 fixed-point functions (fresnel_q15.h,
  *                         src/q15/).
  *   FRESNEL_CFG_NO_SIMD   the binary32 batches (fresnel_conductor_batch,
  *                         ..._rgb_batch) in portable C instead of the SSE2,
@@ -40,7 +40,7 @@
 
 #define FRESNEL_CFG_NO_FLOAT 0x1
 #define FRESNEL_CFG_NO_F16 0x2
-#define FRESNEL_CFG_NO_FIXED 0x4
+#define FRESNEL_CFG_NO_Q15 0x4
 #define FRESNEL_CFG_NO_SIMD 0x8
 #define FRESNEL_CFG_KNOWN_FLAGS 0xf
 
@@ -48,7 +48,7 @@
 #define FRESNEL_CONFIG 0
 #endif
 
-#if defined(FRESNEL_NO_FLOAT) || defined(FRESNEL_NO_F16) || defined(FRESNEL_NO_FIXED) || \
+#if defined(FRESNEL_NO_FLOAT) || defined(FRESNEL_NO_F16) || defined(FRESNEL_NO_FIXED) || defined(FRESNEL_NO_Q15) || \
     defined(FRESNEL_NO_FLOATS) || defined(FRESNEL_NO_FIXED_POINT) || defined(FRESNEL_NO_HALF) || \
     defined(FRESNEL_FIXED_ONLY) || defined(FRESNEL_CFG) || defined(FRESNEL_NO_SIMD)
 #error "fresnel: configure with -DFRESNEL_CONFIG='FRESNEL_CFG_NO_FLOAT|...' (see fresnel_config.h)"
@@ -59,8 +59,15 @@
 typedef char fresnel_i_config_has_unknown_flags[(((FRESNEL_CONFIG) & ~FRESNEL_CFG_KNOWN_FLAGS) == 0) ? 1 : -1];
 
 #define FRESNEL_HAS_FLOAT (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_FLOAT) == 0)
-#define FRESNEL_HAS_FIXED (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_FIXED) == 0)
+#define FRESNEL_HAS_Q15 (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_Q15) == 0)
 #define FRESNEL_HAS_SIMD (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_SIMD) == 0)
+
+/* ALIASES: second names that code and generated headers may spell, each the
+ * name of fresnel.h's NAMING rule it stands for (tests/test_public_names.sh
+ * reads this block), kept for existing code: FIXED is the Q1.15 type. */
+#define FRESNEL_CFG_NO_FIXED FRESNEL_CFG_NO_Q15
+#define FRESNEL_HAS_FIXED FRESNEL_HAS_Q15
+/* end of ALIASES */
 /* _Float16 needs the compiler's support as well as the configuration: gcc
  * defines __FLT16_MANT_DIG__ exactly where it accepts _Float16 (x86-64,
  * Arm with -mfp16-format=ieee or an FP16 FPU, AArch64); clang 14 on x86-64

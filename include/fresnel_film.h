@@ -57,7 +57,7 @@
  *
  * DOMAIN AND RESULTS
  *   c: cosine in the incident medium, clamped to [0, 1] (NaN and -Inf 0,
- *   +Inf 1; Q15: any int32, as fresnel_fixed.h). d: thickness in nm,
+ *   +Inf 1; Q15: any int32, as fresnel_q15.h). d: thickness in nm,
  *   clamped to [0, FRESNEL_FILM_D_MAX] (NaN and negative 0, +Inf the
  *   maximum; Q15: Q16.16 nm, any int32), the range the spectral truth
  *   resolves (at 5000 nm the fringes are 5.8 samples of the 1 nm sum apart
@@ -101,9 +101,7 @@
  *   films from the ambient's index to 4 over twelve substrates in air,
  *   1.33, 1.4, 1.5 and at the domain's edge; `make search`, and `make
  *   test` on the worst stacks it keeps): FRESNEL_BOUND_FILM, _Q15 (LSB),
- *   _F16. Found: binary32 1.33e-6 (Ti under a 3.5 film in air), Q1.15
- *   45.2 LSB (Ti under 1.5 in an ambient of 1.4), binary16 0.0100 (Ti
- *   under 2.5 in air); in air Q1.15 35.3 LSB (Ag under 4.0).
+ *   _F16 (the searched maxima and where: tests/README.md, "Thin film").
  *   Against the spectral truth, CIEDE2000 under the clip policy, films n_f
  *   1.2-2.5 (every 0.1) on Au, Cu, Al, Ti, Fe and BK7 in air, theta 0-89
  *   deg (every degree), d 0-1000 nm (every 5 nm), 1.52 million samples
@@ -121,52 +119,23 @@
  *   binary32: 53 interpolated table values, 6 complex exponentials (short
  *   polynomials, no libm call), 6 complex divisions, 36 multiply-adds for
  *   the channels; the poles' loop runs 8 lanes, padded, without a branch,
- *   and compilers vectorise it (src/f32/film.c). make bench, rows film-f32
- *   and schlick-rgb-f32, target film-vs-schlick-rgb (medians of the ratio
- *   in the same round; gcc 12 and clang 14, an AMD EPYC x86-64; the run
- *   of make report, data/report/report.md's targets table):
- *                               film ns   fresnel_schlick_rgb ns   ratio
- *     gcc -O2                    65.8           6.1                10.8
- *     gcc -O3 -march=native      67.9           5.2                13.2
- *     clang -O2                  74.4           3.0                24.5
- *     clang -O3 -march=native    72.4           2.2                33.3
- *   On AArch64 (make cross-count, a64 rows f32 thin-film and f32
- *   schlick-rgb, instructions per call): gcc -O2 679 against 102, clang
- *   -O2 657 against 47.
- *   The film costs 65-75 ns under every compiler (at 4 lanes, two vectors
- *   of the poles' work, each an exponential, a phase and a complex
- *   division, and the interpolation and channels' sums around them), while
- *   fresnel_schlick_rgb costs 2-6 ns, the least with clang. Fewer poles
- *   cost about as much time (below).
- *   By pole count (sh tests/speed/film_poles.sh: each count built on its
- *   own; CIEDE2000 against the spectral truth at build/tests/test_film's
- *   default sampling, 18180 samples; binary32 time and its ratio to
- *   fresnel_schlick_rgb in the same round, make bench gcc -O2; Cortex-M0
- *   instructions per RGB call, make cross-count's thin-film row):
- *             binary32      Q1.15        binary16     binary32     M0
- *     poles   mean   max    mean   max   mean   max   ns   ratio   instr
- *       3     0.829 12.13   0.829 12.16  0.837 12.23  70.6  11.6   1809
- *       4     0.458  8.07   0.458  8.04  0.468  8.05  66.7  10.3   2249
- *       5     0.125  2.66   0.127  2.66  0.151  2.75  75.0  12.3   2665
- *       6     0.079  1.02   0.081  1.02  0.111  1.09  65.4  10.7   3396
- *   Below six poles the CIEDE2000 maximum rises from 1.0 to 2.7 and more.
- *   The binary32 time hardly changes with the count: the loop runs eight
- *   lanes whatever it is.
- *   Q1.15 on a Cortex-M0 (make cross-count, row thin-film: gcc -Os, qemu
- *   trace over tests/cross/bench.c's 153 cosines, thicknesses 0-4096 nm):
- *   3396 instructions on average, 2020-3949 (4840 cycles with a 1-cycle
- *   multiplier, 15242 with a 32-cycle one; Cortex-M4F 1945, RV32IMC
- *   2373); no division instruction (a 257-entry reciprocal table after a
- *   shift normalisation), no soft-float helper; 1.2 KiB of shared tables
- *   (quarter sine, 2^-x, 1/x), 1.9 KiB of code. Each pole interpolates 8
- *   values and forms a complex exponential from tables and a complex
- *   division normalised by shifts, and the channels' sums take 72
- *   multiplications (16-bit weights by 30-bit terms split in two halves:
- *   the Cortex-M0 has no 64-bit product); three poles take 1809
- *   instructions at a CIEDE2000 maximum twelve times six poles'. Bit-identical on the Cortex-M0, M4F and RV32IMC and the host
- *   (make cross-test).
+ *   and compilers vectorise it (src/f32/film.c). Measured: 65.8 ns (gcc
+ *   -O2, x86-64; `make bench`, row film-f32, median; every compiler and
+ *   flag set: data/report/report.md, "Host speed against other renderers'
+ *   algorithms").
+ *   Q1.15: each pole interpolates 8 values and forms a complex exponential
+ *   from tables and a complex division normalised by shifts (a 257-entry
+ *   reciprocal table, no division instruction, no soft-float helper); the
+ *   channels' sums take 72 multiplications (16-bit weights by 30-bit terms
+ *   split in two halves: no 64-bit product). Measured: 3396 instructions
+ *   on a Cortex-M0 (`make cross-count`, row thin-film, mean; every target:
+ *   data/report/report.md, "Cortex-M0, Cortex-M4F, RV32IMC and AArch64").
+ *   Bit-identical on the Cortex-M0, M4F and RV32IMC and the host (make
+ *   cross-test).
+ *   binary16: the binary32 operations, in half.
  *   Table per material: sizeof(fresnel_film) 6976 bytes, fresnel_film_q15
- *   3560, fresnel_film_f16 3488.
+ *   3560, fresnel_film_f16 3488 (`fresnel report`, "Thin film").
+ *   Accuracy and cost by pole count: tests/README.md, "Thin film: poles".
  */
 #ifndef FRESNEL_FILM_H
 #define FRESNEL_FILM_H
@@ -174,7 +143,7 @@
 #include <stdint.h>
 
 #include "fresnel.h"
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 #include "fresnel_f16.h"
 
 #ifdef __cplusplus
@@ -231,7 +200,7 @@ typedef struct fresnel_film_q15 {
     int16_t weight[3][FRESNEL_FILM_POLES][2];
     fresnel_film_node_q15 node[FRESNEL_FILM_NODES];
 } fresnel_film_q15;
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 /* c Q15, d Q16.16 nm. Error <= FRESNEL_BOUND_FILM_Q15 LSB. */
 fresnel_rgb_q15 fresnel_film_q15_rgb(const fresnel_film_q15 *m, int32_t c, fresnel_q16 d_nm);
 #endif

@@ -128,25 +128,25 @@ cmd_nm() {
     target m0
     d=$OUT/m0/fixed-only
     mkdir -p "$d"
-    rm -f "$d"/*.o "$d/libfresnel_fixed.a"
+    rm -f "$d"/*.o "$d/libfresnel_q15.a"
     for f in $ALL_SRC; do
         $CC $W $CF $FIXED_ONLY -Iinclude -c "$f" -o "$d/$(basename "$f" .c).o" || { echo "FAIL cross m0: $f does not build"; return; }
     done
-    $AR rcs "$d/libfresnel_fixed.a" "$d"/*.o
+    $AR rcs "$d/libfresnel_q15.a" "$d"/*.o
     # The configuration, not the file list, keeps binary32 and binary16 out:
     # every global the library defines is a fixed-point one.
-    other=$($NMT --defined-only "$d/libfresnel_fixed.a" | awk 'NF == 3 && $2 ~ /^[A-Z]$/ { print $3 }' |
+    other=$($NMT --defined-only "$d/libfresnel_q15.a" | awk 'NF == 3 && $2 ~ /^[A-Z]$/ { print $3 }' |
         grep -v -e '_q15' -e '^fresnel_i_' -e '^fresnel_isqrt_u32$' -e '^fresnel_udiv_frac_u32$' -e '^fresnel_recip_q16$' | sort -u | tr '\n' ' ')
-    q15=$($NMT --defined-only "$d/libfresnel_fixed.a" | awk '$3 == "fresnel_schlick_q15" { print $3 }')
+    q15=$($NMT --defined-only "$d/libfresnel_q15.a" | awk '$3 == "fresnel_schlick_q15" { print $3 }')
     if [ -z "$other" ] && [ -n "$q15" ]; then
         echo "PASS cross m0: all $(echo $ALL_SRC | wc -w) files of src/ with $FIXED_ONLY define only fixed-point symbols (fresnel_schlick_q15, no fresnel_schlick)"
     else
         echo "FAIL cross m0: the fixed-only build of src/ defines ${other:-no fresnel_schlick_q15}"
     fi
-    $CC $W $CF $FIXED_ONLY $INC $LD tests/cross/schlick_only.c $PORT_COMMON $PORT "$d/libfresnel_fixed.a" -lgcc \
+    $CC $W $CF $FIXED_ONLY $INC $LD tests/cross/schlick_only.c $PORT_COMMON $PORT "$d/libfresnel_q15.a" -lgcc \
         -o "$d/schlick_only.elf" 2>"$d/err" || { echo "FAIL cross m0: schlick_only: $(head -3 "$d/err")"; return; }
     [ -f "$OUT/m0/conform_1.elf" ] || build_prog m0 conform 1 || { echo "FAIL cross m0: conformance firmware does not build"; return; }
-    for f in "$d/libfresnel_fixed.a" "$d/schlick_only.elf" "$OUT/m0/conform_1.elf"; do
+    for f in "$d/libfresnel_q15.a" "$d/schlick_only.elf" "$OUT/m0/conform_1.elf"; do
         bad=$($NMT "$f" | awk '{ print $NF }' | grep -E '^(__aeabi_[fd]|__aeabi_[iu]?l|__aeabi_[iu]?div|__aeabi_[iu]idiv|__aeabi_ldiv|__aeabi_lmul|__aeabi_llsl|__aeabi_llsr|__aeabi_lasr|__clz|__(add|sub|mul|div|fix|float|extend|trunc|cmp|eq|ne|lt|le|gt|ge|un)[sdht]f|sqrtf?$|powf?$|expf?$|logf?$|log1pf?$)' | sort -u | tr '\n' ' ')
         if [ -z "$bad" ]; then
             echo "PASS cross m0: $(basename "$f") (-mcpu=cortex-m0 -mthumb -Os, --gc-sections): no soft-float, int64, division, clz or libm symbol"
@@ -154,8 +154,8 @@ cmd_nm() {
             echo "FAIL cross m0: $(basename "$f") references $bad"
         fi
     done
-    ext=$($NMT -u "$d/libfresnel_fixed.a" | awk 'NF == 2 { print $2 }' | sort -u)
-    defined=$($NMT --defined-only "$d/libfresnel_fixed.a" | awk 'NF == 3 { print $3 }' | sort -u)
+    ext=$($NMT -u "$d/libfresnel_q15.a" | awk 'NF == 2 { print $2 }' | sort -u)
+    defined=$($NMT --defined-only "$d/libfresnel_q15.a" | awk 'NF == 3 { print $3 }' | sort -u)
     outside=$(printf '%s\n' "$ext" | grep -vxF "$defined" | grep -v '^$' | tr '\n' ' ')
     case "$outside" in
     "" | "memcpy " | "memset " | "memcpy memset ") echo "PASS cross m0: the fixed-point library needs nothing from outside but ${outside:-nothing}(struct copies)" ;;
@@ -288,7 +288,7 @@ cmd_size() {
             echo "$row"
         done
     done
-    # The inline fast paths of fresnel_fixed_fast.h, fixed point only.
+    # The inline fast paths of fresnel_q15_fast.h, fixed point only.
     for mj in schlick-fast:16 f82-fast:17 lut-u16-fast:18 lut-u16-pl-fast:21; do
         m=${mj%:*} j=${mj#*:}
         row="| $m | fixed |"

@@ -21,7 +21,7 @@ set -eu
 type=${1:-}
 case $type in
 f32) public="fresnel.h fresnel_film.h" ;;
-q15) public="fresnel_fixed.h fresnel_fixed_fast.h fresnel_film.h" ;;
+q15) public="fresnel_q15.h fresnel_q15_fast.h fresnel_film.h" ;;
 f16) public="fresnel_f16.h fresnel_film.h" ;;
 *)
     echo "usage: sh ports/single.sh f32|q15|f16 > fresnel_single_TYPE.h" >&2

@@ -38,7 +38,7 @@ n=$(grep -c '^target ' "$t/speed.txt")
     echo "FAIL bench speed: $n target lines: $(grep '^target' "$t/speed.txt" | head -2)"
 printf 'materials = cu\nmodels = schlick\n' >"$t/tiny.scene"
 if "$F" report --scene "$t/tiny.scene" -o "$t/out" --no-timing --no-instructions --speed "$t/speed.txt" >"$t/log" 2>&1 &&
-    [ "$(grep -c '^| Host speed: ' "$t/out/report.md")" -ge 6 ] && grep -q '; [^;|]* -O1: [0-9.]*x (no goal at this flag set)' "$t/out/report.md"; then
+    [ "$(grep -c '^| Host speed: ' "$t/out/targets.md")" -ge 6 ] && grep -q '; [^;|]* -O1: [0-9.]*x (no goal at this flag set)' "$t/out/targets.md"; then
     echo "PASS bench speed: fresnel report --speed reads the program's output"
 else
     echo "FAIL bench speed: report --speed: $(head -3 "$t/log")"

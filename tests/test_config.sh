@@ -51,15 +51,17 @@ for cc in gcc clang; do
     else
         echo "FAIL $cc: known flags: $(head -3 "$t/err")"
     fi
-    # FRESNEL_CFG_NO_FIXED strips the fixed-point API and code
+    # FRESNEL_CFG_NO_Q15 strips the fixed-point API and code; so does its
+    # alias FRESNEL_CFG_NO_FIXED (fresnel_config.h ALIASES)
+    must_fail "FRESNEL_CFG_NO_Q15 hides fresnel_schlick_q15" 'fresnel_schlick_q15' "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_Q15"
     must_fail "FRESNEL_CFG_NO_FIXED hides fresnel_schlick_q15" 'fresnel_schlick_q15' "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FIXED"
     syms=""
     for f in src/q15/*.c src/f16/*.c; do
-        $cc $W "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FIXED|FRESNEL_CFG_NO_F16" -c "$f" -o "$t/s.o" 2>>"$t/err2" || syms="$syms $f:error"
+        $cc $W "-DFRESNEL_CONFIG=FRESNEL_CFG_NO_Q15|FRESNEL_CFG_NO_F16" -c "$f" -o "$t/s.o" 2>>"$t/err2" || syms="$syms $f:error"
         syms="$syms$(nm --defined-only "$t/s.o" 2>/dev/null | awk '$2 ~ /[TtDdRrBb]/ {printf " %s", $3}')"
     done
     if [ -z "$syms" ]; then
-        echo "PASS $cc: FRESNEL_CFG_NO_FIXED|FRESNEL_CFG_NO_F16 leave src/q15/*.c and src/f16/*.c empty"
+        echo "PASS $cc: FRESNEL_CFG_NO_Q15|FRESNEL_CFG_NO_F16 leave src/q15/*.c and src/f16/*.c empty"
     else
         echo "FAIL $cc: stripped files still define:$syms $(head -3 "$t/err2" 2>/dev/null)"
     fi

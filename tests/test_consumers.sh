@@ -20,7 +20,8 @@ version=$(sed -n 's/^#define FRESNEL_VERSION "\(.*\)"/\1/p' include/fresnel.h)
 # ---- install ----
 missing=""
 if make --no-print-directory -s install PREFIX=$P DESTDIR="$t/root" >"$t/log" 2>&1; then
-    for f in include/fresnel.h include/fresnel_fixed.h include/fresnel_fixed_fast.h include/fresnel_f16.h include/fresnel_config.h \
+    for f in include/fresnel.h include/fresnel_q15.h include/fresnel_q15_fast.h include/fresnel_fixed.h \
+        include/fresnel_fixed_fast.h include/fresnel_f16.h include/fresnel_config.h \
         lib/libfresnel.a lib/pkgconfig/fresnel.pc lib/cmake/fresnel/fresnelConfig.cmake \
         lib/cmake/fresnel/fresnelConfigVersion.cmake bin/fresnel share/fresnel/data/materials.csv \
         share/fresnel/data/SOURCES.md share/fresnel/glsl/fresnel.glsl share/fresnel/hlsl/fresnel.hlsl share/fresnel/LICENSE \

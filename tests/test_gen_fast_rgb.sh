@@ -16,17 +16,17 @@ if ! "$F" gen "$t/metals.scene" -o "$t/metals.h" 2>"$t/err"; then
     exit 1
 fi
 includes=$(grep '^#include' "$t/metals.h" | tr '\n' ' ')
-if [ "$includes" = '#include "fresnel_fixed.h" ' ]; then
-    echo "PASS a q15-only scene header includes fresnel_fixed.h only"
+if [ "$includes" = '#include "fresnel_q15.h" ' ]; then
+    echo "PASS a q15-only scene header includes fresnel_q15.h only"
 else
     echo "FAIL a q15-only scene header includes: $includes"
 fi
 # include/ without the binary32 header
 mkdir "$t/fixed"
-cp include/fresnel_fixed.h include/fresnel_fixed_fast.h include/fresnel_config.h "$t/fixed/"
+cp include/fresnel_q15.h include/fresnel_q15_fast.h include/fresnel_config.h "$t/fixed/"
 if ${CC:-cc} $W -O2 -I"$t/fixed" -I"$t" tests/consumer/scene_fast_rgb.c "$BUILD/libfresnel.a" -lm -o "$t/check" 2>"$t/cc" &&
     [ ! -s "$t/cc" ]; then
-    echo "PASS the q15 scene header builds with fresnel_fixed.h, fresnel_fixed_fast.h and fresnel_config.h alone"
+    echo "PASS the q15 scene header builds with fresnel_q15.h, fresnel_q15_fast.h and fresnel_config.h alone"
     "$t/check"
 else
     echo "FAIL the q15 scene header without fresnel.h: $(head -5 "$t/cc")"

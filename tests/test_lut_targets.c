@@ -3,7 +3,7 @@
  * sRGB, D65, theta 0..90 in 1 degree steps, CIEDE2000 against the
  * spectral ground truth under the default gamut policy, map), 16 nodes per channel (96 bytes per material)
  * within 0.01 mean / 0.05 max, 32 nodes within 0.005 / 0.03. `make report`
- * shows the same numbers in its targets table. */
+ * shows the same numbers in its targets.md. */
 #include <math.h>
 #include <string.h>
 #include <stdlib.h>

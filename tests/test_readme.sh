@@ -163,7 +163,7 @@ for f in $(sed -n 's/^| `\(fresnel_[a-z0-9_]*_q15\(_fast\)\{0,1\}\)` | .*/\1/p' 
     line=$(grep "^| \`$f\` |" README.md)
     row=$(awk -F'\t' -v f="$f" '$1 == f { print $2 }' "$t/rows")
     macro=$(echo "$f" | sed 's/^fresnel_//; s/_q15/_Q15/' | tr a-z A-Z | sed 's/^/FRESNEL_BOUND_/')
-    bound=$(sed -n "s/^#define $macro \([0-9.]*\).*/\1/p" include/fresnel_fixed.h include/fresnel_fixed_fast.h)
+    bound=$(sed -n "s/^#define $macro \([0-9.]*\).*/\1/p" include/fresnel_q15.h include/fresnel_q15_fast.h)
     counts=$(awk -v r="$row" 'index($0, r) == 1 { rest = substr($0, length(r) + 1); split(rest, v, " ")
                  if (v[1] ~ /^[0-9]+$/) { print v[1] " / " v[3] " | " v[4] " / " v[7]; exit } }' "$t/m0")
     want="| \`$f\` | $bound | $counts |"

@@ -34,10 +34,12 @@ fi
 [ $? -eq 2 ] && [ ! -e "$t/out2/report.md" ] && echo "PASS report: a missing scene is an error (exit 2), nothing written" ||
     echo "FAIL report missing scene"
 
-# The host speed targets: one row per target with its ratio for each
-# compiler at both flag sets of `make bench` and a mark; a miss by either
-# compiler is a miss and says what it is. Synthetic --speed files (the
-# format of gen/bench/speed_targets.h), not a timing.
+# The host speed targets (targets.md, the developers' file): one row per
+# target with its ratio for each compiler at both flag sets of `make bench`
+# and a mark; a miss by either compiler is a miss and says what it is.
+# report.md holds the measurements only: the bench output without its
+# target lines, no goal, mark or what was tried. Synthetic --speed files
+# (the format of gen/bench/speed_targets.h), not a timing.
 speed_file() { # OPT RATIO [COMPILER]: every target's ratio RATIO
     printf '# opt: %s\n# compiler: %s\n' "$1" "${3:-test}"
     for r in schlick-f32 schlick-q15 conductor-call conductor-batch conductor-rgb-batch mitsuba-call mitsuba-inline \
@@ -57,7 +59,7 @@ speed_file '-O3 -march=native' 0.9 cc-b >"$t/o3b.txt"
 printf 'materials = cu\nmodels = schlick\n' >"$t/one.scene"
 if "$F" report --scene "$t/one.scene" -o "$t/sp" --no-timing --no-instructions --speed "$t/o2.txt" --speed "$t/o3.txt" \
     --speed "$t/o2b.txt" --speed "$t/o3b.txt" >"$t/log" 2>&1; then
-    rows=$(grep '^| Host speed: ' "$t/sp/report.md")
+    rows=$(grep '^| Host speed: ' "$t/sp/targets.md")
     n=$(echo "$rows" | grep -c 'MISS\|pass')
     all=$(echo "$rows" | grep -c -- 'cc-a -O2: [0-9.]*x (quartiles [0-9.]*-[0-9.]*) \(pass\|MISS\).*; cc-a -O3 -march=native: [0-9.]*x.*; cc-b -O2: [0-9.]*x.*; cc-b -O3 -march=native: [0-9.]*x')
     miss=$(echo "$rows" | grep -c 'conductor-batch / mitsuba-inline.*cc-a -O3 -march=native: 0.75x (quartiles 0.75-0.75) pass.*cc-b -O3 -march=native: 0.90x (quartiles 0.90-0.90) MISS: conductor-batch takes 0.90x the time of mitsuba-inline, goal 0.8x.*| \*\*MISS\*\* |$')
@@ -67,6 +69,10 @@ if "$F" report --scene "$t/one.scene" -o "$t/sp" --no-timing --no-instructions -
         grep -q "^## Host speed against other renderers' algorithms" "$t/sp/report.md" &&
         echo "PASS report: 7 host speed targets, each with its ratio for two compilers at -O2 and -O3 -march=native and a pass/MISS mark; a miss by one compiler is a miss and says what it is" ||
         echo "FAIL report speed rows: $n rows, $all with both compilers and flag sets, miss $miss, pass $pass, $heads file headings: $(echo "$rows" | head -2)"
+    facts=$(grep -n -i -E 'goal|pass\*\*|MISS|tried|^target |^# target' "$t/sp/report.md" | head -3)
+    [ -z "$facts" ] && [ "$(grep -c '^row conductor-batch ' "$t/sp/report.md")" -eq 4 ] && grep -q '^# Targets' "$t/sp/targets.md" &&
+        echo "PASS report: report.md states measurements (the bench rows; no target line, goal, mark or what was tried), targets.md the targets" ||
+        echo "FAIL report.md speaks of goals: $facts"
 else
     echo "FAIL report --speed: $(tail -3 "$t/log")"
 fi
@@ -85,7 +91,7 @@ fi
     echo "lut u16                          99     64    145"
 } >"$t/cross.txt"
 if "$F" report --scene "$t/one.scene" -o "$t/cr" --no-timing --no-instructions --cross "$t/cross.txt" >"$t/log" 2>&1; then
-    lut=$(grep '^| Cortex-M0 fixed point, LUT (u16, 64 nodes, nodes uniform in sqrt(c))' "$t/cr/report.md")
+    lut=$(grep '^| Cortex-M0 fixed point, LUT (u16, 64 nodes, nodes uniform in sqrt(c))' "$t/cr/targets.md")
     case "$lut" in
     *"| 58 inline fast path (library function 187); the square root of the position"*"| **MISS** |")
         echo "PASS report: the Cortex-M0 LUT row reads 'lut u16' itself, not the longer 'lut u16 fast', and its miss says where the instructions go" ;;
@@ -95,9 +101,9 @@ else
     echo "FAIL report --cross: $(tail -3 "$t/log")"
 fi
 "$F" report --scene "$t/one.scene" -o "$t/sp0" --no-timing --no-instructions >/dev/null 2>&1
-grep -q '^| Host speed against .* | not measured |$' "$t/sp0/report.md" &&
+grep -q '^| Host speed against .* | not measured |$' "$t/sp0/targets.md" &&
     echo "PASS report: without --speed the host speed targets are 'not measured'" ||
-    echo "FAIL report without --speed: $(grep 'Host speed' "$t/sp0/report.md" | head -2)"
+    echo "FAIL report without --speed: $(grep 'Host speed' "$t/sp0/targets.md" | head -2)"
 { speed_file -O2 0.25 | head -4; echo 'row conductor-batch call 1 2'; } >"$t/bad.txt"
 "$F" report --scene "$t/one.scene" -o "$t/sp2" --no-timing --speed "$t/bad.txt" >/dev/null 2>"$t/err"
 [ $? -eq 2 ] && [ ! -e "$t/sp2/report.md" ] && grep -q "bad.txt:5: expected row NAME FORM then 8 finite numbers" "$t/err" &&

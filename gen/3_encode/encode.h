@@ -13,7 +13,7 @@
 #include "fresnel.h"
 #include "fresnel_f16.h"
 #include "fresnel_film.h"
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 
 /* cos theta of node i of n. */
 double lut_node_cos(lut_spacing spacing, int i, int n);
@@ -32,7 +32,7 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
 
 /* THE ENCODER. One material's constants and one LUT's nodes in every number
  * type: binary32 (the C, GLSL and HLSL headers' literals), Q1.15 (the codes
- * and prepared structs of fresnel_fixed.h, through fixed_params.h) and,
+ * and prepared structs of fresnel_q15.h, through fixed_params.h) and,
  * where the compiler has _Float16, binary16. `fresnel gen` writes these
  * values and nothing else; `fresnel report`, `curve`, `bench`, the viewer
  * and the tests evaluate these values (model_rgb in model/registry.h), so
@@ -58,7 +58,7 @@ typedef struct encoded_material {
      * type) */
     DERIVED_PARAMETERS(ENCODED_Q15_MEMBER)
     /* q_f0 is held to one (32768): every Q1.15 function reads F0 above one
-     * as one, and the fast paths (fresnel_fixed_fast.h) take f0 only up to
+     * as one, and the fast paths (fresnel_q15_fast.h) take f0 only up to
      * one; 1 where gamut = keep put a channel above. */
     int q_f0_held;
     int32_t q_f82_a[3];                           /* fresnel_f82_q15_fast's a_q12 from q_f0, q_f82 */
@@ -75,7 +75,7 @@ typedef struct encoded_material {
 void encode_material(const material_params *p, encoded_material *out);
 /* Whether every Q1.15 constant of the material that models reading reads
  * (MP_*) and q15_reads (MQ_*) hold has its value in its C type and the
- * range fresnel_fixed.h's LAYOUT documents (encode_check.c): 0, or -1 with
+ * range fresnel_q15.h's LAYOUT documents (encode_check.c): 0, or -1 with
  * the first that does not in why. */
 int encode_q15_fits(const material_params *p, const encoded_material *e, unsigned reads, unsigned q15_reads,
                     char *why, size_t size);

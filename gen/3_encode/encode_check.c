@@ -1,6 +1,6 @@
 /* Whether the Q1.15 constants of a material hold their values (encode.h:
  * encode_q15_fits): every value is checked against its C type and the range
- * the runtime documents (fresnel_fixed.h, LAYOUT), because a wrapped or
+ * the runtime documents (fresnel_q15.h, LAYOUT), because a wrapped or
  * clamped constant compiles into a silently wrong reflectance. */
 #include <math.h>
 #include <stdio.h>

@@ -170,7 +170,7 @@ int encode_table(const spectrum *s, const gen_context *g, const material_params 
         encode_curve_q15(t->nodes, count, t->q15);
         return 0;
     }
-    /* the most fraction bits, in fresnel_fixed.h's [14, 30], that keep every
+    /* the most fraction bits, in fresnel_q15.h's [14, 30], that keep every
      * rounded node inside int16_t; encode_lut holds the nodes to [-1, 1],
      * which frac 14 always holds */
     for (t->frac = 30; t->frac > 14; t->frac--) {

@@ -10,7 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "fresnel_fixed_fast.h"
+#include "fresnel_q15_fast.h"
 #include "3_encode/encode.h"
 #include "common/reference.h"
 
@@ -19,7 +19,7 @@
 static const double half_pi = 1.57079632679489661923;
 
 /* The runtime's position P(c) for LUT_GRAZING_PL in double: the knots of
- * fresnel_lut_pl_knots_q15 (fresnel_fixed_fast.h), linear between them. */
+ * fresnel_lut_pl_knots_q15 (fresnel_q15_fast.h), linear between them. */
 static double pl_position(double c)
 {
     double u = c * 64.0;
@@ -218,7 +218,7 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
          * residual is a difference of two reflectances, in [-1, 1], but its
          * fit overshoots that at a total-reflection edge (water under
          * n1 = 1.5); its nodes are held to [-1, 1], the range the Q15
-         * residual encodings of fresnel_fixed.h hold. */
+         * residual encodings of fresnel_q15.h hold. */
         int nheld = 0, again = 1;
         double hi = 1.0;
         if (form != LUT_RESIDUAL && g->gamut == GAMUT_KEEP)

@@ -1,5 +1,5 @@
 /* Double -> fixed-point parameters (see fixed_params.h and the LAYOUT section
- * of include/fresnel_fixed.h). */
+ * of include/fresnel_q15.h). */
 #include "3_encode/fixed_params.h"
 
 #include <math.h>
@@ -101,7 +101,7 @@ void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15_f
     out->b1 = (int32_t)floor(b * ldexp(1.0, 30 - s) + 0.5);
     x = floor(b * ldexp(1.0, 46 - s) + 0.5);
     /* the two-word A only where b is small too, and at s = 0, where a0 + c^2
-     * drops no bit of c^2 (fresnel_fixed_fast.h: shift > 0 only where
+     * drops no bit of c^2 (fresnel_q15_fast.h: shift > 0 only where
      * |A| >= 1 at every c, which one word holds) */
     two = s == 0 && out->b1 < 32768;
     out->b2 = two ? (int32_t)x : 0;

@@ -1,19 +1,19 @@
 /* Host side of the fixed-point runtime: double model parameters converted to
- * the formats of include/fresnel_fixed.h (its LAYOUT section), rounded to
+ * the formats of include/fresnel_q15.h (its LAYOUT section), rounded to
  * nearest. This is the reference implementation of what `fresnel gen` emits
  * for fixed-point scenes. Host only (libm). */
 #ifndef FRESNEL_FIXED_PARAMS_H
 #define FRESNEL_FIXED_PARAMS_H
 
-#include "fresnel_fixed.h"
-#include "fresnel_fixed_fast.h"
+#include "fresnel_q15.h"
+#include "fresnel_q15_fast.h"
 
 fresnel_qf fixed_qf(double x);          /* x >= 0; 0 for x <= 0 or NaN */
 int32_t fixed_q15(double x);            /* round(x 32768), x clamped to [0, 65535/32768] (Q15 headroom) */
 fresnel_q16 fixed_q16(double x);        /* round(x 65536), clamped to int32 */
 /* eta, kappa relative to the incident medium, clamped like fresnel.h. */
 void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out);
-/* fresnel_conductor_q15_fast's constants (fresnel_fixed_fast.h layout). */
+/* fresnel_conductor_q15_fast's constants (fresnel_q15_fast.h layout). */
 void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15_fast *out);
 /* 1 where eta, kappa lie in fresnel_conductor_q15_fast's documented domain
  * (FRESNEL_CONDUCTOR_*_Q15_FAST), where its bound holds; else 0. */

@@ -98,7 +98,7 @@ typedef int (*emit_type_fn)(FILE *f, const emit_input *in, int material, const c
 int emit_f32_material(FILE *f, const emit_input *in, int material, const char *prefix);
 int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix);
 int emit_f16_material(FILE *f, const emit_input *in, int material, const char *prefix);
-/* The Q1.15 prepared structs' initializers (fresnel_fixed.h LAYOUT;
+/* The Q1.15 prepared structs' initializers (fresnel_q15.h LAYOUT;
  * positional, in declaration order), as the Q1.15 back end writes them
  * (emit_fixed.c). */
 void emit_q15_qf(FILE *f, fresnel_qf q);

@@ -1,5 +1,5 @@
 /* Stage 4, emit, fixed point: a scene's constants and tables in the formats of
- * include/fresnel_fixed.h (its LAYOUT section), as the encoder converted
+ * include/fresnel_q15.h (its LAYOUT section), as the encoder converted
  * them (3_encode/encode.h: encode_material, encode_table), which is what
  * every evaluation of the scene reads too.
  *
@@ -73,7 +73,7 @@ static void emit_q15_rgb(fx_out *o, const char *prefix, const char *name, fresne
 }
 
 
-#define IOR_FIELDS "fields a0, a0_lo, shift, b, n4, t1_inv, inv_eta2 (fresnel_fixed.h LAYOUT)"
+#define IOR_FIELDS "fields a0, a0_lo, shift, b, n4, t1_inv, inv_eta2 (fresnel_q15.h LAYOUT)"
 
 static void emit_ior3(fx_out *o, const char *prefix, const char *name, const fresnel_ior_prep_q15 q[3],
                       const char *why)
@@ -103,11 +103,11 @@ static void emit_ior_fast3(fx_out *o, const char *prefix, const double *eta, con
     snprintf(id, sizeof id, "%s_ior_fast_q15", prefix);
     if (ch >= 0) {
         fprintf(o->f, "/* no %s: the %s channel's eta %.6g, kappa %.6g lie outside\n * fresnel_conductor_q15_fast's "
-                      "domain (fresnel_fixed_fast.h) */\n",
+                      "domain (fresnel_q15_fast.h) */\n",
                 id, channel[ch], eta[ch], kappa[ch]);
         return;
     }
-    fprintf(o->f, "/* the same eta, kappa for fresnel_conductor_q15_rgb_fast (fresnel_fixed_fast.h; one\n"
+    fprintf(o->f, "/* the same eta, kappa for fresnel_conductor_q15_rgb_fast (fresnel_q15_fast.h; one\n"
                   " * channel: fresnel_conductor_q15_fast); fields a0, a0_lo, shift, b1, b2, bm, be, span */\n"
                   "static const fresnel_conductor_prep_q15_fast %s[3] FRESNEL_GEN_UNUSED = {\n",
             id);
@@ -166,7 +166,7 @@ static void emit_lut_q15(fx_out *o, const char *prefix, const scene_entry *e, co
                 model, t->frac, spacing == LUT_UNIFORM ? "linear_" : "", n, prefix, name, prefix, name, t->frac, id,
                 3 * n);
     else if (spacing == LUT_GRAZING_PL)
-        fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_fixed_fast.h's\n"
+        fprintf(f, "/* %s in Q1.15 (uint16 codes, 32768 = 1), nodes uniform in fresnel_q15_fast.h's\n"
                    " * piecewise-linear sqrt(c). Evaluate per channel with\n"
                    " * fresnel_lut_pl_u16_q15_fast(table + ch * %d, %d, c). */\n"
                    "static const uint16_t %s[%d] FRESNEL_GEN_UNUSED = {",
@@ -193,7 +193,7 @@ static void emit_f82_a(fx_out *o, const char *prefix, const encoded_material *e)
     for (ch = 0; ch < 3; ch++)
         a[ch] = e->q_f82_a[ch];
     fprintf(o->f, "/* F82's a = (7^7/6^6)(F0 - F82) + (49/6)(1 - F0) times 4096, from the Q1.15 F0 and F82\n"
-                  " * (fresnel_f82_q15_rgb_fast(f0, a, c) in fresnel_fixed_fast.h) */\n"
+                  " * (fresnel_f82_q15_rgb_fast(f0, a, c) in fresnel_q15_fast.h) */\n"
                   "static const int32_t %s[3] FRESNEL_GEN_UNUSED = {%ld, %ld, %ld};\n",
             id, a[0], a[1], a[2]);
 }
@@ -206,7 +206,7 @@ static void emit_f82_a(fx_out *o, const char *prefix, const encoded_material *e)
 #define EMIT_CODE_Q15_CODE_HELD(field, constant, why)                                                                  \
     emit_q15_rgb(&o, prefix, constant, e->q_##field,                                                                   \
                  e->q_##field##_held ? why ", held to one where the gamut policy keeps it above (every Q1.15 function " \
-                                       "reads it\n * so, and the fast paths of fresnel_fixed_fast.h take f0 only up to one)" \
+                                       "reads it\n * so, and the fast paths of fresnel_q15_fast.h take f0 only up to one)" \
                                      : why);
 #define EMIT_CODE(field, count, group, constant, row, why, q15, q15_why)                                               \
     if (reads & (group)) {                                                                                             \

@@ -103,7 +103,7 @@ static const struct {
 } emit_types[] = {{TYPE_Q15, emit_fixed_material}, {TYPE_F32, emit_f32_material}, {TYPE_F16, emit_f16_material}};
 typedef char emit_types_cover_the_registry[sizeof emit_types / sizeof emit_types[0] == NUMBER_TYPES ? 1 : -1];
 
-/* #include "name" unless its guard (FRESNEL_FIXED_H for fresnel_fixed.h)
+/* #include "name" unless its guard (FRESNEL_Q15_H for fresnel_q15.h)
  * is defined already. */
 static void include_guarded(FILE *f, const char *name)
 {

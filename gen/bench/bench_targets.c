@@ -7,8 +7,8 @@
 
 #include "bench/bench_compare.h"
 #include "fresnel.h"
-#include "fresnel_fixed.h"
-#include "fresnel_fixed_fast.h"
+#include "fresnel_q15.h"
+#include "fresnel_q15_fast.h"
 #include "common/reference.h"
 
 /* ---- rows */

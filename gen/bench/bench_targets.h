@@ -1,7 +1,7 @@
 /* The accuracy side of the library's speed targets: each row of `make
  * bench` that computes the exact conductor or a table, with its largest
  * error against the double reference. `fresnel bench --targets` prints it;
- * the report's targets table quotes it beside the speed (`make bench`,
+ * `fresnel report`'s targets.md quotes it beside the speed (`make bench`,
  * tests/speed/speed.c, which times the same functions). Nothing is timed here. */
 #ifndef FRESNEL_BENCH_TARGETS_H
 #define FRESNEL_BENCH_TARGETS_H

@@ -33,7 +33,7 @@
 #include "fresnel.h"
 #include "fresnel_f16.h"
 #include "fresnel_film.h"
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 
 /* Where a row is offered. */
 #define MODEL_EVAL 1u  /* a function of eta, kappa, c: `fresnel eval`, `extremes`, the bound tests */
@@ -45,7 +45,7 @@
 #define MODEL_EVAL_SCENE (MODEL_EVAL | MODEL_SCENE)
 
 /* LUT_GRAZING: nodes uniform in sqrt(c); LUT_UNIFORM: in c; LUT_GRAZING_PL:
- * uniform in fresnel_fixed_fast.h's 64-piece linear stand-in for sqrt(c), the
+ * uniform in fresnel_q15_fast.h's 64-piece linear stand-in for sqrt(c), the
  * position of fresnel_lut_pl_u16_q15_fast. LUT_WARP2, LUT_WARP16: uniform in
  * the root-free warps c (2 - c) = 1 - (1 - c)^2 and (1 + c - (1 - c)^16)/2,
  * whose slope at c = 0 (2; 8.5) crowds the nodes toward grazing incidence

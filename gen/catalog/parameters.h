@@ -18,7 +18,7 @@
  * row       its row in `fresnel params`
  * why       the constant's comment in the header
  * q15       how the Q1.15 header holds it: Q15_NONE (not as a code: the
- *           prepared constants of fresnel_fixed.h hold the indices),
+ *           prepared constants of fresnel_q15.h hold the indices),
  *           Q15_CODE (round(v 32768) in [0, 65535]), Q15_CODE_ONE (in
  *           [0, 32768]), Q15_CODE_HELD (F0: above one it is held to one,
  *           as every Q1.15 function reads it)
@@ -38,7 +38,7 @@
 #define MP_CT 0x80u
 #define MP_F_AVG 0x100u /* no model reads it: the scene's f_avg key asks for it */
 
-/* Prepared Q1.15 constants (fresnel_fixed.h) a scene model reads (the
+/* Prepared Q1.15 constants (fresnel_q15.h) a scene model reads (the
  * model rows' `q15_reads`), in the order the Q1.15 back end writes them,
  * after the codes above. */
 #define MQ_LSK 0x01u

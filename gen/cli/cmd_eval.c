@@ -19,7 +19,7 @@ static void eval_usage(FILE *out)
             "\n"
             "Reads CSV lines eta,kappa,cos on stdin and writes one reflectance per line,\n"
             "in order: %%.9g for f32 (the binary32 runtime), %%.17g for f64 (the double\n"
-            "reference), %%.9g for q15 (the Q15 runtime of fresnel_fixed.h: cos and\n"
+            "reference), %%.9g for q15 (the Q15 runtime of fresnel_q15.h: cos and\n"
             "the parameters converted to its formats, the result code divided by 32768)\n"
             "and for f16 (the binary16 runtime of fresnel_f16.h, parameters and cos\n"
             "rounded to binary16; only where the compiler has _Float16).\n"

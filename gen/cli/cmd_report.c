@@ -17,15 +17,17 @@ static void report_usage(FILE *out)
                  "Measures every material x model x number type of the scene (default\n"
                  "data/scenes/report.scene) against the spectral ground truth and writes\n"
                  "DIR/report.md, DIR/pareto.svg, DIR/sigma.svg and DIR/curves/<material>.svg\n"
-                 "(default DIR build/report). Timing: median of 5 batches of 2^20 evaluations;\n"
-                 "instructions: valgrind --tool=callgrind (skipped when valgrind is missing).\n"
-                 "--no-timing and --no-instructions skip those (for tests). --cross FILE and\n"
-                 "--size FILE: the output of `make cross-count` and of `make size`, for the\n"
-                 "targets table's Cortex-M0 rows and the report's instruction-count and\n"
-                 "code-size sections (make report passes both). --speed FILE (up to 4): the\n"
-                 "output of `make bench` at one flag set, for the targets table's host speed\n"
-                 "rows (make report passes -O2 and -O3 -march=native). --gamut overrides the\n"
-                 "scene's gamut policy.\n");
+                 "(default DIR build/report), and for the developers DIR/targets.md: the\n"
+                 "project's goals, each with the value measured and a pass/MISS mark.\n"
+                 "Timing: median of 5 batches of 2^20 evaluations; instructions: valgrind\n"
+                 "--tool=callgrind (skipped when valgrind is missing). --no-timing and\n"
+                 "--no-instructions skip those (for tests). --cross FILE and --size FILE:\n"
+                 "the output of `make cross-count` and of `make size`, for the report's\n"
+                 "instruction-count and code-size sections and the Cortex-M0 rows of\n"
+                 "targets.md (make report passes both). --speed FILE (up to 4): the output\n"
+                 "of `make bench` at one flag set, for the report's host speed section and\n"
+                 "the speed rows of targets.md (make report passes -O2 and -O3\n"
+                 "-march=native). --gamut overrides the scene's gamut policy.\n");
 }
 
 int cmd_report(int argc, char **argv)

@@ -1,4 +1,4 @@
-/* Every model row in the Q1.15 runtime (fresnel_fixed.h, fresnel_film.h;
+/* Every model row in the Q1.15 runtime (fresnel_q15.h, fresnel_film.h;
  * model/registry.h: model_eval_q15), one line per row in model_evals_q15:
  * as a function of eta, kappa, c on the prepared constants
  * model_fixed_from_params gives, and as a scene model on the encoder's

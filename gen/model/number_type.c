@@ -57,7 +57,7 @@ static double bound_f16(const model *row) { return row->f16_bound; }
 const number_type number_types[NUMBER_TYPES] = {
     {TYPE_F32, "f32", NULL, "fresnel.h", "binary32 (fresnel.h)", 1, 0x1p-149, eval_f32, batch_f32, has_f32,
      model_params_round_f32, params_f32, bound_f32},
-    {TYPE_Q15, "q15", "fixed", "fresnel_fixed.h", "Q1.15 fixed point (fresnel_fixed.h)", 1, 0x1p-15, eval_q15,
+    {TYPE_Q15, "q15", "fixed", "fresnel_q15.h", "Q1.15 fixed point (fresnel_q15.h)", 1, 0x1p-15, eval_q15,
      batch_q15, has_q15, model_params_round_fixed, params_q15, bound_q15},
     {TYPE_F16, "f16", NULL, "fresnel_f16.h", "binary16 (fresnel_f16.h; where the compiler has _Float16)",
      FRESNEL_HAS_F16, 0x1p-24, F16_EVAL, bound_f16},

@@ -17,7 +17,7 @@
 
 #include "fresnel.h"
 #include "fresnel_f16.h"
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 #include "3_encode/encode.h"
 #include "catalog/models.h"
 #include "catalog/parameters.h"
@@ -37,7 +37,7 @@ typedef struct model_params {
     double r, g;     /* Gulbrandsen */
 } model_params;
 
-/* A model's parameters in the fixed-point runtime's formats (fresnel_fixed.h). */
+/* A model's parameters in the fixed-point runtime's formats (fresnel_q15.h). */
 typedef struct model_fixed {
     int32_t f0, f82, f90, r, g; /* Q15 codes */
     fresnel_q16 p;

@@ -10,7 +10,7 @@
 #include "report/extremes.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 #include "model/registry.h"
 #include "common/reference.h"
 

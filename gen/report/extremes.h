@@ -52,7 +52,7 @@ void extreme_params(const extreme_case *e, model_params *m);
  * FRESNEL_BOUND_* were measured: eta in [0.01, 100], kappa in [0, 1000]. */
 int extreme_in_measured_domain(const model_params *m);
 
-/* A number type of the runtime: f32 (fresnel.h), q15 (fresnel_fixed.h),
+/* A number type of the runtime: f32 (fresnel.h), q15 (fresnel_q15.h),
  * f16 (fresnel_f16.h, where the compiler has _Float16). */
 typedef struct extreme_typed {
     model_params p;  /* parameters as the reference sees them for this type */

@@ -422,7 +422,50 @@ static int write_cross(const report_run *r, FILE *f)
     return 0;
 }
 
-/* The `make bench` outputs the speed targets come from, as printed. */
+/* A `make bench` output into the report as printed, less its targets (the
+ * lines from "# target ID" on that start with "target ", and the "#" line
+ * before them): the goals are targets.md's. 0, or CLI_FAILURE after a
+ * message. */
+static int copy_speed_file(FILE *f, const char *path)
+{
+    char *line = NULL, *held = NULL;
+    size_t cap = 0;
+    FILE *in;
+    int status, err;
+    if ((status = cli_open_input(path, &in)))
+        return status;
+    while (getline(&line, &cap, in) != -1) {
+        if (!strncmp(line, "target ", 7) || !strncmp(line, "# target ", 9)) {
+            free(held);
+            held = NULL;
+            continue;
+        }
+        if (held) {
+            fputs(held, f);
+            free(held);
+            held = NULL;
+        }
+        if (!strcmp(line, "#\n")) {
+            if (!(held = malloc(3))) {
+                status = cli_oom(WHERE);
+                break;
+            }
+            memcpy(held, "#\n", 3);
+        } else
+            fputs(line, f);
+    }
+    err = errno;
+    if (held)
+        fputs(held, f);
+    if (!status && ferror(in))
+        status = cli_read_failure(path, err);
+    free(held);
+    free(line);
+    fclose(in);
+    return status;
+}
+
+/* The `make bench` outputs, as printed, less their targets. */
 static int write_speed(const report_run *r, FILE *f)
 {
     int i, status;
@@ -430,8 +473,7 @@ static int write_speed(const report_run *r, FILE *f)
         return 0;
     fputs("\n## Host speed against other renderers' algorithms\n\n"
           "The output of `make bench` for each compiler and flag set (speed/speed.c; format in "
-          "gen/bench/speed_targets.h), from "
-          "which the targets table's speed rows come: ns per evaluation, one channel, and the time over the "
+          "gen/bench/speed_targets.h), its rows: ns per evaluation, one channel, and the time over the "
           "schlick-f32 row of the same round. The mitsuba-* and pbrt-* rows are this project's binary32 "
           "transcriptions (gen/bench/peers.h), no code of theirs, of Mitsuba 3's fresnel_conductor "
           "(include/mitsuba/render/fresnel.h) and pbrt-v4's FrComplex (src/pbrt/util/scattering.h), each timed as "
@@ -440,7 +482,7 @@ static int write_speed(const report_run *r, FILE *f)
     for (i = 0; i < r->speed_count; i++) {
         fprintf(f, "\n`make bench OPT='%s'`, %s:\n\n```\n", r->speed[i]->opt,
                 *r->speed[i]->compiler ? r->speed[i]->compiler : "compiler not named");
-        if ((status = copy_file(f, r->speed_paths[i])))
+        if ((status = copy_speed_file(f, r->speed_paths[i])))
             return status;
         fputs("```\n", f);
     }
@@ -527,6 +569,7 @@ int report_write(const report_options *o)
     int made_dir = 0, made_curves = 0;
     memset(&r, 0, sizeof r);
     r.out_dir = o->out_dir;
+    r.scene_path = o->scene_path;
     r.cross_path = o->cross_path;
     r.size_path = o->size_path;
     for (i = 0; i < o->speed_count && i < REPORT_MAX_SPEED; i++) { /* bad input: an error before anything is written */
@@ -631,7 +674,7 @@ int report_write(const report_options *o)
 
     /* Every file is committed at the end, together; on failure the
      * directories this run created go too. */
-    r.out_cap = r.sc.material_count + 3;
+    r.out_cap = r.sc.material_count + 4;
     if (!(r.out = calloc((size_t)r.out_cap, sizeof *r.out))) {
         status = cli_oom(WHERE);
         goto done;
@@ -655,7 +698,6 @@ int report_write(const report_options *o)
                    "ground truth: spectral Fresnel x D65 x CIE 1931 2-degree CMFs, under the gamut policy `%s` "
                    "(\"Colours outside the gamut\" below).\n\n",
             scene_path, r.sc.space, r.sc.sigma, r.sc.n1, gamut_policy_names[r.g->gamut]);
-    report_targets(&r, f);
     write_accuracy_tables(&r, f);
     report_film_write(&r, f);
     write_sigma(&r, f, sig_de, sig_err);
@@ -665,12 +707,15 @@ int report_write(const report_options *o)
     write_budget(&r, f);
     if ((status = write_cross(&r, f)) || (status = write_speed(&r, f)))
         goto done;
+    if (!(f = report_out_open(&r, "targets.md", &status)))
+        goto done;
+    report_targets(&r, f);
     if ((status = report_plots(&r, (const double(*)[REPORT_SIGMAS])sig_de)))
         goto done;
     if ((status = finish_outputs(&r, 0)))
         goto done;
-    printf("fresnel report: wrote %s/report.md, %s/pareto.svg, %s/sigma.svg, %s/curves/*.svg\n", r.out_dir, r.out_dir,
-           r.out_dir, r.out_dir);
+    printf("fresnel report: wrote %s/report.md, %s/pareto.svg, %s/sigma.svg, %s/curves/*.svg, %s/targets.md\n", r.out_dir,
+           r.out_dir, r.out_dir, r.out_dir, r.out_dir);
 done:
     if (r.out)
         status = finish_outputs(&r, status);

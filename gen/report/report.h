@@ -68,7 +68,7 @@ typedef struct report_film {
 
 /* One run of the report: the scene, its materials and every measurement. */
 typedef struct report_run {
-    const char *out_dir;
+    const char *out_dir, *scene_path;
     scene full;         /* the scene as its manifest says (and --gamut), which es encodes */
     scene sc;           /* the models of angle alone: full without the thin-film row */
     encoded_scene es;
@@ -107,7 +107,8 @@ typedef struct report_hoffman_row {
 extern const report_hoffman_row report_hoffman[REPORT_HOFFMAN];
 /* Index of material id in the run, or -1. */
 int report_material_index(const report_run *r, const char *id);
-/* The library's targets: each with its measured value and a pass/miss mark
+/* The project's targets for the library, each with its measured value and a
+ * pass/miss mark: targets.md, the developers' file beside report.md
  * (report_targets.c). Needs hoffman_rms filled. */
 void report_targets(report_run *r, FILE *f);
 

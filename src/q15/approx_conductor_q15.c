@@ -1,4 +1,4 @@
-/* The approximate conductor form in fixed point (fresnel_fixed.h), in its
+/* The approximate conductor form in fixed point (fresnel_q15.h), in its
  * transmittance form: 1 - rs = 4nc / (N + 2nc + c^2), 1 - rp = 4nc / (N c^2 +
  * 2nc + 1), N = n^2 + k^2 (expand the numerators and denominators of
  * fresnel_approx_conductor: they differ only in the sign of 2nc). Sums of
@@ -6,7 +6,7 @@
  * shows. */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 fresnel_q15 fresnel_approx_conductor_q15(const fresnel_nk_prep_q15 *m, int32_t c_in)
 {

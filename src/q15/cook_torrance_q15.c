@@ -1,9 +1,9 @@
-/* Cook-Torrance colour interpolation in fixed point (fresnel_fixed.h):
+/* Cook-Torrance colour interpolation in fixed point (fresnel_q15.h):
  * (F'(c) - F'(1)) / (1 - F'(1)) = 1 - T(c) / T(1), T = 1 - F', as in
  * cook_torrance.c, with T(c) from the exact model's transmittance form. */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 /* max(0, 1 - T(c)/T(1)) in Q30 */
 static uint32_t fresnel_i_ct_weight_q30(const fresnel_ior_prep_q15 *m, int32_t c)

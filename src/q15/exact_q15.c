@@ -1,4 +1,4 @@
-/* The exact Fresnel equations in fixed point (fresnel_fixed.h).
+/* The exact Fresnel equations in fixed point (fresnel_q15.h).
  *
  * The binary32 code (exact.c) avoids cancellation by computing the smaller of
  * u^2, v^2 from u v = eta kappa and writing numerators as sums of squares of
@@ -18,7 +18,7 @@
  * a0 + c^2 exact to 2^-60 of its scale (fresnel_i_a_qf). */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 /* The prepared shift, held to the layout's [0, 30] so that a corrupt
  * constant cannot make a shift count undefined. */

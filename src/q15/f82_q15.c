@@ -1,4 +1,4 @@
-/* Hoffman's F82 model in fixed point (fresnel_fixed.h).
+/* Hoffman's F82 model in fixed point (fresnel_q15.h).
  *
  * a c (1-c)^6 with a = K1 (F0 - F82) + K2 (1 - F0), K1 = 7^7/6^6, K2 = 49/6,
  * is rewritten as g h with
@@ -9,7 +9,7 @@
  * h <= 1 + 0.4627.) */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 #define FRESNEL_I_K1_FRAC_Q30 699418891u /* round((823543/46656 - 17) 2^30) */
 #define FRESNEL_I_K2_OVER_K1_Q30 496782080u /* round((49/6)/(823543/46656) 2^30) = 0.46266 */

@@ -12,7 +12,7 @@
 #include "internal.h"
 #include "fresnel_film.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 /* floor(x / 2^s), 0 <= s <= 31: the arithmetic shift. C99 leaves the
  * right shift of a negative number to the implementation; gcc and clang

@@ -1,4 +1,4 @@
-/* Gulbrandsen's edge tint in fixed point (fresnel_fixed.h), in fresnel_qf,
+/* Gulbrandsen's edge tint in fixed point (fresnel_q15.h), in fresnel_qf,
  * with nmax in gulbrandsen.c's form and k^2 as a sum of positive terms:
  *   k^2 = q (q + 4 (1-g) sqrt(r) nmax / (1-r)),  q = 2 g sqrt(r) / (1+r),
  * gulbrandsen.c's factored k^2 with its last difference (sqrt r (n+1) + n - 1,
@@ -6,7 +6,7 @@
  * clamped below at FRESNEL_ETA_MIN, as fresnel_gulbrandsen does. */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 /* nmin = (1 - r)/(1 + r) and nmax = (1 + sqrt r)^2 / (1 - r) (the form that
  * keeps its digits as r -> 1), for r < 1 as qf with 1 - r given exactly. */

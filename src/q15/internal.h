@@ -6,7 +6,7 @@
 
 #include "math_q15.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 /* A Q15 argument as the API promises: any int32, clamped to [0, one]. */
 static inline uint32_t fresnel_i_q15_arg(int32_t x)
@@ -45,5 +45,5 @@ FRESNEL_I_HIDDEN extern const uint16_t fresnel_i_film_recip_q15[257];
 #define FRESNEL_I_RGB_Q15(expr_r, expr_g, expr_b) \
     do { fresnel_rgb_q15 out_; out_.r = (expr_r); out_.g = (expr_g); out_.b = (expr_b); return out_; } while (0)
 
-#endif /* FRESNEL_HAS_FIXED */
+#endif /* FRESNEL_HAS_Q15 */
 #endif

@@ -1,10 +1,10 @@
-/* Lazanyi and Szirmay-Kalos in fixed point (fresnel_fixed.h). The rescaled
+/* Lazanyi and Szirmay-Kalos in fixed point (fresnel_q15.h). The rescaled
  * model is Schlick with F0 = F0(n, k) exactly (fresnel.h), so it is
  * evaluated as Schlick with a 30-bit F0; the compensation term
  * a c (1-c)^alpha is formed in fresnel_qf. */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 /* F0 + (1 - F0) x^5 in Q30 with F0 in Q30.
  * R: f0 <= 2^30; (2^30 - f0) x5 / 2^30 <= 2^30 - f0: the sum is <= 2^30. */

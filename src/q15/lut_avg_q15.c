@@ -1,4 +1,4 @@
-/* Hemispherical averages of uint16_t lookup tables (fresnel_fixed.h): the
+/* Hemispherical averages of uint16_t lookup tables (fresnel_q15.h): the
  * weighted node sums of src/f32/lut_avg.c (whose header comment derives
  * the weights), exact, in integers.
  *
@@ -11,7 +11,7 @@
  * every n and every table. The cubic's negative terms are summed apart. */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 #include "fresnel_lut_avg_sum.h"
 

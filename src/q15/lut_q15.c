@@ -1,4 +1,4 @@
-/* Lookup tables of reflectance curves in fixed point (fresnel_fixed.h):
+/* Lookup tables of reflectance curves in fixed point (fresnel_q15.h):
  * linear interpolation at a position in Q15 node units, no division.
  *
  * The position: uniform in c, exact; uniform in sqrt(c), sqrt(c) (n-1) with
@@ -19,7 +19,7 @@
  * allows for on any table. */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 /* The node count as the functions read it: n above FRESNEL_I_LUT_N_MAX is taken
  * as FRESNEL_I_LUT_N_MAX (so only entries the caller's table has are read), n <= 0

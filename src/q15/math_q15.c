@@ -4,7 +4,7 @@
  * instruction, no count-leading-zeros instruction (Cortex-M0 has none). */
 #include "math_q15.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 /* Digit-by-digit square root (the binary form of the schoolbook method):
  * `bit` walks down the even powers of 4; root gains one bit per step.

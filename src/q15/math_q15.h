@@ -27,9 +27,9 @@
 
 #include <stdint.h>
 
-#include "fresnel_fixed.h"
+#include "fresnel_q15.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 #define FRESNEL_I_ONE_Q15 32768u
 #define FRESNEL_I_ONE_Q30 (1u << 30)
@@ -212,5 +212,5 @@ FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_exp2_t[64];
  * below 2^-24 for p <= 64, 2^-21 for p <= 1000 (math_q15.c). */
 FRESNEL_I_HIDDEN fresnel_qf fresnel_i_pow_q15(uint32_t x, uint32_t p);
 
-#endif /* FRESNEL_HAS_FIXED */
+#endif /* FRESNEL_HAS_Q15 */
 #endif

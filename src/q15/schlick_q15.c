@@ -1,5 +1,5 @@
 /* Schlick, generalized Schlick, Schlick internal and the F0 helpers in
- * fixed point (fresnel_fixed.h).
+ * fixed point (fresnel_q15.h).
  *
  * Schlick: x = 1 - c exact in Q15, x^2 exact in Q30, x^4 and x^5 in Q30
  * through 15-bit halves (no int64), so the only rounding that shows is the
@@ -19,7 +19,7 @@
  * of fresnel_f0_in_medium (schlick.c). */
 #include "internal.h"
 
-#if FRESNEL_HAS_FIXED
+#if FRESNEL_HAS_Q15
 
 fresnel_q15 fresnel_schlick_q15(int32_t f0, int32_t c)
 {

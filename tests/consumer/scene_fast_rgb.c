@@ -1,6 +1,6 @@
 /* Built against the header `fresnel gen` writes for tests/test_gen_fast_rgb.sh's
  * q15-only scene (gold and copper; schlick, f82, exact), as a firmware
- * writes it: the three-channel fast paths of fresnel_fixed_fast.h take the
+ * writes it: the three-channel fast paths of fresnel_q15_fast.h take the
  * emitted constants as they are. On every cos code 0..32768 each channel of
  * fresnel_f82_q15_rgb_fast and fresnel_conductor_q15_rgb_fast equals the
  * one-channel fast path's, and lies within the fast bound plus the clamped
@@ -14,7 +14,7 @@
 #define FRESNEL_IMPLEMENTATION
 #include "fresnel_single_q15.h"
 #else
-#include "fresnel_fixed_fast.h"
+#include "fresnel_q15_fast.h"
 #endif
 #include "metals.h"
 

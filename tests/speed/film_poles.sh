@@ -1,6 +1,6 @@
 #!/bin/sh
-# The thin film's accuracy and cost by pole count (include/fresnel_film.h,
-# COST). For each FRESNEL_FILM_POLES in POLES (default 3 4 5 6), the files
+# The thin film's accuracy and cost by pole count (tests/README.md, "Thin
+# film: poles"). For each FRESNEL_FILM_POLES in POLES (default 3 4 5 6), the files
 # git tracks are copied to a scratch folder with that count, and it prints
 # build/tests/test_film's CIEDE2000 lines against the spectral truth (the
 # default sampling), `make bench`'s film-f32 and schlick-rgb-f32 rows and
