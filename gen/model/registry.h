@@ -3,7 +3,7 @@
  * reads, and its evaluators in every number type. Scene parsing and
  * evaluation, `eval`, `curve`, `accuracy`, `report`, `extremes`, `bench` and
  * the three emitters read the rows; no other file names a model to choose
- * or list models (tests/test_gen_layout.sh checks it).
+ * or list models (tests/gen/test_gen_layout.sh checks it).
  *
  * Adding a model: gen/README.md lists every place it touches (its runtime
  * functions, its double reference, its shader function, one row here). */
@@ -124,7 +124,7 @@ typedef struct model {
     /* The runtime's closed-form hemispherical average (fresnel_*_avg_rgb,
      * binary32); NULL where the runtime has none. */
     fresnel_rgb (*avg_f32)(const model_rgb *q);
-    /* Its row in `make cross-count`'s tables (tests/cross/fixed_models.h),
+    /* Its row in `make cross-count`'s tables (tests/ports/cross/q15_models.h),
      * the Q15 function a firmware calls for it; NULL where there is none. */
     const char *cross_row;
 } model;
