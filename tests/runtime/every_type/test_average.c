@@ -281,6 +281,52 @@ static void check_lut_averages(void)
         CHECK("fresnel_schlick_avg_q15_rgb and fresnel_f82_avg_q15_rgb equal the scalar forms per channel", ok,
               "differ");
     }
+    {
+        /* The binary32 RGB averages: each channel is the scalar form (the
+         * tables' channels one after another, n nodes each), on values
+         * across [0, 1] and beyond, and Schlick's average of a grey F0
+         * within FRESNEL_BOUND_SCHLICK_AVG of the closed form in double. */
+        static const float vals[] = {-0.5f, 0.0f, 1e-8f, 0.04f, 0.5f, 0.9f, 1.0f, 1.04f, 3.0f};
+        int ok = 1, ok_lut = 1, a, b, m;
+        double worst_ref = 0.0;
+        fresnel_rgb f0, f82, r;
+        for (a = 0; a < 9; a++)
+            for (b = 0; b < 9; b++) {
+                f0.r = vals[a];
+                f0.g = vals[b];
+                f0.b = vals[(a + b) % 9];
+                f82.r = f0.g, f82.g = f0.b, f82.b = f0.r;
+                r = fresnel_schlick_avg_rgb(f0);
+                ok &= r.r == fresnel_schlick_avg(f0.r) && r.g == fresnel_schlick_avg(f0.g) &&
+                      r.b == fresnel_schlick_avg(f0.b);
+                r = fresnel_f82_avg_rgb(f0, f82);
+                ok &= r.r == fresnel_f82_avg(f0.r, f82.r) && r.g == fresnel_f82_avg(f0.g, f82.g) &&
+                      r.b == fresnel_f82_avg(f0.b, f82.b);
+            }
+        for (a = 0; a <= 16; a++) {
+            f0.r = f0.g = f0.b = (float)a / 16.0f;
+            r = fresnel_schlick_avg_rgb(f0);
+            worst_ref = fmax(worst_ref, fabs(r.g - schlick_gen_avg_exact(f0.g, 1.0, 5.0)));
+        }
+        CHECK("fresnel_schlick_avg_rgb and fresnel_f82_avg_rgb equal the scalar forms per channel; Schlick's "
+              "within FRESNEL_BOUND_SCHLICK_AVG of the closed form",
+              ok && worst_ref <= FRESNEL_BOUND_SCHLICK_AVG, "per channel %s, closed form %.3g", ok ? "equal" : "differ",
+              worst_ref);
+        for (m = -1; m <= 16; m++) {
+            for (a = 0; a < 48; a++)
+                tf[a] = (float)(2.0 * next01());
+            r = fresnel_lut_avg_rgb(tf, m);
+            ok_lut &= r.r == fresnel_lut_avg(tf, m) && r.g == fresnel_lut_avg(tf + (m > 0 ? m : 0), m) &&
+                      r.b == fresnel_lut_avg(tf + 2 * (m > 0 ? m : 0), m);
+            r = fresnel_lut_linear_avg_rgb(tf, m);
+            ok_lut &= r.r == fresnel_lut_linear_avg(tf, m) && r.g == fresnel_lut_linear_avg(tf + (m > 0 ? m : 0), m) &&
+                      r.b == fresnel_lut_linear_avg(tf + 2 * (m > 0 ? m : 0), m);
+            if (m <= 0)
+                ok_lut &= r.r == 0.0f && r.g == 0.0f && r.b == 0.0f;
+        }
+        CHECK("fresnel_lut_avg_rgb and fresnel_lut_linear_avg_rgb equal the scalar forms per channel, n -1..16",
+              ok_lut, "differ");
+    }
 }
 
 int main(void)
