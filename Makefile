@@ -106,8 +106,8 @@ vpath conform_gen.c tests/ports/cross
 $(BUILD)/tests/%: %.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Isrc -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
-# A dependency file an earlier build wrote may name a test source by a path
-# it no longer has: that program is rebuilt from where the source is now.
+# A test source that a dependency file names and the tree lacks is not an
+# error: the program is rebuilt from its source in tests/.
 tests/%.c: ;
 
 # Programs the test scripts run, built here with the flags of this pass (so
