@@ -34,15 +34,20 @@ LDLIBS     := -lm
 
 LIB_SRC  := $(wildcard src/*/*.c)
 GEN_SRC  := $(wildcard gen/*/*.c)
-TEST_SRC := $(wildcard tests/test_*.c)
+# The checks: every test_*.c under tests/ (tests/README.md has the layout),
+# each built to $(BUILD)/tests/<its name>; the names are unique.
+TEST_SRC := $(sort $(shell find tests -name 'test_*.c' -type f))
 LIB_OBJ  := $(LIB_SRC:%.c=$(BUILD)/obj/%.o)
 GEN_OBJ  := $(GEN_SRC:%.c=$(BUILD)/obj/%.o) $(BUILD)/obj/embed/viewer_assets.o
-TEST_BIN := $(TEST_SRC:tests/%.c=$(BUILD)/tests/%)
+TEST_BIN := $(addprefix $(BUILD)/tests/,$(notdir $(TEST_SRC:.c=)))
+ifneq ($(words $(TEST_BIN)),$(words $(sort $(TEST_BIN))))
+$(error two checks under tests/ share a name: $(sort $(foreach b,$(TEST_BIN),$(if $(filter-out 1,$(words $(filter $(b),$(TEST_BIN)))),$(notdir $(b))))))
+endif
 
 .PHONY: all single test test-bins check check-bins install uninstall deps clean report bench bench-run viewer
 .DELETE_ON_ERROR:
 
-# A first build ends with what it made and where (tests/test_make_summary.sh).
+# A first build ends with what it made and where (tests/repo/test_make_summary.sh).
 SINGLE := $(BUILD)/single/fresnel_single_f32.h $(BUILD)/single/fresnel_single_q15.h $(BUILD)/single/fresnel_single_f16.h
 all: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(SINGLE) $(BUILD)/scene_example
 	@echo "built, in $(BUILD)/:"
@@ -65,7 +70,7 @@ SCENE := data/scenes/default.scene
 $(BUILD)/scene_default.h: $(SCENE) $(BUILD)/fresnel $(wildcard data/*.csv)
 	$(BUILD)/fresnel gen $(SCENE) -o $@
 
-$(BUILD)/scene_example: tests/consumer/scene_example.c $(BUILD)/scene_default.h $(BUILD)/libfresnel.a
+$(BUILD)/scene_example: tests/ports/consumer/scene_example.c $(BUILD)/scene_default.h $(BUILD)/libfresnel.a
 	$(CC) $(WARN) $(OPT) $(SAN) -Iinclude -I$(BUILD) $< $(BUILD)/libfresnel.a $(LDLIBS) -o $@
 
 $(BUILD)/libfresnel.a: $(LIB_OBJ)
@@ -93,38 +98,46 @@ $(BUILD)/obj/embed/viewer_assets.o: $(BUILD)/embed/viewer_assets.c
 $(BUILD)/fresnel: $(BUILD)/obj/gen/main.o $(GEN_OBJ) $(BUILD)/libfresnel.a
 	$(CC) $(SAN) -o $@ $^ $(LDLIBS)
 
-$(BUILD)/tests/%: tests/%.c $(GEN_OBJ) $(BUILD)/libfresnel.a
+# A program of tests/ (a check, or a helper a check runs): $(BUILD)/tests/NAME
+# from NAME.c in whichever folder of tests/ holds it.
+vpath test_%.c $(sort $(dir $(TEST_SRC)))
+vpath gen_matrix_check.c tests/gen
+vpath conform_gen.c tests/ports/cross
+$(BUILD)/tests/%: %.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Isrc -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+	$(CC) $(CFLAGS_GEN) -Isrc -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+# A test source that a dependency file names and the tree lacks is not an
+# error: the program is rebuilt from its source in tests/.
+tests/%.c: ;
 
 # Programs the test scripts run, built here with the flags of this pass (so
 # the sanitizer pass runs them sanitized): the fuzz targets linked with a
-# replay driver (tests/test_fuzz_replay.sh), the OSMesa GLSL test
-# (tests/test_glsl.sh), the generated-header checker (tests/test_gen_matrix.sh), the
-# Vulkan test (tests/test_vulkan.sh).
+# replay driver (tests/fuzz/test_fuzz_replay.sh), the OSMesa GLSL test
+# (tests/shader_ports/test_glsl_port_osmesa.sh), the generated-header checker (tests/gen/test_gen_matrix.sh), the
+# Vulkan test (tests/shader_ports/test_vulkan.sh).
 FUZZ_REPLAY := $(patsubst tests/fuzz/%.c,$(BUILD)/fuzz-replay/%,$(wildcard tests/fuzz/fuzz_*.c))
 $(BUILD)/fuzz-replay/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay_main.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -DFUZZ_REPLAY -Isrc -Itests -Itests/fuzz -o $@ $< tests/fuzz/replay_main.c $(GEN_OBJ) \
+	$(CC) $(CFLAGS_GEN) -DFUZZ_REPLAY -Isrc -Itests/common -Itests/fuzz -o $@ $< tests/fuzz/replay_main.c $(GEN_OBJ) \
 	    $(BUILD)/libfresnel.a $(LDLIBS)
-GLSL_TEST_SRC := tests/glsl_test.c ports/glsl/host/glctx.c ports/glsl/host/png.c
-$(BUILD)/glsl/glsl_test: $(GLSL_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a
+GLSL_TEST_SRC := tests/shader_ports/glsl_port_osmesa.c ports/glsl/host/glctx.c ports/glsl/host/png.c
+$(BUILD)/glsl/glsl_port_osmesa: $(GLSL_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Iports/glsl/host -Itests -o $@ $(GLSL_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a \
+	$(CC) $(CFLAGS_GEN) -Iports/glsl/host -Itests/common -o $@ $(GLSL_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a \
 	    $$(pkg-config --cflags --libs osmesa) $(LDLIBS)
-# The Vulkan test (tests/test_vulkan.sh): links the Vulkan loader (libvulkan-dev).
-VULKAN_TEST_SRC := tests/vulkan_test.c ports/vulkan/vkrun.c
+# The Vulkan test (tests/shader_ports/test_vulkan.sh): links the Vulkan loader (libvulkan-dev).
+VULKAN_TEST_SRC := tests/shader_ports/vulkan_test.c ports/vulkan/vkrun.c
 $(BUILD)/vulkan/vulkan_test: $(VULKAN_TEST_SRC) ports/vulkan/vkrun.h $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Iports/vulkan -Itests -o $@ $(VULKAN_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a -lvulkan $(LDLIBS)
-$(BUILD)/tests/viewer_lit: tests/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
+	$(CC) $(CFLAGS_GEN) -Iports/vulkan -Itests/common -o $@ $(VULKAN_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a -lvulkan $(LDLIBS)
+$(BUILD)/tests/viewer_lit: tests/shader_ports/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Itests -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+	$(CC) $(CFLAGS_GEN) -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
 # make check's programs; make test's add the two that link OSMesa and Vulkan.
 check-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
             $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit $(BUILD)/hlsl/fresnel.hlsl
-test-bins: check-bins $(BUILD)/glsl/glsl_test $(BUILD)/vulkan/vulkan_test
+test-bins: check-bins $(BUILD)/glsl/glsl_port_osmesa $(BUILD)/vulkan/vulkan_test
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with
 # apt-get when run as root, else the exact apt-get line and a stop.
@@ -243,7 +256,7 @@ include ports/hlsl/hlsl.mk
 # under ASan+UBSan, starting from the committed seed corpus
 # tests/fuzz/corpus/<target>/; inputs it finds go to $(BUILD)/fuzz/corpus/<target>/,
 # crashes to $(BUILD)/fuzz/artifacts/<target>/. `make test` replays the seed
-# corpus without libFuzzer (tests/test_fuzz_replay.sh).
+# corpus without libFuzzer (tests/fuzz/test_fuzz_replay.sh).
 FUZZ_CC      ?= clang
 FUZZ_SECONDS ?= 60
 FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
@@ -303,14 +316,14 @@ fuzz: fuzz-bins
 	done
 
 # The long pass of the worst-case searches behind the stated bounds
-# (tests/search.h; make test runs their fast pass): each search with
-# SEARCH_LONG=1, its best points rewritten into tests/worst_inputs/ (three
+# (tests/common/search.h; make test runs their fast pass): each search with
+# SEARCH_LONG=1, its best points rewritten into tests/data/worst_inputs/ (three
 # per key, sixty per number type at most), which the fast pass replays. Minutes (the thin film's: about half an hour on two
 # cores); fails when a search beats a bound, the corpus written all the same.
-SEARCHES := film_search:film model_search:models fast_search:fast
-search: $(BUILD)/tests/test_film_search $(BUILD)/tests/test_model_search $(BUILD)/tests/test_fast_search
+SEARCHES := film_search:film model_search:models q15_fast_search:fast
+search: $(BUILD)/tests/test_film_search $(BUILD)/tests/test_model_search $(BUILD)/tests/test_q15_fast_search
 	@status=0; for s in $(SEARCHES); do \
-	    out=tests/worst_inputs/$${s#*:}.txt; rm -f $$out.new; \
+	    out=tests/data/worst_inputs/$${s#*:}.txt; rm -f $$out.new; \
 	    echo "== test_$${s%%:*} (SEARCH_LONG=1)"; \
 	    SEARCH_LONG=1 SEARCH_CORPUS_OUT=$$out.new $(BUILD)/tests/test_$${s%%:*} || status=1; \
 	    sort -u $$out.new | sort -t'#' -k2 -gr | \
@@ -339,16 +352,16 @@ FIXED_RC_OBJ := $(FIXED_SRC:%.c=$(BUILD)/obj/rc/%.o)
 $(BUILD)/obj/rc/src/%.o: src/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_LIB) -DFRESNEL_RANGE_CHECK -c $< -o $@
-$(BUILD)/tests/test_fixed_bounds: tests/test_fixed_bounds.c $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a
+$(BUILD)/tests/test_q15_bounds: tests/runtime/q15/test_q15_bounds.c $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Isrc -Itests -o $@ $< $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+	$(CC) $(CFLAGS_GEN) -Isrc -Itests/common -o $@ $< $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
 # Cross builds (ports/, ports/cross.sh): the fixed-point conformance program
 # run under qemu on a Cortex-M0, a Cortex-M4F and an RV32IMC, compared bit for
 # bit with the host; symbol checks of the fixed-point-only Cortex-M0 build;
 # instructions per call (and on AArch64 Linux, the mobile toolchains' target,
 # the binary32 runtime's); code size per model, type and target.
-#   make cross-test    what tests/test_cross.sh runs (PASS/FAIL lines)
+#   make cross-test    what tests/ports/test_cross.sh runs (PASS/FAIL lines)
 #   make cross-count   instructions per call (qemu -singlestep traces), Cortex-M0 cycles;
 #                      AArch64 binary32 and its NEON batches, gcc and clang at -O2, -O3
 #   make size          .text/.rodata per model and type, Cortex-M0/M4F, RV32IMC
@@ -357,7 +370,7 @@ $(BUILD)/tests/test_fixed_bounds: tests/test_fixed_bounds.c $(FIXED_RC_OBJ) $(GE
 cross-deps:
 	@sh tests/deps.sh cross
 
-$(BUILD)/cross/conform_data.c: $(BUILD)/tests/cross/conform_gen
+$(BUILD)/cross/conform_data.c: $(BUILD)/tests/conform_gen
 	@mkdir -p $(@D)
 	$< > $@.tmp && mv $@.tmp $@
 cross-data: $(BUILD)/cross/conform_data.c
@@ -379,7 +392,7 @@ cross-test: cross-deps cross-data
 
 cross-count: cross-deps cross-data
 	@for t in m0 m4f rv32; do \
-	    echo "== $$t fixed point: per call over 3 materials x 3 cosine sets x 17 cosines (tests/cross/bench.c):" \
+	    echo "== $$t fixed point: per call over 3 materials x 3 cosine sets x 17 cosines (tests/ports/cross/bench.c):" \
 	        "instructions mean min max$$( [ $$t = m0 ] && echo '; Cortex-M0 cycles, 1-cycle MULS: mean min max; 32-cycle MULS: mean min max')"; \
 	    BUILD=$(BUILD) sh ports/cross.sh count $$t | awk -F'\t' '{ printf "%-28s %6d %6d %6d", $$1, $$2, $$3, $$4; \
 	        if (NF >= 10) printf "   %6d %6d %6d   %6d %6d %6d", $$5, $$6, $$7, $$8, $$9, $$10; printf "\n" }' || exit 1; \

@@ -20,7 +20,7 @@
  *   project copies include/ and the folders of the types it uses.
  *
  * NAMING (the rule of every public name of include/\*.h; the word lists,
- * "slot = words;", are what tests/test_public_names.sh checks names with)
+ * "slot = words;", are what tests/repo/test_public_names.sh checks names with)
  *   Functions: fresnel_<model>[_<form>...][_avg][_<storage>][_<type>][_rgb][_<call>]
  *     model = schlick lsk f82 gulbrandsen approx_conductor cook_torrance
  *             conductor dielectric f0 lut film;
@@ -175,7 +175,7 @@ extern "C" {
 /* Error bounds of the binary32 functions (see CONVENTIONS): about 2-10
  * units in the last place of 1 (binary32 ulp(1) = 1.19e-7). Each is at
  * least 10% above the largest error a search for the worst case found over
- * its domain (tests/test_model_search.c; make search), rounded up. */
+ * its domain (tests/runtime/every_type/test_model_search.c; make search), rounded up. */
 #define FRESNEL_BOUND_SCHLICK          3.6e-7f
 #define FRESNEL_BOUND_SCHLICK_GEN      3.6e-7f
 #define FRESNEL_BOUND_SCHLICK_INTERNAL 3.5e-7f
@@ -289,7 +289,7 @@ fresnel_rgb fresnel_f82_rgb(fresnel_rgb f0, fresnel_rgb f82, float c);
  * integrates to a / 126):
  *   F_avg = F0 + (1 - F0) / 21 - a / 126,   clamped to [0, 1];
  * equal to the average of fresnel_f82 wherever its curve stays inside [0, 1]
- * (every measured material's does; tests/test_average.c).
+ * (every measured material's does; tests/runtime/every_type/test_average.c).
  * Error <= FRESNEL_BOUND_F82_AVG. Cost: 6 flops. */
 float fresnel_f82_avg(float f0, float f82);
 fresnel_rgb fresnel_f82_avg_rgb(fresnel_rgb f0, fresnel_rgb f82);
@@ -367,7 +367,7 @@ fresnel_rgb fresnel_conductor_rgb(fresnel_rgb eta, fresnel_rgb kappa, float c);
  * within the bound, not bit-identical to fresnel_conductor's. Both batches
  * give fresnel_conductor_prepared's results bit for bit, in every lane and
  * for any n, alignment or form (checked on each kernel, built by gcc and
- * clang in ISO C and the GNU modes, by tests/test_batch_simd.sh; see THREAD
+ * clang in ISO C and the GNU modes, by tests/runtime/f32/test_batch_simd.sh; see THREAD
  * SAFETY for the one flag that breaks it); c and out must not overlap; n <= 0 writes
  * nothing, nothing at or past n is read or written.
  * SIMD, chosen at compile time from the target: AVX-512F 16 lanes (compiled

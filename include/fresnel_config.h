@@ -63,7 +63,7 @@ typedef char fresnel_i_config_has_unknown_flags[(((FRESNEL_CONFIG) & ~FRESNEL_CF
 #define FRESNEL_HAS_SIMD (((FRESNEL_CONFIG) & FRESNEL_CFG_NO_SIMD) == 0)
 
 /* ALIASES: second names that code and generated headers may spell, each the
- * name of fresnel.h's NAMING rule it stands for (tests/test_public_names.sh
+ * name of fresnel.h's NAMING rule it stands for (tests/repo/test_public_names.sh
  * reads this block), kept for existing code: FIXED is the Q1.15 type. */
 #define FRESNEL_CFG_NO_FIXED FRESNEL_CFG_NO_Q15
 #define FRESNEL_HAS_FIXED FRESNEL_HAS_Q15

@@ -50,7 +50,7 @@
  * ERROR BOUNDS
  *   FRESNEL_BOUND_*_F16: absolute, against the double reference of the same
  *   model at the same binary16 inputs, on every binary16 cosine in [0, 1]
- *   and the materials of tests/fixed_materials.h (ten metals at 450, 550 and
+ *   and the materials of tests/common/materials.h (ten metals at 450, 550 and
  *   650 nm in air and under water, BK7 and water from both sides, corners of
  *   the domain); FRESNEL_DOMAIN_*_F16, one for every function: the same
  *   over the whole domain of CONVENTIONS, for the LUTs every n up to
@@ -104,7 +104,7 @@
  * conductors (kappa 1e-3) at their critical angle. They are measured
  * maxima rounded up, not proven, but for the LUTs': the models' and the
  * F0 helpers' at least 10% above the largest error a search for the worst
- * case or the fuzzer found over the domain (tests/test_model_search.c;
+ * case or the fuzzer found over the domain (tests/runtime/every_type/test_model_search.c;
  * make search, make fuzz). */
 #define FRESNEL_DOMAIN_SCHLICK_F16 2.8e-3
 #define FRESNEL_DOMAIN_SCHLICK_GEN_F16 2.8e-3

@@ -32,7 +32,7 @@
  *   project (CIE 1931, D65, the colour space's matrix). d = 0 and n_f = n1
  *   give the bare substrate's ground truth to 1e-12; an independent
  *   characteristic-matrix film agrees to 4e-15 per channel
- *   (tests/test_film_truth.c).
+ *   (tests/runtime/thin_film/test_film_truth.c).
  *
  * THE MODEL (gen/common/reference_film.h has the derivation)
  *   Per wavelength R = a0 + 2 Re sum_{m>=1} kappa q^(m-1) z^m,
@@ -72,7 +72,7 @@
  *        the linear interpolation in c crosses the square-root edge of
  *        cos(theta_f): CIEDE2000 up to 80 within about 10 degrees of it,
  *        mean 0.36, max 11 further away (gold under 1.2 in glass,
- *        tests/test_film.c), and the Q1.15 layout cannot hold its table
+ *        tests/runtime/thin_film/test_film.c), and the Q1.15 layout cannot hold its table
  *        (its A, B leave [-1, 1]);
  *     2. a substrate whose cosine of refraction stays clear of zero: at
  *        every wavelength of 360-830 nm, 1 - N^2 / n1^2 (N = n + i k, the
@@ -96,7 +96,7 @@
  *   Against the double evaluation of the same table (gen/common/
  *   reference_film.c): the largest error a search for the worst case
  *   found over the domain, rounded up with a margin of at least 10%
- *   (tests/test_film_search.c: every Q1.15 and binary16 cosine at sixteen
+ *   (tests/runtime/thin_film/test_film_search.c: every Q1.15 and binary16 cosine at sixteen
  *   thicknesses, random (c, d) and local maximisation from the worst, on
  *   films from the ambient's index to 4 over twelve substrates in air,
  *   1.33, 1.4, 1.5 and at the domain's edge; `make search`, and `make
@@ -113,7 +113,7 @@
  *   (the double model: as binary32). Thick films (1000-5000 nm, gold
  *   under 2.5, BK7 under 1.8) stay below 0.25. A film of no thickness,
  *   and one of the ambient's index at any thickness, give the bare
- *   substrate's truth within 0.1 (measured 0.056, tests/test_film.c).
+ *   substrate's truth within 0.1 (measured 0.056, tests/runtime/thin_film/test_film.c).
  *
  * COST per RGB evaluation
  *   binary32: 53 interpolated table values, 6 complex exponentials (short

@@ -146,7 +146,7 @@ typedef struct fresnel_conductor_prep_q15_fast {
 } fresnel_conductor_prep_q15_fast;
 
 /* ALIASES: second names that code and generated headers may spell, each the
- * name of fresnel.h's NAMING rule it stands for (tests/test_public_names.sh
+ * name of fresnel.h's NAMING rule it stands for (tests/repo/test_public_names.sh
  * reads this block). */
 #define fresnel_conductor_prep_q15 fresnel_conductor_prep_q15_fast
 /* end of ALIASES */

@@ -39,7 +39,7 @@
  * tests and parameter sets. Schlick's is the largest error over every
  * (F0, c) code pair; F82's and the exact conductor's the largest a search
  * for the worst case found over their domains, plus at least 10%
- * (tests/test_fast_search.c, make search).
+ * (tests/runtime/q15/test_q15_fast_search.c, make search).
  */
 #if FRESNEL_HAS_Q15
 
@@ -350,7 +350,7 @@ static const uint32_t fresnel_i_fast_rc[130] = {
     541207u, 539034u, 536878u, 534739u, 532617u, 530512u, 528423u, 526351u, 524295u, 522255u};
 
 /* sqrt(x) for x in [2^30, 2^32), in [2^15, 2^16]: the chord of one of 192
- * segments, rounded; relative error below 2^-15.6 (tests/test_fixed_fast.c,
+ * segments, rounded; relative error below 2^-15.6 (tests/runtime/q15/test_q15_fast.c,
  * every x >> 8). */
 FRESNEL_I_INLINE uint32_t fresnel_i_fast_sqrt32(uint32_t x)
 {
@@ -359,7 +359,7 @@ FRESNEL_I_INLINE uint32_t fresnel_i_fast_sqrt32(uint32_t x)
 }
 
 /* 2^31 / d for d in [2^15, 2^16], in [2^15, 2^16]: the chord of one of 129
- * segments, rounded; relative error below 2^-15.6 (tests/test_fixed_fast.c,
+ * segments, rounded; relative error below 2^-15.6 (tests/runtime/q15/test_q15_fast.c,
  * every d). */
 FRESNEL_I_INLINE uint32_t fresnel_i_fast_recip16(uint32_t d)
 {
@@ -423,13 +423,13 @@ FRESNEL_I_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
  * has no CLZ), every product 32 x 32 -> 32. c = 0 gives one (0 for the
  * matched index).
  * Error <= FRESNEL_BOUND_CONDUCTOR_Q15_FAST LSB over the domain above, every
- * c code (tests/test_fixed_fast.c); results in [0, one].
+ * c code (tests/runtime/q15/test_q15_fast.c); results in [0, one].
  * Cost: 22 mul (26 for A < 0); on Cortex-M0 -Os under 300 instructions
  * (`make cross-count`, ports/README.md: about a tenth of
  * fresnel_conductor_q15's), 1548 bytes of tables.
  *
  * Why every step holds for every (p, c) fixed_conductor_fast makes from the
- * domain (tests/test_fixed_fast.c searches each boundary below):
+ * domain (tests/runtime/q15/test_q15_fast.c searches each boundary below):
  *   shift <= 8 (|D|, b <= 257), and a0 + [0, 2^(30-shift)] fits int32, so ah does.
  *   Two words iff ah + 32767 < span as uint32: span is 65535 only where
  *     shift = 0 and b1 < 2^15, and then it takes exactly |ah| <= 32767

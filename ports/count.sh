@@ -1,7 +1,7 @@
 #!/bin/sh
 # Instructions and cycles per call from a qemu execution trace (-singlestep
 # -d exec,nochain: one "Trace" line per instruction executed, guest PC in the
-# second field of the bracket). tests/cross/bench.c calls port_mark before
+# second field of the bracket). tests/ports/cross/bench.c calls port_mark before
 # each call of a row and after the last one (it prints the number of calls
 # per row after BENCH; bench_float.c prints none: 33); the lines between
 # two marks are one call plus the loop, and the last row named "(loop...)"

@@ -75,14 +75,14 @@ cmd_check() {
 build_prog() { # target prog stride [offset]
     target "$1"
     mkdir -p "$OUT/$1"
-    $CC $W $CF $FIXED_ONLY -DCONFORM_STRIDE="$3" -DCONFORM_OFFSET="${4:-0}" $INC $LD tests/cross/$2.c \
+    $CC $W $CF $FIXED_ONLY -DCONFORM_STRIDE="$3" -DCONFORM_OFFSET="${4:-0}" $INC $LD tests/ports/cross/$2.c \
         "$OUT/conform_data.c" $PORT_COMMON $PORT $ALL_SRC -lgcc -o "$OUT/$1/$2_$3.elf"
 }
 
 # the same program on the host, one per target (the targets run at once)
 host_prog() { # target prog stride offset -> $OUT/host/<prog>_<target>
     mkdir -p "$OUT/host"
-    $HOSTCC $W -O2 $FIXED_ONLY -DCONFORM_STRIDE="$3" -DCONFORM_OFFSET="$4" $INC tests/cross/$2.c "$OUT/conform_data.c" \
+    $HOSTCC $W -O2 $FIXED_ONLY -DCONFORM_STRIDE="$3" -DCONFORM_OFFSET="$4" $INC tests/ports/cross/$2.c "$OUT/conform_data.c" \
         ports/common/port_print.c ports/host/port.c $ALL_SRC -o "$OUT/host/$2_$1"
 }
 
@@ -143,7 +143,7 @@ cmd_nm() {
     else
         echo "FAIL cross m0: the fixed-only build of src/ defines ${other:-no fresnel_schlick_q15}"
     fi
-    $CC $W $CF $FIXED_ONLY $INC $LD tests/cross/schlick_only.c $PORT_COMMON $PORT "$d/libfresnel_q15.a" -lgcc \
+    $CC $W $CF $FIXED_ONLY $INC $LD tests/ports/cross/schlick_only.c $PORT_COMMON $PORT "$d/libfresnel_q15.a" -lgcc \
         -o "$d/schlick_only.elf" 2>"$d/err" || { echo "FAIL cross m0: schlick_only: $(head -3 "$d/err")"; return; }
     [ -f "$OUT/m0/conform_1.elf" ] || build_prog m0 conform 1 || { echo "FAIL cross m0: conformance firmware does not build"; return; }
     for f in "$d/libfresnel_q15.a" "$d/schlick_only.elf" "$OUT/m0/conform_1.elf"; do
@@ -173,7 +173,7 @@ cmd_nm() {
     fi
 }
 
-# The binary32 runtime (tests/cross/bench_float.c with its batch rows, no
+# The binary32 runtime (tests/ports/cross/bench_float.c with its batch rows, no
 # binary16) on AArch64 Linux, built by gcc or clang at OPT with the
 # runtime's math flags (the Makefile's MATH_FLAGS), counted under
 # qemu-aarch64 user mode: the phones' and tablets' toolchains and NEON.
@@ -188,7 +188,7 @@ cmd_count_a64() { # gcc|clang OPT
     d=$OUT/a64/$1$(echo "$2" | tr -d ' =')
     mkdir -p "$d"
     $cc $W $2 -fno-math-errno -fno-trapping-math -static -DFRESNEL_CONFIG=FRESNEL_CFG_NO_F16 -DBENCH_BATCH_N=256 \
-        $INC tests/cross/bench_float.c "$OUT/conform_data.c" ports/common/port_print.c ports/host/port.c \
+        $INC tests/ports/cross/bench_float.c "$OUT/conform_data.c" ports/common/port_print.c ports/host/port.c \
         $F32_SRC -lm -o "$d/bench.elf" || exit 1
     qemu-aarch64-static -singlestep -d exec,nochain -D "$d/trace.log" "$d/bench.elf" >"$d/bench.txt" || exit 1
     sh ports/count.sh aarch64-linux-gnu-nm "$d/bench.elf" "$d/trace.log" "$d/bench.txt"
@@ -205,7 +205,7 @@ cmd_count() { # target [float]: name<TAB>mean<TAB>min<TAB>max on stdout (m0: + c
         # binary32 and binary16 runtimes with newlib's libm (Cortex-M only)
         target "$t"
         mkdir -p "$OUT/$t"
-        $CC $W $CF $INC $LD tests/cross/bench_float.c "$OUT/conform_data.c" $PORT_COMMON $PORT $F32_SRC $F16_SRC \
+        $CC $W $CF $INC $LD tests/ports/cross/bench_float.c "$OUT/conform_data.c" $PORT_COMMON $PORT $F32_SRC $F16_SRC \
             -lm -lc -lgcc -o "$OUT/$t/bench_1.elf" || exit 1
     else
         build_prog "$t" bench 1 || exit 1
@@ -222,7 +222,7 @@ cmd_count() { # target [float]: name<TAB>mean<TAB>min<TAB>max on stdout (m0: + c
 }
 
 # The runtime of one type compiled once per target into an archive, so
-# that each probe only compiles tests/cross/size_probe.c and links.
+# that each probe only compiles tests/ports/cross/size_probe.c and links.
 size_lib() { # target type -> $OUT/$1/size_<type>.a
     d=$OUT/$1/size_$2
     rm -rf "$d" && mkdir -p "$d"
@@ -242,7 +242,7 @@ probe_size() { # target kind(PROBE|PROBE_F32|PROBE_F16) id type [-Dextra] -> "te
     [ "$t" = rv32 ] && [ "$kind" = PROBE_F32 ] && extra="-Iports/rv32imc/include -Wl,--unresolved-symbols=ignore-all"
     [ "$t" != rv32 ] && [ "$kind" != PROBE ] && libs="-lm -lc -lgcc"
     $CC $W $CF -D$kind="$id" $def -Iinclude -nostdlib -nostartfiles -Wl,--gc-sections -Wl,-e,probe $extra \
-        tests/cross/size_probe.c "$OUT/$t/size_$ty.a" ports/common/mem.c $libs -o "$OUT/probe.elf" 2>"$OUT/probe.err" ||
+        tests/ports/cross/size_probe.c "$OUT/$t/size_$ty.a" ports/common/mem.c $libs -o "$OUT/probe.elf" 2>"$OUT/probe.err" ||
         { echo "- -"; return; }
     $SZ -A "$OUT/probe.elf" | awk '$1 == ".text" { t = $2 } $1 == ".rodata" { r = $2 } END { printf "%d %d\n", t, r }'
 }
@@ -301,7 +301,7 @@ cmd_size() {
         echo "$row"
     done
     echo
-    echo "Bytes the call of one model adds to an otherwise empty program (tests/cross/size_probe.c, --gc-sections), including the"
+    echo "Bytes the call of one model adds to an otherwise empty program (tests/ports/cross/size_probe.c, --gc-sections), including the"
     echo "libgcc soft-float helpers and newlib libm functions it pulls in (f32 and f16 on Cortex-M0; f16 on Cortex-M4F converts"
     echo "in hardware); RV32 f32 excludes libm, which Debian's riscv64-unknown-elf toolchain does not ship; gcc 12 has no"
     echo "_Float16 for RISC-V. lut = fresnel_lut*_u16 / fresnel_lut / fresnel_lut_f16; lut-residual = the s8 residual table."
@@ -314,7 +314,7 @@ cmd_size() {
     s2t=$1 s2r=$2
     set -- $(probe_size m0 PROBE 19 fixed -DSCENE_N=4)
     echo
-    echo "Cortex-M0 -Os, fresnel_schlick_q15_fast (tests/cross/size_probe.c PROBE=19, SCENE_N materials' F0 in a const table):"
+    echo "Cortex-M0 -Os, fresnel_schlick_q15_fast (tests/ports/cross/size_probe.c PROBE=19, SCENE_N materials' F0 in a const table):"
     echo "schlick-only fixed scene: .text $s1t B, .rodata $s1r B (one material); per further material: .text $((($1 - s2t) / 2)) B, .rodata $((($2 - s2r) / 2)) B"
     set -- $(probe_size m0 PROBE 20 fixed -DSCENE_N=1)
     s1t=$(($1 - base_m0_fixed_t)) s1r=$(($2 - base_m0_fixed_r))
@@ -327,7 +327,7 @@ cmd_size() {
     d=$OUT/m0/fixed-only
     [ -f "$d/schlick_only.elf" ] || cmd_nm >/dev/null
     echo
-    echo "Schlick only, one material, fixed point, Cortex-M0 (tests/cross/schlick_only.c linked with start-up and semihosting):"
+    echo "Schlick only, one material, fixed point, Cortex-M0 (tests/ports/cross/schlick_only.c linked with start-up and semihosting):"
     echo "library code linked: $(lib_bytes "$d/schlick_only.elf") bytes ($($NMT "$d/schlick_only.elf" | awk '$NF ~ /^fresnel_/ { print $NF }' | tr '\n' ' ')); the whole firmware:"
     $SZ -A "$d/schlick_only.elf" | awk '$1 ~ /^\.(text|rodata|data|bss)$/ { printf "  %-8s %6d\n", $1, $2 }'
 }

@@ -2,7 +2,7 @@
 # The runtime of one number type as one stb-style header, made from the
 # sources (include/ and src/<type>/, which stay the one place to edit):
 #   sh ports/single.sh TYPE > fresnel_single_TYPE.h      TYPE: f32, q15, f16
-# `make` writes all three to build/single/; tests/test_single_file.sh builds
+# `make` writes all three to build/single/; tests/ports/test_single_file.sh builds
 # each as a consumer would (C99 alone, C++17 as a unity build) and checks that
 # the AVX2 kernel's target reaches no other function.
 #

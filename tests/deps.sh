@@ -16,7 +16,7 @@
 # Otherwise the script prints the exact `apt-get install` line to run and
 # exits 1 at once. Nothing missing: exit 0, silently.
 #
-# For tests/test_deps.sh, without uninstalling anything:
+# For tests/repo/test_deps.sh, without uninstalling anything:
 #   DEPS_PATH      PATH the probes find their tools on (default: $PATH); the
 #                  tools run with the real PATH
 #   DEPS_ROOT      prefix for the files probed where a program cannot be

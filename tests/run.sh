@@ -4,8 +4,9 @@
 # PASS is first, sanitize or other (make test: first=build
 # sanitize=build/asan other=build/clang@clang); DIR is the pass's build
 # directory; its scripts run with BUILD=DIR and CC=COMPILER (default $CC).
-# The checks are every tests/test_*.c (its binary DIR/tests/test_*) and
-# every tests/test_*.sh. A check's opening comment names the passes where it
+# The checks are every test_*.c under tests/ (its binary DIR/tests/test_*,
+# the file's name without .c: names are unique) and every test_*.sh under
+# tests/, in any of its folders. A check's opening comment names the passes where it
 # can find something, one line, "passes: first sanitize" (all when there is
 # none; tests/README.md has the rule), and "make check: no (why)" leaves it
 # out of --check (make check). A check that exits non-zero without a FAIL
@@ -69,8 +70,7 @@ for arg in "$@"; do
     esac
     first_arg=no
     [ -n "$times_file" ] || { first_arg=yes; times_file=$dir/test-times.tsv; }
-    for src in tests/test_*.c tests/test_*.sh; do
-        [ -f "$src" ] || continue
+    for src in $(find tests \( -name 'test_*.c' -o -name 'test_*.sh' \) -type f | sort); do
         passes=$(header "$src" passes | sed "s/(.*//")
         [ $first_arg = yes ] && for p in ${passes:-all}; do
             case $p in
@@ -85,6 +85,12 @@ for arg in "$@"; do
         n=$((n + 1))
         echo "$n $(basename "$dir") $dir ${cc:--} $kind $src $name" >>"$work/list"
     done
+done
+# a binary's name is its file's: two checks of one name would share it
+dups=$(find tests -name 'test_*.c' -type f | sed 's|.*/||' | sort | uniq -d)
+for d in $dups; do
+    echo "FAIL tests/run.sh: two checks named $d: $(find tests -name "$d" -type f | tr '\n' ' ')"
+    fail=$((fail + 1))
 done
 [ "$n" -gt 0 ] || { echo "0 passed, $((fail + 1)) failed (no check to run)"; exit 1; }
 

@@ -93,7 +93,7 @@ void ground_truth_average(const spectrum *s, const gen_context *g, const materia
  * rounding of their own. The tolerance lies above that arithmetic's error
  * (471 positive products summed, then a row of three: about 1e-13 at most,
  * a few 1e-16 in practice) and far below what a colour difference sees (a
- * step of 1e-12 in one channel is a CIEDE2000 below 1e-8, tests/test_gamut.c).
+ * step of 1e-12 in one channel is a CIEDE2000 below 1e-8, tests/gen/test_gamut.c).
  * Every decision that a colour leaves the gamut is this one, at both ends:
  * the map policy's nodes, the keep policy's values at 1, `fresnel params`,
  * the report. */

@@ -63,7 +63,7 @@ void ground_truth_average(const spectrum *s, const gen_context *g, const materia
     /* The unclipped integrand F(mu) mu is smooth on [0, 1] and the rule
      * converges to rounding at 16 panels; where a policy cuts a channel at
      * 1 (gold's red in sRGB under clip) the kink leaves an O(h^2) error,
-     * 4e-9 at 64 panels (test_generator measures both against 256 panels
+     * 4e-9 at 64 panels (test_derive_encode measures both against 256 panels
      * and Simpson). */
     truth_curve t;
     t.s = s;

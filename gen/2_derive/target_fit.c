@@ -10,7 +10,7 @@
  * mean, so the fitted mean is never above the naive conversion's. The max
  * is no part of the cost: it can end well above the naive max (chromium for
  * MaterialX in linear sRGB, `fresnel params --material cr --for materialx`;
- * tests/test_targets.c counts the fits where it does). */
+ * tests/gen/test_renderer_targets.c counts the fits where it does). */
 #include <math.h>
 #include <string.h>
 

@@ -24,7 +24,7 @@
  *            macro); none for LUT rows, whose shader code the back ends
  *            build from the form, and none for a row the ports lack
  * .cross_row its row in `make cross-count`'s tables
- *            (tests/ports/cross/fixed_models.h), the Q1.15 function a
+ *            (tests/ports/cross/q15_models.h), the Q1.15 function a
  *            firmware calls for it; none where there is none */
 #ifndef FRESNEL_CATALOG_MODELS_H
 #define FRESNEL_CATALOG_MODELS_H

@@ -18,7 +18,7 @@ static void extremes_usage(FILE *out)
             "1e-8, 1 - 1e-7, 1, outside [0, 1], NaN and +-Inf; eta -> 0, matched index,\n"
             "eta ~ n1, total internal reflection, eta 100 and 1e4, kappa 0, 1e-6 and 1000,\n"
             "incident media water, glass, diamond; F0 0, 1 and 1.04, F82 far from F0;\n"
-            "Gulbrandsen r, g at the ends. tests/test_extremes.c asserts the properties.\n");
+            "Gulbrandsen r, g at the ends. tests/runtime/every_type/test_extremes.c asserts the properties.\n");
 }
 
 /* "1.2e-07"; bold where the documented bound is exceeded inside the type's

@@ -1,6 +1,6 @@
 /* The extreme and stiff cases: what every model returns in every number type
  * on them, against the double reference, as the Markdown `fresnel extremes`
- * prints. The properties are asserted by tests/test_extremes.c
+ * prints. The properties are asserted by tests/runtime/every_type/test_extremes.c
  * on the same cases (gen/report/extremes.h). */
 #include <math.h>
 #include <stdint.h>
@@ -127,7 +127,7 @@ static int f32_eval(const model *m, const extreme_typed *t, double x, double *go
 /* Q15: cosines are codes; a finite c is round(c 32768) saturated to int32,
  * +-Inf the extreme codes; NaN has no code. The parameters are rounded to
  * the fixed-point formats and the reference sees them rounded
- * (model_params_round_fixed), as tests/test_fixed_bounds.c does. */
+ * (model_params_round_fixed), as tests/runtime/q15/test_q15_bounds.c does. */
 static void q15_prepare(const extreme_case *e, extreme_typed *t)
 {
     memset(t, 0, sizeof *t);
@@ -540,7 +540,7 @@ void extremes_print(void)
 {
     int i;
     printf("## Extreme cases\n\n"
-           "Produced by `build/fresnel extremes`; tests/test_extremes.c asserts the properties.\n"
+           "Produced by `build/fresnel extremes`; tests/runtime/every_type/test_extremes.c asserts the properties.\n"
            "Every model in every number type (");
     for (i = 0; i < extreme_type_count; i++)
         printf("%s%s", i ? ", " : "", extreme_types[i].type->name);

@@ -1,5 +1,5 @@
 /* The extreme and stiff cases, shared by `fresnel extremes` (which
- * prints what every model returns on them) and tests/test_extremes.c (which
+ * prints what every model returns on them) and tests/runtime/every_type/test_extremes.c (which
  * asserts the properties). Host only. */
 #ifndef FRESNEL_EXTREMES_H
 #define FRESNEL_EXTREMES_H

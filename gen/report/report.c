@@ -140,7 +140,7 @@ static void write_average_closed_forms(report_run *r, FILE *f)
                        "tables), against the "
                        "ground truth's F_avg and against the same model's curve integrated numerically (for the tables the "
                        "numerical rule is the less exact of the two: the tables' pieces, uniform in sqrt(c), do not "
-                       "line up with its panels; tests/test_average.c holds the closed forms to the exact integral):\n\n"
+                       "line up with its panels; tests/runtime/every_type/test_average.c holds the closed forms to the exact integral):\n\n"
                        "| model | mean abs error | worst | max vs the integrated curve |\n"
                        "|---|---:|---:|---:|\n");
         header = 1;

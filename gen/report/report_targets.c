@@ -429,7 +429,7 @@ static void m0_targets(const report_run *r, FILE *f)
             goal_row(f, "Cortex-M0 fixed point, exact conductor fast path: the slowest call, cycles, error",
                    "<= 300 instructions at <= 4 LSB", mx <= 300 && FRESNEL_BOUND_CONDUCTOR_Q15_FAST <= 4 ? PASS : MISS,
                    "%.0f instructions at most; cycles mean %.0f (max %.0f) with a 1-cycle multiplier, %.0f (max %.0f) "
-                   "with a 32-cycle one; error <= %.1f LSB (FRESNEL_BOUND_CONDUCTOR_Q15_FAST, tests/test_fixed_fast.c)",
+                   "with a 32-cycle one; error <= %.1f LSB (FRESNEL_BOUND_CONDUCTOR_Q15_FAST, tests/runtime/q15/test_q15_fast.c)",
                    mx, m0_column(r->cross_path, row, 3), m0_column(r->cross_path, row, 5),
                    m0_column(r->cross_path, row, 6), m0_column(r->cross_path, row, 8),
                    FRESNEL_BOUND_CONDUCTOR_Q15_FAST);

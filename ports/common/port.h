@@ -1,7 +1,7 @@
 /* The few things a test program needs from the machine it runs on: text
  * out, an exit, and a marker the instruction counter can find in an
  * execution trace. Each ports/<target>/ implements them; the programs in
- * tests/cross/ use nothing else (no libc, no float). */
+ * tests/ports/cross/ use nothing else (no libc, no float). */
 #ifndef FRESNEL_PORT_H
 #define FRESNEL_PORT_H
 

@@ -6,7 +6,7 @@
  * GLSL: ONE SOURCE, THREE DIALECTS
  *   GLSL ES 1.00 (WebGL 1, GLES 2), GLSL ES 3.00 (WebGL 2, GLES 3) and
  *   desktop GLSL 3.30, and every later version of each (also desktop 1.10
- *   to 1.50: tests/glsl_test.c compiles it in every version Mesa lists). Paste or include this file
+ *   to 1.50: tests/shader_ports/glsl_port_osmesa.c compiles it in every version Mesa lists). Paste or include this file
  *   after the #version line and a default float precision, for example the
  *   two lines of prelude_es100.glsl, prelude_es300.glsl or prelude_330.glsl:
  *       #version 300 es
@@ -50,7 +50,7 @@
  *   eta, kappa relative to the incident medium; reflectances and results in
  *   [0, 1]. Non-finite inputs: GLSL does not define NaN behaviour. On
  *   llvmpipe clamp() takes NaN c to 0 and +-Inf to the nearer end, so every
- *   function gives what the C runtime gives (tests/glsl_test.c prints it);
+ *   function gives what the C runtime gives (tests/shader_ports/glsl_port_osmesa.c prints it);
  *   other GPUs may differ, so do not rely on NaN being cleaned up here.
  *
  * PRECISION: WHICH FUNCTIONS RUN IN MEDIUMP, WHICH NEED HIGHP

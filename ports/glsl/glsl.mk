@@ -1,6 +1,6 @@
 # GLSL port, included at the end of the Makefile.
 #   make gallery    spheres per metal and model through OSMesa: build/gallery/index.html
-# The port's test is tests/test_glsl.sh (run by make test; it builds its own
+# The port's test is tests/shader_ports/test_glsl_port_osmesa.sh (run by make test; it builds its own
 # binary because it links OSMesa).
 
 GALLERY_METALS ?= au cu ag al cr

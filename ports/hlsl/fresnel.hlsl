@@ -14,7 +14,7 @@
  *   output of `fresnel gen SCENE --hlsl -o scene.hlsl`: static const float3
  *   constants and tables, and float3 fresnel_<scene>_<material>_<model>_rgb(float c).
  *   Tested on lavapipe through glslangValidator -D -e main -S comp and
- *   SPIR-V (tests/test_vulkan.sh; measured differences: ports/README.md).
+ *   SPIR-V (tests/shader_ports/test_vulkan.sh; measured differences: ports/README.md).
  *
  * PRECISION
  *   The mediump-safe functions (fresnel_schlick, _schlick_gen, _f82, _lsk,

@@ -1,7 +1,7 @@
 /* vkrun: a compute shader (SPIR-V) run once on a Vulkan device, no window,
  * no display: by default the CPU device, Mesa's lavapipe (Debian
- * mesa-vulkan-drivers; tests/test_vulkan.sh points the loader at its ICD
- * alone), or on request a GPU. Used by tests/vulkan_test.c for the GLSL 4.50
+ * mesa-vulkan-drivers; tests/shader_ports/test_vulkan.sh points the loader at its ICD
+ * alone), or on request a GPU. Used by tests/shader_ports/vulkan_test.c for the GLSL 4.50
  * and HLSL ports.
  *
  * The shader's interface: descriptor set 0, binding 0 a storage buffer read

@@ -16,7 +16,7 @@
  * F_avg = int_0^1 L(c) 2c dc, w_0 = h^2/3, w_i = 2h c_i, w_N = h - h^2/3.
  * The weights sum to 1 (a constant table averages to itself); the
  * derivation integrates the interpolant's basis polynomials against x^3
- * (or c) on each interval (tests/test_average.c checks the sums against
+ * (or c) on each interval (tests/runtime/every_type/test_average.c checks the sums against
  * the interpolant's integral by Gauss-Legendre quadrature).
  *
  * The sum is formed exactly, as src/q15/lut_avg_q15.c forms it, with the

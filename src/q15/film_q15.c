@@ -56,7 +56,7 @@ static inline uint32_t fresnel_i_film_octaves(uint32_t x, uint32_t n)
 }
 
 /* round(32768 sin(pi/2 i/256)), i = 0..256 (python: round(32768 *
- * math.sin(math.pi / 2 * i / 256))); tests/test_film.c recomputes them. */
+ * math.sin(math.pi / 2 * i / 256))); tests/runtime/thin_film/test_film.c recomputes them. */
 const uint16_t fresnel_i_film_sin_q15[257] = {
     0, 201, 402, 603, 804, 1005, 1206, 1407, 1608, 1809, 2009, 2210,
     2411, 2611, 2811, 3012, 3212, 3412, 3612, 3812, 4011, 4211, 4410, 4609,

@@ -68,7 +68,7 @@ static fresnel_i_pos fresnel_i_position(uint32_t x, int n)
  * c_k = 2^13 + 256 k, k = 0..97 (python: math.isqrt((8192 + 256*k) << 47)),
  * and fresnel_i_rsqrt_chord_q15[k] = ceil(2^44 / sqrt(c_k 2^15)) at
  * c_k = 2^13 + 128 k, k = 0..193 (python: the least g with
- * g*g*c_k*2**15 >= 2**88); tests/test_fixed_math.c recomputes every entry. */
+ * g*g*c_k*2**15 >= 2**88); tests/runtime/q15/test_q15_math.c recomputes every entry. */
 const uint32_t fresnel_i_sqrt_chord_q15[98] = {
     1073741824u, 1090389976u, 1106787738u, 1122946078u, 1138875187u, 1154584552u,
     1170083025u, 1185378877u, 1200479854u, 1215393219u, 1230125796u, 1244684004u,

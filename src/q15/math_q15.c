@@ -250,7 +250,7 @@ int fresnel_i_qf_cmp(fresnel_qf a, fresnel_qf b)
  * r_j = round(2^16 / (1 + (j + 1/2)/64)), so that X r_j = 2^30 (1 + d) with
  * |d| < 2^-7; fresnel_i_log2_t[j] = log2(2^16 / r_j) in Q30. Computed in double
  * (python: round(2**16/(1+(j+0.5)/64)), round(log2(2**16/r)*2**30));
- * tests/test_fixed_math.c recomputes every entry. */
+ * tests/runtime/q15/test_q15_math.c recomputes every entry. */
 const uint16_t fresnel_i_log2_r[64] = {
     65028u, 64035u, 63072u, 62138u, 61231u, 60350u, 59494u, 58662u, 57852u, 57065u,
     56299u, 55554u, 54828u, 54120u, 53431u, 52759u, 52103u, 51464u, 50840u, 50231u,

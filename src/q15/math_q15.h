@@ -18,7 +18,7 @@
  *    uses them is arranged so that signs are handled outside (see exact_q15.c).
  *
  * Range analysis convention: the comment "R:" after a statement states the
- * range of what it computes; tests/test_fixed_bounds.c re-checks the
+ * range of what it computes; tests/runtime/q15/test_q15_bounds.c re-checks the
  * interesting ones through FRESNEL_I_RANGE (active only when the test build
  * defines FRESNEL_RANGE_CHECK).
  */
@@ -124,7 +124,7 @@ FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_rsqrt_chord_q15[194];
 /* sqrt(c) in Q30 for c in Q15, [0, 2^15]: floor(sqrt(c 2^45)), the value
  * of the digit-by-digit root (fresnel_isqrt_u32's method) carried to 30
  * bits, here from two tables and a fixed sequence of steps: 7 multiplies,
- * no loop (tests/test_fixed_math.c compares it with the definition for
+ * no loop (tests/runtime/q15/test_q15_math.c compares it with the definition for
  * every c).
  *
  * Normalise: c' = c 4^m in [2^13, 2^15] (m <= 7: shifts by 8, 4 and 2
@@ -145,7 +145,7 @@ FRESNEL_I_HIDDEN extern const uint32_t fresnel_i_rsqrt_chord_q15[194];
  * at every 128th c'). 1/sqrt is convex, the table rounded up and the
  * interpolation's step down, so g >= 2^44 / s, and g is at most 2^-15.4
  * relative above it (the chord's gap, (3/32)(128 / 2^13)^2; measured for
- * every c' by tests/test_fixed_math.c).
+ * every c' by tests/runtime/q15/test_q15_math.c).
  * R: t[0] - t[1] < 2^23, times d <= 127 < 2^30; g in [2^29, 2^30].
  *
  * z: u = rem / (2y + u), so 2^15 rem / (2s) = 2^15 (u - u^2 / (2s)) is in

@@ -1,6 +1,6 @@
 /* Fuzzes the generator end to end: a manifest and one material's n,k table
  * through `fresnel gen` (cmd_gen) to a C header, whose every value is then
- * checked without a compiler (tests/header_check.h).
+ * checked without a compiler (tests/common/header_check.h).
  *
  * Input: the manifest, then optionally a line "%%" and the CSV of material
  * `fz` (wavelength_nm,n,k); without it, fz is a plain dielectric. The data
@@ -23,8 +23,9 @@
 #define PATH_MAX 4096
 #endif
 
+#include "cli/commands.h"
 #include "common/cli.h"
-#include "../header_check.h"
+#include "../common/header_check.h"
 
 static char data_dir_path[300], scene_path[300], csv_path[400], out_path[300], materials_path[400];
 static char link_paths[64][400];

@@ -1,0 +1,182 @@
+#!/bin/sh
+# passes: first (the examples do not change with the pass's flags)
+# The README's examples run as printed: every code block of README.md, of
+# gen/README.md and of ports/README.md's set-up section, in order, in a
+# scratch directory that holds the repository's top-level entries (build/
+# is $BUILD) and what the blocks before wrote; HOME is a scratch directory.
+# Each block is fenced, and its info string says how it is checked:
+#   sh     run as a script (set -e); `make test` (this run), `make report`,
+#          `make bench`, `make cross-count` (minutes of timing and
+#          emulation) are checked to be targets of the Makefile instead
+#   scene  a manifest, written to the file its first line names (# NAME)
+#   c      compiled by gcc as C99 and by g++ as C++17, -Wall -Wextra
+#          -Wpedantic -Werror, against include/, build/single/ and the
+#          headers the blocks before wrote
+#   cmake  the lines of a game's CMakeLists.txt, with this repository in
+#          fresnel/ and tests/ports/consumer/consumer.c as the game: configured,
+#          built and run
+#   glsl   compiled by glslangValidator after ports/glsl/prelude_es300.glsl,
+#          ports/glsl/fresnel.glsl and the .glsl files the blocks before wrote
+#   text   not run: a listing or a program's output
+# Any other block, and an indented code block, is a FAIL. In README.md's
+# prose every `build/fresnel ...` command runs (exit 0) and every `make ...`
+# names a target. The Cortex-M0 table beside the Q1.15 example gives, for
+# each one-channel function the example calls, the bound its header states
+# and the counts data/report/report.md records (its row found through
+# tests/ports/cross/q15_models.h).
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+root=$(pwd)
+case $BUILD in /*) build_abs=$BUILD ;; *) build_abs=$root/$BUILD ;; esac
+run=$t/run
+mkdir -p "$run" "$t/home" "$t/blocks"
+for f in *; do
+    [ "$f" = build ] || ln -s "$root/$f" "$run/$f"
+done
+ln -s "$build_abs" "$run/build"
+
+# ---- the blocks, in order: $t/blocks/NNN.TAG, their origin in $t/blocks/NNN.where ----
+# extract FILE [HEADING]: FILE's blocks (only under the ## HEADING if given)
+n=0
+extract() {
+    awk -v file="$1" -v heading="$2" -v dir="$t/blocks" -v start="$n" '
+        BEGIN { k = start; on = heading == "" }
+        !fence && /^## / { if (heading != "") on = substr($0, 4) == heading }
+        !on { next }
+        /^```/ {
+            if (!fence) { fence = 1; tag = substr($0, 4); sub(/[ \t].*/, "", tag); if (tag == "") tag = "none"
+                          k++; out = sprintf("%s/%03d.%s", dir, k, tag)
+                          printf "%s:%d", file, NR > sprintf("%s/%03d.where", dir, k); printf "" > out; next }
+            fence = 0; close(out); next
+        }
+        fence { print >> out; next }
+        /^(    |\t)/ && prev == "" { k++; printf "%s:%d", file, NR > sprintf("%s/%03d.where", dir, k)
+                                   printf "%s\n", $0 > sprintf("%s/%03d.indented", dir, k) }
+        { prev = $0 }
+        END { print k > (dir "/count") }' "$1"
+    n=$(cat "$t/blocks/count")
+}
+extract README.md
+extract gen/README.md
+extract ports/README.md "Set-up, install, CMake and vendoring"
+
+W="-Wall -Wextra -Wpedantic -Werror"
+for b in "$t"/blocks/[0-9]*; do
+    case $b in *.where) continue ;; esac
+    where=$(cat "${b%.*}.where")
+    tag=${b##*.}
+    case $tag in
+    text) echo "PASS $where: text, not run" ;;
+    scene)
+        name=$(sed -n '1s/^# \([A-Za-z0-9_.-]*\.scene\).*/\1/p' "$b")
+        if [ -n "$name" ]; then
+            cp "$b" "$run/$name"
+            echo "PASS $where: scene $name written"
+        else
+            echo "FAIL $where: a scene block must name its file on its first line (# NAME.scene)"
+        fi
+        ;;
+    sh)
+        # the long runs checked as targets, the rest run as printed
+        sed -E 's/^make (test|report|bench|cross-count)( .*)?$/readme_target \1/' "$b" >"$t/block.sh"
+        if (cd "$run" && env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL HOME="$t/home" sh -e -c \
+            'readme_target() { grep -q "^$1:" Makefile || { echo "make $1: no such target" >&2; exit 1; }; }
+             . "$0"' "$t/block.sh") >"$t/log" 2>&1; then
+            ran=$(grep -vc -e '^readme_target ' -e '^\s*#' -e '^\s*$' "$t/block.sh")
+            checked=$(grep -c '^readme_target ' "$t/block.sh")
+            echo "PASS $where: sh, $ran command(s) ran$([ "$checked" -eq 0 ] || echo ", $checked make target(s) checked")"
+        else
+            echo "FAIL $where: sh: $(tail -5 "$t/log" | tr '\n' ' ')"
+        fi
+        ;;
+    c)
+        cp "$b" "$t/block.c"
+        if (cd "$run" && gcc -std=c99 $W -Iinclude -I. -Ibuild/single -c "$t/block.c" -o "$t/block.o") >"$t/log" 2>&1 &&
+            (cd "$run" && g++ -x c++ -std=c++17 $W -Iinclude -I. -Ibuild/single -c "$t/block.c" -o "$t/block.o") >>"$t/log" 2>&1 &&
+            [ ! -s "$t/log" ]; then
+            echo "PASS $where: c, compiles warning-free as C99 (gcc) and C++17 (g++)"
+        else
+            echo "FAIL $where: c: $(head -5 "$t/log" | tr '\n' ' ')"
+        fi
+        ;;
+    cmake)
+        rm -rf "$t/cm"
+        mkdir -p "$t/cm/game"
+        ln -s "$root" "$t/cm/game/fresnel"
+        cp tests/ports/consumer/consumer.c "$t/cm/game/main.c"
+        { printf 'cmake_minimum_required(VERSION 3.16)\nproject(game C)\nadd_executable(game main.c)\n'; cat "$b"; } \
+            >"$t/cm/game/CMakeLists.txt"
+        if cmake -S "$t/cm/game" -B "$t/cm/build" >"$t/log" 2>&1 &&
+            env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL cmake --build "$t/cm/build" >>"$t/log" 2>&1 &&
+            "$t/cm/build/game" >"$t/game.out" && [ -s "$t/game.out" ]; then
+            echo "PASS $where: cmake, a game built and run with these lines"
+        else
+            echo "FAIL $where: cmake: $(grep -i -m5 -e error -e 'not found' "$t/log" | tr '\n' ' ')"
+        fi
+        ;;
+    glsl)
+        { cat ports/glsl/prelude_es300.glsl ports/glsl/fresnel.glsl
+          for g in "$run"/*.glsl; do [ -f "$g" ] && [ ! -L "$g" ] && cat "$g"; done
+          cat "$b"; } >"$t/block.frag"
+        if ! command -v glslangValidator >/dev/null 2>&1; then
+            echo "FAIL $where: glslangValidator not found (Debian's glslang-tools)"
+        elif glslangValidator "$t/block.frag" >"$t/log" 2>&1; then
+            echo "PASS $where: glsl, compiles (GLSL ES 3.00 fragment shader)"
+        else
+            echo "FAIL $where: glsl: $(grep -m5 -i error "$t/log" | tr '\n' ' ')"
+        fi
+        ;;
+    indented) echo "FAIL $where: an indented code block: fence it and tag it (sh, c, text, ...)" ;;
+    *) echo "FAIL $where: a code block tagged '$tag', which this test cannot check (tests/repo/test_readme.sh)" ;;
+    esac
+done
+
+# ---- commands in README.md's prose ----
+awk '/^```/ { fence = !fence; next } !fence { printf "%s ", $0 } /^$/ { print "" }' README.md |
+    grep -o '`[^`]*`' | tr -d '`' | sort -u >"$t/spans"
+bad="" ran=0
+while IFS= read -r span; do
+    case $span in
+    "build/fresnel "*)
+        (cd "$run" && HOME="$t/home" sh -c "$span" >/dev/null 2>"$t/err") || bad="$bad [$span: $(head -1 "$t/err")]"
+        ran=$((ran + 1))
+        ;;
+    "make "*)
+        target=$(echo "$span" | awk '{ print $2 }')
+        grep -q "^$target:" Makefile || bad="$bad [$span: no such target]"
+        ran=$((ran + 1))
+        ;;
+    esac
+done <"$t/spans"
+[ -z "$bad" ] && echo "PASS README.md's prose: $ran commands run or make targets found" ||
+    echo "FAIL README.md's prose:$bad"
+
+# ---- the Q1.15 example's costs and bounds ----
+# q15_models.h: "{"ROW", e_NAME" and "e_NAME(...) { return FUNCTION(" give FUNCTION's row
+awk '/^static fresnel_q15 e_[a-z0-9_]*\(/ { e = $3; sub(/\(.*/, "", e) }
+     e && /return fresnel_[a-z0-9_]*\(/ { f = $0; sub(/.*return /, "", f); sub(/\(.*/, "", f); fn[e] = f; e = "" }
+     /^    \{"[^"]*", e_[a-z0-9_]*,/ { split($0, p, "\""); r = $0; sub(/.*", /, "", r); sub(/,.*/, "", r); row[r] = p[2] }
+     END { for (r in row) if (r in fn) print fn[r] "\t" row[r] }' tests/ports/cross/q15_models.h >"$t/rows"
+sed -n '/^== m0 fixed point/,/^== /p' data/report/report.md >"$t/m0"
+bad="" rows=0
+for f in $(sed -n 's/^| `\(fresnel_[a-z0-9_]*_q15\(_fast\)\{0,1\}\)` | .*/\1/p' README.md); do
+    line=$(grep "^| \`$f\` |" README.md)
+    row=$(awk -F'\t' -v f="$f" '$1 == f { print $2 }' "$t/rows")
+    macro=$(echo "$f" | sed 's/^fresnel_//; s/_q15/_Q15/' | tr a-z A-Z | sed 's/^/FRESNEL_BOUND_/')
+    bound=$(sed -n "s/^#define $macro \([0-9.]*\).*/\1/p" include/fresnel_q15.h include/fresnel_q15_fast.h)
+    counts=$(awk -v r="$row" 'index($0, r) == 1 { rest = substr($0, length(r) + 1); split(rest, v, " ")
+                 if (v[1] ~ /^[0-9]+$/) { print v[1] " / " v[3] " | " v[4] " / " v[7]; exit } }' "$t/m0")
+    want="| \`$f\` | $bound | $counts |"
+    rows=$((rows + 1))
+    [ -n "$row" ] && [ -n "$bound" ] && [ "$line" = "$want" ] || bad="$bad [$line, expected $want]"
+done
+used=$(awk '/^```c/ { c = 1; next } /^```/ { c = 0 } c' README.md | grep -o 'fresnel_[a-z0-9_]*_q15[a-z0-9_]*(' |
+    tr -d '(' | sed 's/_rgb//' | sort -u)
+for f in $used; do
+    grep -q "^| \`$f\` |" README.md || bad="$bad [$f: called by an example, no cost row]"
+done
+if [ "$rows" -gt 0 ] && [ -z "$bad" ]; then
+    echo "PASS README.md's Cortex-M0 table: $rows functions (every one the Q1.15 example calls), the headers' bounds, data/report/report.md's counts"
+else
+    echo "FAIL README.md's Cortex-M0 table:$bad"
+fi
