@@ -246,6 +246,8 @@ clean:
 	rm -rf $(BUILD)
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
+# The dependency files are written by the compiler, never remade by a rule.
+%.d: ;
 
 # ---- GLSL ports and OSMesa ----
 include ports/glsl/glsl.mk

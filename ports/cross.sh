@@ -35,7 +35,7 @@ F16_SRC=$(ls src/f16/*.c)
 F32_SRC=$(ls src/f32/*.c)
 FIXED_ONLY="-DFRESNEL_CONFIG=FRESNEL_CFG_NO_FLOAT|FRESNEL_CFG_NO_F16"
 PORT_COMMON="ports/common/port_print.c ports/common/mem.c"
-INC="-Iinclude -Iports/common -Itests/cross"
+INC="-Iinclude -Iports/common -Itests/ports/cross"
 
 target() { # sets CC CF LD PORT RUN NMT SZ AR for $1
     case $1 in

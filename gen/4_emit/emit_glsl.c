@@ -253,7 +253,7 @@ const char *emit_shader_more_params(const scene_entry *e, const char *float_type
 }
 
 /* vec3 <prefix>_<model>_rgb(c): the model for this material, as
- * gen/scene/scene_eval.c evaluates it with the C runtime. */
+ * gen/scene/encoded_scene.c evaluates it with the C runtime. */
 static void emit_model_function(FILE *f, const char *scene_prefix, const char *prefix, const scene_entry *e,
                                 const glsl_lut *u, lut_spacing spacing)
 {

@@ -4,7 +4,7 @@
 # The generator's output, byte for byte: every back end of `fresnel gen` (the
 # C header in the manifest's types and, where the manifest allows, in every
 # type; GLSL with its texture; HLSL) for every scene of data/scenes,
-# tests/scenes, tests/identity and tests/speed/film.scene, its SHA-256 (of
+# tests/data/scenes, tests/data/identity and tests/speed/film.scene, its SHA-256 (of
 # the output and the messages, the checkout's path taken out) and exit
 # status, against tests/data/identity/expected.txt. A change to the
 # generator's structure keeps these equal; a change to what it writes

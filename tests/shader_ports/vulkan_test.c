@@ -10,7 +10,7 @@
  * film at thicknesses 0-1195 nm scattered over the cosines, its table in a
  * storage buffer: write_main); each
  * result is compared with what the C runtime computes from the same
- * manifest (gen/scene/scene_eval.c, the evaluation of the C header).
+ * manifest (gen/scene/encoded_scene.c, the evaluation of the C header).
  *
  * Four variants, each one module per model (a specialisation constant picks
  * the material, so each pipeline compiles one function):

@@ -287,7 +287,7 @@ int main(void)
     long random_n = longpass ? 2000000 : 60000;
     for (mi = 0; mi < model_count; mi++) {
         const model *m = &model_table[mi];
-        if (!m->f32 || !(m->offered & MODEL_EVAL) || duplicate_row(mi))
+        if (!m->f32->scalar || !(m->offered & MODEL_EVAL) || duplicate_row(mi))
             continue; /* the thin film: tests/runtime/thin_film/test_film_search.c */
         for (ty = T_F32; ty <= T_F16; ty++) {
             model_case k;

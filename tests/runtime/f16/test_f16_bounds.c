@@ -73,7 +73,7 @@ static void check_models(const test_material *mat, int nmat)
         long bad = 0;
         memset(&w, 0, sizeof w);
         memset(&away, 0, sizeof away);
-        if (!m->f16) /* the thin film, or no _Float16: tests/runtime/thin_film/test_film.c */
+        if (!m->f16->scalar) /* the thin film, or no _Float16: tests/runtime/thin_film/test_film.c */
             continue;
         for (k = 0; k < nmat; k++) {
             model_params mp;

@@ -259,7 +259,7 @@ int main(void)
         long bad_range = 0, count = 0;
         int ie, ik, in, ic;
         memset(&w, 0, sizeof w);
-        if (!m->f32) /* the thin film: tests/runtime/thin_film/test_film.c */
+        if (!m->f32->scalar) /* the thin film: tests/runtime/thin_film/test_film.c */
             continue;
         for (in = 0; in < GRID_N1_N; in++)
             for (ie = 0; ie < GRID_ETA_N; ie++)
