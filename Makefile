@@ -266,7 +266,7 @@ FUZZ_FLAGS   := $(WARN) -g -O1 -fsanitize=fuzzer,address,undefined -fno-sanitize
 # Host code the targets exercise, linked into each with the whole runtime.
 FUZZ_GEN     := gen/common/reference.c gen/common/reference_targets.c gen/common/cli.c gen/1_spectral/load_nk.c \
                 gen/1_spectral/resample.c gen/scene/scene.c gen/2_derive/targets.c gen/1_spectral/colour_space.c \
-                gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/fixed_params.c \
+                gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/q15_params.c \
                 gen/model/eval_ref.c gen/model/eval_f32.c gen/model/eval_q15.c gen/model/eval_f16.c gen/3_encode/encoded_eta.c \
                 gen/common/reference_film.c
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
@@ -349,14 +349,14 @@ $(BUILD)/obj/src/f16/%.o: CFLAGS_LIB += $(F16_CFLAGS)
 # sources built with FRESNEL_RANGE_CHECK, which turns the range analysis in
 # the sources (FRESNEL_I_RANGE) into checks; linked before libfresnel.a, these
 # objects provide every fixed-point symbol, so no archive member is pulled.
-FIXED_SRC := $(wildcard src/q15/*.c)
-FIXED_RC_OBJ := $(FIXED_SRC:%.c=$(BUILD)/obj/rc/%.o)
+Q15_SRC := $(wildcard src/q15/*.c)
+Q15_RC_OBJ := $(Q15_SRC:%.c=$(BUILD)/obj/rc/%.o)
 $(BUILD)/obj/rc/src/%.o: src/%.c
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_LIB) -DFRESNEL_RANGE_CHECK -c $< -o $@
-$(BUILD)/tests/test_q15_bounds: tests/runtime/q15/test_q15_bounds.c $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a
+$(BUILD)/tests/test_q15_bounds: tests/runtime/q15/test_q15_bounds.c $(Q15_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS_GEN) -Isrc -Itests/common -o $@ $< $(FIXED_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+	$(CC) $(CFLAGS_GEN) -Isrc -Itests/common -o $@ $< $(Q15_RC_OBJ) $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
 # Cross builds (ports/, ports/cross.sh): the fixed-point conformance program
 # run under qemu on a Cortex-M0, a Cortex-M4F and an RV32IMC, compared bit for

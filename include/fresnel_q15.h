@@ -45,7 +45,7 @@
  *                ("block floating point", as CMSIS-DSP's arm_divide_q15
  *                returns a mantissa and a shift).
  *   A per-material "prepared" struct holds what a model needs; the host fills
- *   it (the generator, or gen/3_encode/fixed_params.c from double eta and kappa), or
+ *   it (the generator, or gen/3_encode/q15_params.c from double eta and kappa), or
  *   the *_prepare functions below fill it at run time from Q16.16 inputs.
  *
  * ERROR BOUNDS

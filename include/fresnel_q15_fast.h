@@ -28,7 +28,7 @@
  *   0, n = 1 table[0], n above 1024 (u16 fast) or 32768 (pl fast) is read
  *   as that many nodes; with n a compile-time constant these tests fold
  *   away). The table must hold min(n, that maximum) entries. The exact
- *   conductor: c in [0, one], and constants made by fixed_conductor_fast
+ *   conductor: c in [0, one], and constants made by q15_conductor_fast
  *   (`fresnel gen` emits them as <prefix>_ior_fast_q15) from an eta, kappa
  *   inside its domain (FRESNEL_CONDUCTOR_*_Q15_FAST).
  * RESULTS are in [0, FRESNEL_ONE_Q15] for every input that meets them; a
@@ -279,7 +279,7 @@ FRESNEL_I_INLINE fresnel_q15 fresnel_lut_pl_u16_q15_fast(const uint16_t *table, 
 
 /* Prepared constants of fresnel_conductor_q15_fast (the struct is in
  * fresnel_q15.h), made on the host from double eta, kappa:
- * fixed_conductor_fast in gen/3_encode/fixed_params.c is the reference of
+ * q15_conductor_fast in gen/3_encode/q15_params.c is the reference of
  * this layout, and `fresnel gen` emits <prefix>_ior_fast_q15[3] for a scene
  * with the exact model in q15 whose three channels lie in the domain below
  * (else a comment names the channel outside it):
@@ -408,7 +408,7 @@ FRESNEL_I_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
 }
 
 /* The exact unpolarised reflectance of eta + i kappa (fresnel_conductor,
- * the form of src/f32/exact.c) with p prepared by fixed_conductor_fast, for
+ * the form of src/f32/exact.c) with p prepared by q15_conductor_fast, for
  * c in [0, one] (PRECONDITIONS; any c outside is undefined):
  *   A = eta^2 - kappa^2 - s^2, s^2 = 1 - c^2, b = 2 eta kappa,
  *   m = sqrt(A^2 + b^2), B = sqrt((m + |A|)/2),
@@ -428,7 +428,7 @@ FRESNEL_I_INLINE uint32_t fresnel_i_fast_shift(uint32_t x, int32_t d)
  * (`make cross-count`, ports/README.md: about a tenth of
  * fresnel_conductor_q15's), 1548 bytes of tables.
  *
- * Why every step holds for every (p, c) fixed_conductor_fast makes from the
+ * Why every step holds for every (p, c) q15_conductor_fast makes from the
  * domain (tests/runtime/q15/test_q15_fast.c searches each boundary below):
  *   shift <= 8 (|D|, b <= 257), and a0 + [0, 2^(30-shift)] fits int32, so ah does.
  *   Two words iff ah + 32767 < span as uint32: span is 65535 only where

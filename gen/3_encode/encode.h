@@ -32,7 +32,7 @@ int encode_lut(const spectrum *s, const gen_context *g, const material_params *p
 
 /* THE ENCODER. One material's constants and one LUT's nodes in every number
  * type: binary32 (the C, GLSL and HLSL headers' literals), Q1.15 (the codes
- * and prepared structs of fresnel_q15.h, through fixed_params.h) and,
+ * and prepared structs of fresnel_q15.h, through q15_params.h) and,
  * where the compiler has _Float16, binary16. `fresnel gen` writes these
  * values and nothing else; `fresnel report`, `curve`, `bench`, the viewer
  * and the tests evaluate these values (model_rgb in model/registry.h), so

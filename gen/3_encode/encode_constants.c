@@ -7,7 +7,7 @@
 
 #include "2_derive/film_fit.h"
 #include "3_encode/encode.h"
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 
 static fresnel_rgb f32_rgb(const double v[3])
 {
@@ -21,9 +21,9 @@ static fresnel_rgb f32_rgb(const double v[3])
 static fresnel_rgb_q15 q15_rgb(const double v[3])
 {
     fresnel_rgb_q15 o;
-    o.r = (fresnel_q15)fixed_q15(v[0]);
-    o.g = (fresnel_q15)fixed_q15(v[1]);
-    o.b = (fresnel_q15)fixed_q15(v[2]);
+    o.r = (fresnel_q15)q15_code(v[0]);
+    o.g = (fresnel_q15)q15_code(v[1]);
+    o.b = (fresnel_q15)q15_code(v[2]);
     return o;
 }
 
@@ -75,21 +75,21 @@ void encode_material(const material_params *p, encoded_material *e)
     memset(e, 0, sizeof *e);
     DERIVED_PARAMETERS(ENCODE_F32)
     DERIVED_PARAMETERS(ENCODE_Q15)
-    fixed_ior(p->ct_eta, p->ct_kappa, &e->q_ct);
+    q15_ior(p->ct_eta, p->ct_kappa, &e->q_ct);
     e->q_ior_fast_out = -1;
     for (ch = 0; ch < 3; ch++) {
-        e->q_f82_a[ch] = fixed_f82_a_q12(fixed_q15(p->f0[ch]), fixed_q15(p->f82[ch]));
-        fixed_lsk(p->eta_fit[ch], p->kappa_fit[ch], 0.0, 0.0, &e->q_lsk[ch]);
-        fixed_lsk(p->eta_fit[ch], p->kappa_fit[ch], p->lsk_a[ch], p->lsk_alpha[ch], &e->q_lsk_comp[ch]);
-        fixed_nk(p->eta_fit[ch], p->kappa_fit[ch], &e->q_nk[ch]);
+        e->q_f82_a[ch] = q15_f82_a_q12(q15_code(p->f0[ch]), q15_code(p->f82[ch]));
+        q15_lsk(p->eta_fit[ch], p->kappa_fit[ch], 0.0, 0.0, &e->q_lsk[ch]);
+        q15_lsk(p->eta_fit[ch], p->kappa_fit[ch], p->lsk_a[ch], p->lsk_alpha[ch], &e->q_lsk_comp[ch]);
+        q15_nk(p->eta_fit[ch], p->kappa_fit[ch], &e->q_nk[ch]);
         for (src = 0; src < ETA_SOURCES; src++)
-            fixed_ior(eta_source(p, src, 0)[ch], eta_source(p, src, 1)[ch], &e->q_ior[src][ch]);
-        if (e->q_ior_fast_out < 0 && !fixed_conductor_fast_in_domain(p->eta_fit[ch], p->kappa_fit[ch]))
+            q15_ior(eta_source(p, src, 0)[ch], eta_source(p, src, 1)[ch], &e->q_ior[src][ch]);
+        if (e->q_ior_fast_out < 0 && !q15_conductor_fast_in_domain(p->eta_fit[ch], p->kappa_fit[ch]))
             e->q_ior_fast_out = ch;
     }
     if (e->q_ior_fast_out < 0)
         for (ch = 0; ch < 3; ch++)
-            fixed_conductor_fast(p->eta_fit[ch], p->kappa_fit[ch], &e->q_ior_fast[ch]);
+            q15_conductor_fast(p->eta_fit[ch], p->kappa_fit[ch], &e->q_ior_fast[ch]);
 
 #if FRESNEL_HAS_F16
     DERIVED_PARAMETERS(ENCODE_F16)
@@ -100,7 +100,7 @@ void encode_curve_q15(const double *nodes, int count, uint16_t *codes)
 {
     int i;
     for (i = 0; i < count; i++)
-        codes[i] = (uint16_t)fixed_q15(nodes[i]);
+        codes[i] = (uint16_t)q15_code(nodes[i]);
 }
 
 /* round(v 2^frac) in int16_t, or 0 where it is not a number there. */

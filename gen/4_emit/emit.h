@@ -1,5 +1,5 @@
 /* Stage 4: printing an encoded scene (scene/encoded_scene.h) as a C header
- * (binary32: emit_header.c, Q15: emit_fixed.c, binary16: emit_f16.c), GLSL
+ * (binary32: emit_header.c, Q15: emit_q15.c, binary16: emit_f16.c), GLSL
  * (emit_glsl.c) or HLSL (emit_hlsl.c). The back ends print what the encoded
  * scene holds; none fits or encodes a value. */
 #ifndef FRESNEL_EMIT_H
@@ -92,15 +92,15 @@ void emit_material_heading(FILE *f, const emit_input *in, int material);
 
 /* The C header's back end of each number type: one material's constants and
  * tables; prefix is fresnel_<scene>_<material>. 0, or CLI_BAD_INPUT after a
- * message. emit_header.c: binary32; emit_fixed.c: Q1.15; emit_f16.c:
+ * message. emit_header.c: binary32; emit_q15.c: Q1.15; emit_f16.c:
  * binary16. */
 typedef int (*emit_type_fn)(FILE *f, const emit_input *in, int material, const char *prefix);
 int emit_f32_material(FILE *f, const emit_input *in, int material, const char *prefix);
-int emit_fixed_material(FILE *f, const emit_input *in, int material, const char *prefix);
+int emit_q15_material(FILE *f, const emit_input *in, int material, const char *prefix);
 int emit_f16_material(FILE *f, const emit_input *in, int material, const char *prefix);
 /* The Q1.15 prepared structs' initializers (fresnel_q15.h LAYOUT;
  * positional, in declaration order), as the Q1.15 back end writes them
- * (emit_fixed.c). */
+ * (emit_q15.c). */
 void emit_q15_qf(FILE *f, fresnel_qf q);
 void emit_q15_ior(FILE *f, fresnel_ior_prep_q15 q);
 void emit_q15_nk(FILE *f, fresnel_nk_prep_q15 q);

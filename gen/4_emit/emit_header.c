@@ -100,7 +100,7 @@ void emit_licence_comment(FILE *f)
 static const struct {
     number_type_id type;
     emit_type_fn emit;
-} emit_types[] = {{TYPE_Q15, emit_fixed_material}, {TYPE_F32, emit_f32_material}, {TYPE_F16, emit_f16_material}};
+} emit_types[] = {{TYPE_Q15, emit_q15_material}, {TYPE_F32, emit_f32_material}, {TYPE_F16, emit_f16_material}};
 typedef char emit_types_cover_the_registry[sizeof emit_types / sizeof emit_types[0] == NUMBER_TYPES ? 1 : -1];
 
 /* #include "name" unless its guard (FRESNEL_Q15_H for fresnel_q15.h)

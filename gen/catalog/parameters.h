@@ -4,7 +4,7 @@
  * material_params), the encoder (3_encode/encode.h: encoded_material,
  * binary32, Q1.15 and binary16), the range check every scene passes
  * (scene/encoded_scene.c), the back ends (4_emit/emit_floats.c,
- * emit_f16.c, emit_fixed.c) and `fresnel params`. A new parameter is a line
+ * emit_f16.c, emit_q15.c) and `fresnel params`. A new parameter is a line
  * here and its derivation in 2_derive/derive_parameters.c.
  *
  *   X(field, count, group, constant, row, why, q15, q15_why)

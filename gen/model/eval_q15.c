@@ -1,34 +1,34 @@
 /* Every model row in the Q1.15 runtime (fresnel_q15.h, fresnel_film.h;
  * model/registry.h: model_eval_q15), one line per row in model_evals_q15:
  * as a function of eta, kappa, c on the prepared constants
- * model_fixed_from_params gives, and as a scene model on the encoder's
+ * model_q15_from_params gives, and as a scene model on the encoder's
  * codes and tables. */
 #include <math.h>
 
 #include "model/registry.h"
 
-static int32_t q_schlick(const model_fixed *m, int32_t c) { return fresnel_schlick_q15(m->f0, c); }
-static int32_t q_schlick_gen(const model_fixed *m, int32_t c)
+static int32_t q_schlick(const model_q15 *m, int32_t c) { return fresnel_schlick_q15(m->f0, c); }
+static int32_t q_schlick_gen(const model_q15 *m, int32_t c)
 {
     return fresnel_schlick_gen_q15(m->f0, m->f90, m->p, c);
 }
-static int32_t q_lsk(const model_fixed *m, int32_t c) { return fresnel_lsk_q15(&m->lsk, c); }
-static int32_t q_lsk_comp(const model_fixed *m, int32_t c) { return fresnel_lsk_comp_q15(&m->lsk, c); }
-static int32_t q_f82(const model_fixed *m, int32_t c) { return fresnel_f82_q15(m->f0, m->f82, c); }
+static int32_t q_lsk(const model_q15 *m, int32_t c) { return fresnel_lsk_q15(&m->lsk, c); }
+static int32_t q_lsk_comp(const model_q15 *m, int32_t c) { return fresnel_lsk_comp_q15(&m->lsk, c); }
+static int32_t q_f82(const model_q15 *m, int32_t c) { return fresnel_f82_q15(m->f0, m->f82, c); }
 /* fresnel_gulbrandsen_q15 maps r, g each call; the prepared n, k give the same codes */
-static int32_t q_gulbrandsen(const model_fixed *m, int32_t c) { return fresnel_approx_conductor_q15(&m->gnk, c); }
-static int32_t q_cook_torrance(const model_fixed *m, int32_t c)
+static int32_t q_gulbrandsen(const model_q15 *m, int32_t c) { return fresnel_approx_conductor_q15(&m->gnk, c); }
+static int32_t q_cook_torrance(const model_q15 *m, int32_t c)
 {
     return fresnel_cook_torrance_q15(m->f0, &m->ior, c);
 }
-static int32_t q_exact(const model_fixed *m, int32_t c)
+static int32_t q_exact(const model_q15 *m, int32_t c)
 {
     return m->ior.b.m ? fresnel_conductor_q15(&m->ior, c) : fresnel_dielectric_q15(&m->ior, c);
 }
-static int32_t q_conductor(const model_fixed *m, int32_t c) { return fresnel_conductor_q15(&m->ior, c); }
-static int32_t q_dielectric(const model_fixed *m, int32_t c) { return fresnel_dielectric_q15(&m->dior, c); }
-static int32_t q_approx(const model_fixed *m, int32_t c) { return fresnel_approx_conductor_q15(&m->nk, c); }
-static int32_t q_internal(const model_fixed *m, int32_t c)
+static int32_t q_conductor(const model_q15 *m, int32_t c) { return fresnel_conductor_q15(&m->ior, c); }
+static int32_t q_dielectric(const model_q15 *m, int32_t c) { return fresnel_dielectric_q15(&m->dior, c); }
+static int32_t q_approx(const model_q15 *m, int32_t c) { return fresnel_approx_conductor_q15(&m->nk, c); }
+static int32_t q_internal(const model_q15 *m, int32_t c)
 {
     return fresnel_schlick_internal_q15(m->f0, &m->dior, c);
 }

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "fresnel_f16.h"
 
 static void eval_f32(const model_rgb *q, double c, double rgb[3])
@@ -31,9 +31,9 @@ static model_batch batch_q15(const model *row) { return row->q15->batch; }
 static int has_q15(const model *row) { return (row->offered & MODEL_EVAL) && row->q15->scalar != NULL; }
 static double params_q15(const model *row, const model_params *p, double c)
 {
-    model_fixed q;
-    model_fixed_from_params(p, &q);
-    return row->q15->scalar(&q, fixed_q15(c)) / 32768.0;
+    model_q15 q;
+    model_q15_from_params(p, &q);
+    return row->q15->scalar(&q, q15_code(c)) / 32768.0;
 }
 static double bound_q15(const model *row) { return row->q15_bound / 32768.0; }
 
@@ -58,7 +58,7 @@ const number_type number_types[NUMBER_TYPES] = {
     {TYPE_F32, "f32", NULL, "fresnel.h", "binary32 (fresnel.h)", 1, 0x1p-149, eval_f32, batch_f32, has_f32,
      model_params_round_f32, params_f32, bound_f32},
     {TYPE_Q15, "q15", "fixed", "fresnel_q15.h", "Q1.15 fixed point (fresnel_q15.h)", 1, 0x1p-15, eval_q15,
-     batch_q15, has_q15, model_params_round_fixed, params_q15, bound_q15},
+     batch_q15, has_q15, model_params_round_q15, params_q15, bound_q15},
     {TYPE_F16, "f16", NULL, "fresnel_f16.h", "binary16 (fresnel_f16.h; where the compiler has _Float16)",
      FRESNEL_HAS_F16, 0x1p-24, F16_EVAL, bound_f16},
 };

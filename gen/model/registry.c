@@ -8,7 +8,7 @@
 
 #include <math.h>
 
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "fresnel.h"
 #include "fresnel_f16.h"
 #include "fresnel_film.h"
@@ -138,36 +138,36 @@ void model_params_round_f32(model_params *m)
         *fields[i] = (double)(float)*fields[i];
 }
 
-void model_params_round_fixed(model_params *m)
+void model_params_round_q15(model_params *m)
 {
     fresnel_qf a;
-    m->f0 = fixed_q15(m->f0) / 32768.0;
-    m->f82 = fixed_q15(m->f82) / 32768.0;
-    m->f90 = fixed_q15(m->f90) / 32768.0;
+    m->f0 = q15_code(m->f0) / 32768.0;
+    m->f82 = q15_code(m->f82) / 32768.0;
+    m->f90 = q15_code(m->f90) / 32768.0;
     /* r at its code, and at the fixed-point clamp (32764, the largest code
      * below fresnel.h's 0.9999) where the code is above it */
-    m->r = (fixed_q15(m->r) < FRESNEL_GULBRANDSEN_R_MAX_Q15 ? fixed_q15(m->r) : FRESNEL_GULBRANDSEN_R_MAX_Q15) / 32768.0;
-    m->g = fixed_q15(m->g) / 32768.0;
-    m->p = fixed_q16(m->p) / 65536.0;
-    m->alpha = fixed_q16(ref_clamp(m->alpha, 0.0, FRESNEL_ALPHA_MAX)) / 65536.0;
-    a = fixed_qf(ref_clamp(m->a, 0.0, FRESNEL_A_MAX));
-    m->a = fixed_qf_value(a);
+    m->r = (q15_code(m->r) < FRESNEL_GULBRANDSEN_R_MAX_Q15 ? q15_code(m->r) : FRESNEL_GULBRANDSEN_R_MAX_Q15) / 32768.0;
+    m->g = q15_code(m->g) / 32768.0;
+    m->p = q16_code(m->p) / 65536.0;
+    m->alpha = q16_code(ref_clamp(m->alpha, 0.0, FRESNEL_ALPHA_MAX)) / 65536.0;
+    a = q15_qf(ref_clamp(m->a, 0.0, FRESNEL_A_MAX));
+    m->a = q15_qf_value(a);
 }
 
-void model_fixed_from_params(const model_params *m, model_fixed *out)
+void model_q15_from_params(const model_params *m, model_q15 *out)
 {
     memset(out, 0, sizeof *out);
-    out->f0 = fixed_q15(m->f0);
-    out->f82 = fixed_q15(m->f82);
-    out->f90 = fixed_q15(m->f90);
-    out->r = fixed_q15(m->r);
-    out->g = fixed_q15(m->g);
-    out->p = fixed_q16(m->p);
-    fixed_ior(m->eta, m->kappa, &out->ior);
-    fixed_ior(m->eta, 0.0, &out->dior);
-    fixed_nk(m->eta, m->kappa, &out->nk);
+    out->f0 = q15_code(m->f0);
+    out->f82 = q15_code(m->f82);
+    out->f90 = q15_code(m->f90);
+    out->r = q15_code(m->r);
+    out->g = q15_code(m->g);
+    out->p = q16_code(m->p);
+    q15_ior(m->eta, m->kappa, &out->ior);
+    q15_ior(m->eta, 0.0, &out->dior);
+    q15_nk(m->eta, m->kappa, &out->nk);
     out->gnk = fresnel_gulbrandsen_nk_q15(out->r, out->g);
-    fixed_lsk(m->eta, m->kappa, m->a, m->alpha, &out->lsk);
+    q15_lsk(m->eta, m->kappa, m->a, m->alpha, &out->lsk);
 }
 
 void model_params_round_f16(model_params *m)

@@ -38,7 +38,7 @@ typedef struct model_params {
 } model_params;
 
 /* A model's parameters in the fixed-point runtime's formats (fresnel_q15.h). */
-typedef struct model_fixed {
+typedef struct model_q15 {
     int32_t f0, f82, f90, r, g; /* Q15 codes */
     fresnel_q16 p;
     fresnel_ior_prep_q15 ior;  /* eta, kappa for the exact models and Cook-Torrance */
@@ -46,7 +46,7 @@ typedef struct model_fixed {
     fresnel_nk_prep_q15 nk;    /* eta, kappa for the approximate conductor */
     fresnel_nk_prep_q15 gnk;   /* Gulbrandsen's n, k from r, g (fresnel_gulbrandsen_nk_q15) */
     fresnel_lsk_prep_q15 lsk;
-} model_fixed;
+} model_q15;
 
 /* One scene model of one material as the runtime sees it in every number
  * type: the encoder's values (3_encode/encode.h), which are what `fresnel
@@ -80,7 +80,7 @@ typedef struct model_eval_f32 {
     fresnel_rgb (*avg)(const model_rgb *q);
 } model_eval_f32;
 typedef struct model_eval_q15 { /* scalar: the result code at cos code c (0..32768) */
-    int32_t (*scalar)(const model_fixed *m, int32_t c);
+    int32_t (*scalar)(const model_q15 *m, int32_t c);
     fresnel_rgb_q15 (*scene)(const model_rgb *q, int32_t c);
     model_batch batch;
 } model_eval_q15;
@@ -165,9 +165,9 @@ void model_params_round_f32(model_params *m);
  * Q16.16, a to its 31-bit mantissa. eta and kappa are kept: the prepared
  * constants carry 31-bit mantissas, and eta^2 - kappa^2 - 1 two words, so
  * their rounding is part of the error the tests measure. */
-void model_params_round_fixed(model_params *m);
+void model_params_round_q15(model_params *m);
 /* Prepared constants and codes from (rounded) parameters. */
-void model_fixed_from_params(const model_params *m, model_fixed *out);
+void model_q15_from_params(const model_params *m, model_q15 *out);
 /* And for binary16: every parameter rounded to binary16 (a no-op without _Float16). */
 void model_params_round_f16(model_params *m);
 

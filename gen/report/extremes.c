@@ -127,13 +127,13 @@ static int f32_eval(const model *m, const extreme_typed *t, double x, double *go
 /* Q15: cosines are codes; a finite c is round(c 32768) saturated to int32,
  * +-Inf the extreme codes; NaN has no code. The parameters are rounded to
  * the fixed-point formats and the reference sees them rounded
- * (model_params_round_fixed), as tests/runtime/q15/test_q15_bounds.c does. */
+ * (model_params_round_q15), as tests/runtime/q15/test_q15_bounds.c does. */
 static void q15_prepare(const extreme_case *e, extreme_typed *t)
 {
     memset(t, 0, sizeof *t);
     model_derive(e->eta, e->kappa, e->n1, 1.0, 5.0, &t->p);
-    model_params_round_fixed(&t->p);
-    model_fixed_from_params(&t->p, &t->q);
+    model_params_round_q15(&t->p);
+    model_q15_from_params(&t->p, &t->q);
     t->in_domain = extreme_in_measured_domain(&t->p);
     /* Gulbrandsen's r is clamped to the largest code below 0.9999, not to
      * 0.9999 itself: the reference gets the same r. */

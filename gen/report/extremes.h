@@ -56,7 +56,7 @@ int extreme_in_measured_domain(const model_params *m);
  * f16 (fresnel_f16.h, where the compiler has _Float16). */
 typedef struct extreme_typed {
     model_params p;  /* parameters as the reference sees them for this type */
-    model_fixed q;   /* q15: the prepared constants */
+    model_q15 q;   /* q15: the prepared constants */
     int in_domain;   /* the documented bound applies */
 } extreme_typed;
 typedef struct extreme_type {

@@ -14,7 +14,7 @@
 
 #include "bench/bench_targets.h"
 #include "bench/speed_targets.h"
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "fresnel_q15.h"
 #include "fresnel_q15_fast.h"
 #include "report/report.h"
@@ -108,7 +108,7 @@ static int lut_metal(report_run *r, const report_material *rm, const lut_variant
         }
     encode_curve_q15(table, 3 * v->n, q);
     for (a = 0; a < REPORT_ANGLES; a++) {
-        int32_t c = fixed_q15(report_cos(a));
+        int32_t c = q15_code(report_cos(a));
         fresnel_rgb_q15 o;
         if (v->cubic && v->spacing != LUT_GRAZING) { /* no runtime function: in double */
             o.r = lut_double_cubic(q, v->n, v->spacing, c);

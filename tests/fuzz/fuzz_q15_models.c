@@ -4,7 +4,7 @@
  * Inputs: cosine and reflectance codes as arbitrary int32 (the API takes
  * int32 so that a signed dot product can be passed), Q16.16 eta, kappa, p,
  * a, alpha as arbitrary int32, a material as double eta, kappa prepared on
- * the host (gen/3_encode/fixed_params.c, as `fresnel gen` does), and LUTs of random
+ * the host (gen/3_encode/q15_params.c, as `fresnel gen` does), and LUTs of random
  * nodes.
  * Oracle:
  *   - every result is a code in [0, 32768], whatever the input;
@@ -18,7 +18,7 @@
 
 #include "fuzz.h"
 
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "fresnel.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
@@ -111,19 +111,19 @@ static void fuzz_prepared(fuzz_bytes *b, int32_t c)
     double eta = fuzz_float(b, 0.0009765625f, 32767.0f), kappa = fuzz_float(b, 1e-4f, 32767.0f);
     double f90 = fuzz_float(b, 1e-3f, 1.0f), p = fuzz_float(b, 0.25f, 40.0f);
     model_params mp;
-    model_fixed mf;
+    model_q15 mf;
     int mi, in;
     char args[160];
     /* The host preparation takes finite, positive parameters (the generator's). */
     if (!(eta > 0.0 && eta <= 1e5 && kappa >= 0.0 && kappa <= 1e5 && f90 == f90 && p > 0.0 && p <= 1e3))
         return;
     model_derive(eta, kappa, 1.0, ref_clamp(f90, 0.0, 1.0), p, &mp);
-    model_params_round_fixed(&mp);
-    model_fixed_from_params(&mp, &mf);
+    model_params_round_q15(&mp);
+    model_q15_from_params(&mp, &mf);
     in = measured_eta(mp.eta) && measured_kappa(mp.kappa);
     snprintf(args, sizeof args, "eta %.9g kappa %.9g p %.9g f90 %.9g, c %d", eta, kappa, p, f90, (int)c);
-    check_layout("fixed_ior (host)", &mf.ior, args);
-    check_layout("fixed_ior (host)", &mf.dior, args);
+    check_layout("q15_ior (host)", &mf.ior, args);
+    check_layout("q15_ior (host)", &mf.dior, args);
     /* The runtime's clamps: Gulbrandsen's r to code 32764, p to Q16.16 code 66 at least. */
     mp.r = ref_clamp(mp.r, 0.0, FRESNEL_GULBRANDSEN_R_MAX_Q15 / 32768.0);
     mp.p = ref_clamp(mp.p, FRESNEL_P_MIN_Q16 / 65536.0, FRESNEL_P_MAX_Q16 / 65536.0);
@@ -137,10 +137,10 @@ static void fuzz_prepared(fuzz_bytes *b, int32_t c)
     /* The exact conductor's fast path on its own domain (fresnel_fixed_fast.h,
      * the generator's test: c in [0, one] is a precondition, so c is
      * clamped here), held to its documented bound. */
-    if (fixed_conductor_fast_in_domain(eta, kappa)) {
+    if (q15_conductor_fast_in_domain(eta, kappa)) {
         fresnel_conductor_prep_q15_fast cf;
         int32_t cc = c < 0 ? 0 : (c > 32768 ? 32768 : c);
-        fixed_conductor_fast(eta, kappa, &cf);
+        q15_conductor_fast(eta, kappa, &cf);
         check("fresnel_conductor_q15_fast", fresnel_conductor_q15_fast(&cf, cc), ref_conductor(eta, kappa, cc / 32768.0),
               FRESNEL_BOUND_CONDUCTOR_Q15_FAST, 1, args);
     }

@@ -2,7 +2,7 @@
  * for two user materials of constant n, k (models = exact, types = f32
  * q15), whose fast-path constants take one word at every code while
  * a0 + c^2 is -32767 at one code (4815, 25616): each channel of
- * <prefix>_ior_fast_q15 must be what fixed_conductor_fast makes of the same
+ * <prefix>_ior_fast_q15 must be what q15_conductor_fast makes of the same
  * n, k (a0_lo within 2: the fitted eta is the file's to about 1e-14), and
  * fresnel_conductor_q15_fast on it within FRESNEL_BOUND_CONDUCTOR_Q15_FAST
  * of the double reference at every code. Prints PASS/FAIL. */
@@ -10,7 +10,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
 #include "common/reference.h"
@@ -24,7 +24,7 @@ static void check(const char *name, const fresnel_conductor_prep_q15_fast got[3]
     double worst = 0.0;
     int ch, at = 0, same = 1;
     int32_t c;
-    fixed_conductor_fast(eta, kappa, &want);
+    q15_conductor_fast(eta, kappa, &want);
     for (ch = 0; ch < 3; ch++) {
         const fresnel_conductor_prep_q15_fast *g = &got[ch];
         same &= g->a0 == want.a0 && labs((long)g->a0_lo - want.a0_lo) <= 2 && g->shift == want.shift &&
@@ -36,9 +36,9 @@ static void check(const char *name, const fresnel_conductor_prep_q15_fast got[3]
         }
     }
     if (same)
-        printf("PASS gen q15: %s ior_fast_q15 is fixed_conductor_fast of the file's n, k\n", name);
+        printf("PASS gen q15: %s ior_fast_q15 is q15_conductor_fast of the file's n, k\n", name);
     else {
-        printf("FAIL gen q15: %s ior_fast_q15 {%ld, %ld, %ld, %ld, %ld, %ld, %ld, %lu}, fixed_conductor_fast "
+        printf("FAIL gen q15: %s ior_fast_q15 {%ld, %ld, %ld, %ld, %ld, %ld, %ld, %lu}, q15_conductor_fast "
                "{%ld, %ld, %ld, %ld, %ld, %ld, %ld, %lu}\n",
                name, (long)got[0].a0, (long)got[0].a0_lo, (long)got[0].shift, (long)got[0].b1, (long)got[0].b2,
                (long)got[0].bm, (long)got[0].be, (unsigned long)got[0].span, (long)want.a0, (long)want.a0_lo,

@@ -21,7 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "fresnel_fixed.h"
 #include "harness.h"
 #include "report/report.h"
@@ -58,7 +58,7 @@ static int measure(const gen_context *g, const lab_space *ls, const char *id, sp
         *table_max = fmax(*table_max, m.lut.nodes[k]);
     for (a = 0; a < REPORT_ANGLES; a++) {
         float rgb[3];
-        fresnel_rgb_q15 r = fresnel_lut_cubic_u16_q15_rgb(m.lut.q15, 16, fixed_q15(report_cos(a)));
+        fresnel_rgb_q15 r = fresnel_lut_cubic_u16_q15_rgb(m.lut.q15, 16, q15_code(report_cos(a)));
         ground_truth(s, &g->cm, &g->cs, 1.0, report_cos(a), truth[a]);
         ground_truth_gamut(s, g, p, report_cos(a), curve[a]);
         scene_model_eval(&m, (float)report_cos(a), rgb);

@@ -50,7 +50,7 @@ printf 'wavelength_nm,n,k\n360,%s,%s\n830,%s,%s\n' $n2 $k2 $n2 $k2 >"$t/rep2.csv
 printf 'material rep1 = rep1.csv\nmaterial rep2 = rep2.csv\nmodels = exact\ntypes = f32 q15\n' >"$t/rep.scene"
 if "$F" gen "$t/rep.scene" -o "$t/scene_rep.h" 2>"$t/err" &&
     cc $W -O2 -Iinclude -Igen -I"$t" -DREP1_N=$n1 -DREP1_K=$k1 -DREP2_N=$n2 -DREP2_K=$k2 tests/gen/gen_fast_check.c \
-        "$BUILD/obj/gen/3_encode/fixed_params.o" "$BUILD/obj/gen/common/reference.o" "$BUILD/libfresnel.a" -lm \
+        "$BUILD/obj/gen/3_encode/q15_params.o" "$BUILD/obj/gen/common/reference.o" "$BUILD/libfresnel.a" -lm \
         -o "$t/fast" 2>"$t/cc" && [ ! -s "$t/cc" ]; then
     "$t/fast"
 else

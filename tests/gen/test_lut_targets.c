@@ -8,7 +8,7 @@
 #include <string.h>
 #include <stdlib.h>
 
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
 #include "harness.h"
@@ -56,7 +56,7 @@ int main(void)
             memcpy(q, m.lut.q15, 3 * (size_t)targets[t].n * sizeof *q);
             scene_model_free(&m);
             for (a = 0; a < REPORT_ANGLES; a++) {
-                int32_t c = fixed_q15(report_cos(a));
+                int32_t c = q15_code(report_cos(a));
                 fresnel_rgb_q15 r;
                 if (targets[t].spacing == LUT_GRAZING_PL) {
                     r.r = fresnel_lut_pl_u16_q15_fast(q, targets[t].n, c);

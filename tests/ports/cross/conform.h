@@ -1,6 +1,6 @@
 /* Data of the cross-target conformance and instruction-count programs:
  * the material set of tests/runtime/q15/test_q15_bounds.c, prepared on the host
- * exactly as that test prepares it (model_fixed_from_params), written out as
+ * exactly as that test prepares it (model_q15_from_params), written out as
  * C by tests/ports/cross/conform_gen.c. */
 #ifndef FRESNEL_CONFORM_H
 #define FRESNEL_CONFORM_H

@@ -1,6 +1,6 @@
 /* Writes the C data of tests/ports/cross/conform.h to stdout: the material set of
- * tests/common/materials.h prepared by model_fixed_from_params after
- * model_params_round_fixed, as tests/runtime/q15/test_q15_bounds.c does, LUTs of one
+ * tests/common/materials.h prepared by model_q15_from_params after
+ * model_params_round_q15, as tests/runtime/q15/test_q15_bounds.c does, LUTs of one
  * curve, and a thin film's table. Host only. */
 #include <math.h>
 #include <stdio.h>
@@ -11,7 +11,7 @@
 #include "materials.h"
 #include "2_derive/film_fit.h"
 #include "3_encode/film_encode.h"
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "4_emit/emit.h"
 #include "model/registry.h"
 #include "common/reference.h"
@@ -72,11 +72,11 @@ int main(void)
     printf("const conform_material conform_materials[] = {\n");
     for (k = 0; k < n; k++) {
         model_params mp;
-        model_fixed mf;
+        model_q15 mf;
         fresnel_conductor_prep_q15_fast cf;
         model_derive(mat[k].eta, mat[k].kappa, 1.0, 1.0, 5.0, &mp);
-        model_params_round_fixed(&mp);
-        model_fixed_from_params(&mp, &mf);
+        model_params_round_q15(&mp);
+        model_q15_from_params(&mp, &mf);
         printf("    /* %s */ {%d, %d, %d, %d, %d, %d,", mat[k].name, (int)mf.f0, (int)mf.f82, (int)mf.f90,
                (int)mf.r, (int)mf.g, (int)mf.p);
         ior("ior", mf.ior);
@@ -87,9 +87,9 @@ int main(void)
         emit_q15_nk(stdout, mf.gnk);
         printf(", .lsk = ");
         emit_q15_lsk(stdout, mf.lsk);
-        fixed_conductor_fast(mat[k].eta, mat[k].kappa, &cf);
-        printf(", .eta = %d, .kappa = %d, .f82_a = %d, .cfast = ", (int)fixed_q16(mat[k].eta), (int)fixed_q16(mat[k].kappa),
-               (int)fixed_f82_a_q12(mf.f0, mf.f82));
+        q15_conductor_fast(mat[k].eta, mat[k].kappa, &cf);
+        printf(", .eta = %d, .kappa = %d, .f82_a = %d, .cfast = ", (int)q16_code(mat[k].eta), (int)q16_code(mat[k].kappa),
+               (int)q15_f82_a_q12(mf.f0, mf.f82));
         emit_q15_conductor_fast(stdout, cf);
         printf("},\n");
         if (!strcmp(mat[k].name, "cu 550")) {
@@ -129,7 +129,7 @@ int main(void)
     /* gold at 550 nm */
     for (k = 0; k < n && strcmp(mat[k].name, "au 550"); k++)
         ;
-    f0 = fixed_q15(ref_f0_from_ior(mat[k].eta, mat[k].kappa));
+    f0 = q15_code(ref_f0_from_ior(mat[k].eta, mat[k].kappa));
     for (sp = 0; sp < 2; sp++)
         for (i = 0; i < 64; i++) {
             double x = i / 63.0, c = sp == 0 ? x * x : x;

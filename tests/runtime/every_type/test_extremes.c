@@ -106,10 +106,10 @@ static void test_q15_codes(void)
     int ei, mi, i;
     for (ei = 0; ei < extreme_case_count; ei++) {
         model_params p;
-        model_fixed q;
+        model_q15 q;
         model_derive(extreme_cases[ei].eta, extreme_cases[ei].kappa, extreme_cases[ei].n1, 1.0, 5.0, &p);
-        model_params_round_fixed(&p);
-        model_fixed_from_params(&p, &q);
+        model_params_round_q15(&p);
+        model_q15_from_params(&p, &q);
         for (mi = 0; mi < model_count; mi++) {
             const model *m = &model_table[mi];
             int32_t at0, at1;

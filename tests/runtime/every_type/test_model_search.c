@@ -69,11 +69,11 @@ static double model_error(void *ctx, const double *x)
         return fabs((double)got - k->m->ref->scalar(&mp, c));
     }
     if (k->type == T_Q15) {
-        model_fixed mf;
+        model_q15 mf;
         int32_t c = (int32_t)x[2], got;
         model_derive(eta, kappa, 1.0, 1.0, 5.0, &mp);
-        model_params_round_fixed(&mp);
-        model_fixed_from_params(&mp, &mf);
+        model_params_round_q15(&mp);
+        model_q15_from_params(&mp, &mf);
         got = k->m->q15->scalar(&mf, c);
         if (got < 0 || got > 32768)
             return HUGE_VAL;

@@ -12,7 +12,7 @@
 #include <string.h>
 
 #include "materials.h"
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "fresnel.h"
 #include "fresnel_fixed.h"
 #define FRESNEL_RANGE_CHECK /* the inline helpers in this file check too */
@@ -53,11 +53,11 @@ static void check_models(const test_material *mat, int nmat)
             continue;
         for (k = 0; k < nmat; k++) {
             model_params mp;
-            model_fixed mf;
+            model_q15 mf;
             int32_t c;
             model_derive(mat[k].eta, mat[k].kappa, 1.0, 1.0, 5.0, &mp);
-            model_params_round_fixed(&mp);
-            model_fixed_from_params(&mp, &mf);
+            model_params_round_q15(&mp);
+            model_q15_from_params(&mp, &mf);
             for (c = 0; c <= ONE; c++) {
                 int32_t got = m->q15->scalar(&mf, c);
                 double ref = m->ref->scalar(&mp, c / 32768.0);
@@ -85,7 +85,7 @@ static void check_schlick_gen(void)
     for (ip = 0; ip < sizeof ps / sizeof ps[0]; ip++)
         for (i9 = 0; i9 < 3; i9++)
             for (i0 = 0; i0 < 5; i0++) {
-                fresnel_q16 p = fixed_q16(ps[ip]);
+                fresnel_q16 p = q16_code(ps[ip]);
                 char what[64];
                 snprintf(what, sizeof what, "p %g F90 %d F0 %d", ps[ip], (int)f90s[i9], (int)f0s[i0]);
                 for (c = 0; c <= ONE; c++) {
@@ -174,8 +174,8 @@ static void check_f0_helpers(void)
     memset(&w_med, 0, sizeof w_med);
     for (ie = 0; ie < 49; ie++)
         for (ik = 0; ik < 43; ik++) {
-            fresnel_q16 e = fixed_q16(0.01 * pow(1e4, ie / 48.0));
-            fresnel_q16 k = fixed_q16(ik == 0 ? 0.0 : 1e-3 * pow(1e5, (ik - 1) / 41.0));
+            fresnel_q16 e = q16_code(0.01 * pow(1e4, ie / 48.0));
+            fresnel_q16 k = q16_code(ik == 0 ? 0.0 : 1e-3 * pow(1e5, (ik - 1) / 41.0));
             int32_t got = fresnel_f0_from_ior_q15(e, k);
             bad += got < 0 || got > ONE;
             note_worst(&w_ior, fabs(got / 32768.0 - ref_f0_from_ior(e / 65536.0, k / 65536.0)) * 32768.0, "grid", 1.0);
@@ -183,7 +183,7 @@ static void check_f0_helpers(void)
     check_bound("f0_from_ior", &w_ior, FRESNEL_BOUND_F0_FROM_IOR_Q15, bad);
     bad = 0;
     for (im = 0; im < sizeof media / sizeof media[0]; im++) {
-        fresnel_q16 e = fixed_q16(media[im]);
+        fresnel_q16 e = q16_code(media[im]);
         char what[32];
         snprintf(what, sizeof what, "etaE %g F0", media[im]);
         for (f0 = 0; f0 <= ONE; f0++) {
@@ -211,7 +211,7 @@ static void check_prepare(const test_material *mat, int nmat)
 {
     int k, worst_ior = 0, worst_nk = 0, worst_lsk = 0, worst_g = 0, worst_r = 0, layout_bad = 0;
     for (k = 0; k < nmat; k++) {
-        fresnel_q16 e = fixed_q16(mat[k].eta), kk = fixed_q16(mat[k].kappa);
+        fresnel_q16 e = q16_code(mat[k].eta), kk = q16_code(mat[k].kappa);
         double ed = e / 65536.0, kd = kk / 65536.0, a, alpha, r, g;
         fresnel_ior_prep_q15 ri, hi;
         fresnel_nk_prep_q15 rn, hn;
@@ -222,17 +222,17 @@ static void check_prepare(const test_material *mat, int nmat)
             continue;
         ref_lsk_fit(ed, kd, &a, &alpha);
         ri = fresnel_ior_prepare_q15(e, kk);
-        fixed_ior(ed, kd, &hi);
+        q15_ior(ed, kd, &hi);
         layout_bad += !ior_layout_ok(&ri) + !ior_layout_ok(&hi);
         {
             fresnel_ior_prep_q15 dm;
-            fixed_ior(mat[k].eta, mat[k].kappa, &dm);
+            q15_ior(mat[k].eta, mat[k].kappa, &dm);
             layout_bad += !ior_layout_ok(&dm);
         }
         rn = fresnel_nk_prepare_q15(e, kk);
-        fixed_nk(ed, kd, &hn);
-        rl = fresnel_lsk_prepare_q15(e, kk, fixed_q16(a), fixed_q16(alpha));
-        fixed_lsk(ed, kd, fixed_q16(a) / 65536.0, fixed_q16(alpha) / 65536.0, &hl);
+        q15_nk(ed, kd, &hn);
+        rl = fresnel_lsk_prepare_q15(e, kk, q16_code(a), q16_code(alpha));
+        q15_lsk(ed, kd, q16_code(a) / 65536.0, q16_code(alpha) / 65536.0, &hl);
         for (c = 0; c <= ONE; c += 7) {
             int d1 = abs(fresnel_conductor_q15(&ri, c) - fresnel_conductor_q15(&hi, c));
             int d2 = abs(fresnel_approx_conductor_q15(&rn, c) - fresnel_approx_conductor_q15(&hn, c));
@@ -246,10 +246,10 @@ static void check_prepare(const test_material *mat, int nmat)
         }
         { fresnel_rg_q15 rg_ = fresnel_gulbrandsen_rg_q15(e, kk); gr = rg_.r; gg = rg_.g; }
         ref_gulbrandsen_rg(ed, kd, &r, &g);
-        if (abs((int)gr - fixed_q15(r)) > worst_r)
-            worst_r = abs((int)gr - fixed_q15(r));
-        if (abs((int)gg - fixed_q15(g)) > worst_g)
-            worst_g = abs((int)gg - fixed_q15(g));
+        if (abs((int)gr - q15_code(r)) > worst_r)
+            worst_r = abs((int)gr - q15_code(r));
+        if (abs((int)gg - q15_code(g)) > worst_g)
+            worst_g = abs((int)gg - q15_code(g));
     }
     NOTE("prepare from Q16.16 vs host: ior %d, nk %d, lsk %d codes; gulbrandsen_rg r %d g %d codes",
          worst_ior, worst_nk, worst_lsk, worst_r, worst_g);
@@ -279,14 +279,14 @@ static void check_variants(const test_material *mat, int nmat)
         model_params mp[3];
         for (j = 0; j < 3; j++) {
             model_derive(mat[k + j].eta, mat[k + j].kappa, 1.0, 1.0, 5.0, &mp[j]);
-            fixed_ior(mp[j].eta, mp[j].kappa, &ior[j]);
-            fixed_nk(mp[j].eta, mp[j].kappa, &nk[j]);
-            fixed_lsk(mp[j].eta, mp[j].kappa, mp[j].a, mp[j].alpha, &lsk[j]);
+            q15_ior(mp[j].eta, mp[j].kappa, &ior[j]);
+            q15_nk(mp[j].eta, mp[j].kappa, &nk[j]);
+            q15_lsk(mp[j].eta, mp[j].kappa, mp[j].a, mp[j].alpha, &lsk[j]);
         }
-        f0.r = (fresnel_q15)fixed_q15(mp[0].f0), f0.g = (fresnel_q15)fixed_q15(mp[1].f0), f0.b = (fresnel_q15)fixed_q15(mp[2].f0);
-        f82.r = (fresnel_q15)fixed_q15(mp[0].f82), f82.g = (fresnel_q15)fixed_q15(mp[1].f82), f82.b = (fresnel_q15)fixed_q15(mp[2].f82);
-        r.r = (fresnel_q15)fixed_q15(mp[0].r), r.g = (fresnel_q15)fixed_q15(mp[1].r), r.b = (fresnel_q15)fixed_q15(mp[2].r);
-        g.r = (fresnel_q15)fixed_q15(mp[0].g), g.g = (fresnel_q15)fixed_q15(mp[1].g), g.b = (fresnel_q15)fixed_q15(mp[2].g);
+        f0.r = (fresnel_q15)q15_code(mp[0].f0), f0.g = (fresnel_q15)q15_code(mp[1].f0), f0.b = (fresnel_q15)q15_code(mp[2].f0);
+        f82.r = (fresnel_q15)q15_code(mp[0].f82), f82.g = (fresnel_q15)q15_code(mp[1].f82), f82.b = (fresnel_q15)q15_code(mp[2].f82);
+        r.r = (fresnel_q15)q15_code(mp[0].r), r.g = (fresnel_q15)q15_code(mp[1].r), r.b = (fresnel_q15)q15_code(mp[2].r);
+        g.r = (fresnel_q15)q15_code(mp[0].g), g.g = (fresnel_q15)q15_code(mp[1].g), g.b = (fresnel_q15)q15_code(mp[2].g);
         for (c = 0; c <= ONE; c += 97) {
             fresnel_nk_prep_q15 gnk;
 #define SAME3(rgb, fr, fg, fb) mismatch += (rgb).r != (fr) || (rgb).g != (fg) || (rgb).b != (fb)
@@ -357,7 +357,7 @@ static void check_luts(const test_material *mat, int nmat)
             for (sp = 0; sp < 2; sp++) {
                 int n = sizes[is], i, f16b = 15, f8b = 7;
                 double f0d = ref_f0_from_ior(mat[k].eta, mat[k].kappa), maxr = 0.0;
-                int32_t f0 = fixed_q15(f0d), c;
+                int32_t f0 = q15_code(f0d), c;
                 char what[96];
                 /* nodes: uniform in sqrt(c) (c = x^2), or in c */
                 for (i = 0; i < n; i++) {
@@ -468,7 +468,7 @@ static void check_eta_min(void)
         int ik;
         for (ik = 0; ik < 3; ik++) {
             fresnel_ior_prep_q15 m;
-            fresnel_q16 kq = fixed_q16(kappas[ik]);
+            fresnel_q16 kq = q16_code(kappas[ik]);
             int32_t c, f0 = fresnel_f0_from_ior_q15(codes[i], kq);
             snprintf(what, sizeof what, "eta code %ld kappa %g", (long)codes[i], kappas[ik]);
             m = fresnel_ior_prepare_q15(codes[i], kq);
@@ -543,14 +543,14 @@ static void check_small_eta(const model *m)
     memset(&w, 0, sizeof w);
     for (k = 0; k < 4000; k++) {
         model_params mp;
-        model_fixed mf;
+        model_q15 mf;
         int32_t c;
         char name[32];
         double eta = FRESNEL_ETA_MIN * pow(0.05 / FRESNEL_ETA_MIN, k / 3999.0);
         snprintf(name, sizeof name, "eta %.6g", eta);
         model_derive(eta, 0.0, 1.0, 1.0, 5.0, &mp);
-        model_params_round_fixed(&mp);
-        model_fixed_from_params(&mp, &mf);
+        model_params_round_q15(&mp);
+        model_q15_from_params(&mp, &mf);
         for (c = ONE - 511; c <= ONE; c++) {
             int32_t got = m->q15->scalar(&mf, c);
             bad += got < 0 || got > ONE;
@@ -606,11 +606,11 @@ static void check_domain(void)
             continue;
         for (k = 0; k < n; k++) {
             model_params mp;
-            model_fixed mf;
+            model_q15 mf;
             int32_t c;
             model_derive(t[k].eta, t[k].kappa, 1.0, 1.0, 5.0, &mp);
-            model_params_round_fixed(&mp);
-            model_fixed_from_params(&mp, &mf);
+            model_params_round_q15(&mp);
+            model_q15_from_params(&mp, &mf);
             for (c = 0; c <= ONE; c += (c < 64 || c >= ONE - 64) ? 1 : 5) {
                 int32_t got = m->q15->scalar(&mf, c);
                 double ref = m->ref->scalar(&mp, c / 32768.0);

@@ -16,7 +16,7 @@
 
 #include "1_spectral/spectral.h"
 #include "materials.h"
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "3_encode/encode.h"
 #include "fresnel_fixed.h"
 #include "fresnel_fixed_fast.h"
@@ -68,7 +68,7 @@ static void check_f82(const test_material *mat, int nmat)
             char what[40];
             snprintf(what, sizeof what, "F0 %d/32 F82 %d/32", a, b);
             for (c = 0; c <= ONE; c++) {
-                int32_t got = fresnel_f82_q15_fast(f0, fixed_f82_a_q12(f0, f82), c);
+                int32_t got = fresnel_f82_q15_fast(f0, q15_f82_a_q12(f0, f82), c);
                 bad += got < 0 || got > ONE;
                 note_worst(&w, fabs(got / 32768.0 - ref_f82(f0 / 32768.0, f82 / 32768.0, c / 32768.0)) * 32768.0,
                            what, c);
@@ -79,12 +79,12 @@ static void check_f82(const test_material *mat, int nmat)
     bad = 0;
     for (k = 0; k < nmat; k++) {
         model_params mp;
-        model_fixed mf;
+        model_q15 mf;
         model_derive(mat[k].eta, mat[k].kappa, 1.0, 1.0, 5.0, &mp);
-        model_params_round_fixed(&mp);
-        model_fixed_from_params(&mp, &mf);
+        model_params_round_q15(&mp);
+        model_q15_from_params(&mp, &mf);
         for (c = 0; c <= ONE; c++) {
-            int32_t got = fresnel_f82_q15_fast(mf.f0, fixed_f82_a_q12(mf.f0, mf.f82), c);
+            int32_t got = fresnel_f82_q15_fast(mf.f0, q15_f82_a_q12(mf.f0, mf.f82), c);
             bad += got < 0 || got > ONE;
             note_worst(&w, fabs(got / 32768.0 - ref_f82(mf.f0 / 32768.0, mf.f82 / 32768.0, c / 32768.0)) * 32768.0,
                        mat[k].name, c);
@@ -220,7 +220,7 @@ static void check_lut_pl(const test_material *mat, int nmat)
         for (k = 0; k < 32; k++)
             ramp[k] = (uint16_t)(k * 1024);
         for (k = 0; k < 32; k++) {
-            double at = fresnel_lut_pl_u16_q15_fast(ramp, 32, fixed_q15(lut_node_cos(LUT_GRAZING_PL, k, 32))) / 1024.0;
+            double at = fresnel_lut_pl_u16_q15_fast(ramp, 32, q15_code(lut_node_cos(LUT_GRAZING_PL, k, 32))) / 1024.0;
             if (fabs(at - k) > far)
                 far = fabs(at - k);
         }
@@ -273,7 +273,7 @@ static void check_conductor_helpers(void)
           (unsigned)at);
 }
 
-/* fresnel_conductor_q15_fast on constants made by fixed_conductor_fast, at
+/* fresnel_conductor_q15_fast on constants made by q15_conductor_fast, at
  * the codes lo..hi (cut to [0, one]), against ref_conductor at the double
  * eta, kappa the constants were made from. */
 static void conductor_codes(worst *w, long *bad, double eta, double kappa, int32_t lo, int32_t hi, const char *what)
@@ -281,7 +281,7 @@ static void conductor_codes(worst *w, long *bad, double eta, double kappa, int32
     fresnel_conductor_prep_q15_fast p;
     char where[96];
     int32_t c;
-    fixed_conductor_fast(eta, kappa, &p);
+    q15_conductor_fast(eta, kappa, &p);
     snprintf(where, sizeof where, "%.36s eta %.17g kappa %.17g", what, eta, kappa);
     for (c = lo < 0 ? 0 : lo; c <= hi && c <= ONE; c++) {
         int32_t got = fresnel_conductor_q15_fast(&p, c);
@@ -298,7 +298,7 @@ static void conductor_codes(worst *w, long *bad, double eta, double kappa, int32
  * |eta^2 - kappa^2 - 1 + 2i eta kappa| >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST); every
  * material of data/ at every 10 nm from 380 to 780 nm; and the test
  * materials inside the domain. Every cos code. */
-#define conductor_in_domain fixed_conductor_fast_in_domain
+#define conductor_in_domain q15_conductor_fast_in_domain
 
 static void conductor_curve(worst *w, long *bad, long *n, double eta, double kappa, const char *what)
 {
@@ -351,7 +351,7 @@ static void check_conductor(const test_material *mat, int nmat)
     check_bound("exact conductor, data/ 380-780 nm", &data, FRESNEL_BOUND_CONDUCTOR_Q15_FAST, bad);
     {
         fresnel_conductor_prep_q15_fast p;
-        fixed_conductor_fast(1.0, 0.0, &p);
+        q15_conductor_fast(1.0, 0.0, &p);
         CHECK("fixed fast exact conductor: the matched index reflects 0 at every c, c = 0 included",
               fresnel_conductor_q15_fast(&p, 0) == 0 && fresnel_conductor_q15_fast(&p, 1) == 0 &&
                   fresnel_conductor_q15_fast(&p, ONE) == 0,
@@ -431,7 +431,7 @@ static void check_conductor_boundaries(void)
                 fresnel_conductor_prep_q15_fast p;
                 if (eta == 0.0)
                     continue;
-                fixed_conductor_fast(eta, kappa, &p);
+                q15_conductor_fast(eta, kappa, &p);
                 if (p.shift != 0 || p.a0 + c0 * c0 != ah_at[t] || (p.span != 0) != kind)
                     continue;
                 hit[kind][t]++;
@@ -450,7 +450,7 @@ static void check_conductor_boundaries(void)
             fresnel_conductor_prep_q15_fast p;
             if (eta == 0.0)
                 continue;
-            fixed_conductor_fast(eta, kappa, &p);
+            q15_conductor_fast(eta, kappa, &p);
             if (p.span == 0 || p.a0 + c0 * c0 != 0 || p.a0_lo != lo_at[t] || p.b2 != b2)
                 continue;
             tiny++;
@@ -527,7 +527,7 @@ static double conductor_err(double eta, double kappa, int32_t lo, int32_t hi, in
     fresnel_conductor_prep_q15_fast p;
     double w = 0.0;
     int32_t c;
-    fixed_conductor_fast(eta, kappa, &p);
+    q15_conductor_fast(eta, kappa, &p);
     for (c = lo < 0 ? 0 : lo; c <= hi && c <= ONE; c++) {
         double e = fabs(fresnel_conductor_q15_fast(&p, c) / 32768.0 - ref_conductor(eta, kappa, c / 32768.0)) * 32768.0;
         if (e > w)

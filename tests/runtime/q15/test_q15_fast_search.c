@@ -8,7 +8,7 @@
  *     prepares it, against fresnel_f82 at the codes, every c code at the
  *     four (F0, F82) corners first; FRESNEL_BOUND_F82_Q15_FAST;
  *   fresnel_conductor_q15_fast: (log10 eta, log10 kappa, c code) inside
- *     FRESNEL_CONDUCTOR_*_Q15_FAST's domain (fixed_conductor_fast_in_domain;
+ *     FRESNEL_CONDUCTOR_*_Q15_FAST's domain (q15_conductor_fast_in_domain;
  *     a point outside it counts as no error), FRESNEL_BOUND_CONDUCTOR_Q15_FAST.
  * Results outside [0, one] count as an infinite error. The long pass
  * (SEARCH_LONG=1, make search) writes the corpus
@@ -22,7 +22,7 @@
 #include "fresnel_fixed_fast.h"
 #include "harness.h"
 #include "search.h"
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 #include "common/reference.h"
 
 #define CORPUS "tests/data/worst_inputs/fast.txt"
@@ -43,7 +43,7 @@ static double f82_error(void *ctx, const double *x)
 {
     int32_t f0 = (int32_t)x[0], f82 = (int32_t)x[1], c = (int32_t)x[2];
     (void)ctx;
-    return lsb(fresnel_f82_q15_fast(f0, fixed_f82_a_q12(f0, f82), c),
+    return lsb(fresnel_f82_q15_fast(f0, q15_f82_a_q12(f0, f82), c),
                ref_f82(f0 / 32768.0, f82 / 32768.0, c / 32768.0));
 }
 
@@ -53,9 +53,9 @@ static double conductor_error(void *ctx, const double *x)
     int32_t c = (int32_t)x[2];
     fresnel_conductor_prep_q15_fast p;
     (void)ctx;
-    if (!fixed_conductor_fast_in_domain(eta, kappa))
+    if (!q15_conductor_fast_in_domain(eta, kappa))
         return 0.0;
-    fixed_conductor_fast(eta, kappa, &p);
+    q15_conductor_fast(eta, kappa, &p);
     return lsb(fresnel_conductor_q15_fast(&p, c), ref_conductor(eta, kappa, c / 32768.0));
 }
 

@@ -1,13 +1,13 @@
-/* Double -> fixed-point parameters (see fixed_params.h and the LAYOUT section
+/* Double -> fixed-point parameters (see q15_params.h and the LAYOUT section
  * of include/fresnel_q15.h). */
-#include "3_encode/fixed_params.h"
+#include "3_encode/q15_params.h"
 
 #include <math.h>
 
 #include "fresnel.h"
 #include "common/reference.h"
 
-fresnel_qf fixed_qf(double x)
+fresnel_qf q15_qf(double x)
 {
     fresnel_qf q = {0, 0};
     int k;
@@ -25,14 +25,14 @@ fresnel_qf fixed_qf(double x)
     return q;
 }
 
-double fixed_qf_value(fresnel_qf x) { return ldexp((double)x.m, x.e); }
+double q15_qf_value(fresnel_qf x) { return ldexp((double)x.m, x.e); }
 
-int32_t fixed_q15(double x)
+int32_t q15_code(double x)
 {
     return (int32_t)floor(ref_clamp(x, 0.0, 65535.0 / 32768.0) * 32768.0 + 0.5);
 }
 
-fresnel_q16 fixed_q16(double x)
+fresnel_q16 q16_code(double x)
 {
     double v = floor(x * 65536.0 + 0.5);
     return v >= 2147483647.0 ? 2147483647 : (v <= -2147483648.0 ? (fresnel_q16)-2147483647 - 1 : (fresnel_q16)v);
@@ -44,7 +44,7 @@ static double kappa_dom(double x)
     return x >= FRESNEL_KAPPA_TINY ? (x < FRESNEL_KAPPA_MAX ? x : FRESNEL_KAPPA_MAX) : 0.0;
 }
 
-void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out)
+void q15_ior(double eta, double kappa, fresnel_ior_prep_q15 *out)
 {
     double eh, el, d, x, hi;
     int s;
@@ -70,13 +70,13 @@ void fixed_ior(double eta, double kappa, fresnel_ior_prep_q15 *out)
     out->a0 = d < 0.0 ? -(int32_t)hi : (int32_t)hi;
     /* x - hi is exact (both near each other), and at most 1/2 */
     out->a0_lo = (int32_t)floor((x - hi) * 1073741824.0 + 0.5) * (d < 0.0 ? -1 : 1);
-    out->b = fixed_qf(2.0 * eta * kappa);
-    out->n4 = fixed_qf((eta * eta + kappa * kappa) * (eta * eta + kappa * kappa));
-    out->t1_inv = fixed_qf(((eta + 1.0) * (eta + 1.0) + kappa * kappa) / (4.0 * eta));
-    out->inv_eta2 = fixed_qf(1.0 / (eta * eta));
+    out->b = q15_qf(2.0 * eta * kappa);
+    out->n4 = q15_qf((eta * eta + kappa * kappa) * (eta * eta + kappa * kappa));
+    out->t1_inv = q15_qf(((eta + 1.0) * (eta + 1.0) + kappa * kappa) / (4.0 * eta));
+    out->inv_eta2 = q15_qf(1.0 / (eta * eta));
 }
 
-void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15_fast *out)
+void q15_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15_fast *out)
 {
     double eh, el, d, x, hi = 0.0, b;
     int s, k, two;
@@ -121,7 +121,7 @@ void fixed_conductor_fast(double eta, double kappa, fresnel_conductor_prep_q15_f
     }
 }
 
-int fixed_conductor_fast_in_domain(double eta, double kappa)
+int q15_conductor_fast_in_domain(double eta, double kappa)
 {
     return eta >= FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST && eta <= FRESNEL_CONDUCTOR_ETA_MAX_Q15_FAST && kappa >= 0.0 &&
            (kappa >= 0.1 || eta >= FRESNEL_CONDUCTOR_ETA_MIN_Q15_FAST_DIELECTRIC) &&
@@ -129,22 +129,22 @@ int fixed_conductor_fast_in_domain(double eta, double kappa)
            hypot(eta * eta - kappa * kappa - 1.0, 2.0 * eta * kappa) >= FRESNEL_CONDUCTOR_MATCH_MIN_Q15_FAST;
 }
 
-void fixed_nk(double n, double k, fresnel_nk_prep_q15 *out)
+void q15_nk(double n, double k, fresnel_nk_prep_q15 *out)
 {
     n = eta_dom(n);
     k = kappa_dom(k);
-    out->n = fixed_qf(n);
-    out->nk2 = fixed_qf(n * n + k * k);
+    out->n = q15_qf(n);
+    out->nk2 = q15_qf(n * n + k * k);
 }
 
-void fixed_lsk(double n, double k, double a, double alpha, fresnel_lsk_prep_q15 *out)
+void q15_lsk(double n, double k, double a, double alpha, fresnel_lsk_prep_q15 *out)
 {
     out->f0 = (uint32_t)floor(ref_f0_from_ior(n, k) * 1073741824.0 + 0.5);
-    out->a = fixed_qf(ref_clamp(a, 0.0, FRESNEL_A_MAX));
-    out->alpha = fixed_q16(ref_clamp(alpha, 0.0, FRESNEL_ALPHA_MAX));
+    out->a = q15_qf(ref_clamp(a, 0.0, FRESNEL_A_MAX));
+    out->alpha = q16_code(ref_clamp(alpha, 0.0, FRESNEL_ALPHA_MAX));
 }
 
-int32_t fixed_f82_a_q12(int32_t f0, int32_t f82)
+int32_t q15_f82_a_q12(int32_t f0, int32_t f82)
 {
     double F0 = (f0 < 0 ? 0 : (f0 > 32768 ? 32768 : f0)) / 32768.0;
     double F82 = (f82 < 0 ? 0 : (f82 > 32768 ? 32768 : f82)) / 32768.0;

@@ -215,7 +215,7 @@ static void emit_f82_a(fx_out *o, const char *prefix, const encoded_material *e)
             emit_f82_a(&o, prefix, e);                                                                              \
     }
 
-int emit_fixed_material(FILE *f, const emit_input *in, int mi, const char *prefix)
+int emit_q15_material(FILE *f, const emit_input *in, int mi, const char *prefix)
 {
     const scene *sc = in->sc;
     const material_params *p = &in->params[mi];
