@@ -47,14 +47,8 @@ typedef struct material_params {
     double f0_unclamped[3];     /* ground truth at normal incidence */
     double f_avg_unclamped[3];  /* 2 x integral of F(mu) mu over [0, 1], unclipped */
     double fit_rms[3];          /* of the fitted eta, kappa */
-    /* every parameter of catalog/parameters.h, derived under the gamut
-     * policy: f0 and f82 the ground truth at c = 1 and c = 1/7, f_avg its
-     * hemispherical average, eta_gauss, kappa_gauss Metzgar's Gaussian window
-     * (sigma nm), eta_point, kappa_point point-sampled at the dominant
-     * wavelengths (Hoffman's "PS"), eta_fit, kappa_fit Hoffman's black-box
-     * fit, lsk_a, lsk_alpha LSK's compensation on the fitted eta, kappa,
-     * gulb_r = F0 and gulb_g from F0 and the fitted eta, ct_eta, ct_kappa
-     * Cook-Torrance's IOR at the green wavelength */
+    /* every parameter of catalog/parameters.h (its line says what it is),
+     * derived under the gamut policy by derive_parameters */
 #define MATERIAL_PARAM_MEMBER(field, count, group, constant, row, why, q15, q15_why) double field PARAM_ARRAY_##count;
     DERIVED_PARAMETERS(MATERIAL_PARAM_MEMBER)
 #undef MATERIAL_PARAM_MEMBER
