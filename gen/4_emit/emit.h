@@ -29,6 +29,8 @@ typedef struct emit_input {
  * ports/glsl/fresnel.glsl, HLSL for ports/hlsl/fresnel.hlsl. */
 typedef struct emit_backend {
     const char *option; /* the gen option that chooses it; NULL: the C header, the default */
+    const char *usage;  /* its part of `fresnel gen`'s usage line */
+    const char *help;   /* its paragraph of `fresnel gen --help` */
     int shader;         /* 1: a shader port's source, which emit_shader_check admits a scene to */
     int texture;        /* 1: it also writes the LUT texture (--glsl-texture) */
     /* Print the scene to f (and its texture to tex, if not NULL): 0, or

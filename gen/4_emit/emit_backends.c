@@ -19,9 +19,18 @@ static int print_hlsl(FILE *f, FILE *tex, const emit_input *in)
 }
 
 const emit_backend emit_backends[] = {
-    {NULL, 0, 0, print_c},
-    {"--glsl", 1, 1, emit_glsl},
-    {"--hlsl", 1, 0, print_hlsl},
+    {.option = NULL, .usage = "", .print = print_c,
+     .help = "Without a back end's option: the C header for include/fresnel.h and the scene's\n"
+             "number types (static const)."},
+    {.option = "--glsl", .usage = "--glsl [--glsl-texture OUT_TEX.h]", .shader = 1, .texture = 1, .print = emit_glsl,
+     .help = "--glsl writes the same constants as GLSL instead (const vec3, float arrays)\n"
+             "for use after ports/glsl/fresnel.glsl, with vec3 fresnel_<scene>_<material>_<model>_rgb(c)\n"
+             "per material and model, in every dialect the port supports; lut_spacing\n"
+             "grazing or uniform. --glsl-texture writes, as a C header, the packed RGBA8\n"
+             "texture GLSL ES 1.00 reads the LUT models from (no const arrays there)."},
+    {.option = "--hlsl", .usage = "--hlsl", .shader = 1, .print = print_hlsl,
+     .help = "--hlsl writes them as HLSL for ports/hlsl/fresnel.hlsl (static const float3,\n"
+             "float arrays), with float3 fresnel_<scene>_<material>_<model>_rgb(float c)."},
 };
 const int emit_backend_count = (int)(sizeof emit_backends / sizeof emit_backends[0]);
 

@@ -15,18 +15,19 @@ static void gen_usage(FILE *out)
 {
     const char *names[SCENE_MAX_MODELS + 1];
     int i;
-    fprintf(out, "usage: fresnel gen SCENE -o OUT.h [--glsl [--glsl-texture OUT_TEX.h] | --hlsl] [--data DIR]\n\n"
-                 "Reads the scene manifest SCENE and writes a C header (or, with --glsl or\n"
-                 "--hlsl, a shader source) with the constants and tables of exactly its\n"
-                 "materials, models and number types: static const in C.\n"
-                 "--glsl writes the same constants as GLSL instead (const vec3, float arrays)\n"
-                 "for use after ports/glsl/fresnel.glsl, with vec3 fresnel_<scene>_<material>_<model>_rgb(c)\n"
-                 "per material and model, in every dialect the port supports; lut_spacing\n"
-                 "grazing or uniform. --glsl-texture writes, as a C header, the packed RGBA8\n"
-                 "texture GLSL ES 1.00 reads the LUT models from (no const arrays there).\n"
-                 "--hlsl writes them as HLSL for ports/hlsl/fresnel.hlsl (static const float3,\n"
-                 "float arrays), with float3 fresnel_<scene>_<material>_<model>_rgb(float c).\n"
-                 "Other shading languages: cross-compile the SPIR-V of either (ports/README.md).\n"
+    const char *sep = "";
+    fprintf(out, "usage: fresnel gen SCENE -o OUT.h [");
+    for (i = 0; i < emit_backend_count; i++)
+        if (emit_backends[i].option) {
+            fprintf(out, "%s%s", sep, emit_backends[i].usage);
+            sep = " | ";
+        }
+    fprintf(out, "] [--data DIR]\n\n"
+                 "Reads the scene manifest SCENE and writes, with one back end, the constants and\n"
+                 "tables of exactly its materials, models and number types.\n");
+    for (i = 0; i < emit_backend_count; i++)
+        fprintf(out, "%s\n", emit_backends[i].help);
+    fprintf(out, "Other shading languages: cross-compile the SPIR-V of either (ports/README.md).\n"
                  "The output is written to a temporary file beside OUT.h and renamed over it\n"
                  "(an existing file keeps its mode; a symlink's target is replaced): on any\n"
                  "error OUT.h (and OUT_TEX.h) is left as it was. -o - writes to stdout; a device\n"
