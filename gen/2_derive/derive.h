@@ -27,9 +27,10 @@
 
 #include "1_spectral/colour_difference.h"
 #include "1_spectral/spectral.h"
+#include "catalog/choices.h"
 #include "catalog/parameters.h"
+#include "scene/scene.h"
 
-typedef enum gamut_policy { GAMUT_MAP, GAMUT_CLIP, GAMUT_KEEP } gamut_policy;
 /* Node angles of the map policy: theta_k = k 90 / (GAMUT_NODES - 1) degrees. */
 #define GAMUT_NODES 181
 
@@ -103,6 +104,10 @@ void gamut_map_build(const spectrum *s, const gen_context *g, material_params *p
 /* The linear RGB in [0, 1]^3 nearest in CIEDE2000 to truth; returns the
  * difference. */
 double gamut_nearest(const lab_space *ls, const double truth[3], double out[3]);
+
+/* Material i of a scene as derive_parameters takes it (pointing into sc),
+ * with its film's index where the scene has the thin-film model. */
+material_source scene_material(const scene *sc, int i);
 
 /* Load the material (data/<id>.csv or the user's file) and derive
  * everything; 0 or CLI_BAD_INPUT. *s receives the resampled spectrum for

@@ -143,3 +143,13 @@ int derive_parameters(const gen_context *g, const material_source *m, double sig
     }
     return 0;
 }
+
+material_source scene_material(const scene *sc, int i)
+{
+    material_source m;
+    m.id = sc->materials[i];
+    m.path = sc->material_file[i][0] ? sc->material_file[i] : NULL;
+    m.format = sc->material_format[i];
+    m.film_n = scene_film_n(sc, i);
+    return m;
+}

@@ -116,8 +116,8 @@ static void naive_gulbrandsen(const target_anchor *a, double *x)
     }
 }
 
-const target target_table[] = {
-    {"openpbr", "OpenPBR Surface 1.1, metal (base_metalness = 1, base_weight = specular_weight = 1)",
+const target target_table[TARGETS] = {
+    [TARGET_openpbr] = {TARGET_NAME(openpbr), "OpenPBR Surface 1.1, metal (base_metalness = 1, base_weight = specular_weight = 1)",
      "F82-tint: Schlick with a dip scaled by specular_color at cos theta = 1/7",
      "OpenPBR Surface specification v1.1.1, section Metal (academysoftwarefoundation.github.io/OpenPBR)",
      "linear RGB of the host's working space; base_color and specular_color in [0, 1]^3 (specular_color <= 1: "
@@ -126,7 +126,7 @@ const target target_table[] = {
      {{"base_color", 0, 0.0, 1.0}, {"specular_color", 0, 0.0, 1.0}},
      0, "base_color = F0; specular_color = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
      eval_openpbr, naive_f82_tint},
-    {"materialx", "MaterialX generalized_schlick_bsdf (a metal: reflection only)",
+    [TARGET_materialx] = {TARGET_NAME(materialx), "MaterialX generalized_schlick_bsdf (a metal: reflection only)",
      "Hoffman's generalized Schlick: color0 to color90 with exponent, a dip scaled by color82 at cos theta = 1/7",
      "MaterialX PBR specification, node generalized_schlick_bsdf (documents/Specification/MaterialX.PBRSpec.md)",
      "linear RGB of the document's colorspace; the specification states no range: the fit keeps colours in "
@@ -138,7 +138,7 @@ const target target_table[] = {
       {"exponent", 1, MX_EXPONENT_MIN, MX_EXPONENT_MAX}},
      0, "color0 = F0; color82 = F82 / Schlick(F0) at cos theta = 1/7; color90 = 1; exponent 5",
      eval_materialx, naive_materialx},
-    {"blender", "Blender 4.x Principled BSDF, Metallic = 1 (Cycles and EEVEE)",
+    [TARGET_blender] = {TARGET_NAME(blender), "Blender 4.x Principled BSDF, Metallic = 1 (Cycles and EEVEE)",
      "OpenPBR's F82-tint, base colour and tint clamped to [0, 1], result clamped to [0, 1]",
      "Blender source: intern/cycles/kernel/svm/closure.h (Principled metallic), "
      "intern/cycles/kernel/closure/bsdf_util.h (fresnel_f82tint_B, fresnel_f82)",
@@ -148,7 +148,7 @@ const target target_table[] = {
      {{"base_color", 0, 0.0, 1.0}, {"specular_tint", 0, 0.0, 1.0}},
      0, "base_color = F0; specular_tint = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
      eval_blender, naive_f82_tint},
-    {"unreal", "Unreal Engine F_AdobeF82(F0, F82, VoH)",
+    [TARGET_unreal] = {TARGET_NAME(unreal), "Unreal Engine F_AdobeF82(F0, F82, VoH)",
      "Adobe F82 as BRDF.ush writes it: the same curve as OpenPBR's, F82 being the tint at cos theta = 1/7",
      "Unreal Engine Engine/Shaders/Private/BRDF.ush, F_AdobeF82 (source under Epic's licence; which material "
      "input feeds F82 is not publicly documented: the Substrate Slab documents F0 and F90)",
@@ -158,7 +158,7 @@ const target target_table[] = {
      {{"F0", 0, 0.0, 1.0}, {"F82", 0, 0.0, 1.0}},
      0, "F0 = F0; F82 = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
      eval_unreal, naive_f82_tint},
-    {"gltf", "glTF 2.0 metallic-roughness, metallicFactor = 1",
+    [TARGET_gltf] = {TARGET_NAME(gltf), "glTF 2.0 metallic-roughness, metallicFactor = 1",
      "Schlick with F0 = baseColor and F90 = 1 (KHR_materials_specular changes dielectrics only)",
      "glTF 2.0 specification, Appendix B, B.3.4 and B.3.5 (metal_brdf, conductor_fresnel)",
      "baseColorFactor, linear Rec.709 (sRGB primaries, D65), in [0, 1]; a baseColorTexture holds the same "
@@ -167,7 +167,7 @@ const target target_table[] = {
      {{"baseColorFactor", 0, 0.0, 1.0}},
      1, "baseColorFactor = F0",
      eval_gltf, naive_f0},
-    {"filament", "Filament standard lit material, metallic = 1",
+    [TARGET_filament] = {TARGET_NAME(filament), "Filament standard lit material, metallic = 1",
      "Schlick with f0 = baseColor and f90 = saturate(dot(f0, 50 * 0.33)) (1 for every metal)",
      "Filament source: shaders/src/surface_brdf.fs (fresnel), shaders/src/common_material.fs (computeF0)",
      "baseColor, linear Rec.709 (sRGB primaries), in [0, 1]",
@@ -175,7 +175,7 @@ const target target_table[] = {
      {{"baseColor", 0, 0.0, 1.0}},
      1, "baseColor = F0",
      eval_filament, naive_f0},
-    {"gulbrandsen", "Gulbrandsen's artist-friendly metallic Fresnel (reflectivity r, edge tint g)",
+    [TARGET_gulbrandsen] = {TARGET_NAME(gulbrandsen), "Gulbrandsen's artist-friendly metallic Fresnel (reflectivity r, edge tint g)",
      "r, g to n, k, then the approximate unpolarised conductor Fresnel, as the paper defines it",
      "Gulbrandsen 2014, \"Artist Friendly Metallic Fresnel\", JCGT 3(4), section 2.3.3 (n, k from r, g) and "
      "equations 4-6 (the approximate Fresnel); common/reference.c, ref_gulbrandsen",
@@ -190,20 +190,8 @@ const int target_count = (int)(sizeof target_table / sizeof target_table[0]);
 
 const target *target_find(const char *name)
 {
-    int i;
-    for (i = 0; i < target_count; i++)
-        if (!strcmp(target_table[i].name, name))
-            return &target_table[i];
-    return NULL;
-}
-
-int target_names(const char **out, int max)
-{
-    int i, n = 0;
-    for (i = 0; i < target_count && n + 1 < max; i++)
-        out[n++] = target_table[i].name;
-    out[n] = NULL;
-    return n;
+    int id = target_parse(name);
+    return id < 0 ? NULL : &target_table[id];
 }
 
 int target_x_count(const target *t)

@@ -18,6 +18,7 @@
 #define FRESNEL_TARGETS_H
 
 #include "2_derive/derive.h"
+#include "catalog/targets.h"
 
 #define TARGET_MAX_PARAMS 4 /* parameter rows of one target */
 #define TARGET_MAX_X 12     /* numbers: 3 per colour row, 1 per scalar row */
@@ -52,12 +53,11 @@ typedef struct target {
     void (*naive)(const target_anchor *a, double *x);
 } target;
 
-extern const target target_table[];
+/* Indexed by target_id (catalog/targets.h). */
+extern const target target_table[TARGETS];
 extern const int target_count;
 /* The target named name; NULL if none. */
 const target *target_find(const char *name);
-/* The names in table order, NULL-terminated (max includes the NULL). */
-int target_names(const char **out, int max);
 /* How many numbers x holds for t. */
 int target_x_count(const target *t);
 /* Whether some colour row of t admits values above 1 (a colour outside the

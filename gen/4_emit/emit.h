@@ -1,4 +1,4 @@
-/* Stage 4: printing an encoded scene (scene/encoded_scene.h) as a C header
+/* Stage 4: printing an encoded scene (model/encoded_scene.h) as a C header
  * (binary32: emit_header.c, Q15: emit_q15.c, binary16: emit_f16.c), GLSL
  * (emit_glsl.c) or HLSL (emit_hlsl.c). The back ends print what the encoded
  * scene holds; none fits or encodes a value. */
@@ -8,7 +8,7 @@
 #include <stdio.h>
 
 #include "3_encode/encode.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 #include "scene/scene.h"
 
 typedef struct emit_input {

@@ -153,7 +153,7 @@ static const scene_entry *film_entry(const scene *sc)
 {
     int m;
     for (m = 0; m < sc->model_count; m++)
-        if (sc->models[m].row->offered & MODEL_FILM)
+        if (model_of(sc->models[m].row)->offered & MODEL_FILM)
             return &sc->models[m];
     return NULL;
 }

@@ -67,7 +67,7 @@ int emit_shader_check(const scene *sc, const char *manifest, const char *name, c
     char where[1100];
     int i;
     for (i = 0; i < sc->model_count; i++) {
-        const char *lacks = model_shader_lacks(sc->models[i].row, sc->spacing);
+        const char *lacks = model_shader_lacks(model_of(sc->models[i].row), sc->spacing);
         if (!lacks)
             continue;
         if (sc->spacing == LUT_GRAZING_PL) {
@@ -149,7 +149,7 @@ static int layout_build(const emit_input *in, glsl_layout *l)
             u->material = i;
             u->model = m;
             u->n = e->lut_n;
-            u->form = e->row->form;
+            u->form = model_of(e->row)->form;
             snprintf(u->name, sizeof u->name, "%s", e->ident);
             u->t = emit_lut(in, i, m)->f32;
             l->count++;
@@ -246,14 +246,14 @@ void emit_shader_film_table(FILE *f, const emit_input *in, int i, const char *pr
 const char *emit_shader_more_params(const scene_entry *e, const char *float_type)
 {
     static char buf[64];
-    if (!(e->row->offered & MODEL_FILM))
+    if (!(model_of(e->row)->offered & MODEL_FILM))
         return "";
     snprintf(buf, sizeof buf, ", %s d_nm", float_type);
     return buf;
 }
 
 /* vec3 <prefix>_<model>_rgb(c): the model for this material, as
- * gen/scene/encoded_scene.c evaluates it with the C runtime. */
+ * gen/model/encoded_scene.c evaluates it with the C runtime. */
 static void emit_model_function(FILE *f, const char *scene_prefix, const char *prefix, const scene_entry *e,
                                 const glsl_lut *u, lut_spacing spacing)
 {
@@ -272,9 +272,9 @@ static void emit_model_function(FILE *f, const char *scene_prefix, const char *p
                 kind, f0, scene_prefix, prefix, u->name, u->n);
         return;
     }
-    fputs(e->row->offered & MODEL_FILM ? "    " : "    return ", f); /* the film's is a body */
-    emit_shader_model_expr(f, prefix, e->row);
-    fputs(e->row->offered & MODEL_FILM ? "\n}\n" : ";\n}\n", f);
+    fputs(model_of(e->row)->offered & MODEL_FILM ? "    " : "    return ", f); /* the film's is a body */
+    emit_shader_model_expr(f, prefix, model_of(e->row));
+    fputs(model_of(e->row)->offered & MODEL_FILM ? "\n}\n" : ";\n}\n", f);
 }
 
 static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, const char *guard)
@@ -398,14 +398,14 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
         }
         for (m = 0; m < sc->model_count; m++) {
             const scene_entry *e = &sc->models[m];
-            if (e->row->offered & MODEL_FILM) { /* const arrays only: none in GLSL ES 1.00 */
+            if (model_of(e->row)->offered & MODEL_FILM) { /* const arrays only: none in GLSL ES 1.00 */
                 char open[32];
                 snprintf(open, sizeof open, "float[%d](", FILM_FLOATS);
                 fputs("#if FRESNEL_LUT_ARRAYS\n", f);
                 emit_shader_film_table(f, in, i, prefix, e, "const FRESNEL_HIGHP float", open, ")");
             }
             emit_model_function(f, scene_prefix, prefix, e, layout_find(&l, i, m), spacing);
-            if (e->row->offered & MODEL_FILM)
+            if (model_of(e->row)->offered & MODEL_FILM)
                 fputs("#endif\n", f);
         }
     }

@@ -137,7 +137,7 @@ int emit_header(FILE *f, const emit_input *in)
         fprintf(f, " %s", sc->models[m].name);
     fprintf(f, "; number types:");
     for (m = 0; m < sc->type_count; m++)
-        fprintf(f, " %s", sc->types[m]->name);
+        fprintf(f, " %s", number_type_catalog[sc->types[m]].name);
     fprintf(f, ".\n");
     emit_material_list(f, in);
     fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_H\n#define FRESNEL_SCENE_%s_H\n\n", guard, guard);
@@ -145,7 +145,7 @@ int emit_header(FILE *f, const emit_input *in)
      * is already in (a single-file runtime, ports/single.sh, holds it). */
     for (k = 0; k < NUMBER_TYPES; k++)
         if (scene_has_type(sc, emit_types[k].type))
-            include_guarded(f, number_types[emit_types[k].type].header);
+            include_guarded(f, number_type_catalog[emit_types[k].type].header);
     if (in->films)
         include_guarded(f, "fresnel_film.h");
     fputc('\n', f);

@@ -31,7 +31,7 @@ static void hlsl_lut(FILE *f, const emit_input *in, int i, int m, const char *pr
     fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue), uniform in %s,\n"
                " * fitted to the ground truth through %s interpolation. */\n",
             e->ident, n, in->sc->spacing == LUT_UNIFORM ? "cos theta" : "sqrt(cos theta), from grazing to normal",
-            e->row->form == LUT_CUBIC ? "Catmull-Rom" : "linear");
+            model_of(e->row)->form == LUT_CUBIC ? "Catmull-Rom" : "linear");
     fprintf(f, "static const float %s_%s[%d] = {", prefix, e->ident, 3 * n);
     for (k = 0; k < 3 * n; k++) {
         fputs(k % 6 == 0 ? "\n    " : " ", f);
@@ -67,15 +67,15 @@ int emit_hlsl(FILE *f, const emit_input *in)
             const scene_entry *e = &sc->models[m];
             if (e->lut_n)
                 hlsl_lut(f, in, i, m, prefix);
-            if (e->row->offered & MODEL_FILM)
+            if (model_of(e->row)->offered & MODEL_FILM)
                 emit_shader_film_table(f, in, i, prefix, e, "static const float", "{", "}");
             fprintf(f, "float3 %s_%s_rgb(float c%s)\n{\n    %s", prefix, e->ident, emit_shader_more_params(e, "float"),
-                    e->row->offered & MODEL_FILM ? "" : "return "); /* the film's is a body */
+                    model_of(e->row)->offered & MODEL_FILM ? "" : "return "); /* the film's is a body */
             if (e->lut_n)
-                emit_shader_lut_array_call(f, prefix, e->ident, e->lut_n, e->row->form, sc->spacing);
+                emit_shader_lut_array_call(f, prefix, e->ident, e->lut_n, model_of(e->row)->form, sc->spacing);
             else
-                emit_shader_model_expr(f, prefix, e->row);
-            fputs(e->row->offered & MODEL_FILM ? "\n}\n" : ";\n}\n", f);
+                emit_shader_model_expr(f, prefix, model_of(e->row));
+            fputs(model_of(e->row)->offered & MODEL_FILM ? "\n}\n" : ";\n}\n", f);
         }
     }
     fprintf(f, "\n#endif\n");

@@ -18,7 +18,7 @@ static void targets_comment(FILE *f, const emit_input *in, int material)
                " * Fresnel formula to the ground truth above; CIEDE2000 over theta 0-90 deg, mean / max:\n",
             p->info.id);
     for (i = 0; i < sc->target_count; i++) {
-        const target *t = sc->targets[i];
+        const target *t = &target_table[sc->targets[i]];
         const target_fit *fit = &in->fits[material * sc->target_count + i];
         for (k = n = 0; k < t->param_count; k++) {
             fprintf(f, " *   %-12s %-16s", k ? "" : t->name, t->param[k].name);

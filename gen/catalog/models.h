@@ -35,6 +35,9 @@
 #include "fresnel_film.h"
 #include "fresnel_q15.h"
 
+/* The most nodes a scene LUT has (scene/scene.h: SCENE_LUT_MAX). */
+#define MODEL_LUT_NODES_MAX 256
+
 /* Where a row is offered. */
 #define MODEL_EVAL 1u  /* a function of eta, kappa, c: `fresnel eval`, `extremes`, the bound tests */
 #define MODEL_SCENE 2u /* a scene model: manifests, `gen`, `curve`, `report`, `bench` */
@@ -134,9 +137,46 @@ typedef enum model_eta { ETA_FIT, ETA_GAUSS, ETA_POINT, ETA_SOURCES } model_eta;
     X(lut_cubic, .name = "lutN-cubic", .offered = MODEL_SCENE | MODEL_LUT, .form = LUT_CUBIC,                          \
       .cross_row = "lut-cubic u16")
 
-/* Every row's index in the evaluator tables. */
+/* Every row's index: in model_catalog below, the registry's rows and every
+ * evaluator table. */
 #define MODEL_ROW_ID(id, ...) MODEL_ROW_##id,
 typedef enum model_row_id { MODEL_CATALOG(MODEL_ROW_ID) LUT_CATALOG(MODEL_ROW_ID) MODEL_ROWS } model_row_id;
 #undef MODEL_ROW_ID
+/* The first LUT row: the rows before it are MODEL_CATALOG's. */
+#define MODEL_ROW_FIRST_LUT MODEL_ROW_lut
+
+/* The fields of a row, shared by model_catalog and the registry's rows
+ * (model/registry.h), which add the evaluators. */
+#define MODEL_FACTS                                                                                                    \
+    const char *name;                                                                                                  \
+    unsigned offered;                                                                                                  \
+    const char *params;                                                                                                \
+    float bound;                                                                                                       \
+    double q15_bound, f16_bound;                                                                                       \
+    unsigned reads, q15_reads;                                                                                         \
+    model_eta eta;                                                                                                     \
+    lut_form form;                                                                                                     \
+    int uniform;                                                                                                       \
+    const char *glsl;                                                                                                  \
+    const char *cross_row;
+
+typedef struct model_facts {
+    MODEL_FACTS
+} model_facts;
+
+/* Every row as data, in model_row_id order (catalog.c). */
+extern const model_facts model_catalog[MODEL_ROWS];
+
+/* A scene model's name read, the one place a name is: the row of a
+ * MODEL_SCENE name, or for "lutN", "lutN-residual", "lutN-cubic" (N in
+ * lo..hi, no leading zeros) the row of its form at `spacing` with N in
+ * *lut_n (0 for the others). -1 for any other string. */
+int model_scene_id(const char *name, lut_spacing spacing, int lo, int hi, int *lut_n);
+/* The LUT row of form `form` at `spacing` (a manifest may set its spacing
+ * after its models). */
+model_row_id model_lut_id(lut_form form, lut_spacing spacing);
+/* The names of the MODEL_CATALOG rows offered as `offered` (every bit),
+ * NULL-terminated (max includes the NULL); returns the count. */
+int model_names(unsigned offered, const char **out, int max);
 
 #endif

@@ -3,7 +3,7 @@
  * The list is expanded by the material's record (2_derive/derive.h:
  * material_params), the encoder (3_encode/encode.h: encoded_material,
  * binary32, Q1.15 and binary16), the range check every scene passes
- * (scene/encoded_scene.c), the back ends (4_emit/emit_floats.c,
+ * (model/encoded_scene.c), the back ends (4_emit/emit_floats.c,
  * emit_f16.c, emit_q15.c) and `fresnel params`. A new parameter is a line
  * here and its derivation in 2_derive/derive_parameters.c.
  *

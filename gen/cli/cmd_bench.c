@@ -117,7 +117,7 @@ int cmd_bench(int argc, char **argv)
     for (m = 0; m < sc.material_count && strcmp(sc.materials[m], source.id); m++)
         ;
     for (i = 0; i < sc.model_count; i++)
-        if (sc.models[i].row->offered & MODEL_FILM)
+        if (model_of(sc.models[i].row)->offered & MODEL_FILM)
             source.film_n = m < sc.material_count && !nk_file ? scene_film_n(&sc, m) : sc.film_n;
     if (sc.spacing == LUT_GRAZING_PL)
         return cli_error(scene_path, "lut_spacing grazing-pl tables are Q15-only; `make cross-count` "

@@ -10,7 +10,7 @@
 #include "common/reference.h"
 #include "cli/material_options.h"
 #include "scene/scene.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 
 #define WHERE "fresnel curve"
 
@@ -106,10 +106,10 @@ int cmd_curve(int argc, char **argv)
                     return CLI_BAD_INPUT;
             } else {
                 static const char *const spacings[] = {"grazing", "uniform", NULL};
-                int k = scene_choice(spacings, val);
+                int k = catalog_choice(spacings, val);
                 if (k < 0)
                     return cli_unknown(WHERE, "--lut-spacing", val, spacings);
-                spacing = (lut_spacing)scene_choice(scene_lut_spacing_names, val);
+                spacing = (lut_spacing)catalog_choice(lut_spacing_names, val);
             }
         }
     }

@@ -51,7 +51,7 @@ static void gen_usage(FILE *out)
                  "  types = f32               number types:",
             model_lut_patterns, SCENE_LUT_MIN, SCENE_LUT_MAX);
     for (i = 0; i < number_types_available; i++)
-        fprintf(out, " %s", number_types[i].name);
+        fprintf(out, " %s", number_type_catalog[i].name);
     fprintf(out, "\n  lut_spacing = grazing     or uniform, or grazing-pl (types = q15: fresnel_lut_pl_u16_q15_fast)\n"
                  "  gamut = map               where a colour leaves the space:");
     for (i = 0; gamut_policy_names[i]; i++)

@@ -9,7 +9,7 @@
 #include "2_derive/targets.h"
 #include "common/cli.h"
 #include "cli/material_options.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 #include "scene/scene.h"
 
 #define WHERE "fresnel params"
@@ -104,7 +104,7 @@ static int print_targets(const char *which, const encoded_scene *es)
     for (i = 0; i < TARGET_ANGLES; i++)
         out_of_gamut |= !gamut_contains(raw[i]);
     if (strcmp(which, "all")) {
-        print_target(es->sc->targets[0], &es->fits[0], g, &ls, (const double(*)[3])raw, out_of_gamut);
+        print_target(&target_table[es->sc->targets[0]], &es->fits[0], g, &ls, (const double(*)[3])raw, out_of_gamut);
         return 0;
     }
     printf("# every target's fitted and naive parameters through its own formula: CIEDE2000 over theta 0-90 deg in "
@@ -113,11 +113,11 @@ static int print_targets(const char *which, const encoded_scene *es)
     printf("target,fitted_mean,fitted_max,naive_mean,naive_max%s\n", out_of_gamut ? ",fitted_mean_unclipped,fitted_max_unclipped" : "");
     for (i = 0; i < es->sc->target_count; i++) {
         const target_fit *f = &es->fits[i];
-        printf("%s,%.4f,%.4f,%.4f,%.4f", es->sc->targets[i]->name, f->fit_mean, f->fit_max, f->naive_mean,
+        printf("%s,%.4f,%.4f,%.4f,%.4f", target_table[es->sc->targets[i]].name, f->fit_mean, f->fit_max, f->naive_mean,
                f->naive_max);
         if (out_of_gamut) {
             double mean, max;
-            target_curve_de(es->sc->targets[i], &ls, (const double(*)[3])raw, f->fitted, &mean, &max);
+            target_curve_de(&target_table[es->sc->targets[i]], &ls, (const double(*)[3])raw, f->fitted, &mean, &max);
             printf(",%.4f,%.4f", mean, max);
         }
         printf("\n");
@@ -199,7 +199,7 @@ int cmd_params(int argc, char **argv)
     if (for_target)
         for (k = 0; k < target_count; k++)
             if (!strcmp(for_target, "all") || !strcmp(for_target, target_table[k].name))
-                sc->targets[sc->target_count++] = &target_table[k];
+                sc->targets[sc->target_count++] = (target_id)k;
     if ((status = encode_scene(sc, NULL, WHERE, o.data, &es)))
         goto done;
     g = es.g;

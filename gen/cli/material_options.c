@@ -52,7 +52,7 @@ int type_option(const char *where, const char *val, const number_type **out)
 
 int gamut_option(const char *where, const char *val, gamut_policy *out)
 {
-    int i = scene_choice(gamut_policy_names, val);
+    int i = catalog_choice(gamut_policy_names, val);
     if (i < 0)
         return cli_unknown(where, "--gamut", val, gamut_policy_names);
     *out = (gamut_policy)i;

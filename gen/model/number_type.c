@@ -48,36 +48,25 @@ static void eval_f16(const model_rgb *q, double c, double rgb[3])
 static model_batch batch_f16(const model *row) { return row->f16->batch; }
 static int has_f16(const model *row) { return (row->offered & MODEL_EVAL) && row->f16->scalar != NULL; }
 static double params_f16(const model *row, const model_params *p, double c) { return row->f16->scalar(p, c); }
-#define F16_EVAL eval_f16, batch_f16, has_f16, model_params_round_f16, params_f16
+#define TYPE_EVALS_F16_AVAILABLE .eval = eval_f16, .batch = batch_f16, .has = has_f16, .round = model_params_round_f16, .eval_params = params_f16,
 #else
-#define F16_EVAL NULL, NULL, NULL, NULL, NULL
+#define TYPE_EVALS_F16_AVAILABLE
 #endif
 static double bound_f16(const model *row) { return row->f16_bound; }
 
-const number_type number_types[NUMBER_TYPES] = {
-    {TYPE_F32, "f32", NULL, "fresnel.h", "binary32 (fresnel.h)", 1, 0x1p-149, eval_f32, batch_f32, has_f32,
-     model_params_round_f32, params_f32, bound_f32},
-    {TYPE_Q15, "q15", "fixed", "fresnel_q15.h", "Q1.15 fixed point (fresnel_q15.h)", 1, 0x1p-15, eval_q15,
-     batch_q15, has_q15, model_params_round_q15, params_q15, bound_q15},
-    {TYPE_F16, "f16", NULL, "fresnel_f16.h", "binary16 (fresnel_f16.h; where the compiler has _Float16)",
-     FRESNEL_HAS_F16, 0x1p-24, F16_EVAL, bound_f16},
-};
-const int number_types_available = NUMBER_TYPES - !FRESNEL_HAS_F16;
+#define TYPE_EVALS_F32                                                                                                 \
+    .eval = eval_f32, .batch = batch_f32, .has = has_f32, .round = model_params_round_f32, .eval_params = params_f32, \
+    .bound = bound_f32
+#define TYPE_EVALS_Q15                                                                                                 \
+    .eval = eval_q15, .batch = batch_q15, .has = has_q15, .round = model_params_round_q15, .eval_params = params_q15, \
+    .bound = bound_q15
+#define TYPE_EVALS_F16 TYPE_EVALS_F16_AVAILABLE .bound = bound_f16
+#define ROW(ID, ...) {.id = TYPE_##ID, __VA_ARGS__, TYPE_EVALS_##ID},
+const number_type number_types[NUMBER_TYPES] = {NUMBER_TYPE_CATALOG(ROW)};
+#undef ROW
 
 const number_type *number_type_find(const char *name)
 {
-    int i;
-    for (i = 0; name && i < NUMBER_TYPES; i++)
-        if (!strcmp(number_types[i].name, name) || (number_types[i].alias && !strcmp(number_types[i].alias, name)))
-            return &number_types[i];
-    return NULL;
-}
-
-int number_type_names(const char **out, int max)
-{
-    int i, n = 0;
-    for (i = 0; i < number_types_available && n < max - 1; i++)
-        out[n++] = number_types[i].name;
-    out[n] = NULL;
-    return n;
+    int id = number_type_parse(name);
+    return id < 0 ? NULL : &number_types[id];
 }

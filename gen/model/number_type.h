@@ -12,20 +12,11 @@
 #ifndef FRESNEL_NUMBER_TYPE_H
 #define FRESNEL_NUMBER_TYPE_H
 
+#include "catalog/number_types.h"
 #include "model/registry.h"
 
-typedef enum number_type_id { TYPE_F32, TYPE_Q15, TYPE_F16, NUMBER_TYPES } number_type_id;
-
 typedef struct number_type {
-    number_type_id id;
-    const char *name;   /* manifests' types, --type, the report's columns */
-    const char *alias;  /* a second name accepted for it (q15: fixed), or NULL */
-    const char *header; /* the runtime header a generated header includes for it */
-    const char *what;   /* for --help */
-    /* 1 where this build has the type (binary16: the compiler's _Float16):
-     * only then does `fresnel gen` write its constants or anything evaluate it */
-    int available;
-    double lsb; /* the smallest positive cosine it represents */
+    NUMBER_TYPE_FACTS /* its catalog row (catalog/number_types.h says what each holds) */
     /* A scene model: the encoder's values (model_rgb) at cosine c, RGB. */
     void (*eval)(const model_rgb *q, double c, double rgb[3]);
     /* Its timed loop for row (bench.h's bench_batch over model_rgb). */
@@ -40,14 +31,9 @@ typedef struct number_type {
     double (*bound)(const model *row);
 } number_type;
 
-/* In number_type_id order; the available rows come first (binary16 is the
- * last), number_types_available of them. */
+/* In number_type_id order, the catalog's rows with their evaluators. */
 extern const number_type number_types[NUMBER_TYPES];
-extern const int number_types_available;
 /* The row named (or aliased) name, available or not; NULL if none. */
 const number_type *number_type_find(const char *name);
-/* The available rows' names, NULL-terminated (max includes the NULL), for
- * messages and --help. */
-int number_type_names(const char **out, int max);
 
 #endif

@@ -20,10 +20,9 @@
     {__VA_ARGS__, .ref = &model_evals_ref[MODEL_ROW_##id], .f32 = &model_evals_f32[MODEL_ROW_##id],                   \
      .q15 = &model_evals_q15[MODEL_ROW_##id], .f16 = &model_evals_f16[MODEL_ROW_##id]},
 
-const model model_table[] = {MODEL_CATALOG(ROW)};
-const int model_count = (int)(sizeof model_table / sizeof model_table[0]);
+const model model_table[MODEL_ROWS] = {MODEL_CATALOG(ROW) LUT_CATALOG(ROW)};
+const int model_count = MODEL_ROW_FIRST_LUT;
 
-static const model lut_table[] = {LUT_CATALOG(ROW)};
 const char model_lut_patterns[] = "lutN lutN-residual lutN-cubic";
 
 const char model_curve_default[] =
@@ -51,51 +50,7 @@ const model *model_find_offered(const char *name, unsigned offered)
 
 const model *model_find(const char *name) { return model_find_offered(name, MODEL_EVAL); }
 
-/* N for a LUT name (N in lo..hi), setting *form; 0 for every other string. */
-static int lut_size(const char *name, int lo, int hi, lut_form *form)
-{
-    const char *p;
-    int n = 0, digits = 0;
-    size_t i;
-    if (name == NULL || strncmp(name, "lut", 3) != 0)
-        return 0;
-    p = name + 3;
-    if (*p == '0') /* one spelling per size, so duplicates are caught by name */
-        return 0;
-    while (isdigit((unsigned char)*p) && digits < 4) {
-        n = n * 10 + (*p - '0');
-        p++;
-        digits++;
-    }
-    if (digits == 0 || n < lo || n > hi)
-        return 0;
-    /* the rest must be a LUT row's name after its "lutN" */
-    for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
-        if (!strcmp(p, lut_table[i].name + 4)) {
-            *form = lut_table[i].form;
-            return n;
-        }
-    return 0;
-}
-
-const model *model_lut_row(lut_form form, lut_spacing spacing)
-{
-    int uniform = spacing == LUT_UNIFORM;
-    size_t i;
-    for (i = 0; i < sizeof lut_table / sizeof lut_table[0]; i++)
-        if (lut_table[i].form == form && (lut_table[i].uniform == uniform || form == LUT_CUBIC))
-            return &lut_table[i];
-    return NULL;
-}
-
-const model *model_scene_parse(const char *name, lut_spacing spacing, int lo, int hi, int *lut_n)
-{
-    lut_form form;
-    *lut_n = lut_size(name, lo, hi, &form);
-    if (!name)
-        return NULL;
-    return *lut_n ? model_lut_row(form, spacing) : model_find_offered(name, MODEL_SCENE);
-}
+const model *model_of(model_row_id id) { return &model_table[id]; }
 
 const char *model_shader_lacks(const model *row, lut_spacing spacing)
 {
@@ -104,16 +59,6 @@ const char *model_shader_lacks(const model *row, lut_spacing spacing)
                                            "shader ports do not have"
                                          : NULL;
     return row->glsl ? NULL : "the shader ports have no function for it";
-}
-
-int model_names(unsigned offered, const char **out, int max)
-{
-    int i, n = 0;
-    for (i = 0; i < model_count && n < max - 1; i++)
-        if ((model_table[i].offered & offered) == offered)
-            out[n++] = model_table[i].name;
-    out[n] = NULL;
-    return n;
 }
 
 void model_derive(double eta, double kappa, double n1, double f90, double p, model_params *out)

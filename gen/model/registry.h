@@ -25,8 +25,6 @@
 /* The derived parameters a scene model reads (MP_*) and the prepared Q15
  * constants (MQ_*): catalog/parameters.h. */
 
-/* The most nodes a scene LUT has (scene.h: SCENE_LUT_MAX). */
-#define MODEL_LUT_NODES_MAX 256
 
 /* Everything any model needs. eta and kappa are relative to the incident
  * medium; the rest are derived from them by the reference (model_derive). */
@@ -97,45 +95,28 @@ extern const model_eval_f16 model_evals_f16[MODEL_ROWS];
 /* A row: the catalog's data (catalog/models.h says what each field holds)
  * and its evaluators. */
 typedef struct model {
-    const char *name;
-    unsigned offered;
-    const char *params;
-    float bound;
-    double q15_bound, f16_bound;
-    unsigned reads, q15_reads;
-    model_eta eta;
-    lut_form form;
-    int uniform;
-    const char *glsl;
-    const char *cross_row;
+    MODEL_FACTS
     const model_eval_ref *ref;
     const model_eval_f32 *f32;
     const model_eval_q15 *q15;
     const model_eval_f16 *f16;
 } model;
 
-extern const model model_table[];
+/* Every row, in model_row_id order: the MODEL_CATALOG rows (model_count of
+ * them), then the LUT rows. */
+extern const model model_table[MODEL_ROWS];
 extern const int model_count;
 /* The row named name offered as `offered`; NULL if none. */
 const model *model_find_offered(const char *name, unsigned offered);
 /* The MODEL_EVAL row named name (fresnel eval); NULL if none. */
 const model *model_find(const char *name);
-/* A scene model's name read, the one place a name is: the row of a
- * MODEL_SCENE name, or for "lutN", "lutN-residual", "lutN-cubic" (N in
- * lo..hi, no leading zeros) the row of its form at `spacing` with N in
- * *lut_n (0 for the others). NULL for any other string. */
-const model *model_scene_parse(const char *name, lut_spacing spacing, int lo, int hi, int *lut_n);
-/* The LUT row of form `form` at `spacing` (a manifest may set its spacing
- * after its models). */
-const model *model_lut_row(lut_form form, lut_spacing spacing);
+/* The row of id (a scene entry's, model_scene_id's, model_lut_id's). */
+const model *model_of(model_row_id id);
 /* Whether the shader ports (ports/glsl/fresnel.glsl, which
  * ports/hlsl/fresnel.hlsl includes, so one expression per row serves both)
  * express scene row `row` with tables spaced `spacing`: NULL, or what they
  * lack, for the back end's error message. */
 const char *model_shader_lacks(const model *row, lut_spacing spacing);
-/* The rows offered as `offered`, without LUT rows, NULL-terminated: their
- * names for messages and --help. max includes the NULL. */
-int model_names(unsigned offered, const char **out, int max);
 /* The LUT names' patterns for --help ("lutN lutN-residual lutN-cubic"). */
 extern const char model_lut_patterns[];
 

@@ -11,7 +11,7 @@
 #include "2_derive/derive.h"
 #include "model/number_type.h"
 #include "scene/scene.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 
 #define REPORT_ANGLES 91 /* theta = 0, 1, ..., 90 degrees */
 #define REPORT_MAX_TYPES 4

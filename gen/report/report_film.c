@@ -21,7 +21,7 @@ int report_film_take(report_run *r, const char *scene_path)
     report_film *f = &r->film;
     int m, i;
     memset(f, 0, sizeof *f);
-    for (m = 0; m < r->sc.model_count && !(r->sc.models[m].row->offered & MODEL_FILM); m++)
+    for (m = 0; m < r->sc.model_count && !(model_of(r->sc.models[m].row)->offered & MODEL_FILM); m++)
         ;
     if (m == r->sc.model_count)
         return 0;
@@ -166,7 +166,7 @@ void report_film_write(report_run *r, FILE *out)
     char range[96];
     if (!f->present)
         return;
-    m0 = r->cross_path && f->entry.row->cross_row ? report_m0_count(r->cross_path, f->entry.row->cross_row) : NAN;
+    m0 = r->cross_path && model_of(f->entry.row)->cross_row ? report_m0_count(r->cross_path, model_of(f->entry.row)->cross_row) : NAN;
     if (nd > 1)
         snprintf(range, sizeof range, "%d thicknesses %g-%g nm", nd, sc->film_d_lo, sc->film_d_hi);
     else

@@ -17,7 +17,7 @@ static int scene_model_index(const report_run *r, const model *def)
 {
     int m;
     for (m = 0; def && m < r->sc.model_count; m++)
-        if (r->sc.models[m].row == def)
+        if (model_of(r->sc.models[m].row) == def)
             return m;
     return -1;
 }

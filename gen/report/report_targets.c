@@ -481,7 +481,7 @@ static void film_targets(const report_run *r, FILE *out)
         fprintf(out, "| Thin film (%s) in %s against its spectral truth, the scene's materials | %s | mean %.3f, max %.3f | %s |\n",
                 f->entry.name, number_types[t].name, goal, mean, max, ok ? "**pass**" : "**MISS**");
     }
-    m0 = r->cross_path && f->entry.row->cross_row ? report_m0_count(r->cross_path, f->entry.row->cross_row) : NAN;
+    m0 = r->cross_path && model_of(f->entry.row)->cross_row ? report_m0_count(r->cross_path, model_of(f->entry.row)->cross_row) : NAN;
     if (!isnan(m0))
         fprintf(out, "| Cortex-M0 fixed point, thin film: instructions per RGB evaluation of fresnel_film_q15_rgb (qemu trace) "
                      "| <= %g | %.0f | %s |\n",

@@ -10,13 +10,10 @@
 #include <sys/types.h>
 
 #include "common/cli.h"
-#include "2_derive/targets.h"
-#include "3_encode/encode.h"
 #include "1_spectral/spectral.h"
+#include "fresnel_film.h"
 
-const char *const scene_lut_spacing_names[] = {"grazing", "uniform", "grazing-pl", NULL};
 const char *const scene_f_avg_names[] = {"no", "yes", NULL};
-const char *const gamut_policy_names[] = {"map", "clip", "keep", NULL};
 
 enum scene_key { KEY_MATERIALS, KEY_MODELS, KEY_SPACE, KEY_SIGMA, KEY_N1, KEY_TYPES,
                  KEY_LUT_SPACING, KEY_NAME, KEY_GAMUT, KEY_F_AVG, KEY_TARGETS, KEY_FILM, KEY_FILM_THICKNESS,
@@ -147,8 +144,6 @@ static char *next_token(char **cursor)
     return start;
 }
 
-int scene_choice(const char *const *names, const char *name) { return table_index(names, name); }
-
 int scene_add_model(scene *s, const char *name, const char *where)
 {
     if (s->model_count == SCENE_MAX_MODELS)
@@ -161,11 +156,12 @@ int scene_add_model(scene *s, const char *name, const char *where)
 
 int scene_entry_parse(const char *name, lut_spacing spacing, scene_entry *e)
 {
-    int i;
+    int i, row;
     memset(e, 0, sizeof *e);
     if (!name || strlen(name) >= sizeof e->name ||
-        !(e->row = model_scene_parse(name, spacing, SCENE_LUT_MIN, SCENE_LUT_MAX, &e->lut_n)))
+        (row = model_scene_id(name, spacing, SCENE_LUT_MIN, SCENE_LUT_MAX, &e->lut_n)) < 0)
         return -1;
+    e->row = (model_row_id)row;
     for (i = 0; name[i]; i++) {
         e->name[i] = name[i];
         e->ident[i] = name[i] == '-' ? '_' : name[i];
@@ -271,20 +267,20 @@ static int parse_types(const char *path, int line, char *value, scene *s)
     s->type_count = 0; /* replaces the default */
     while ((type = next_token(&cursor)) != NULL) {
         char near[SCENE_NAME_SIZE + 32];
-        const number_type *t = number_type_find(type);
-        int i;
-        if (!t)
+        int t = number_type_parse(type), i;
+        if (t < 0)
             return report(path, line, "expected a number type (one of %s), got '%s'%s",
                           table_list(available, names, sizeof names), type,
                           hint(available, type, near, sizeof near));
-        if (!t->available)
+        if (!number_type_catalog[t].available)
             return report(path, line, "expected a number type this build of fresnel writes (one of %s), got '%s': "
                           "its compiler has no _Float16 (a gcc build has it)",
                           table_list(available, names, sizeof names), type);
         for (i = 0; i < s->type_count; i++)
-            if (s->types[i] == t)
-                return report(path, line, "expected each type once, '%s' is listed twice", t->name);
-        s->types[s->type_count++] = t;
+            if ((int)s->types[i] == t)
+                return report(path, line, "expected each type once, '%s' is listed twice",
+                              number_type_catalog[t].name);
+        s->types[s->type_count++] = (number_type_id)t;
     }
     return 0;
 }
@@ -294,19 +290,18 @@ static int parse_targets(const char *path, int line, char *value, scene *s)
 {
     const char *names[SCENE_MAX_TARGETS + 1];
     char *cursor = value, *name, list[256], near[SCENE_NAME_SIZE + 32];
-    const target *t;
-    int k;
+    int t, k;
     target_names(names, SCENE_MAX_TARGETS + 1);
     while ((name = next_token(&cursor)) != NULL) {
-        if (!(t = target_find(name)))
+        if ((t = target_parse(name)) < 0)
             return report(path, line, "expected a renderer target (one of %s), got '%s'%s",
                           table_list(names, list, sizeof list), name, hint(names, name, near, sizeof near));
         for (k = 0; k < s->target_count; k++)
-            if (s->targets[k] == t)
+            if ((int)s->targets[k] == t)
                 return report(path, line, "expected each target once, '%s' is listed twice", name);
         if (s->target_count == SCENE_MAX_TARGETS)
             return report(path, line, "expected at most %d targets", SCENE_MAX_TARGETS);
-        s->targets[s->target_count++] = t;
+        s->targets[s->target_count++] = (target_id)t;
     }
     return 0;
 }
@@ -416,7 +411,7 @@ static int parse_value(const char *path, int line, int key, char *value, scene *
         snprintf(s->space, sizeof s->space, "%s", colour_space_ids[i]);
         return 0;
     case KEY_LUT_SPACING:
-        if (parse_choice(path, line, "LUT spacing", scene_lut_spacing_names, value, &i))
+        if (parse_choice(path, line, "LUT spacing", lut_spacing_names, value, &i))
             return CLI_BAD_INPUT;
         s->spacing = (lut_spacing)i;
         return 0;
@@ -443,7 +438,7 @@ void scene_defaults(scene *s)
     strcpy(s->space, "srgb");
     s->spacing = LUT_GRAZING;
     s->gamut = GAMUT_MAP;
-    s->types[0] = &number_types[TYPE_F32];
+    s->types[0] = TYPE_F32;
     s->type_count = 1;
     s->sigma = 25.0;
     s->n1 = 1.0;
@@ -492,7 +487,7 @@ static int check_film(const char *path, int last, const scene *s)
 {
     int i, k, film = -1, first = s->film_line ? s->film_line : (s->film_count ? s->film_material_line[0] : 0);
     for (i = 0; i < s->model_count; i++)
-        if (s->models[i].row->offered & MODEL_FILM)
+        if (model_catalog[s->models[i].row].offered & MODEL_FILM)
             film = i;
     if (film < 0) {
         if (first || s->film_thickness_line)
@@ -589,7 +584,7 @@ int scene_load(const char *path, scene *out)
     if (out->models_line == 0)
         return report(path, line > 0 ? line : 1,
                       "expected a 'models = name ...' line, the required key is missing");
-    if (out->spacing == LUT_GRAZING_PL && (out->type_count != 1 || out->types[0]->id != TYPE_Q15))
+    if (out->spacing == LUT_GRAZING_PL && (out->type_count != 1 || out->types[0] != TYPE_Q15))
         return report(path, out->lut_spacing_line ? out->lut_spacing_line : 1,
                       "expected types = q15 with lut_spacing grazing-pl (its tables are for "
                       "fresnel_lut_pl_u16_q15_fast only)");
@@ -599,36 +594,26 @@ int scene_load(const char *path, scene *out)
         scene_entry *e = &out->models[m];
         if (!e->lut_n)
             continue;
-        if (out->spacing == LUT_GRAZING_PL && (e->row->form != LUT_PLAIN || e->lut_n > 64))
+        if (out->spacing == LUT_GRAZING_PL && (model_catalog[e->row].form != LUT_PLAIN || e->lut_n > 64))
             return report(path, out->models_line,
                           "expected lutN with N <= 64 and no -cubic or -residual with lut_spacing grazing-pl, "
                           "got '%s'",
                           e->name);
-        if (out->spacing == LUT_UNIFORM && e->row->form == LUT_CUBIC)
+        if (out->spacing == LUT_UNIFORM && model_catalog[e->row].form == LUT_CUBIC)
             return report(path, out->models_line,
                           "expected lut_spacing grazing with '%s' (the cubic reads nodes uniform in "
                           "sqrt(cos theta)), lut_spacing is uniform at line %d",
                           e->name, out->lut_spacing_line);
-        e->row = model_lut_row(e->row->form, out->spacing);
+        e->row = model_lut_id(model_catalog[e->row].form, out->spacing);
     }
     return 0;
-}
-
-material_source scene_material(const scene *sc, int i)
-{
-    material_source m;
-    m.id = sc->materials[i];
-    m.path = sc->material_file[i][0] ? sc->material_file[i] : NULL;
-    m.format = sc->material_format[i];
-    m.film_n = scene_film_n(sc, i);
-    return m;
 }
 
 double scene_film_n(const scene *sc, int i)
 {
     int k, film = 0;
     for (k = 0; k < sc->model_count; k++)
-        film |= (sc->models[k].row->offered & MODEL_FILM) != 0;
+        film |= (model_catalog[sc->models[k].row].offered & MODEL_FILM) != 0;
     for (k = 0; film && k < sc->film_count; k++)
         if (!strcmp(sc->film_material[k], sc->materials[i]))
             return sc->film_material_n[k];
@@ -640,7 +625,7 @@ unsigned scene_reads(const scene *sc, int q15)
     unsigned reads = 0;
     int m;
     for (m = 0; m < sc->model_count; m++)
-        reads |= q15 ? sc->models[m].row->q15_reads : sc->models[m].row->reads;
+        reads |= q15 ? model_catalog[sc->models[m].row].q15_reads : model_catalog[sc->models[m].row].reads;
     return reads;
 }
 
@@ -657,7 +642,7 @@ int scene_has_type(const scene *sc, number_type_id type)
 {
     int i;
     for (i = 0; i < sc->type_count; i++)
-        if (sc->types[i]->id == type)
+        if (sc->types[i] == type)
             return 1;
     return 0;
 }

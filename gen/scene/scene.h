@@ -21,8 +21,8 @@
  *                material; repeatable.
  *                At least one material in all, at most 64, each id once.
  *   models       required. Whitespace-separated, no duplicates, each the
- *                name of a MODEL_SCENE row of the model registry
- *                (model/registry.c: `fresnel gen --help` lists them) or a
+ *                name of a MODEL_SCENE row of the model catalog
+ *                (catalog/models.h: `fresnel gen --help` lists them) or a
  *                lookup table `lutN` / `lutN-residual` / `lutN-cubic` with N an
  *                integer in SCENE_LUT_MIN..SCENE_LUT_MAX written without
  *                leading zeros (lut16, lut32-residual, lut16-cubic). At most
@@ -37,10 +37,10 @@
  *   n1           optional, default 1; real index of the incident medium, a
  *                finite number in [1, 4].
  *   types        optional, default f32; whitespace-separated names of the
- *                number type registry (model/number_type.c: f32, q15 or
+ *                number type catalog (catalog/number_types.h: f32, q15 or
  *                its second name fixed, and f16 where the generator's
  *                compiler has _Float16), no duplicates.
- *   lut_spacing  optional, default grazing; one of scene_lut_spacing_names[]:
+ *   lut_spacing  optional, default grazing; one of lut_spacing_names[]:
  *                grazing (LUT nodes uniform in sqrt(cos theta), denser
  *                towards cos theta = 0), uniform (nodes uniform in cos theta) or
  *                grazing-pl (uniform in a 64-piece linear stand-in for
@@ -77,7 +77,7 @@
  *                the viewer's slider spans. Default: 0 5000, the whole range
  *                the runtime takes (thickness left to run time).
  *   targets      optional; whitespace-separated renderers, each once, from
- *                the targets of `fresnel params --for` (2_derive/targets.h:
+ *                the targets of `fresnel params --for` (catalog/targets.h:
  *                openpbr materialx blender unreal gltf filament
  *                gulbrandsen). Each material's section of the header then
  *                opens with a comment giving the parameters each of them
@@ -115,10 +115,11 @@
 #ifndef FRESNEL_SCENE_H
 #define FRESNEL_SCENE_H
 
-#include "2_derive/targets.h"
-#include "3_encode/encode.h"
-#include "model/number_type.h"
-#include "model/registry.h"
+#include "1_spectral/spectral.h"
+#include "catalog/choices.h"
+#include "catalog/models.h"
+#include "catalog/number_types.h"
+#include "catalog/targets.h"
 
 #define SCENE_MAX_MATERIALS 64
 #define SCENE_ID_SIZE 32 /* material id, NUL included: matches material_info.id */
@@ -130,23 +131,18 @@
 #define SCENE_PREFIX_SIZE 41 /* scene name, NUL included */
 #define SCENE_PATH_SIZE 1024 /* a material file's path as resolved, NUL included */
 
-/* The vocabulary, NULL-terminated, for reuse in --help text (colour spaces:
- * colour_space_ids in spectral.h; models: the registry's MODEL_SCENE rows,
- * model_names, and its LUT patterns; number types: number_type_names). */
-extern const char *const scene_lut_spacing_names[]; /* in lut_spacing's order */
-extern const char *const scene_f_avg_names[];       /* "no", "yes" */
-extern const char *const gamut_policy_names[];      /* "map", "clip", "keep", NULL: in gamut_policy's order */
-/* The index of name in a NULL-terminated vocabulary above, or -1: the one
- * reading of a spacing or policy name (manifests, --lut-spacing, --gamut). */
-int scene_choice(const char *const *names, const char *name);
+/* The vocabulary is the catalog's (gen/catalog/: models, number types,
+ * targets, LUT spacings, gamut policies) and colour_space_ids in
+ * spectral.h; the parser needs nothing else. */
+extern const char *const scene_f_avg_names[]; /* "no", "yes" */
 
-/* One model of a manifest, read once by the parser (the registry reads the
- * name: model_scene_parse); nothing after the parser looks at the name but
+/* One model of a manifest, read once by the parser (the catalog reads the
+ * name: model_scene_id); nothing after the parser looks at the name but
  * to print it. */
 typedef struct scene_entry {
     char name[SCENE_NAME_SIZE];  /* as written: "lut16-residual" */
     char ident[SCENE_NAME_SIZE]; /* the same as a C identifier part: "lut16_residual" */
-    const model *row;            /* its registry row; a LUT's: the row of its form at the scene's spacing */
+    model_row_id row;            /* its catalog row (model_of: its registry row); a LUT's: its form's at the scene's spacing */
     int lut_n;                   /* a LUT's nodes per channel; 0 for the other models */
 } scene_entry;
 /* Read a model name (a manifest's or a command's) at spacing: 0, or -1 for a
@@ -167,13 +163,13 @@ typedef struct scene {
     int model_count;
     scene_entry models[SCENE_MAX_MODELS];
     int type_count;
-    const number_type *types[NUMBER_TYPES]; /* in the file's order */
+    number_type_id types[NUMBER_TYPES]; /* in the file's order */
     char space[SCENE_NAME_SIZE]; /* a colour_space_ids entry */
     lut_spacing spacing;
     gamut_policy gamut;
     int f_avg; /* 1: emit each material's F_avg */
-    int target_count; /* other renderers (2_derive/targets.h), in the file's order */
-    const target *targets[SCENE_MAX_TARGETS];
+    int target_count; /* other renderers (catalog/targets.h), in the file's order */
+    target_id targets[SCENE_MAX_TARGETS];
     double sigma; /* nm */
     double n1;
     /* The thin-film model's film: the film key (0 when not given), the
@@ -206,9 +202,6 @@ int scene_name_ok(const char *name);
 /* The scene name derived from a manifest's path, as FORMAT describes. */
 void scene_name_from_path(const char *path, char out[SCENE_PREFIX_SIZE]);
 
-/* Material i as derive_parameters takes it (pointing into sc), with its
- * film's index where the scene has the thin-film model. */
-material_source scene_material(const scene *sc, int i);
 /* The index of material i's film (its own line, else the film key); 0
  * where the scene has no film. */
 double scene_film_n(const scene *sc, int i);
@@ -216,7 +209,7 @@ double scene_film_n(const scene *sc, int i);
 /* 1 if the loaded scene names this model (as written) / number type, else 0. */
 int scene_has_model(const scene *sc, const char *model);
 int scene_has_type(const scene *sc, number_type_id type);
-/* What the scene's models read: the union of their registry rows' MP_* bits
+/* What the scene's models read: the union of their catalog rows' MP_* bits
  * (q15 0) or MQ_* bits (q15 1). */
 unsigned scene_reads(const scene *sc, int q15);
 

@@ -24,7 +24,7 @@
 #include "4_emit/emit_glsl.h"
 #include "bench/bench.h"
 #include "report/report.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 
 #define WHERE "fresnel viewer"
 
@@ -100,7 +100,7 @@ static int film_row(const scene *sc)
 {
     int m;
     for (m = 0; m < sc->model_count; m++)
-        if (sc->models[m].row->offered & MODEL_FILM)
+        if (model_of(sc->models[m].row)->offered & MODEL_FILM)
             return m;
     return -1;
 }
@@ -148,7 +148,7 @@ static void write_select(FILE *f, const emit_loaded *l)
         fprintf(f, "#if !defined(FRESNEL_VIEWER_MATERIAL) || FRESNEL_VIEWER_MATERIAL == %d\n", i);
         fprintf(f, "    if (mat == %d) {\n", i);
         for (m = 0; m < l->sc->model_count; m++) {
-            int film = (l->sc->models[m].row->offered & MODEL_FILM) != 0;
+            int film = (model_of(l->sc->models[m].row)->offered & MODEL_FILM) != 0;
             fprintf(f, "%s        if (model == %d)\n            return fresnel_%s_%s_%s_rgb(c%s);\n%s",
                     film ? "#if FRESNEL_LUT_ARRAYS\n" : "", m, l->name, l->sc->materials[i], l->sc->models[m].ident,
                     film ? ", u_film_d" : "", film ? "#endif\n" : "");
@@ -198,7 +198,7 @@ static void write_cost(FILE *f, const emit_loaded *l, int m, const char *cross_p
         used = (size_t)snprintf(cost, sizeof cost, "%.1f ns per RGB call here (binary32, %s)", ns, bench_compiler());
     if (!isnan(m0) && used < sizeof cost)
         snprintf(cost + used, sizeof cost - used, "; %.0f instructions per %s on the Cortex-M0 (Q15)", m0,
-                 l->sc->models[m].row->offered & MODEL_FILM ? "RGB call" : "channel");
+                 model_of(l->sc->models[m].row)->offered & MODEL_FILM ? "RGB call" : "channel");
     put_json_string(f, cost);
 }
 

@@ -60,8 +60,10 @@ static void check_scene(const scene *s)
                 FUZZ_FAIL("model '%s' accepted twice", e->name);
     }
     for (i = 0; i < s->type_count && i < NUMBER_TYPES; i++)
-        if (!s->types[i] || s->types[i] != number_type_find(s->types[i]->name) || !s->types[i]->available)
-            FUZZ_FAIL("type %d: not an available row of the number type registry", i);
+        if (!((unsigned)s->types[i] < NUMBER_TYPES) ||
+            number_type_parse(number_type_catalog[s->types[i]].name) != (int)s->types[i] ||
+            !number_type_catalog[s->types[i]].available)
+            FUZZ_FAIL("type %d: not an available row of the number type catalog", i);
     if (memchr(s->space, '\0', SCENE_NAME_SIZE) == NULL || !in_table(colour_space_ids, s->space))
         FUZZ_FAIL("unknown space accepted");
     if (!((unsigned)s->spacing <= LUT_GRAZING_PL) || !((unsigned)s->gamut <= GAMUT_KEEP))

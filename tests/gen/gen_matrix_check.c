@@ -715,7 +715,7 @@ static int curve_mode(const char *scene_path, const char *csv_path, const char *
             double want[3];
             memset(&sm, 0, sizeof sm);
             sm.lut.n = sc.models[m].lut_n;
-            sm.lut.form = sc.models[m].row->form;
+            sm.lut.form = model_of(sc.models[m].row)->form;
             sm.lut.spacing = sc.spacing;
             if (hdr_eval(&hm, sc.models[m].name, &sm, type->id, c, film_d, want)) {
                 printf("FAIL gen matrix %s: %s %s: not in the header or not known to the checker\n", label,

@@ -8,7 +8,7 @@
 #include "3_encode/encode.h"
 #include "harness.h"
 #include "common/reference.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 
 static const char *const metals[] = {"ag", "cu", "au", "commercial_bronze", "brass", "al", "pd",
                                      "ni", "ti",  "hg", "pt", "fe", "zn", "cr", "pb", "w", NULL};

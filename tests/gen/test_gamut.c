@@ -25,7 +25,7 @@
 #include "fresnel_fixed.h"
 #include "harness.h"
 #include "report/report.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 
 static const char *const metals[] = {"ag", "cu", "au", "commercial_bronze", "brass", "al", "pd",
                                      "ni", "ti", "hg", "pt", "fe", "zn", "cr", NULL};

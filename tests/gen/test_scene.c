@@ -10,6 +10,7 @@
 #include "common/cli.h"
 #include "harness.h"
 #include "scene/scene.h"
+#include "2_derive/derive.h"
 #include "1_spectral/spectral.h"
 
 static char tmp_dir[] = "/tmp/test_scene.XXXXXX";
@@ -126,16 +127,16 @@ static void test_full_manifest(void)
         ok = !strcmp(s.models[i].name, models[i]);
     CHECK("scene full: models in file order", ok, "count %d", s.model_count);
     CHECK("scene full: models typed once (row, nodes, identifier; LUT rows at the scene's spacing)",
-          s.models[2].row == model_find_offered("lsk-comp", MODEL_SCENE) && s.models[2].lut_n == 0 &&
+          s.models[2].row == MODEL_ROW_lsk_comp && s.models[2].lut_n == 0 &&
               !strcmp(s.models[2].ident, "lsk_comp") && s.models[11].lut_n == 256 &&
-              s.models[11].row == model_lut_row(LUT_RESIDUAL, LUT_UNIFORM) &&
-              s.models[11].row != model_lut_row(LUT_RESIDUAL, LUT_GRAZING) &&
+              s.models[11].row == model_lut_id(LUT_RESIDUAL, LUT_UNIFORM) &&
+              s.models[11].row != model_lut_id(LUT_RESIDUAL, LUT_GRAZING) &&
               !strcmp(s.models[11].ident, "lut256_residual"),
           "lsk-comp %s, lut256-residual %d %s", s.models[2].ident, s.models[11].lut_n, s.models[11].ident);
     CHECK("scene full: space", !strcmp(s.space, "display-p3"), "'%s'", s.space);
     CHECK("scene full: sigma", s.sigma == 12.5, "%g", s.sigma);
     CHECK("scene full: n1", s.n1 == 1.33, "%g", s.n1);
-    CHECK("scene full: types", s.type_count == 1 && s.types[0]->id == TYPE_F32, "count %d",
+    CHECK("scene full: types", s.type_count == 1 && s.types[0] == TYPE_F32, "count %d",
           s.type_count);
     CHECK("scene full: lut_spacing", s.spacing == LUT_UNIFORM, "%d", (int)s.spacing);
     CHECK("scene full: key lines",
@@ -158,7 +159,7 @@ static void test_defaults(void)
         return;
     CHECK("scene defaults: values",
           !strcmp(s.space, "srgb") && s.sigma == 25.0 && s.n1 == 1.0 && s.type_count == 1 &&
-              s.types[0]->id == TYPE_F32 && s.spacing == LUT_GRAZING && s.gamut == GAMUT_MAP,
+              s.types[0] == TYPE_F32 && s.spacing == LUT_GRAZING && s.gamut == GAMUT_MAP,
           "space %s sigma %g n1 %g types %d lut_spacing %d gamut %d", s.space, s.sigma, s.n1,
           s.type_count, (int)s.spacing, (int)s.gamut);
     CHECK("scene defaults: lines 0 where defaulted, set where given",
@@ -194,12 +195,12 @@ static void test_accepted_values(void)
                         &s) == 0 && s.spacing == LUT_GRAZING;
     CHECK("scene lut_spacing grazing accepted", ok, "%s", last_message);
     ok = load_capturing(write_manifest("materials = a\nmodels = exact\ntypes = fixed f32\n"), &s) == 0 &&
-         s.type_count == 2 && s.types[0] == &number_types[TYPE_Q15] && s.types[1] == &number_types[TYPE_F32];
+         s.type_count == 2 && s.types[0] == TYPE_Q15 && s.types[1] == TYPE_F32;
     CHECK("scene types: rows of the number type registry in file order, fixed, the second name of q15", ok, "%s",
           last_message);
     ok = load_capturing(write_manifest("materials = a\nmodels = exact\ntypes = f16\n"), &s) == 0;
     CHECK("scene types = f16 accepted where the build has _Float16, refused with a reason where not",
-          FRESNEL_HAS_F16 ? ok && s.type_count == 1 && s.types[0]->id == TYPE_F16
+          FRESNEL_HAS_F16 ? ok && s.type_count == 1 && s.types[0] == TYPE_F16
                           : !ok && strstr(last_message, "_Float16") != NULL,
           "%s", last_message);
 
@@ -224,8 +225,8 @@ static void test_renderer_targets(void)
     scene s;
     int rc = load_capturing(write_manifest("materials = a\nmodels = exact\ntargets = openpbr  gltf\tgulbrandsen\n"),
                             &s);
-    CHECK("scene targets: listed in order", rc == 0 && s.target_count == 3 && !strcmp(s.targets[0]->name, "openpbr") &&
-                                                 !strcmp(s.targets[1]->name, "gltf") && !strcmp(s.targets[2]->name, "gulbrandsen") &&
+    CHECK("scene targets: listed in order", rc == 0 && s.target_count == 3 && !strcmp(target_catalog_names[s.targets[0]], "openpbr") &&
+                                                 !strcmp(target_catalog_names[s.targets[1]], "gltf") && !strcmp(target_catalog_names[s.targets[2]], "gulbrandsen") &&
                                                  s.targets_line == 3,
           "rc %d count %d: %s", rc, s.target_count, last_message);
     rc = load_capturing(write_manifest("materials = a\nmodels = exact\n"), &s);
@@ -259,7 +260,7 @@ static void test_lut_names(void)
         int size, form = -1;
         size = scene_entry_parse(cases[i].name, LUT_GRAZING, &e) ? 0 : e.lut_n;
         if (size)
-            form = (int)e.row->form;
+            form = (int)model_catalog[e.row].form;
         snprintf(name, sizeof name, "scene lut size of '%s'", cases[i].name);
         CHECK(name, size == cases[i].size && (size == 0 || form == cases[i].residual), "got N %d form %d", size,
               form);
@@ -394,7 +395,7 @@ static void test_film(void)
         CHECK("scene film: the film key, each material's own film (before its materials line), the range",
               s.film_n == 1.4 && scene_film_n(&s, 0) == 2.2 && scene_film_n(&s, 1) == 1.4 &&
                   scene_film_n(&s, 2) == 1.4 && m0.film_n == 2.2 && m1.film_n == 1.4 && s.film_d_lo == 100.0 &&
-                  s.film_d_hi == 750.5 && (s.models[1].row->offered & MODEL_FILM),
+                  s.film_d_hi == 750.5 && (model_catalog[s.models[1].row].offered & MODEL_FILM),
               "film %g, gold %g, bk7 %g, range %g-%g", s.film_n, scene_film_n(&s, 0), scene_film_n(&s, 1),
               s.film_d_lo, s.film_d_hi);
     }

@@ -1,7 +1,7 @@
 /* `fresnel gen --glsl` in a real GL pipeline: a scene's generated GLSL,
  * compiled after ports/glsl/fresnel.glsl, evaluates on the GPU (OSMesa,
  * llvmpipe) to what the C runtime computes from the same manifest
- * (gen/scene/encoded_scene.c, the evaluation `fresnel curve` and the report use),
+ * (gen/model/encoded_scene.c, the evaluation `fresnel curve` and the report use),
  * for every material and model of the scene, in GLSL 3.30, ES 3.00 and
  * ES 1.00. ES 1.00 reads the LUT models from the packed RGBA8 texture that
  * `--glsl-texture` wrote (included here as FR_TEX_HEADER, the C header a
@@ -28,7 +28,7 @@
 #include "glctx.h"
 #include "harness.h"
 #include "scene/scene.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 #include "1_spectral/spectral.h"
 
 #include FR_TEX_HEADER

@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "4_emit/emit.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 #include "viewer/viewer.h"
 
 #define PI 3.14159265358979

@@ -10,7 +10,7 @@
  * film at thicknesses 0-1195 nm scattered over the cosines, its table in a
  * storage buffer: write_main); each
  * result is compared with what the C runtime computes from the same
- * manifest (gen/scene/encoded_scene.c, the evaluation of the C header).
+ * manifest (gen/model/encoded_scene.c, the evaluation of the C header).
  *
  * Four variants, each one module per model (a specialisation constant picks
  * the material, so each pipeline compiles one function):
@@ -47,7 +47,7 @@
 #include "harness.h"
 #include "model/registry.h"
 #include "scene/scene.h"
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 #include "1_spectral/spectral.h"
 #include "vkrun.h"
 
@@ -113,7 +113,7 @@ static float film_d(int i) { return (float)((i * 157) % 256) * 4.6875f; }
  * thin film at thickness FILM_D, from the table before the cosines. */
 static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, int m)
 {
-    int i, film = (sc->models[m].row->offered & MODEL_FILM) != 0;
+    int i, film = (model_of(sc->models[m].row)->offered & MODEL_FILM) != 0;
     char id[32];
     if (hlsl)
         fprintf(f, "\n[[vk::binding(0, 0)]] StructuredBuffer<float> fr_c;\n"
@@ -345,7 +345,7 @@ int main(int argc, char **argv)
     }
     nmat = sc.material_count;
     for (m = 0; m < sc.model_count; m++)
-        highp_only &= (sc.models[m].row->offered & MODEL_FILM) != 0;
+        highp_only &= (model_of(sc.models[m].row)->offered & MODEL_FILM) != 0;
     nout = (size_t)3 * NCOS * (size_t)nmat;
     params = calloc((size_t)nmat, sizeof *params);
     spectra = calloc((size_t)nmat, sizeof *spectra);

@@ -1,5 +1,5 @@
 /* A scene through stages 1-3, once (encoded_scene.h). */
-#include "scene/encoded_scene.h"
+#include "model/encoded_scene.h"
 
 #include <float.h>
 #include <math.h>
@@ -26,7 +26,7 @@ static const char *where_at(const encoded_scene *es, int line, char where[WHERE_
 static int encode_model_tables(const scene_entry *e, lut_spacing spacing, const spectrum *s, const gen_context *g,
                                const material_params *p, scene_model *m)
 {
-    if (e->lut_n && encode_table(s, g, p, spacing, e->lut_n, e->row->form, &m->lut))
+    if (e->lut_n && encode_table(s, g, p, spacing, e->lut_n, model_of(e->row)->form, &m->lut))
         return cli_oom("scene model");
     return 0;
 }
@@ -35,7 +35,7 @@ static void scene_model_init(const scene_entry *e, scene_model *m)
 {
     memset(m, 0, sizeof *m);
     m->lut.bad = -1;
-    m->def = e->row;
+    m->def = model_of(e->row);
     strcpy(m->name, e->name);
 }
 
@@ -55,7 +55,7 @@ int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectru
     encode_material(p, &m->mat);
     if ((status = encode_model_tables(e, spacing, s, g, p, m)))
         return status;
-    if (e->row->offered & MODEL_FILM) {
+    if (model_of(e->row)->offered & MODEL_FILM) {
         if (!(p->film_n > 0.0))
             return cli_error(p->info.id, "%s needs a film (a scene's film key, curve's --film N:D)", e->name);
         if (!(m->film_owned = malloc(sizeof *m->film_owned)))
@@ -245,7 +245,7 @@ static int derive_all(encoded_scene *es)
         lab_space_init(&ls, &es->g->cs);
         target_material_curve(es->spectra[i], es->g, &es->params[i], 1, truth, &a);
         for (k = 0; k < sc->target_count; k++)
-            target_fit_curve(sc->targets[k], &ls, (const double(*)[3])truth, &a, &es->fits[i * sc->target_count + k]);
+            target_fit_curve(&target_table[sc->targets[k]], &ls, (const double(*)[3])truth, &a, &es->fits[i * sc->target_count + k]);
     }
     return 0;
 }
@@ -259,7 +259,7 @@ static int encode_all(encoded_scene *es)
     for (i = 0; i < sc->material_count; i++)
         encode_material(&es->params[i], &es->enc[i]);
     for (m = 0; m < sc->model_count; m++)
-        if (sc->models[m].row->offered & MODEL_FILM)
+        if (model_of(sc->models[m].row)->offered & MODEL_FILM)
             break;
     if (m < sc->model_count) { /* the scene has the thin-film model: every material has a film */
         if (!(es->films = malloc((size_t)sc->material_count * sizeof *es->films)))
@@ -280,7 +280,7 @@ static int encode_all(encoded_scene *es)
             scene_model *sm = &es->models[i * sc->model_count + m];
             scene_model_init(&sc->models[m], sm);
             sm->mat = es->enc[i];
-            if (sc->models[m].row->offered & MODEL_FILM)
+            if (model_of(sc->models[m].row)->offered & MODEL_FILM)
                 sm->film = &es->films[i];
             if ((status = encode_model_tables(&sc->models[m], sc->spacing, es->spectra[i], es->g, &es->params[i], sm)) ||
                 (status = lut_fits(es, i, m)))
