@@ -175,26 +175,18 @@ void emit_film_initializer(FILE *f, const encoded_film *film, number_type_id typ
 {
     film_values v;
     film_values_of(film, type, &v);
-    put_values(f, &v, type != TYPE_Q15);
+    put_values(f, &v, number_type_catalog[type].floating);
 }
 
 int emit_film(FILE *f, const emit_input *in, int mi, const char *prefix, number_type_id type)
 {
     const scene_entry *e = film_entry(in->sc);
     const encoded_film *film = in->films ? &in->films[mi] : NULL;
-    if (!e || !film || (!FRESNEL_HAS_F16 && type == TYPE_F16))
+    const number_type_facts *t = &number_type_catalog[type];
+    if (!e || !film || !t->available)
         return 0;
-    if (type == TYPE_F32) {
-        film_comment(f, in, mi, e, "binary32", "fresnel_film_rgb(&table, c, d_nm)");
-        fprintf(f, "static const fresnel_film %s_%s FRESNEL_GEN_UNUSED = ", prefix, e->ident);
-    } else if (type == TYPE_Q15) {
-        film_comment(f, in, mi, e, "Q1.15 (layout: fresnel_film.h)",
-                     "fresnel_film_q15_rgb(&table, c_q15, d_nm_q16)");
-        fprintf(f, "static const fresnel_film_q15 %s_%s_q15 FRESNEL_GEN_UNUSED = ", prefix, e->ident);
-    } else {
-        film_comment(f, in, mi, e, "binary16", "fresnel_film_f16_rgb(&table, c, d_nm)");
-        fprintf(f, "static const fresnel_film_f16 %s_%s_f16 FRESNEL_GEN_UNUSED = ", prefix, e->ident);
-    }
+    film_comment(f, in, mi, e, t->film_layout, t->film_call);
+    fprintf(f, "static const %s %s_%s%s FRESNEL_GEN_UNUSED = ", t->film_struct, prefix, e->ident, t->suffix);
     emit_film_initializer(f, film, type);
     return 0;
 }

@@ -1,14 +1,16 @@
 /* The number type registry: every number type of the runtime is one row of
- * number_types (number_type.c), holding its names, whether this build
- * evaluates it, its evaluators and its documented bounds, as the model
- * registry (registry.h) holds the models. Manifests (`types`), `fresnel
- * eval --type`, `curve --type`, `bench --type`, the report and `extremes`
- * read the rows; the header emitter writes each row's constants with the
- * back end indexed by its id (4_emit/emit_header.c: emit_types).
+ * number_types (number_type.c): its catalog row (catalog/number_types.h:
+ * names, header, smallest cosine, identifier suffix, film facts) with its
+ * evaluators, its documented bounds and how its runtime clamps parameters
+ * and takes a cosine, as the model registry (registry.h) holds the models.
+ * `fresnel eval --type`, `curve --type`, `bench --type`, the report and
+ * `extremes` read the rows; the header emitter writes each type's constants
+ * with the back end indexed by its id (4_emit/emit_header.c: emit_types).
  *
  * Adding a number type: its runtime (include/, src/), its fields in the
  * encoder (3_encode/encode.h) and evaluators in the model rows
- * (registry.c), one row here and its emitter in 4_emit/. */
+ * (registry.c), its catalog row, its line of evaluators here and its
+ * emitter in 4_emit/. */
 #ifndef FRESNEL_NUMBER_TYPE_H
 #define FRESNEL_NUMBER_TYPE_H
 
@@ -29,6 +31,24 @@ typedef struct number_type {
     void (*round)(model_params *p);
     double (*eval_params)(const model *row, const model_params *p, double c);
     double (*bound)(const model *row);
+    /* Where this type's runtime functions clamp their parameters: p (rounded
+     * by `round`) clamped the same way, so that a reference on p sees what
+     * the runtime evaluates; 1 if eta and kappa were inside the type's
+     * domain, 0 if they were clamped. */
+    int (*clamp)(model_params *p);
+    /* A cosine x as this type takes it: 1 and the cosine the runtime sees in
+     * *seen (rounded to the type; a Q1.15 code, saturated), or 0 where x has
+     * no representation (NaN in Q1.15). */
+    int (*cosine)(double x, double *seen);
+    /* A MODEL_EVAL row at a cosine from `cosine`, on p rounded and clamped
+     * (q: its Q1.15 constants, model_q15_from_params). */
+    double (*at)(const model *row, const model_params *p, const model_q15 *q, double seen);
+    /* fresnel_f82 (gulbrandsen 0) or fresnel_gulbrandsen (1) of this type
+     * called directly on a, b, c given in binary32: 1, the result in *got and
+     * in a, b, c the values it evaluated; 0 where the type cannot take them
+     * (NaN in Q1.15). direct_ref: the double reference on those values. */
+    int (*direct)(int gulbrandsen, float *a, float *b, float *c, double *got);
+    double (*direct_ref)(int gulbrandsen, float a, float b, float c);
 } number_type;
 
 /* In number_type_id order, the catalog's rows with their evaluators. */

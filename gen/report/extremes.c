@@ -38,9 +38,6 @@ const extreme_case extreme_cases[] = {
 };
 const int extreme_case_count = (int)(sizeof extreme_cases / sizeof extreme_cases[0]);
 
-/* fresnel_gulbrandsen_f16 clamps r to the largest half below 1. */
-#define F16_GULBRANDSEN_R_MAX (1.0 - 0x1p-11)
-
 /* NAN and INFINITY are float constant expressions (C99 7.12). */
 const extreme_cos extreme_cosines[] = {
     {"0", 0.0f, 0},
@@ -108,93 +105,41 @@ double extreme_f82_unclamped(double f0, double f82, double c)
     return f0 + (1.0 - f0) * pow(x, 5.0) - a * c * pow(x, 6.0);
 }
 
-/* ---- number types: one evaluator each; every table has a row (or column) per type. */
-
-static void f32_prepare(const extreme_case *e, extreme_typed *t)
-{
-    memset(t, 0, sizeof *t);
-    extreme_params(e, &t->p);
-    t->in_domain = extreme_in_measured_domain(&t->p);
-}
-static int f32_eval(const model *m, const extreme_typed *t, double x, double *got, double *ref_c)
-{
-    float c = (float)x;
-    *got = m->f32->scalar(&t->p, c);
-    *ref_c = c;
-    return 1;
-}
-
-/* Q15: cosines are codes; a finite c is round(c 32768) saturated to int32,
- * +-Inf the extreme codes; NaN has no code. The parameters are rounded to
- * the fixed-point formats and the reference sees them rounded
- * (model_params_round_q15), as tests/runtime/q15/test_q15_bounds.c does. */
-static void q15_prepare(const extreme_case *e, extreme_typed *t)
-{
-    memset(t, 0, sizeof *t);
-    model_derive(e->eta, e->kappa, e->n1, 1.0, 5.0, &t->p);
-    model_params_round_q15(&t->p);
-    model_q15_from_params(&t->p, &t->q);
-    t->in_domain = extreme_in_measured_domain(&t->p);
-    /* Gulbrandsen's r is clamped to the largest code below 0.9999, not to
-     * 0.9999 itself: the reference gets the same r. */
-    t->p.r = ref_clamp(t->p.r, 0.0, FRESNEL_GULBRANDSEN_R_MAX_Q15 / 32768.0);
-}
-int32_t extreme_q15_code(double x)
-{
-    if (x >= 2147483647.0 / 32768.0)
-        return INT32_MAX;
-    if (x <= -2147483648.0 / 32768.0)
-        return INT32_MIN;
-    return (int32_t)floor(x * 32768.0 + 0.5);
-}
-static int q15_eval(const model *m, const extreme_typed *t, double x, double *got, double *ref_c)
-{
-    int32_t code;
-    if (x != x)
-        return 0;
-    code = extreme_q15_code(x);
-    *got = m->q15->scalar(&t->q, code) / 32768.0;
-    *ref_c = code / 32768.0;
-    return 1;
-}
-
-#if FRESNEL_HAS_F16
-/* binary16: parameters rounded to half; eta and kappa outside the binary16
- * domain are clamped to it for the reference too (what the runtime
- * evaluates), and the case is marked out of domain. */
-static void f16_prepare(const extreme_case *e, extreme_typed *t)
-{
-    double eta, kappa;
-    memset(t, 0, sizeof *t);
-    model_derive(e->eta, e->kappa, e->n1, 1.0, 5.0, &t->p);
-    model_params_round_f16(&t->p);
-    eta = ref_clamp(t->p.eta, FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16);
-    kappa = ref_clamp(t->p.kappa, 0.0, FRESNEL_KAPPA_MAX_F16);
-    t->in_domain = eta == t->p.eta && kappa == t->p.kappa && extreme_in_measured_domain(&t->p);
-    t->p.eta = eta;
-    t->p.kappa = kappa;
-    /* as fresnel_gulbrandsen_f16 and fresnel_f16.h's domains of p, alpha, a */
-    t->p.r = ref_clamp(t->p.r, 0.0, F16_GULBRANDSEN_R_MAX);
-    t->p.p = ref_clamp(t->p.p, FRESNEL_P_MIN_F16, FRESNEL_P_MAX_F16);
-    t->p.a = ref_clamp(t->p.a, 0.0, 64.0);
-    t->p.alpha = ref_clamp(t->p.alpha, 0.0, FRESNEL_P_MAX_F16);
-}
-static int f16_eval(const model *m, const extreme_typed *t, double x, double *got, double *ref_c)
-{
-    *got = m->f16->scalar(&t->p, x);
-    *ref_c = (double)(fresnel_f16)x;
-    return 1;
-}
-#endif
+/* ---- number types: every table has a row (or column) per available type
+ * of the registry, whose rows say how each type clamps, takes a cosine and
+ * evaluates (model/number_type.h). */
 
 const extreme_type extreme_types[] = {
-    {&number_types[TYPE_F32], f32_prepare, f32_eval},
-    {&number_types[TYPE_Q15], q15_prepare, q15_eval},
+    {&number_types[TYPE_F32]},
+    {&number_types[TYPE_Q15]},
 #if FRESNEL_HAS_F16
-    {&number_types[TYPE_F16], f16_prepare, f16_eval},
+    {&number_types[TYPE_F16]},
 #endif
 };
 const int extreme_type_count = (int)(sizeof extreme_types / sizeof extreme_types[0]);
+
+/* The parameters are rounded to the type and clamped where its runtime
+ * clamps them (model_params_round_q15: the fixed-point formats, as
+ * tests/runtime/q15/test_q15_bounds.c does); eta and kappa outside a type's
+ * domain mark the case out of domain. */
+void extreme_prepare(const extreme_type *ty, const extreme_case *e, extreme_typed *t)
+{
+    int inside;
+    memset(t, 0, sizeof *t);
+    model_derive(e->eta, e->kappa, e->n1, 1.0, 5.0, &t->p);
+    ty->type->round(&t->p);
+    model_q15_from_params(&t->p, &t->q);
+    inside = ty->type->clamp(&t->p);
+    t->in_domain = inside && extreme_in_measured_domain(&t->p);
+}
+
+int extreme_eval(const extreme_type *ty, const model *m, const extreme_typed *t, double x, double *got, double *ref_c)
+{
+    if (!ty->type->cosine(x, ref_c))
+        return 0;
+    *got = ty->type->at(m, &t->p, &t->q, *ref_c);
+    return 1;
+}
 
 double extreme_cos_input(const extreme_type *ty, const extreme_cos *x)
 {
@@ -235,11 +180,11 @@ static void table_cosines(const extreme_case *e)
             int bad = 0;
             if (!ty->type->has(m))
                 continue;
-            ty->prepare(e, &t);
+            extreme_prepare(ty, e, &t);
             printf("| %s | %s |", m->name, ty->type->name);
             for (ci = 0; ci < extreme_cosine_count; ci++) {
                 double got, ref_c, err;
-                if (!ty->eval(m, &t, extreme_cos_input(ty, &extreme_cosines[ci]), &got, &ref_c)) {
+                if (!extreme_eval(ty, m, &t, extreme_cos_input(ty, &extreme_cosines[ci]), &got, &ref_c)) {
                     printf(" n/a |");
                     continue;
                 }
@@ -268,7 +213,7 @@ double extreme_max_err(const model *m, const extreme_type *ty, const extreme_typ
     *bad = 0;
     for (ci = 0; ci < n; ci++) {
         double got, ref_c, err;
-        if (!ty->eval(m, t, grid[ci], &got, &ref_c))
+        if (!extreme_eval(ty, m, t, grid[ci], &got, &ref_c))
             continue;
         err = fabs(got - m->ref->scalar(&t->p, ref_c));
         *bad |= !(got >= 0.0 && got <= 1.0);
@@ -304,7 +249,7 @@ static void table_cases(void)
         for (ti = 0; ti < extreme_type_count; ti++) {
             const extreme_type *ty = &extreme_types[ti];
             extreme_typed t;
-            ty->prepare(e, &t);
+            extreme_prepare(ty, e, &t);
             printf("| %s | %g | %g | %g | %s |", e->name, e->eta, e->kappa, e->n1, ty->type->name);
             for (mi = 0; mi < model_count; mi++) {
                 const model *m = &model_table[mi];
@@ -357,79 +302,21 @@ static void table_exact(void)
  * parameters, in each type: f32 as given, Q15 as raw codes round(x 32768)
  * (so 1.04 is code 34079, clamped by the runtime), binary16 rounded. NaN has
  * no Q15 code. */
-static int direct_eval(int kind, int ti, float a, float b, float c, double *got)
-{
-    switch (extreme_types[ti].type->id) {
-    case TYPE_F32:
-        *got = kind ? fresnel_gulbrandsen(a, b, c) : fresnel_f82(a, b, c);
-        return 1;
-    case TYPE_Q15: {
-        int32_t qa, qb, qc;
-        if (a != a || b != b)
-            return 0;
-        qa = extreme_q15_code(a), qb = extreme_q15_code(b), qc = extreme_q15_code(c);
-        *got = (kind ? fresnel_gulbrandsen_q15(qa, qb, qc) : fresnel_f82_q15(qa, qb, qc)) / 32768.0;
-        return 1;
-    }
-    case TYPE_F16: {
-#if FRESNEL_HAS_F16
-        fresnel_f16 ha = (fresnel_f16)a, hb = (fresnel_f16)b, hc = (fresnel_f16)c;
-        *got = (double)(kind ? fresnel_gulbrandsen_f16(ha, hb, hc) : fresnel_f82_f16(ha, hb, hc));
-        return 1;
-#else
-        return 0;
-#endif
-    }
-    default: return 0;
-    }
-}
-
-/* The inputs the reference sees for direct_eval's type. */
-static void direct_inputs(int kind, int ti, float *a, float *b, float *c)
-{
-    switch (extreme_types[ti].type->id) {
-    case TYPE_Q15:
-        /* Gulbrandsen (kind 1): r clamped as the Q15 runtime clamps it. */
-        *a = (float)(ref_clamp(extreme_q15_code(*a), 0.0, kind ? FRESNEL_GULBRANDSEN_R_MAX_Q15 : 32768.0) / 32768.0);
-        *b = (float)(ref_clamp(extreme_q15_code(*b), 0.0, 32768.0) / 32768.0);
-        *c = (float)(extreme_q15_code(*c) / 32768.0);
-        break;
-    case TYPE_F16:
-#if FRESNEL_HAS_F16
-        *a = (float)(fresnel_f16)*a;
-        if (kind)
-            *a = (float)ref_clamp(*a, 0.0, F16_GULBRANDSEN_R_MAX);
-        *b = (float)(fresnel_f16)*b;
-        *c = (float)(fresnel_f16)*c;
-#endif
-        break;
-    default: break;
-    }
-}
-
 double extreme_direct_max_err(int kind, int ti, float a0, float b0, int *bad, int *na)
 {
+    const number_type *ty = extreme_types[ti].type;
     double worst = 0.0;
     int k;
     *bad = 0;
     *na = 0;
     for (k = 0; k <= 4096; k++) {
         float a = a0, b = b0, c = (float)(k / 4096.0);
-        double got, ref, err;
-        if (!direct_eval(kind, ti, a, b, c, &got)) {
+        double got, err;
+        if (!ty->direct(kind, &a, &b, &c, &got)) {
             *na = 1;
             return 0.0;
         }
-        direct_inputs(kind, ti, &a, &b, &c);
-        ref = kind ? ref_gulbrandsen(a, b, c) : ref_f82(a, b, c);
-        if (kind && extreme_types[ti].type->id == TYPE_F16) {
-            /* fresnel_gulbrandsen_f16 clamps n and k to the binary16 domain. */
-            double n, kk;
-            ref_gulbrandsen_nk(a, b, &n, &kk);
-            ref = ref_approx_conductor(ref_clamp(n, FRESNEL_ETA_MIN_F16, FRESNEL_ETA_MAX_F16),
-                                       ref_clamp(kk, 0.0, FRESNEL_KAPPA_MAX_F16), c);
-        }
-        err = fabs(got - ref);
+        err = fabs(got - ty->direct_ref(kind, a, b, c));
         *bad |= !(got >= 0.0 && got <= 1.0);
         worst = err > worst ? err : worst;
     }

@@ -60,20 +60,20 @@ typedef struct extreme_typed {
     int in_domain;   /* the documented bound applies */
 } extreme_typed;
 typedef struct extreme_type {
-    const number_type *type; /* its row: name, smallest positive cosine, has, bound */
-    void (*prepare)(const extreme_case *e, extreme_typed *t);
-    /* The type's result at cosine x (converted to the type: rounded, or to a
-     * Q15 code) and the cosine the reference sees; 0 if x has no
-     * representation in the type (NaN in Q15). */
-    int (*eval)(const model *m, const extreme_typed *t, double x, double *got, double *ref_c);
+    const number_type *type; /* its row: name, clamps, cosines, evaluators, bounds */
 } extreme_type;
 extern const extreme_type extreme_types[];
 extern const int extreme_type_count;
 
 /* The cosine a type is given for an entry of extreme_cosines. */
 double extreme_cos_input(const extreme_type *ty, const extreme_cos *x);
-/* round(x 32768) saturated to int32 (+-Inf to the extreme codes). */
-int32_t extreme_q15_code(double x);
+/* A case's parameters as the reference sees them in type ty: derived
+ * (f90 = 1, p = 5), rounded to the type, clamped where its runtime clamps. */
+void extreme_prepare(const extreme_type *ty, const extreme_case *e, extreme_typed *t);
+/* The type's result at cosine x (converted to the type: rounded, or to a
+ * Q15 code) and the cosine the reference sees; 0 if x has no
+ * representation in the type (NaN in Q15). */
+int extreme_eval(const extreme_type *ty, const model *m, const extreme_typed *t, double x, double *got, double *ref_c);
 /* Max |result - reference| over extreme_cos_grid; *bad when a result is not
  * a number in [0, 1]. */
 double extreme_max_err(const model *m, const extreme_type *ty, const extreme_typed *t, int *bad);
