@@ -506,7 +506,7 @@ int main(int argc, char **argv)
     NOTE("table | %s | model | GLSL 4.50 highp | GLSL mediump | HLSL float | HLSL min16float | fresnel_f16.h bound |",
          ident);
     for (m = 0; m < sc.model_count; m++) {
-        const model *row = sc.models[m].row;
+        const model *row = model_of(sc.models[m].row);
         double b16 = row->f16_bound > 0.0 ? row->f16_bound
                    : models[m].lut.form == LUT_CUBIC ? FRESNEL_BOUND_LUT_CUBIC_F16
                    : models[m].lut.n > 0         ? FRESNEL_BOUND_LUT_F16
