@@ -44,7 +44,8 @@ ifneq ($(words $(TEST_BIN)),$(words $(sort $(TEST_BIN))))
 $(error two checks under tests/ share a name: $(sort $(foreach b,$(TEST_BIN),$(if $(filter-out 1,$(words $(filter $(b),$(TEST_BIN)))),$(notdir $(b))))))
 endif
 
-.PHONY: all single test test-bins check check-bins install uninstall deps clean report bench bench-run viewer
+.PHONY: all single test test-bins check check-bins install uninstall deps clean report bench bench-run viewer \
+        spirv-count
 .DELETE_ON_ERROR:
 
 # A first build ends with what it made and where (tests/repo/test_make_summary.sh).
@@ -130,13 +131,19 @@ VULKAN_TEST_SRC := tests/shader_ports/vulkan_test.c ports/vulkan/vkrun.c
 $(BUILD)/vulkan/vulkan_test: $(VULKAN_TEST_SRC) ports/vulkan/vkrun.h $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Iports/vulkan -Itests/common -o $@ $(VULKAN_TEST_SRC) $(GEN_OBJ) $(BUILD)/libfresnel.a -lvulkan $(LDLIBS)
+# The MSL port on the host (tests/shader_ports/test_msl.sh): compiles C++ with g++ and clang++ at run time.
+$(BUILD)/msl/msl_host_test: tests/shader_ports/msl_host_test.c tests/shader_ports/port_checks.h $(GEN_OBJ) \
+                            $(BUILD)/libfresnel.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_GEN) -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 $(BUILD)/tests/viewer_lit: tests/shader_ports/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 
 # make check's programs; make test's add the two that link OSMesa and Vulkan.
 check-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
-            $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit $(BUILD)/hlsl/fresnel.hlsl
+            $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit $(BUILD)/hlsl/fresnel.hlsl \
+            $(BUILD)/msl/msl_host_test $(BUILD)/msl/fresnel.metal
 test-bins: check-bins $(BUILD)/glsl/glsl_port_osmesa $(BUILD)/vulkan/vulkan_test
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with
@@ -174,18 +181,24 @@ check:
 # the speed targets from `make bench` by gcc and clang at -O2 and -O3
 # -march=native, saved as build/report/speed-COMPILER-*.txt), `make bench`
 # prints time per evaluation against the peers' algorithms (below).
+# `make spirv-count`: SPIR-V instructions per scene model (ports/vulkan/spirv_count.sh).
+spirv-count: $(BUILD)/fresnel
+	@sh ports/vulkan/spirv_count.sh $(BUILD)
+
 report: $(BUILD)/fresnel
 	@mkdir -p $(BUILD)/report
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) cross-count > $(BUILD)/report/cross-count.txt
 	$(MAKE) -s --no-print-directory BUILD=$(BUILD) size > $(BUILD)/report/size.txt
+	sh ports/vulkan/spirv_count.sh $(BUILD) > $(BUILD)/report/spirv-count.txt
 	for cc in $(BENCH_CCS); do \
 	    $(MAKE) -s --no-print-directory BUILD=$(BUILD) CC=$$cc OPT=-O2 bench-run > $(BUILD)/report/speed-$$cc-O2.txt && \
 	    $(MAKE) -s --no-print-directory BUILD=$(BUILD) CC=$$cc OPT='-O3 -march=native' bench-run \
 	        > $(BUILD)/report/speed-$$cc-O3-native.txt || exit 1; \
 	done
 	$(BUILD)/fresnel report -o $(BUILD)/report --cross $(BUILD)/report/cross-count.txt --size $(BUILD)/report/size.txt \
+	    --spirv $(BUILD)/report/spirv-count.txt \
 	    $(foreach cc,$(BENCH_CCS),--speed $(BUILD)/report/speed-$(cc)-O2.txt --speed $(BUILD)/report/speed-$(cc)-O3-native.txt)
-	@echo "make report: build/report/report.md (accuracy, speed, cross-target counts and sizes), pareto.svg, sigma.svg, curves/;"
+	@echo "make report: build/report/report.md (accuracy, speed, cross-target and SPIR-V counts, sizes), pareto.svg, sigma.svg, curves/;"
 	@echo "             build/report/targets.md (for the developers: the project's goals, each measured and marked)"
 
 # `make bench` times the library against the peers' algorithms and floor
@@ -235,7 +248,7 @@ viewer: $(BUILD)/fresnel
 # newline kept, a $ too (make's value function: not expanded by make); each
 # argument one single-quoted shell word ('it'\''s').
 shell_word = '$(subst ','\'',$(1))'
-install: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(BUILD)/hlsl/fresnel.hlsl
+install: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(BUILD)/hlsl/fresnel.hlsl $(BUILD)/msl/fresnel.metal
 	@sh ports/install.sh install $(call shell_word,$(value DESTDIR)) $(call shell_word,$(value PREFIX)) \
 	    $(call shell_word,$(BUILD))
 
@@ -252,6 +265,7 @@ clean:
 # ---- GLSL ports and OSMesa ----
 include ports/glsl/glsl.mk
 include ports/hlsl/hlsl.mk
+include ports/msl/msl.mk
 
 # ---- fuzzing ----
 # `make fuzz` runs each libFuzzer target tests/fuzz/fuzz_*.c for FUZZ_SECONDS

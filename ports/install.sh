@@ -7,8 +7,9 @@
 #   lib/cmake/fresnel/fresnelConfig.cmake + fresnelConfigVersion.cmake
 #   (imported target fresnel::fresnel), bin/fresnel, share/fresnel/data/ (the
 #   data pack, which the installed bin/fresnel finds without --data),
-#   share/fresnel/glsl/ (the GLSL port), share/fresnel/hlsl/fresnel.hlsl (the
-#   HLSL port as one file, BUILD/hlsl/fresnel.hlsl), share/fresnel/LICENSE,
+#   share/fresnel/glsl/ (the GLSL port), share/fresnel/hlsl/fresnel.hlsl and
+#   share/fresnel/msl/fresnel.metal (the HLSL and MSL ports as one file each,
+#   BUILD/hlsl/fresnel.hlsl, BUILD/msl/fresnel.metal), share/fresnel/LICENSE,
 # and share/fresnel/install_manifest.txt: one line per installed file
 # ("f PATH") and per directory the install created ("d PATH"), relative to
 # DESTDIR/PREFIX. uninstall removes exactly those files, then those
@@ -139,7 +140,7 @@ if [ "$action" != install ]; then
     echo "usage: sh ports/install.sh install DESTDIR PREFIX BUILD | uninstall DESTDIR PREFIX" >&2
     exit 2
 fi
-for f in "$build/libfresnel.a" "$build/fresnel" "$build/hlsl/fresnel.hlsl"; do
+for f in "$build/libfresnel.a" "$build/fresnel" "$build/hlsl/fresnel.hlsl" "$build/msl/fresnel.metal"; do
     [ -f "$f" ] || {
         echo "install: $f missing (make install builds it)" >&2
         exit 1
@@ -210,6 +211,8 @@ done
 for f in ports/glsl/*.glsl ports/glsl/README.md; do put 644 share/fresnel/glsl "$f"; done
 put 644 share/fresnel/hlsl "$build/hlsl/fresnel.hlsl"
 put 644 share/fresnel/hlsl ports/hlsl/README.md
+put 644 share/fresnel/msl "$build/msl/fresnel.metal"
+put 644 share/fresnel/msl ports/msl/README.md
 put 644 share/fresnel LICENSE
 echo "f $manifest_rel" >>"$list"
 {
@@ -223,7 +226,7 @@ installed fresnel $version in $root ($(grep -c '^f ' "$manifest") files, listed 
   include/            $(cd include && ls *.h | tr '\n' ' ')
   lib/                libfresnel.a; pkgconfig/fresnel.pc; the CMake package in lib/cmake/fresnel (target fresnel::fresnel)
   bin/fresnel         the generator, which reads share/fresnel/data/
-  share/fresnel/      data/ (the data pack), glsl/ and hlsl/ (the shader ports), LICENSE
+  share/fresnel/      data/ (the data pack), glsl/, hlsl/ and msl/ (the shader ports), LICENSE
 use it: pkg-config --cflags --libs fresnel   (PKG_CONFIG_PATH=$prefix/lib/pkgconfig)
         find_package(fresnel)                (CMAKE_PREFIX_PATH=$prefix)
 undo:   make uninstall PREFIX=$prefix${destdir:+ DESTDIR=$destdir}

@@ -18,6 +18,12 @@ static int print_hlsl(FILE *f, FILE *tex, const emit_input *in)
     return emit_hlsl(f, in);
 }
 
+static int print_msl(FILE *f, FILE *tex, const emit_input *in)
+{
+    (void)tex;
+    return emit_msl(f, in);
+}
+
 const emit_backend emit_backends[] = {
     {.option = NULL, .usage = "", .print = print_c,
      .help = "Without a back end's option: the C header for include/fresnel.h and the scene's\n"
@@ -31,6 +37,10 @@ const emit_backend emit_backends[] = {
     {.option = "--hlsl", .usage = "--hlsl", .shader = 1, .print = print_hlsl,
      .help = "--hlsl writes them as HLSL for ports/hlsl/fresnel.hlsl (static const float3,\n"
              "float arrays), with float3 fresnel_<scene>_<material>_<model>_rgb(float c)."},
+    {.option = "--msl", .usage = "--msl", .shader = 1, .print = print_msl,
+     .help = "--msl writes them as Metal Shading Language for ports/msl/fresnel.metal\n"
+             "(constant float3, constant float arrays), with\n"
+             "float3 fresnel_<scene>_<material>_<model>_rgb(float c)."},
 };
 const int emit_backend_count = (int)(sizeof emit_backends / sizeof emit_backends[0]);
 

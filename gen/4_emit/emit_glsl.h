@@ -2,7 +2,7 @@
  * function per material and model as GLSL for ports/glsl/fresnel.glsl
  * (emit_glsl.c), and the packed RGBA8 LUT texture that GLSL ES 1.00 reads
  * instead of const arrays; `fresnel gen --hlsl`: the same as HLSL for
- * ports/hlsl/fresnel.hlsl (emit_hlsl.c). */
+ * ports/hlsl/fresnel.hlsl and ports/msl/fresnel.metal (emit_braced.c). */
 #ifndef FRESNEL_EMIT_GLSL_H
 #define FRESNEL_EMIT_GLSL_H
 
@@ -17,7 +17,7 @@
  * was expected". name is the scene's identifier part (fresnel_<name>_...). */
 int emit_shader_check(const scene *sc, const char *manifest, const char *name, const char *flag);
 
-/* Shared by the GLSL and HLSL back ends (emit_glsl.c, emit_hlsl.c), whose
+/* Shared by the GLSL, HLSL and MSL back ends (emit_glsl.c, emit_braced.c), whose
  * ports are one source (ports/glsl/fresnel.glsl, which the HLSL port
  * includes), so the function and macro names are the same:
  *   emit_shader_float       a binary32 literal without suffix (emit_shader_const:
@@ -48,8 +48,10 @@ void emit_shader_film_table(FILE *f, const emit_input *in, int i, const char *pr
 const char *emit_shader_more_params(const scene_entry *e, const char *float_type);
 
 /* `fresnel gen --hlsl`: the scene as HLSL for ports/hlsl/fresnel.hlsl
- * (emit_hlsl.c). 0, or CLI_BAD_INPUT after a message. */
+ * (emit_braced.c). 0, or CLI_BAD_INPUT after a message. */
 int emit_hlsl(FILE *f, const emit_input *in);
+/* The same for ports/msl/fresnel.metal (constant float3, ...). */
+int emit_msl(FILE *f, const emit_input *in);
 
 /* The GLSL to f and, if tex is not NULL, the LUT texture as a C header to
  * tex. 0, or CLI_BAD_INPUT after a message (the caller discards both). */

@@ -13,7 +13,8 @@
 static void report_usage(FILE *out)
 {
     fprintf(out, "usage: fresnel report [--scene FILE] [-o DIR] [--data DIR] [--cross FILE] [--size FILE]\n"
-                 "                      [--speed FILE]... [--gamut map|clip|keep] [--no-timing] [--no-instructions]\n\n"
+                 "                      [--spirv FILE] [--speed FILE]... [--gamut map|clip|keep] [--no-timing]\n"
+                 "                      [--no-instructions]\n\n"
                  "Measures every material x model x number type of the scene (default\n"
                  "data/scenes/report.scene) against the spectral ground truth and writes\n"
                  "DIR/report.md, DIR/pareto.svg, DIR/sigma.svg and DIR/curves/<material>.svg\n"
@@ -24,7 +25,9 @@ static void report_usage(FILE *out)
                  "--no-instructions skip those (for tests). --cross FILE and --size FILE:\n"
                  "the output of `make cross-count` and of `make size`, for the report's\n"
                  "instruction-count and code-size sections and the Cortex-M0 rows of\n"
-                 "targets.md (make report passes both). --speed FILE (up to 4): the output\n"
+                 "targets.md (make report passes both). --spirv FILE: the output of\n"
+                 "`make spirv-count`, for the report's GPU instruction-count section.\n"
+                 "--speed FILE (up to 4): the output\n"
                  "of `make bench` at one flag set, for the report's host speed section and\n"
                  "the speed rows of targets.md (make report passes -O2 and -O3\n"
                  "-march=native). --gamut overrides the scene's gamut policy.\n");
@@ -33,7 +36,7 @@ static void report_usage(FILE *out)
 int cmd_report(int argc, char **argv)
 {
     report_options o;
-    static const char *const options[] = {"--scene", "-o", "--cross", "--size", "--speed", "--data", "--gamut",
+    static const char *const options[] = {"--scene", "-o", "--cross", "--size", "--spirv", "--speed", "--data", "--gamut",
                                           "--no-timing", "--no-instructions", "--help", NULL};
     int i;
     memset(&o, 0, sizeof o);
@@ -62,6 +65,8 @@ int cmd_report(int argc, char **argv)
                 o.cross_path = v;
             else if (!strcmp(argv[i - 1], "--size"))
                 o.size_path = v;
+            else if (!strcmp(argv[i - 1], "--spirv"))
+                o.spirv_path = v;
             else if (!strcmp(argv[i - 1], "--speed")) {
                 if (o.speed_count == REPORT_MAX_SPEED)
                     return cli_error(WHERE, "--speed: at most %d files", REPORT_MAX_SPEED);

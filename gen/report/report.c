@@ -419,6 +419,15 @@ static int write_cross(const report_run *r, FILE *f)
         if ((status = copy_file(f, r->size_path)))
             return status;
     }
+    if (r->spirv_path) {
+        fputs("\n## GPU: SPIR-V instructions per call\n\n"
+              "Instructions of each scene model's GLSL function on gold, compiled to SPIR-V and optimised "
+              "(`make spirv-count`; ports/vulkan/spirv_count.sh says how). Counts of instructions, not cycles, "
+              "and a table's size does not show in them: a LUT's const array is one instruction to SPIR-V, "
+              "however many floats a driver copies.\n\n", f);
+        if ((status = copy_file(f, r->spirv_path)))
+            return status;
+    }
     return 0;
 }
 
@@ -572,6 +581,7 @@ int report_write(const report_options *o)
     r.scene_path = o->scene_path;
     r.cross_path = o->cross_path;
     r.size_path = o->size_path;
+    r.spirv_path = o->spirv_path;
     for (i = 0; i < o->speed_count && i < REPORT_MAX_SPEED; i++) { /* bad input: an error before anything is written */
         speed_file *sf = malloc(sizeof *sf);
         char where[1100];

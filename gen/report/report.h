@@ -83,6 +83,7 @@ typedef struct report_run {
     int hoffman_in_gamut[REPORT_HOFFMAN];  /* F0 inside ACEScg, unclamped (gamut_contains) */
     const char *cross_path;                /* `make cross-count` output, or NULL */
     const char *size_path;                 /* `make size` output, or NULL */
+    const char *spirv_path;                /* `make spirv-count` output, or NULL */
     /* `make bench` outputs (--speed FILE, one per flag set), already read */
     const char *speed_paths[REPORT_MAX_SPEED];
     const struct speed_file *speed[REPORT_MAX_SPEED];
@@ -154,6 +155,7 @@ void report_film_free(report_run *r);
 typedef struct report_options {
     const char *scene_path, *out_dir, *data_dir; /* data_dir NULL: the default */
     const char *cross_path, *size_path;          /* `make cross-count`, `make size` output, or NULL */
+    const char *spirv_path;                      /* `make spirv-count` output, or NULL */
     const char *speed_paths[REPORT_MAX_SPEED];   /* `make bench` outputs, read by report_write */
     int speed_count;
     int timing, instructions; /* 0: skip timing / callgrind counts */

@@ -1,7 +1,7 @@
 /* fresnel.glsl -- the Fresnel models of include/fresnel.h as shader
  * functions: the GLSL port, and the one source of the models for every
- * shading language (ports/hlsl/fresnel.hlsl is HLSL's spellings, then this
- * file).
+ * shading language (ports/hlsl/fresnel.hlsl and ports/msl/fresnel.metal are
+ * HLSL's and Metal's spellings, then this file).
  *
  * GLSL: ONE SOURCE, THREE DIALECTS
  *   GLSL ES 1.00 (WebGL 1, GLES 2), GLSL ES 3.00 (WebGL 2, GLES 3) and
@@ -24,16 +24,19 @@
  *   differently:
  *       FRESNEL_MP, FRESNEL_MP3     the mediump-safe functions' values: GLSL
  *                                   float, vec3 in the default precision;
- *                                   HLSL min16float, min16float3
+ *                                   HLSL min16float, min16float3; MSL float
+ *                                   or half, float3 or half3
  *       FRESNEL_HP, _HP2, _HP3      binary32 values: GLSL FRESNEL_HIGHP
- *                                   float, vec2, vec3; HLSL float, ...
+ *                                   float, vec2, vec3; HLSL, MSL float, ...
  *       FRESNEL_VEC2, FRESNEL_VEC3  vectors of the default float and their
  *                                   constructors: vec2, vec3; float2, float3
- *       FRESNEL_SATURATE(x)         clamp(x, 0.0, 1.0); HLSL saturate(x)
+ *       FRESNEL_SATURATE(x)         clamp(x, 0.0, 1.0); HLSL, MSL saturate(x)
  *   and `float` for a result in the default float (GLSL: the default
  *   precision; HLSL: float). A language's prelude defines them and then
- *   includes this file (ports/hlsl/fresnel.hlsl); without one they are
- *   GLSL's, below. The texture forms of the tables (sampler2D) are GLSL's
+ *   includes this file (ports/hlsl/fresnel.hlsl, ports/msl/fresnel.metal);
+ *   without one they are GLSL's, below. A value converts between FRESNEL_MP3
+ *   and FRESNEL_VEC3 only through a constructor (MSL converts no vector
+ *   implicitly), and a conditional's two arms have one type. The texture forms of the tables (sampler2D) are GLSL's
  *   alone. Below, "mediump" means FRESNEL_MP and "highp" FRESNEL_HP.
  *
  * NAMES
@@ -208,7 +211,7 @@ FRESNEL_MP3 fresnel_i_pow5(FRESNEL_MP3 x)
 FRESNEL_MP fresnel_i_pow_one_minus(FRESNEL_MP c, FRESNEL_MP p)
 {
     FRESNEL_MP x = 1.0 - c;
-    return x > 0.0 ? pow(x, p) : 0.0;
+    return x > 0.0 ? pow(x, p) : FRESNEL_MP(0.0);
 }
 FRESNEL_HP fresnel_i_kappa(FRESNEL_HP k)
 {
@@ -292,11 +295,11 @@ FRESNEL_VEC3 fresnel_schlick_internal_rgb(FRESNEL_MP3 f0, FRESNEL_HP eta, FRESNE
     FRESNEL_HP cc = FRESNEL_SATURATE(c);
     FRESNEL_HP ct2;
     if (e >= 1.0)
-        return fresnel_schlick_rgb(f0, cc);
+        return FRESNEL_VEC3(fresnel_schlick_rgb(f0, cc));
     ct2 = fresnel_i_eta2_minus_sin2(e, cc);
     if (!(ct2 > 0.0))
         return FRESNEL_VEC3(1.0, 1.0, 1.0);
-    return fresnel_schlick_rgb(f0, sqrt(ct2) / e);
+    return FRESNEL_VEC3(fresnel_schlick_rgb(f0, sqrt(ct2) / e));
 }
 
 /* Hoffman's F0 in a surrounding medium of index etaE, rebuilt from
@@ -373,8 +376,8 @@ FRESNEL_MP fresnel_lsk_comp(FRESNEL_MP n, FRESNEL_MP k, FRESNEL_MP a, FRESNEL_MP
 }
 FRESNEL_MP3 fresnel_lsk_comp_rgb(FRESNEL_MP3 n, FRESNEL_MP3 k, FRESNEL_MP3 a, FRESNEL_MP3 alpha, FRESNEL_MP c)
 {
-    return FRESNEL_VEC3(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
-                        fresnel_lsk_comp(n.b, k.b, a.b, alpha.b, c));
+    return FRESNEL_MP3(fresnel_lsk_comp(n.r, k.r, a.r, alpha.r, c), fresnel_lsk_comp(n.g, k.g, a.g, alpha.g, c),
+                       fresnel_lsk_comp(n.b, k.b, a.b, alpha.b, c));
 }
 
 /* ----------------------------------------------------------------- F82 */
@@ -425,14 +428,14 @@ FRESNEL_MP fresnel_approx_conductor(FRESNEL_MP n, FRESNEL_MP k, FRESNEL_MP c)
     c = fresnel_i_unit(c);
     kc = k * c;
     den_s = (n + c) * (n + c) + k * k;
-    return fresnel_i_unit(0.5 * ((den_s > 0.0 ? ((n - c) * (n - c) + k * k) / den_s : 1.0) +
+    return fresnel_i_unit(0.5 * ((den_s > 0.0 ? ((n - c) * (n - c) + k * k) / den_s : FRESNEL_MP(1.0)) +
                                  ((n * c - 1.0) * (n * c - 1.0) + kc * kc) /
                                      ((n * n + k * k) * c * c + 2.0 * n * c + 1.0)));
 }
 FRESNEL_MP3 fresnel_approx_conductor_rgb(FRESNEL_MP3 n, FRESNEL_MP3 k, FRESNEL_MP c)
 {
-    return FRESNEL_VEC3(fresnel_approx_conductor(n.r, k.r, c), fresnel_approx_conductor(n.g, k.g, c),
-                        fresnel_approx_conductor(n.b, k.b, c));
+    return FRESNEL_MP3(fresnel_approx_conductor(n.r, k.r, c), fresnel_approx_conductor(n.g, k.g, c),
+                       fresnel_approx_conductor(n.b, k.b, c));
 }
 /* The same in highp with the C domain (eta, kappa up to 1e5), for Gulbrandsen. */
 FRESNEL_HP fresnel_i_approx_conductor_hp(FRESNEL_HP n, FRESNEL_HP k, FRESNEL_HP c)
@@ -592,7 +595,7 @@ FRESNEL_VEC3 fresnel_cook_torrance_rgb(FRESNEL_MP3 f0, FRESNEL_HP eta, FRESNEL_H
 {
     FRESNEL_HP t = fresnel_i_cook_torrance_t(eta, kappa, c);
     f0 = fresnel_i_unit(f0);
-    return fresnel_i_unit(f0 + (1.0 - f0) * t);
+    return FRESNEL_VEC3(fresnel_i_unit(f0 + (1.0 - f0) * t));
 }
 
 /* --------------------------------------------------------------- LUTs */
@@ -640,12 +643,12 @@ FRESNEL_HP fresnel_lut_lerp(FRESNEL_HP a, FRESNEL_HP b, FRESNEL_HP t)
 #define FRESNEL_I_LUT_AT_RGB(table, n, p) FRESNEL_VEC3(FRESNEL_I_LUT_AT(table, 0, p), FRESNEL_I_LUT_AT(table, (n), p), FRESNEL_I_LUT_AT(table, 2 * (n), p))
 #define FRESNEL_LUT_ARRAY(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))))
 #define FRESNEL_LUT_LINEAR_ARRAY(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))))
-#define FRESNEL_LUT_RESIDUAL_ARRAY(f0, table, n, c) fresnel_i_unit(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))))
-#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY(f0, table, n, c) fresnel_i_unit(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))))
+#define FRESNEL_LUT_RESIDUAL_ARRAY(f0, table, n, c) FRESNEL_SATURATE(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY(f0, table, n, c) FRESNEL_SATURATE(fresnel_schlick((f0), (c)) + FRESNEL_I_LUT_AT(table, 0, fresnel_lut_linear_pos(float(n), (c))))
 #define FRESNEL_LUT_ARRAY_RGB(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
 #define FRESNEL_LUT_LINEAR_ARRAY_RGB(table, n, c) FRESNEL_SATURATE(FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
-#define FRESNEL_LUT_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
-#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY_RGB(f0, table, n, c) fresnel_i_unit(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
+#define FRESNEL_LUT_RESIDUAL_ARRAY_RGB(f0, table, n, c) FRESNEL_SATURATE(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_pos(float(n), (c))))
+#define FRESNEL_LUT_LINEAR_RESIDUAL_ARRAY_RGB(f0, table, n, c) FRESNEL_SATURATE(fresnel_schlick_rgb((f0), (c)) + FRESNEL_I_LUT_AT_RGB(table, (n), fresnel_lut_linear_pos(float(n), (c))))
 
 /* fresnel_lut_cubic (src/f32/lut.c): Catmull-Rom through the four nodes around
  * sqrt(c), the outer ones clamped to the table's ends; tables fitted for it
@@ -746,12 +749,12 @@ float fresnel_lut_linear(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESN
 }
 float fresnel_lut_residual(FRESNEL_MP f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n, FRESNEL_HP c)
 {
-    return fresnel_i_unit(fresnel_schlick(f0, c) + fresnel_i_lut_tex(table, strip, fresnel_lut_pos(n, c), 0.0));
+    return FRESNEL_SATURATE(fresnel_schlick(f0, c) + fresnel_i_lut_tex(table, strip, fresnel_lut_pos(n, c), 0.0));
 }
 float fresnel_lut_linear_residual(FRESNEL_MP f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n,
                                   FRESNEL_HP c)
 {
-    return fresnel_i_unit(fresnel_schlick(f0, c) +
+    return FRESNEL_SATURATE(fresnel_schlick(f0, c) +
                           fresnel_i_lut_tex(table, strip, fresnel_lut_linear_pos(n, c), 0.0));
 }
 FRESNEL_HP3 fresnel_i_lut_tex_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP2 pos, FRESNEL_HP n)
@@ -770,13 +773,13 @@ vec3 fresnel_lut_linear_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FR
 vec3 fresnel_lut_residual_rgb(FRESNEL_MP3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip, FRESNEL_HP n,
                               FRESNEL_HP c)
 {
-    return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
+    return FRESNEL_SATURATE(fresnel_schlick_rgb(f0, c) +
                           fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_pos(n, c), n));
 }
 vec3 fresnel_lut_linear_residual_rgb(FRESNEL_MP3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip,
                                      FRESNEL_HP n, FRESNEL_HP c)
 {
-    return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
+    return FRESNEL_SATURATE(fresnel_schlick_rgb(f0, c) +
                           fresnel_i_lut_tex_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
 }
 
@@ -816,13 +819,13 @@ vec3 fresnel_lut_linear_packed_rgb(FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 st
 vec3 fresnel_lut_residual_packed_rgb(FRESNEL_MP3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip,
                                      FRESNEL_HP n, FRESNEL_HP c)
 {
-    return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
+    return FRESNEL_SATURATE(fresnel_schlick_rgb(f0, c) +
                           fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_pos(n, c), n));
 }
 vec3 fresnel_lut_linear_residual_packed_rgb(FRESNEL_MP3 f0, FRESNEL_HIGHP sampler2D table, FRESNEL_HP3 strip,
                                             FRESNEL_HP n, FRESNEL_HP c)
 {
-    return fresnel_i_unit(fresnel_schlick_rgb(f0, c) +
+    return FRESNEL_SATURATE(fresnel_schlick_rgb(f0, c) +
                           fresnel_i_lut_packed_rgb(table, strip, fresnel_lut_linear_pos(n, c), n));
 }
 

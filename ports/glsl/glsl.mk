@@ -20,3 +20,13 @@ $(BUILD)/glsl/gallery: $(GALLERY_SRC) $(wildcard ports/glsl/host/*.h)
 	@mkdir -p $(@D)
 	@pkg-config --exists osmesa || { echo "gallery: OSMesa missing: apt-get install libosmesa6-dev"; exit 1; }
 	$(CC) $(WARN) -O2 -Iports/glsl/host -o $@ $(GALLERY_SRC) $$(pkg-config --cflags --libs osmesa) -lm
+
+# The recipe of a port that includes this one (ports/hlsl/, ports/msl/) as
+# one file: its first prerequisite with ports/glsl/fresnel.glsl in place of
+# its one #include "../glsl/fresnel.glsl".
+define inline_glsl_port
+	@mkdir -p $(@D)
+	awk '$$0 == "#include \"../glsl/fresnel.glsl\"" { while ((getline l <"ports/glsl/fresnel.glsl") > 0) print l; n++; next } \
+	    { print } END { if (n != 1) { print "no single #include of ../glsl/fresnel.glsl in $<" >"/dev/stderr"; exit 1 } }' \
+	    $< >$@.tmp && mv $@.tmp $@
+endef

@@ -9,7 +9,4 @@
 hlsl: $(BUILD)/hlsl/fresnel.hlsl
 
 $(BUILD)/hlsl/fresnel.hlsl: ports/hlsl/fresnel.hlsl ports/glsl/fresnel.glsl
-	@mkdir -p $(@D)
-	awk '$$0 == "#include \"../glsl/fresnel.glsl\"" { while ((getline l <"ports/glsl/fresnel.glsl") > 0) print l; n++; next } \
-	    { print } END { if (n != 1) { print "hlsl.mk: no single #include of ../glsl/fresnel.glsl in ports/hlsl/fresnel.hlsl" >"/dev/stderr"; exit 1 } }' \
-	    ports/hlsl/fresnel.hlsl >$@.tmp && mv $@.tmp $@
+	$(inline_glsl_port)

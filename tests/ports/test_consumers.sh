@@ -24,12 +24,13 @@ if make --no-print-directory -s install PREFIX=$P DESTDIR="$t/root" >"$t/log" 2>
         include/fresnel_fixed_fast.h include/fresnel_f16.h include/fresnel_config.h \
         lib/libfresnel.a lib/pkgconfig/fresnel.pc lib/cmake/fresnel/fresnelConfig.cmake \
         lib/cmake/fresnel/fresnelConfigVersion.cmake bin/fresnel share/fresnel/data/materials.csv \
-        share/fresnel/data/SOURCES.md share/fresnel/glsl/fresnel.glsl share/fresnel/hlsl/fresnel.hlsl share/fresnel/LICENSE \
+        share/fresnel/data/SOURCES.md share/fresnel/glsl/fresnel.glsl share/fresnel/hlsl/fresnel.hlsl share/fresnel/msl/fresnel.metal \
+        share/fresnel/LICENSE \
         share/fresnel/install_manifest.txt; do
         [ -f "$R/$f" ] || missing="$missing $f"
     done
     if [ -z "$missing" ]; then
-        echo "PASS make install PREFIX DESTDIR puts headers, libfresnel.a, fresnel.pc, CMake package, bin/fresnel, data, GLSL, HLSL, LICENSE in place"
+        echo "PASS make install PREFIX DESTDIR puts headers, libfresnel.a, fresnel.pc, CMake package, bin/fresnel, data, GLSL, HLSL, MSL, LICENSE in place"
     else
         echo "FAIL make install: missing$missing"
     fi

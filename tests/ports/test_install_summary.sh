@@ -1,7 +1,7 @@
 #!/bin/sh
 # passes: first (the install itself is tests/ports/test_consumers.sh's; runs once)
 # `make install` says what it installed where and how a build finds it, and
-# installs both shader ports (share/fresnel/glsl/ and hlsl/); `make uninstall`
+# installs the shader ports (share/fresnel/glsl/, hlsl/ and msl/); `make uninstall`
 # says what it removed. (tests/ports/test_consumers.sh builds through each route.)
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
@@ -10,10 +10,10 @@ R=$t/root$P
 if make --no-print-directory -s install PREFIX=$P DESTDIR="$t/root" >"$t/out" 2>"$t/err"; then
     n=$(find "$R" -type f | wc -l)
     missing=""
-    for f in share/fresnel/hlsl/fresnel.hlsl share/fresnel/glsl/fresnel.glsl; do
+    for f in share/fresnel/hlsl/fresnel.hlsl share/fresnel/msl/fresnel.metal share/fresnel/glsl/fresnel.glsl; do
         [ -f "$R/$f" ] || missing="$missing $f"
     done
-    [ -z "$missing" ] && echo "PASS make install puts both shader ports in share/fresnel/ (glsl/, hlsl/)" ||
+    [ -z "$missing" ] && echo "PASS make install puts the shader ports in share/fresnel/ (glsl/, hlsl/, msl/)" ||
         echo "FAIL make install lacks:$missing"
     said=""
     grep -q "^installed fresnel .* in $R ($n files" "$t/out" || said="$said where-and-count"

@@ -17,6 +17,10 @@
 #          built and run
 #   glsl   compiled by glslangValidator after ports/glsl/prelude_es300.glsl,
 #          ports/glsl/fresnel.glsl and the .glsl files the blocks before wrote
+#   metal  compiled as C++ by g++ (-fsingle-precision-constant) through
+#          tests/shader_ports/msl/metal_stdlib, with ports/msl/ and the
+#          .metal files the blocks before wrote, in float and with
+#          FRESNEL_MSL_HALF (Apple's compiler is macOS-only)
 #   text   not run: a listing or a program's output
 # Any other block, and an indented code block, is a FAIL. In README.md's
 # prose every `build/fresnel ...` command runs (exit 0) and every `make ...`
@@ -125,6 +129,18 @@ for b in "$t"/blocks/[0-9]*; do
         else
             echo "FAIL $where: glsl: $(grep -m5 -i error "$t/log" | tr '\n' ' ')"
         fi
+        ;;
+    metal)
+        cp "$b" "$run/block.metal.cpp"
+        if (cd "$run" && for half in "" -DFRESNEL_MSL_HALF=1; do
+            g++ -std=c++14 -fsingle-precision-constant -Wall -Wextra -Werror $half -I"$root/ports/msl" \
+                -I"$root/tests/shader_ports/msl" -I. -c block.metal.cpp -o "$t/block.o" || exit 1
+        done) >"$t/log" 2>&1; then
+            echo "PASS $where: metal, compiles as C++ through the host's metal_stdlib map, float and half"
+        else
+            echo "FAIL $where: metal: $(grep -m5 -i error "$t/log" | tr '\n' ' ')"
+        fi
+        rm -f "$run/block.metal.cpp"
         ;;
     indented) echo "FAIL $where: an indented code block: fence it and tag it (sh, c, text, ...)" ;;
     *) echo "FAIL $where: a code block tagged '$tag', which this test cannot check (tests/repo/test_readme.sh)" ;;

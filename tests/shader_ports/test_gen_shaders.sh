@@ -14,22 +14,24 @@ trap 'rm -rf "$t"' EXIT
 for manifest in data/scenes/*.scene tests/data/scenes/*.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
     models=$(awk -F= '/^models/ { sub(/#.*/, "", $2); print $2 }' "$manifest" | wc -w)
-    for back in glsl hlsl; do
+    for back in glsl hlsl msl; do
+        out=$back
         if [ $back = glsl ]; then
             set -- --glsl -o "$t/$ident.glsl"
             # the texture the LUT models read in GLSL ES 1.00, where there are some
             grep -q '^models *=.*lut' "$manifest" && set -- "$@" --glsl-texture "$t/${ident}_tex.h"
             sig="^vec3 fresnel_${ident}_[a-z0-9_]*_rgb(FRESNEL_HIGHP float c\(, FRESNEL_HIGHP float d_nm\)\{0,1\})$"
         else
-            set -- --hlsl -o "$t/$ident.hlsl"
+            [ $back = msl ] && out=metal
+            set -- --$back -o "$t/$ident.$out"
             sig="^float3 fresnel_${ident}_[a-z0-9_]*_rgb(float c\(, float d_nm\)\{0,1\})$"
         fi
         if ! "$F" gen "$manifest" "$@" 2>"$t/err"; then
             echo "FAIL gen shaders: $manifest --$back: $(grep -v warning "$t/err" | head -3)"
             continue
         fi
-        n=$(grep -c "$sig" "$t/$ident.$back")
-        mats=$(grep -c '^/\* ---- ' "$t/$ident.$back")
+        n=$(grep -c "$sig" "$t/$ident.$out")
+        mats=$(grep -c '^/\* ---- ' "$t/$ident.$out")
         what="$n functions ($mats materials x $models models)"
         if [ $back = glsl ] && [ -e "$t/${ident}_tex.h" ]; then
             # the texture header, compiled by this pass's compiler
@@ -77,7 +79,9 @@ expect_bad "--glsl-texture without --glsl" "needs --glsl" -- \
 expect_bad "a LUT spacing the shader ports lack, --hlsl" "pl.scene:4: expected lut_spacing grazing or uniform with --hlsl" -- \
     "$t/pl.scene" --hlsl -o "$t/bad.hlsl"
 expect_bad "scene name with __, --hlsl" "no '__'\|double '_'" -- "$t/a__b.scene" --hlsl -o "$t/bad.hlsl"
-expect_bad "an unknown back end (--msl)" "--msl" -- data/scenes/default.scene --msl -o "$t/bad.hlsl"
+expect_bad "a LUT spacing the shader ports lack, --msl" "pl.scene:4: expected lut_spacing grazing or uniform with --msl" -- \
+    "$t/pl.scene" --msl -o "$t/bad.hlsl"
+expect_bad "an unknown back end (--wgsl)" "--wgsl" -- data/scenes/default.scene --wgsl -o "$t/bad.hlsl"
 expect_bad "--glsl and --hlsl together" "one back end per run" -- data/scenes/default.scene --glsl --hlsl -o "$t/bad.hlsl"
 expect_bad "--glsl-texture with --hlsl" "needs --glsl" -- \
     data/scenes/default.scene --hlsl -o "$t/bad.hlsl" --glsl-texture "$t/bad_tex.h"

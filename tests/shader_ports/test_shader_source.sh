@@ -1,10 +1,11 @@
 #!/bin/sh
 # passes: first (reads sources only; runs once)
 # The shader ports have one source of the model functions,
-# ports/glsl/fresnel.glsl; the HLSL port is HLSL's spellings of its type and
-# helper names, then an #include of it. So no run of 6 or more lines stands
-# in both a GLSL file (ports/glsl/*.glsl) and an HLSL file
-# (ports/hlsl/*.hlsl): lines compared with their spaces collapsed, blank
+# ports/glsl/fresnel.glsl; the HLSL and MSL ports are their language's
+# spellings of its type and helper names, then an #include of it. So no run
+# of 6 or more lines stands in both a GLSL file (ports/glsl/*.glsl) and an
+# HLSL or MSL file (ports/hlsl/*.hlsl, ports/msl/*.metal), nor in both of
+# those: lines compared with their spaces collapsed, blank
 # lines passed over, a run within one file on each side. The controls show
 # the detector finds a 6-line run (re-indented) and passes over a 5-line one.
 t=$(mktemp -d)
@@ -94,10 +95,19 @@ else
 fi
 
 # The ports.
-found=$(shared_runs ports/glsl/*.glsl -- ports/hlsl/*.hlsl)
+for other in hlsl msl; do
+    ext=$([ $other = hlsl ] && echo hlsl || echo metal)
+    found=$(shared_runs ports/glsl/*.glsl -- ports/$other/*.$ext)
+    if [ -z "$found" ]; then
+        echo "PASS shader source: no run of $min lines stands in both ports/glsl/*.glsl and ports/$other/*.$ext"
+    else
+        echo "FAIL shader source: runs of $min lines in both the GLSL and the $other port (one source:" \
+            "ports/glsl/fresnel.glsl; the port defines spellings): $(printf '%s\n' "$found" | head -5 | tr '\n' ' ')"
+    fi
+done
+found=$(shared_runs ports/hlsl/*.hlsl -- ports/msl/*.metal)
 if [ -z "$found" ]; then
-    echo "PASS shader source: no run of $min lines stands in both ports/glsl/*.glsl and ports/hlsl/*.hlsl"
+    echo "PASS shader source: no run of $min lines stands in both ports/hlsl/*.hlsl and ports/msl/*.metal"
 else
-    echo "FAIL shader source: runs of $min lines in both the GLSL and the HLSL port (one source:" \
-        "ports/glsl/fresnel.glsl; HLSL defines spellings): $(printf '%s\n' "$found" | head -5 | tr '\n' ' ')"
+    echo "FAIL shader source: runs of $min lines in both the HLSL and the MSL port: $(printf '%s\n' "$found" | head -5 | tr '\n' ' ')"
 fi

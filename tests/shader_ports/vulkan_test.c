@@ -49,13 +49,10 @@
 #include "scene/scene.h"
 #include "model/encoded_scene.h"
 #include "1_spectral/spectral.h"
+#include "port_checks.h"
 #include "vkrun.h"
 
-#define C_LO (-1)
-#define C_HI 1025
-#define NCOS (C_HI - C_LO + 1)
 #define GROUP 64
-#define HIGHP_BOUND 1e-5
 
 enum { V_GLSL, V_GLSL_MP, V_HLSL, V_HLSL_MP, NVARIANTS };
 static const struct variant {
@@ -90,12 +87,6 @@ static char *read_file(const char *path)
     fclose(f);
     return b;
 }
-
-/* The thin film's thickness at invocation i, the same binary32 value in the
- * shader (GLSL and HLSL both read FILM_D) and here: 0-1195 nm, scattered
- * over the cosines (every product exact). */
-#define FILM_D "float((i * 157) % 256) * 4.6875"
-static float film_d(int i) { return (float)((i * 157) % 256) * 4.6875f; }
 
 /* The thin film runs from a storage buffer, as a GPU application hands
  * fresnel_film_rgb its table: the input buffer holds the material's
@@ -148,39 +139,9 @@ static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, in
 
 static int build_module(const char *base, const char *label, const struct variant *va);
 
-/* The port functions no scene model calls, on the same grid against the C
- * runtime: one module per front end, a specialisation constant picks the
- * expression (valid GLSL and HLSL), the result in the first channel. 1/1.5
- * and 1/1.33 as their binary32 values, so both sides see the same eta. */
-static float f_diel(float c) { return fresnel_dielectric(1.5f, c); }
-static float f_diel_in(float c) { return fresnel_dielectric(0.666666687f, c); }
-static float f_internal(float c) { return fresnel_schlick_internal(0.04f, 0.751879692f, c); }
-static float f_gen(float c) { return fresnel_schlick_gen(0.04f, 0.9f, 3.7f, c); }
-static float f_medium(float c) { return fresnel_f0_in_medium(c, 1.33f); }
-static float f_ior(float c) { return fresnel_f0_from_ior(4.0f * c, 2.0f); }
-static float f_rg_r(float c) { return fresnel_gulbrandsen_rg(4.0f * c, 2.0f).r; }
-static float f_rg_g(float c) { return fresnel_gulbrandsen_rg(4.0f * c, 2.0f).g; }
-static float f_nk_n(float c) { return fresnel_gulbrandsen_nk(c, 0.3f).n; }
-static float f_nk_k(float c) { return fresnel_gulbrandsen_nk(c, 0.3f).k; }
-/* rel: compared relative to max(|C|, 1) (n and k reach 4e4 at r = 0.9999) */
-static const struct func {
-    const char *expr;
-    float (*eval)(float c);
-    int rel;
-} funcs[] = {
-    {"fresnel_dielectric(1.5, c)", f_diel, 0},
-    {"fresnel_dielectric(0.666666687, c)", f_diel_in, 0},
-    {"fresnel_schlick_internal(0.04, 0.751879692, c)", f_internal, 0},
-    {"fresnel_schlick_gen(0.04, 0.9, 3.7, c)", f_gen, 0},
-    {"fresnel_f0_in_medium(c, 1.33)", f_medium, 0},
-    {"fresnel_f0_from_ior(4.0 * c, 2.0)", f_ior, 0},
-    {"fresnel_gulbrandsen_rg(4.0 * c, 2.0).x", f_rg_r, 0},
-    {"fresnel_gulbrandsen_rg(4.0 * c, 2.0).y", f_rg_g, 0},
-    {"fresnel_gulbrandsen_nk(c, 0.3).x", f_nk_n, 1},
-    {"fresnel_gulbrandsen_nk(c, 0.3).y", f_nk_k, 1},
-};
-#define NFUNCS ((int)(sizeof funcs / sizeof funcs[0]))
-
+/* The port functions no scene model calls (port_checks.h), on the same grid
+ * against the C runtime: one module per front end, a specialisation constant
+ * picks the expression, the result in the first channel. */
 static void write_funcs_main(FILE *f, int hlsl)
 {
     int k;
@@ -201,11 +162,11 @@ static void write_funcs_main(FILE *f, int hlsl)
                 GROUP);
     fprintf(f, "    if (i >= %d)\n        return;\n    c = fr_c[i];\n", NCOS);
     for (k = 0; k < NFUNCS; k++)
-        fprintf(f, "    %sif (fr_func == %d) r = %s;\n", k ? "else " : "", k, funcs[k].expr);
+        fprintf(f, "    %sif (fr_func == %d) r = %s;\n", k ? "else " : "", k, port_funcs[k].expr);
     fprintf(f, "    fr_out[3 * i] = r;\n    fr_out[3 * i + 1] = 0.0;\n    fr_out[3 * i + 2] = 0.0;\n}\n");
 }
 
-/* The full-precision variants (V_GLSL, V_HLSL) of funcs[]: within HIGHP_BOUND. */
+/* The full-precision variants (V_GLSL, V_HLSL) of port_funcs[]: within HIGHP_BOUND. */
 static void run_funcs(vkrun *v, const char *dir, char **src, const float *cosines)
 {
     static const int which[2] = {V_GLSL, V_HLSL};
@@ -245,7 +206,7 @@ static void run_funcs(vkrun *v, const char *dir, char **src, const float *cosine
             vkrun_pipe p;
             double worst = 0.0;
             char fname[320];
-            snprintf(fname, sizeof fname, "vulkan: %s, %s", funcs[k].expr, va->name);
+            snprintf(fname, sizeof fname, "vulkan: %s, %s", port_funcs[k].expr, va->name);
             if (vkrun_pipeline(v, words, nbytes, &spec, 1, 0, &p, err, sizeof err) ||
                 vkrun_dispatch(v, &p, NULL, cosines, NCOS, o, 3 * NCOS, (NCOS + GROUP - 1) / GROUP, err, sizeof err)) {
                 CHECK(fname, 0, "%s", err);
@@ -254,13 +215,11 @@ static void run_funcs(vkrun *v, const char *dir, char **src, const float *cosine
             }
             vkrun_pipeline_free(v, &p);
             for (j = 0; j < NCOS; j++) {
-                double e = funcs[k].eval(cosines[j]), d = fabs((double)o[3 * j] - e);
-                if (funcs[k].rel && fabs(e) > 1.0)
-                    d /= fabs(e);
+                double d = port_func_diff(k, o[3 * j], cosines[j]);
                 if (!(d <= worst))
                     worst = d;
             }
-            NOTE("%s: max |GPU - C|%s %.2g (bound %.2g)", fname, funcs[k].rel ? " / max(|C|, 1)" : "", worst,
+            NOTE("%s: max |GPU - C|%s %.2g (bound %.2g)", fname, port_funcs[k].rel ? " / max(|C|, 1)" : "", worst,
                  HIGHP_BOUND);
             CHECK(fname, worst <= HIGHP_BOUND, "max difference %.3g (bound %.3g)", worst, HIGHP_BOUND);
         }
@@ -358,24 +317,8 @@ int main(int argc, char **argv)
             return 1;
     for (i = 0; i < NCOS; i++)
         film_in[FILM_FLOATS + i] = cosines[i] = (float)(i + C_LO) / 1024.0f;
-    for (i = 0; i < nmat; i++) {
-        material_source ms = scene_material(&sc, i);
-        if (derive_parameters(&gc, &ms, sc.sigma, sc.n1, &spectra[i], &params[i]))
-            return 1;
-        for (m = 0; m < sc.model_count; m++) {
-            scene_model *sm = &models[i * sc.model_count + m];
-            if (scene_model_prepare(&sc.models[m], sc.spacing, &spectra[i], &gc, &params[i], sm))
-                return 1;
-            for (k = 0; k < NCOS; k++) {
-                float *r = ref + (size_t)m * nout + 3 * ((size_t)i * NCOS + k);
-                model_rgb q = scene_model_rgb(sm);
-                fresnel_rgb v;
-                q.d_nm = film_d(k); /* read by the thin film only */
-                v = q.def->f32->scene(&q, cosines[k]);
-                r[0] = v.r, r[1] = v.g, r[2] = v.b;
-            }
-        }
-    }
+    if (port_scene_refs(&sc, &gc, params, spectra, models, ref))
+        return 1;
     snprintf(path, sizeof path, "ports/glsl/prelude_450.glsl");
     src[0] = read_file(path);
     src[1] = read_file("ports/glsl/fresnel.glsl");
@@ -506,11 +449,7 @@ int main(int argc, char **argv)
     NOTE("table | %s | model | GLSL 4.50 highp | GLSL mediump | HLSL float | HLSL min16float | fresnel_f16.h bound |",
          ident);
     for (m = 0; m < sc.model_count; m++) {
-        const model *row = model_of(sc.models[m].row);
-        double b16 = row->f16_bound > 0.0 ? row->f16_bound
-                   : models[m].lut.form == LUT_CUBIC ? FRESNEL_BOUND_LUT_CUBIC_F16
-                   : models[m].lut.n > 0         ? FRESNEL_BOUND_LUT_F16
-                                                 : 0.0;
+        double b16 = port_f16_bound(&sc, m);
         char cell[NVARIANTS][32];
         for (vi = 0; vi < NVARIANTS; vi++) {
             if (ran[vi])

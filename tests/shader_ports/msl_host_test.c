@@ -1,0 +1,222 @@
+/* The MSL port on the host. Apple's Metal compiler runs on macOS only, so
+ * for one scene the output of `fresnel gen --msl` after ports/msl/fresnel.metal
+ * is compiled as C++ by g++ and by clang through the project's map of the
+ * part of metal_stdlib it uses (tests/shader_ports/msl/metal_stdlib: half is
+ * binary16, rounded after every operation; MSL's implicit conversions and
+ * none of the vector conversions it refuses), run on every cosine
+ * c = i/1024, i = -1..1025 for every material and model of the scene (the
+ * thin film at thicknesses 0-1195 nm scattered over the cosines), and
+ * compared with what the C runtime computes from the same manifest
+ * (gen/model/encoded_scene.c, the evaluation of the C header).
+ *
+ * Four variants:
+ *   g++ float      the port's default, every function in float, with
+ *                  -fsingle-precision-constant (MSL has no double: 1.0 is a
+ *                  float): max |MSL - C| <= 1e-5
+ *   g++ half       FRESNEL_MSL_HALF: the mediump-safe functions in half, each
+ *                  operation between halves rounded to binary16, each with a
+ *                  float literal in float, as MSL does: within the model's
+ *                  binary16 bound (fresnel_f16.h) beside the C binary32
+ *                  runtime, and in [0, 1]
+ *   clang float    clang has no -fsingle-precision-constant: an expression
+ *                  with a float literal is evaluated in double and rounded
+ *                  once, closer to exact: <= 1e-5
+ *   clang half     as g++ half
+ * With the default scene the port functions no scene model calls
+ * (port_checks.h) also run, in the float variants, within 1e-5. The table
+ * at the end (NOTE table lines) is ports/README.md's.
+ *
+ * Usage: msl_host_test OUT_DIR MANIFEST IDENT SCENE.metal
+ * (tests/shader_ports/test_msl.sh; OUT_DIR receives the C++ sources,
+ * programs, compiler logs and outputs). Run from the top of the tree. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "fresnel_f16.h"
+#include "common/cli.h"
+#include "harness.h"
+#include "port_checks.h"
+#include "1_spectral/spectral.h"
+
+enum { V_GCC, V_GCC_HALF, V_CLANG, V_CLANG_HALF, NVARIANTS };
+static const struct variant {
+    const char *name, *compile;
+    int half;
+} variants[NVARIANTS] = {
+    {"g++ float", "g++ -std=c++14 -O1 -fsingle-precision-constant", 0},
+    {"g++ half", "g++ -std=c++14 -O1 -fsingle-precision-constant -DFRESNEL_MSL_HALF", 1},
+    {"clang float", "clang++ -std=c++14 -O1", 0},
+    {"clang half", "clang++ -std=c++14 -O1 -DFRESNEL_MSL_HALF", 1},
+};
+
+/* The bound of scene model m with FRESNEL_MSL_HALF: the mediump-safe
+ * functions compute in half and keep the binary16 runtime's bound
+ * (fresnel_f16.h, below 1 for each of them), and so does a residual
+ * table's Schlick base; the exact conductor and dielectric, Gulbrandsen,
+ * the tables and the film compute in float whatever FRESNEL_MP is (1e-5);
+ * Cook-Torrance interpolates in float between F0 and 1 with F0 and its
+ * result in half: one binary16 rounding of each, 2 x 2^-11 below 1. */
+static double half_bound(const scene *sc, int m)
+{
+    const model *row = model_of(sc->models[m].row);
+    if (sc->models[m].row == MODEL_ROW_cook_torrance)
+        return 2.0 * 0x1p-11;
+    if (sc->models[m].lut_n && row->form == LUT_RESIDUAL)
+        return FRESNEL_BOUND_SCHLICK_F16;
+    if (sc->models[m].lut_n || row->f16_bound >= 1.0)
+        return HIGHP_BOUND;
+    return port_f16_bound(sc, m);
+}
+
+/* The C++ program: the port, the scene, and a main() printing every model
+ * of every material at every cosine (hexadecimal floats, three per line),
+ * then with funcs the port functions no scene model calls. */
+static int write_program(const char *path, const scene *sc, const char *ident, const char *scene_path, int funcs)
+{
+    FILE *f = fopen(path, "w");
+    int i, m, k;
+    if (!f)
+        return -1;
+    fprintf(f, "// msl_host_test: scene %s\n#include \"fresnel.metal\"\n#include \"%s\"\n#include <cstdio>\n\n"
+               "int main()\n{\n    for (int i = 0; i < %d; i++) {\n        float c = float(i + (%d)) / 1024.0;\n"
+               "        float3 r;\n        (void)c;\n",
+            ident, scene_path, NCOS, C_LO);
+    for (m = 0; m < sc->model_count; m++)
+        for (i = 0; i < sc->material_count; i++) {
+            int film = (model_of(sc->models[m].row)->offered & MODEL_FILM) != 0;
+            fprintf(f, "        r = fresnel_%s_%s_%s_rgb(c%s);\n", ident, sc->materials[i], sc->models[m].ident,
+                    film ? ", " FILM_D : "");
+            fprintf(f, "        std::printf(\"%%d %%d %%d %%a %%a %%a\\n\", %d, %d, i, (double)r.x, (double)r.y, "
+                       "(double)r.z);\n",
+                    m, i);
+        }
+    for (k = 0; funcs && k < NFUNCS; k++)
+        fprintf(f, "        std::printf(\"f %%d %%d %%a\\n\", %d, i, (double)(%s));\n", k, port_funcs[k].expr);
+    fprintf(f, "    }\n    return 0;\n}\n");
+    return fclose(f);
+}
+
+int main(int argc, char **argv)
+{
+    static scene sc;
+    static gen_context gc;
+    static double worst[NVARIANTS][SCENE_MAX_MODELS], fworst[NVARIANTS][64];
+    static int ran[NVARIANTS];
+    char path[1300], exe[1200], cmd[4096], line[512];
+    const char *dir, *ident;
+    material_params *params;
+    spectrum *spectra;
+    scene_model *models;
+    float *ref;
+    int i, m, vi, nmat, funcs;
+    if (argc != 5) {
+        fprintf(stderr, "usage: msl_host_test OUT_DIR MANIFEST IDENT SCENE.metal\n");
+        return 2;
+    }
+    dir = argv[1];
+    ident = argv[3];
+    funcs = !strcmp(ident, "default");
+    if (scene_load(argv[2], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
+        CHECK("msl: scene loads", 0, "%s", argv[2]);
+        return harness_exit();
+    }
+    nmat = sc.material_count;
+    params = calloc((size_t)nmat, sizeof *params);
+    spectra = calloc((size_t)nmat, sizeof *spectra);
+    models = calloc((size_t)nmat * (size_t)sc.model_count, sizeof *models);
+    ref = malloc((size_t)3 * NCOS * (size_t)nmat * (size_t)sc.model_count * sizeof *ref);
+    if (!params || !spectra || !models || !ref)
+        return 1;
+    if (port_scene_refs(&sc, &gc, params, spectra, models, ref)) {
+        CHECK("msl: the scene's materials derive", 0, "%s", argv[2]);
+        return harness_exit();
+    }
+    for (vi = 0; vi < NVARIANTS; vi++) {
+        const struct variant *va = &variants[vi];
+        char name[256];
+        int bad = 0, count = 0;
+        FILE *out;
+        snprintf(path, sizeof path, "%s/%s_%d.cpp", dir, ident, vi);
+        snprintf(exe, sizeof exe, "%s/%s_%d", dir, ident, vi);
+        snprintf(name, sizeof name, "msl: %s, %s", ident, va->name);
+        if (write_program(path, &sc, ident, argv[4], funcs && !va->half)) {
+            CHECK(name, 0, "cannot write %s", path);
+            continue;
+        }
+        snprintf(cmd, sizeof cmd, "%s -Wall -Wextra -Werror -Iports/msl -Itests/shader_ports/msl -I. '%s' -o '%s' >'%s.log' 2>&1",
+                 va->compile, path, exe, exe);
+        if (system(cmd) != 0) {
+            CHECK(name, 0, "%s: see %s.log", cmd, exe);
+            continue;
+        }
+        snprintf(cmd, sizeof cmd, "'%s' >'%s.out'", exe, exe);
+        if (system(cmd) != 0) {
+            CHECK(name, 0, "%s failed", exe);
+            continue;
+        }
+        snprintf(path, sizeof path, "%s.out", exe);
+        if (!(out = fopen(path, "r"))) {
+            CHECK(name, 0, "cannot read %s", path);
+            continue;
+        }
+        while (fgets(line, sizeof line, out)) {
+            int mm, ii, k;
+            double v[3], fv;
+            if (sscanf(line, "f %d %d %la", &mm, &k, &fv) == 3 && mm >= 0 && mm < NFUNCS && k >= 0 && k < NCOS) {
+                double d = port_func_diff(mm, fv, port_cosine(k));
+                if (!(d <= fworst[vi][mm]))
+                    fworst[vi][mm] = d;
+                continue;
+            }
+            if (sscanf(line, "%d %d %d %la %la %la", &mm, &ii, &k, &v[0], &v[1], &v[2]) != 6 || mm < 0 ||
+                mm >= sc.model_count || ii < 0 || ii >= nmat || k < 0 || k >= NCOS) {
+                bad++;
+                continue;
+            }
+            for (i = 0; i < 3; i++) {
+                double d = fabs(v[i] - ref[3 * (((size_t)mm * nmat + ii) * NCOS + k) + i]);
+                bad += !(v[i] >= 0.0 && v[i] <= 1.0);
+                if (!(d <= worst[vi][mm]))
+                    worst[vi][mm] = d;
+            }
+            count++;
+        }
+        fclose(out);
+        ran[vi] = count == sc.model_count * nmat * NCOS;
+        CHECK(name, ran[vi] && bad == 0, "%d of %d lines read, %d results not in [0, 1] or malformed", count,
+              sc.model_count * nmat * NCOS, bad);
+        for (m = 0; m < sc.model_count && ran[vi]; m++) {
+            /* the half variants: the mediump-safe functions in half; the
+             * others (and the tables, the film) in float whatever */
+            double bound = va->half ? half_bound(&sc, m) : HIGHP_BOUND;
+            snprintf(name, sizeof name, "msl: %s %s, %d materials, %s", ident, sc.models[m].name, nmat, va->name);
+            NOTE("%s: max |MSL - C| %.2g (bound %.2g)", name, worst[vi][m], bound);
+            CHECK(name, worst[vi][m] <= bound, "max difference %.3g (bound %.3g)", worst[vi][m], bound);
+        }
+        for (m = 0; funcs && !va->half && m < NFUNCS; m++) {
+            snprintf(name, sizeof name, "msl: %s, %s", port_funcs[m].expr, va->name);
+            NOTE("%s: max |MSL - C|%s %.2g (bound %.2g)", name, port_funcs[m].rel ? " / max(|C|, 1)" : "",
+                 fworst[vi][m], HIGHP_BOUND);
+            CHECK(name, fworst[vi][m] <= HIGHP_BOUND, "max difference %.3g (bound %.3g)", fworst[vi][m], HIGHP_BOUND);
+        }
+    }
+    NOTE("table | %s | model | g++ float | g++ half | clang float | clang half | half bound |", ident);
+    for (m = 0; m < sc.model_count; m++) {
+        char cell[NVARIANTS][32];
+        for (vi = 0; vi < NVARIANTS; vi++) {
+            if (ran[vi])
+                snprintf(cell[vi], sizeof cell[vi], "%.2g", worst[vi][m]);
+            else
+                snprintf(cell[vi], sizeof cell[vi], "not run");
+        }
+        NOTE("table | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m].name, cell[0], cell[1], cell[2],
+             cell[3], half_bound(&sc, m));
+    }
+    free(params);
+    free(spectra);
+    free(models);
+    free(ref);
+    return harness_exit();
+}
