@@ -136,6 +136,13 @@ $(BUILD)/msl/msl_host_test: tests/shader_ports/msl_host_test.c tests/shader_port
                             $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+# The shader ports' mediump contract (tests/shader_ports/test_mixed_precision.sh): C++ through the host's
+# metal_stdlib map, every mediump operation binary16 or binary32 as a policy says.
+MIXED_DEPS := tests/shader_ports/msl/metal_stdlib ports/msl/fresnel.metal ports/glsl/fresnel.glsl tests/common/materials.h
+$(BUILD)/tests/mixed_precision: tests/shader_ports/mixed_precision.cpp $(MIXED_DEPS) $(GEN_OBJ) $(BUILD)/libfresnel.a
+	@mkdir -p $(@D)
+	$(CXX) -std=c++14 -O2 $(SAN) -Wall -Wextra -Werror -DFRESNEL_MSL_HALF -DFRESNEL_MSL_HOST_MIXED -Iports/msl \
+	    -Itests/shader_ports/msl -Iinclude -Igen -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 $(BUILD)/tests/viewer_lit: tests/shader_ports/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
@@ -143,7 +150,7 @@ $(BUILD)/tests/viewer_lit: tests/shader_ports/viewer_lit.c $(GEN_OBJ) $(BUILD)/l
 # make check's programs; make test's add the two that link OSMesa and Vulkan.
 check-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
             $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit $(BUILD)/hlsl/fresnel.hlsl \
-            $(BUILD)/msl/msl_host_test $(BUILD)/msl/fresnel.metal
+            $(BUILD)/msl/msl_host_test $(BUILD)/msl/fresnel.metal $(BUILD)/tests/mixed_precision
 test-bins: check-bins $(BUILD)/glsl/glsl_port_osmesa $(BUILD)/vulkan/vulkan_test
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with

@@ -113,11 +113,10 @@
  *   near c = 1 and products with them; they are added to terms of order F0,
  *   so flushing them to zero changes a result by at most 2^-14 = 6.1e-5,
  *   an eighth of binary16's spacing at 1 (2^-11 = 4.9e-4). No mediump
- *   function divides by a quantity that can underflow to 0 except the
- *   approximate conductor's s-denominator (eta, kappa and c all near 0), which
- *   is guarded. mix() is not used (mediump mix() misbehaves on some GPUs,
- *   WebGLSamples#4), nor HLSL's lerp(): interpolation is written
- *   a + t (b - a), as in C.
+ *   function divides by a quantity that can underflow to 0: the approximate
+ *   conductor's s-term is formed scaled (see there). mix() is not used
+ *   (mediump mix() misbehaves on some GPUs, WebGLSamples#4), nor HLSL's
+ *   lerp(): interpolation is written a + t (b - a), as in C.
  */
 #ifndef FRESNEL_SHADER
 #define FRESNEL_SHADER 1
@@ -188,6 +187,29 @@
 #ifndef FRESNEL_MP_A_MAX
 #define FRESNEL_MP_A_MAX 1e4
 #endif
+
+/* MEDIUMP CONTRACT: the most a mediump-safe function's result differs from
+ * the exact one (absolute, results in [0, 1]) when each of its operations is
+ * done in binary16 or in binary32, in any mix a GPU chooses, with or without
+ * binary16 subnormals flushed to zero and with or without fused
+ * multiply-adds, its inputs binary16 values: the largest error a search
+ * over random and adversarial mixes found on every binary16 cosine and the
+ * binary16 material set, rounded up (tests/shader_ports/mixed_precision.cpp;
+ * the table in ports/glsl/README.md). They hold for mediump (GLSL),
+ * min16float (HLSL), half (MSL) and any GPU's way of computing those.
+ * Inputs that need highp: on a GPU that flushes binary16 subnormals, a
+ * cosine below 2^-14 is 0, which moves the approximate conductor by up to
+ * 0.012 for eta below 0.05 (without such cosines its bound is 1.7e-3);
+ * everything outside the binary16 domain (fresnel_f16.h: eta, kappa <= 16
+ * for these bounds). */
+#define FRESNEL_MP_BOUND_SCHLICK 2.4e-3
+#define FRESNEL_MP_BOUND_SCHLICK_GEN 2.4e-3
+#define FRESNEL_MP_BOUND_F82 3.3e-3
+#define FRESNEL_MP_BOUND_LSK 2.9e-3
+#define FRESNEL_MP_BOUND_LSK_COMP 2.9e-3
+#define FRESNEL_MP_BOUND_APPROX_CONDUCTOR 1.3e-2
+#define FRESNEL_MP_BOUND_F0_FROM_IOR 1.2e-3
+#define FRESNEL_MP_BOUND_F0_IN_MEDIUM 2.0e-3
 
 /* ------------------------------------------------------------- helpers */
 
@@ -417,18 +439,25 @@ FRESNEL_MP3 fresnel_f82_rgb(FRESNEL_MP3 f0, FRESNEL_MP3 f82, FRESNEL_MP c)
 
 /* rs = ((n-c)^2 + k^2) / ((n+c)^2 + k^2),
  * rp = ((nc-1)^2 + (kc)^2) / ((n^2+k^2)c^2 + 2nc + 1),  F = (rs + rp)/2.
- * mediump: n, k <= 100 keep both denominators <= 20201; the rp denominator
- * is >= 1; the rs denominator underflows only when n, k and c are all below
- * 2^-8, where rs = 1 is the limit. */
+ * mediump: n, k <= 100 keep the rp denominator in [1, 20201]. rs is formed
+ * from n - c, n + c and k divided by s = max(n + c, k), so that its
+ * denominator is in [1, 2] and nothing that matters underflows: with the
+ * squares themselves, (n - c)^2 falls below 2^-14 for |n - c| < 2^-7, and a
+ * GPU that flushes binary16 subnormals to zero then made rs 0 instead of
+ * about (n - c)^2 / (n + c)^2 (F off by 0.2 at n = 0.01, c = 0.002). s >= n
+ * >= FRESNEL_ETA_MIN > 0. */
 FRESNEL_MP fresnel_approx_conductor(FRESNEL_MP n, FRESNEL_MP k, FRESNEL_MP c)
 {
-    FRESNEL_MP kc, den_s;
+    FRESNEL_MP kc, s, dm, dp, ks;
     n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
     k = clamp(k, 0.0, FRESNEL_MP_IOR_MAX);
     c = fresnel_i_unit(c);
     kc = k * c;
-    den_s = (n + c) * (n + c) + k * k;
-    return fresnel_i_unit(0.5 * ((den_s > 0.0 ? ((n - c) * (n - c) + k * k) / den_s : FRESNEL_MP(1.0)) +
+    s = max(n + c, k);
+    dm = (n - c) / s;
+    dp = (n + c) / s;
+    ks = k / s;
+    return fresnel_i_unit(0.5 * ((dm * dm + ks * ks) / (dp * dp + ks * ks) +
                                  ((n * c - 1.0) * (n * c - 1.0) + kc * kc) /
                                      ((n * n + k * k) * c * c + 2.0 * n * c + 1.0)));
 }
