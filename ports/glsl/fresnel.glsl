@@ -443,7 +443,7 @@ FRESNEL_MP3 fresnel_f82_rgb(FRESNEL_MP3 f0, FRESNEL_MP3 f82, FRESNEL_MP c)
  * from n - c, n + c and k divided by s = max(n + c, k), so that its
  * denominator is in [1, 2] and nothing that matters underflows: with the
  * squares themselves, (n - c)^2 falls below 2^-14 for |n - c| < 2^-7, and a
- * GPU that flushes binary16 subnormals to zero then made rs 0 instead of
+ * GPU that flushes binary16 subnormals to zero would make rs 0 instead of
  * about (n - c)^2 / (n + c)^2 (F off by 0.2 at n = 0.01, c = 0.002). s >= n
  * >= FRESNEL_ETA_MIN > 0. */
 FRESNEL_MP fresnel_approx_conductor(FRESNEL_MP n, FRESNEL_MP k, FRESNEL_MP c)
