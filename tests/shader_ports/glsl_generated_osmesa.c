@@ -27,6 +27,7 @@
 #include "3_encode/encode.h"
 #include "glctx.h"
 #include "harness.h"
+#include "port_scene.h"
 #include "scene/scene.h"
 #include "model/encoded_scene.h"
 #include "1_spectral/spectral.h"
@@ -123,16 +124,10 @@ int main(int argc, char **argv)
         return 2;
     }
     ident = argv[3];
-    if (scene_load(argv[2], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
-        CHECK("glsl gen: scene loads", 0, "%s", argv[2]);
+    if (port_scene_load("glsl gen", argv[2], &sc, &gc, &params, &spectra, &models))
         return harness_exit();
-    }
     nmat = sc.material_count;
-    params = calloc((size_t)nmat, sizeof *params);
-    spectra = calloc((size_t)nmat, sizeof *spectra);
-    models = calloc((size_t)nmat * (size_t)sc.model_count, sizeof *models);
-    out = malloc((size_t)W * (size_t)nmat * 4 * sizeof *out);
-    if (!params || !spectra || !models || !out)
+    if (!(out = malloc((size_t)W * (size_t)nmat * 4 * sizeof *out)))
         return 1;
     for (i = 0; i < nmat; i++) {
         material_source ms = scene_material(&sc, i);

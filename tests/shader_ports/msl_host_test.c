@@ -118,16 +118,10 @@ int main(int argc, char **argv)
     dir = argv[1];
     ident = argv[3];
     funcs = !strcmp(ident, "default");
-    if (scene_load(argv[2], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
-        CHECK("msl: scene loads", 0, "%s", argv[2]);
+    if (port_scene_load("msl", argv[2], &sc, &gc, &params, &spectra, &models))
         return harness_exit();
-    }
     nmat = sc.material_count;
-    params = calloc((size_t)nmat, sizeof *params);
-    spectra = calloc((size_t)nmat, sizeof *spectra);
-    models = calloc((size_t)nmat * (size_t)sc.model_count, sizeof *models);
-    ref = malloc((size_t)3 * NCOS * (size_t)nmat * (size_t)sc.model_count * sizeof *ref);
-    if (!params || !spectra || !models || !ref)
+    if (!(ref = malloc((size_t)3 * NCOS * (size_t)nmat * (size_t)sc.model_count * sizeof *ref)))
         return 1;
     if (port_scene_refs(&sc, &gc, params, spectra, models, ref)) {
         CHECK("msl: the scene's materials derive", 0, "%s", argv[2]);
@@ -205,12 +199,8 @@ int main(int argc, char **argv)
     NOTE("table | %s | model | g++ float | g++ half | clang float | clang half | half bound |", ident);
     for (m = 0; m < sc.model_count; m++) {
         char cell[NVARIANTS][32];
-        for (vi = 0; vi < NVARIANTS; vi++) {
-            if (ran[vi])
-                snprintf(cell[vi], sizeof cell[vi], "%.2g", worst[vi][m]);
-            else
-                snprintf(cell[vi], sizeof cell[vi], "not run");
-        }
+        for (vi = 0; vi < NVARIANTS; vi++)
+            port_cell(cell[vi], ran[vi], worst[vi][m]);
         NOTE("table | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m].name, cell[0], cell[1], cell[2],
              cell[3], half_bound(&sc, m));
     }

@@ -15,6 +15,7 @@
 #include "model/encoded_scene.h"
 #include "model/registry.h"
 #include "scene/scene.h"
+#include "port_scene.h"
 
 /* every cosine c = i/1024, i = -1..1025 (both ends just outside [0, 1]) */
 #define C_LO (-1)
@@ -100,6 +101,15 @@ static int port_scene_refs(const scene *sc, const gen_context *gc, material_para
         }
     }
     return 0;
+}
+
+/* A cell of a port's NOTE table: the max difference, or "not run". */
+static void port_cell(char cell[32], int ran, double worst)
+{
+    if (ran)
+        snprintf(cell, 32, "%.2g", worst);
+    else
+        snprintf(cell, 32, "not run");
 }
 
 /* The binary16 bound of scene model m (fresnel_f16.h's FRESNEL_BOUND_*). */

@@ -298,19 +298,13 @@ int main(int argc, char **argv)
     }
     dir = argv[1];
     ident = argv[3];
-    if (scene_load(argv[2], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
-        CHECK("vulkan: scene loads", 0, "%s", argv[2]);
+    if (port_scene_load("vulkan", argv[2], &sc, &gc, &params, &spectra, &models))
         return harness_exit();
-    }
     nmat = sc.material_count;
     for (m = 0; m < sc.model_count; m++)
         highp_only &= (model_of(sc.models[m].row)->offered & MODEL_FILM) != 0;
     nout = (size_t)3 * NCOS * (size_t)nmat;
-    params = calloc((size_t)nmat, sizeof *params);
-    spectra = calloc((size_t)nmat, sizeof *spectra);
-    models = calloc((size_t)nmat * (size_t)sc.model_count, sizeof *models);
-    ref = malloc(nout * (size_t)sc.model_count * sizeof *ref);
-    if (!params || !spectra || !models || !ref)
+    if (!(ref = malloc(nout * (size_t)sc.model_count * sizeof *ref)))
         return 1;
     for (vi = 0; vi < NVARIANTS; vi++)
         if (!(out[vi] = malloc(nout * (size_t)sc.model_count * sizeof *out[vi])))
@@ -451,12 +445,8 @@ int main(int argc, char **argv)
     for (m = 0; m < sc.model_count; m++) {
         double b16 = port_f16_bound(&sc, m);
         char cell[NVARIANTS][32];
-        for (vi = 0; vi < NVARIANTS; vi++) {
-            if (ran[vi])
-                snprintf(cell[vi], sizeof cell[vi], "%.2g", worst[vi][m]);
-            else
-                snprintf(cell[vi], sizeof cell[vi], "not run");
-        }
+        for (vi = 0; vi < NVARIANTS; vi++)
+            port_cell(cell[vi], ran[vi], worst[vi][m]);
         NOTE("table | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m].name, cell[0], cell[1], cell[2], cell[3],
              b16);
     }
