@@ -87,13 +87,14 @@ int vkrun_open(vkrun *v, const char *device, char *err, size_t errsize)
     float prio = 1.0f;
     VkDeviceQueueCreateInfo qci;
     VkDeviceCreateInfo dci;
+    VkPhysicalDeviceShaderFloat16Int8Features f16;
     VkCommandPoolCreateInfo pci;
     int found;
     memset(v, 0, sizeof *v);
     memset(&app, 0, sizeof app);
     app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
     app.pApplicationName = "fresnel vkrun";
-    app.apiVersion = VK_API_VERSION_1_0;
+    app.apiVersion = VK_API_VERSION_1_2; /* the highest the device may use; 1.0 devices still work */
     memset(&ici, 0, sizeof ici);
     ici.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
     ici.pApplicationInfo = &app;
@@ -144,6 +145,23 @@ int vkrun_open(vkrun *v, const char *device, char *err, size_t errsize)
     qci.pQueuePriorities = &prio;
     memset(&dci, 0, sizeof dci);
     dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+    /* explicit 16-bit floats in shaders (SPIR-V Float16), where the device
+     * has them: core in Vulkan 1.2 */
+    memset(&f16, 0, sizeof f16);
+    f16.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_FLOAT16_INT8_FEATURES;
+    if (props[found].apiVersion >= VK_API_VERSION_1_2) {
+        VkPhysicalDeviceFeatures2 f2;
+        memset(&f2, 0, sizeof f2);
+        f2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+        f2.pNext = &f16;
+        vkGetPhysicalDeviceFeatures2(v->phys, &f2);
+        if (f16.shaderFloat16) {
+            f16.shaderInt8 = VK_FALSE;
+            f16.pNext = NULL;
+            dci.pNext = &f16;
+            v->float16 = 1;
+        }
+    }
     dci.queueCreateInfoCount = 1;
     dci.pQueueCreateInfos = &qci;
     VKCHECK(vkCreateDevice(v->phys, &dci, NULL, &v->device), "vkCreateDevice");

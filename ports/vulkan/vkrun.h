@@ -35,6 +35,7 @@ typedef struct vkrun {
     VkCommandPool pool;
     char device_name[VK_MAX_PHYSICAL_DEVICE_NAME_SIZE];
     char device_info[160]; /* index, type, vendor, driver version, Vulkan version */
+    int float16;           /* 1: shaderFloat16 is enabled (Vulkan 1.2 devices that have it): Float16 modules run */
 } vkrun;
 
 typedef struct vkrun_pipe {

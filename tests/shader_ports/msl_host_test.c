@@ -51,25 +51,6 @@ static const struct variant {
     {"clang half", "clang++ -std=c++14 -O1 -DFRESNEL_MSL_HALF", 1},
 };
 
-/* The bound of scene model m with FRESNEL_MSL_HALF: the mediump-safe
- * functions compute in half and keep the binary16 runtime's bound
- * (fresnel_f16.h, below 1 for each of them), and so does a residual
- * table's Schlick base; the exact conductor and dielectric, Gulbrandsen,
- * the tables and the film compute in float whatever FRESNEL_MP is (1e-5);
- * Cook-Torrance interpolates in float between F0 and 1 with F0 and its
- * result in half: one binary16 rounding of each, 2 x 2^-11 below 1. */
-static double half_bound(const scene *sc, int m)
-{
-    const model *row = model_of(sc->models[m].row);
-    if (sc->models[m].row == MODEL_ROW_cook_torrance)
-        return 2.0 * 0x1p-11;
-    if (sc->models[m].lut_n && row->form == LUT_RESIDUAL)
-        return FRESNEL_BOUND_SCHLICK_F16;
-    if (sc->models[m].lut_n || row->f16_bound >= 1.0)
-        return HIGHP_BOUND;
-    return port_f16_bound(sc, m);
-}
-
 /* The C++ program: the port, the scene, and a main() printing every model
  * of every material at every cosine (hexadecimal floats, three per line),
  * then with funcs the port functions no scene model calls. */
@@ -184,7 +165,7 @@ int main(int argc, char **argv)
         for (m = 0; m < sc.model_count && ran[vi]; m++) {
             /* the half variants: the mediump-safe functions in half; the
              * others (and the tables, the film) in float whatever */
-            double bound = va->half ? half_bound(&sc, m) : HIGHP_BOUND;
+            double bound = va->half ? port_half_bound(&sc, m) : HIGHP_BOUND;
             snprintf(name, sizeof name, "msl: %s %s, %d materials, %s", ident, sc.models[m].name, nmat, va->name);
             NOTE("%s: max |MSL - C| %.2g (bound %.2g)", name, worst[vi][m], bound);
             CHECK(name, worst[vi][m] <= bound, "max difference %.3g (bound %.3g)", worst[vi][m], bound);
@@ -202,7 +183,7 @@ int main(int argc, char **argv)
         for (vi = 0; vi < NVARIANTS; vi++)
             port_cell(cell[vi], ran[vi], worst[vi][m]);
         NOTE("table | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m].name, cell[0], cell[1], cell[2],
-             cell[3], half_bound(&sc, m));
+             cell[3], port_half_bound(&sc, m));
     }
     free(params);
     free(spectra);

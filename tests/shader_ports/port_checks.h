@@ -10,6 +10,7 @@
 #include <stdlib.h>
 
 #include "fresnel.h"
+#include "fresnel_f16.h"
 #include "fresnel_film.h"
 #include "2_derive/derive.h"
 #include "model/encoded_scene.h"
@@ -121,6 +122,25 @@ static double port_f16_bound(const scene *sc, int m)
     if (sc->models[m].lut_n)
         return row->form == LUT_CUBIC ? FRESNEL_BOUND_LUT_CUBIC_F16 : FRESNEL_BOUND_LUT_F16;
     return 0.0;
+}
+
+/* The bound of scene model m where the mediump-safe functions compute in
+ * binary16 (MSL's FRESNEL_MSL_HALF, SPIR-V's Float16 from mediump): they
+ * keep the binary16 runtime's bound (fresnel_f16.h, below 1 for each of
+ * them), and so does a residual table's Schlick base; the exact conductor and dielectric, Gulbrandsen,
+ * the tables and the film compute in float whatever FRESNEL_MP is (1e-5);
+ * Cook-Torrance interpolates in float between F0 and 1 with F0 and its
+ * result in half: one binary16 rounding of each, 2 x 2^-11 below 1. */
+static double port_half_bound(const scene *sc, int m)
+{
+    const model *row = model_of(sc->models[m].row);
+    if (sc->models[m].row == MODEL_ROW_cook_torrance)
+        return 2.0 * 0x1p-11;
+    if (sc->models[m].lut_n && row->form == LUT_RESIDUAL)
+        return FRESNEL_BOUND_SCHLICK_F16;
+    if (sc->models[m].lut_n || row->f16_bound >= 1.0)
+        return HIGHP_BOUND;
+    return port_f16_bound(sc, m);
 }
 
 #endif

@@ -12,7 +12,7 @@
  * result is compared with what the C runtime computes from the same
  * manifest (gen/model/encoded_scene.c, the evaluation of the C header).
  *
- * Four variants, each one module per model (a specialisation constant picks
+ * Five variants, each one module per model (a specialisation constant picks
  * the material, so each pipeline compiles one function):
  *   glsl highp          default precision highp: max |GPU - C| <= 1e-5, the
  *                       bound of the OSMesa tests (tests/shader_ports/glsl_port_osmesa.c)
@@ -21,6 +21,12 @@
  *   hlsl float          FRESNEL_MP defined as float: <= 1e-5
  *   hlsl min16float     the port's default: min16float in the mediump-safe
  *                       functions, RelaxedPrecision in SPIR-V
+ *   glsl mediump as Float16   the mediump module after spirv-opt
+ *                       --convert-relaxed-to-half: its relaxed operations
+ *                       in explicit 16-bit floats (SPIR-V Float16), run
+ *                       where the device has shaderFloat16 (lavapipe
+ *                       does): within each model's binary16 bound
+ *                       (float16_bound)
  * The two relaxed variants are measured, not asserted (a Vulkan driver may
  * compute RelaxedPrecision at 32 bits, and lavapipe does: NOTE lines say
  * whether the results differ from the full-precision modules at all);
@@ -54,15 +60,16 @@
 
 #define GROUP 64
 
-enum { V_GLSL, V_GLSL_MP, V_HLSL, V_HLSL_MP, NVARIANTS };
+enum { V_GLSL, V_GLSL_MP, V_HLSL, V_HLSL_MP, V_GLSL_HALF, NVARIANTS };
 static const struct variant {
     const char *name, *ext;
-    int hlsl, relaxed;
+    int hlsl, relaxed, half;
 } variants[NVARIANTS] = {
-    {"glsl highp", "comp", 0, 0},
-    {"glsl mediump", "comp", 0, 1},
-    {"hlsl float", "hlsl", 1, 0},
-    {"hlsl min16float", "hlsl", 1, 1},
+    {"glsl highp", "comp", 0, 0, 0},
+    {"glsl mediump", "comp", 0, 1, 0},
+    {"hlsl float", "hlsl", 1, 0, 0},
+    {"hlsl min16float", "hlsl", 1, 1, 0},
+    {"glsl mediump as Float16", "comp", 0, 0, 1},
 };
 
 /* What a user of the HLSL port writes; build_module passes -Iports/hlsl. */
@@ -138,6 +145,16 @@ static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, in
 }
 
 static int build_module(const char *base, const char *label, const struct variant *va);
+
+/* The Float16 variant's bound for scene model m: the binary16 bound of the
+ * functions that compute in binary16 (port_half_bound), and at least one
+ * binary16 rounding of the result (2^-12 below 1) for the highp ones, whose
+ * vec3 result a mediump shader returns in mediump. */
+static double float16_bound(const scene *sc, int m)
+{
+    double b = port_half_bound(sc, m);
+    return b > 0x1p-12 + HIGHP_BOUND ? b : 0x1p-12 + HIGHP_BOUND;
+}
 
 /* The port functions no scene model calls (port_checks.h), on the same grid
  * against the C runtime: one module per front end, a specialisation constant
@@ -256,7 +273,18 @@ static int build_module(const char *base, const char *label, const struct varian
         CHECK(name, 0, "%s: see %s.glslang.log", cmd, base);
         return -1;
     }
-    snprintf(cmd, sizeof cmd, "spirv-val --target-env vulkan1.0 '%s.spv' >'%s.spirv-val.log' 2>&1", base, base);
+    /* the Float16 variant: the mediump module's relaxed operations turned
+     * into explicit 16-bit floats, as a driver that honours mediump runs them */
+    if (va->half) {
+        snprintf(cmd, sizeof cmd, "spirv-opt --convert-relaxed-to-half -O '%s.spv' -o '%s.spv' >'%s.spirv-opt.log' 2>&1",
+                 base, base, base);
+        if (system(cmd) != 0) {
+            CHECK(name, 0, "%s: see %s.spirv-opt.log", cmd, base);
+            return -1;
+        }
+    }
+    snprintf(cmd, sizeof cmd, "spirv-val --target-env vulkan%s '%s.spv' >'%s.spirv-val.log' 2>&1",
+             va->half ? "1.2" : "1.0", base, base);
     if (system(cmd) != 0) {
         CHECK(name, 0, "%s: see %s.spirv-val.log", cmd, base);
         return -1;
@@ -329,8 +357,13 @@ int main(int argc, char **argv)
 
     for (vi = 0; vi < NVARIANTS; vi++) {
         const struct variant *va = &variants[vi];
-        char *scene_src = read_file(argv[va->hlsl ? 5 : 4]);
+        char *scene_src;
         int relaxed_min = -1, relaxed_max = 0, built = 0;
+        if (va->half && !v.float16) {
+            NOTE("vulkan: %s %s: not run: the device has no shaderFloat16", ident, va->name);
+            continue;
+        }
+        scene_src = read_file(argv[va->hlsl ? 5 : 4]);
         if (!scene_src) {
             CHECK("vulkan: scene shader source", 0, "cannot read %s", argv[va->hlsl ? 5 : 4]);
             continue;
@@ -357,7 +390,7 @@ int main(int argc, char **argv)
                 fputs(hlsl_port, f);
             } else {
                 fputs(src[0], f);
-                fputs(va->relaxed ? "precision mediump float;\n" : "precision highp float;\n", f);
+                fputs(va->relaxed || va->half ? "precision mediump float;\n" : "precision highp float;\n", f);
                 fputs(src[1], f);
             }
             fputs(scene_src, f);
@@ -409,6 +442,11 @@ int main(int argc, char **argv)
             if (va->relaxed) {
                 NOTE("%s: max |GPU - C| %.2g (measured; relaxed precision)", name, worst[vi][m]);
                 CHECK(name, bad == 0, "%d results not in [0, 1] (NaN or out of range)", bad);
+            } else if (va->half) {
+                double hb = float16_bound(&sc, m);
+                NOTE("%s: max |GPU - C| %.2g (bound %.2g)", name, worst[vi][m], hb);
+                CHECK(name, bad == 0 && worst[vi][m] <= hb, "max difference %.3g (bound %.3g), %d results not in "
+                      "[0, 1]", worst[vi][m], hb, bad);
             } else {
                 NOTE("%s: max |GPU - C| %.2g (bound %.2g)", name, worst[vi][m], HIGHP_BOUND);
                 CHECK(name, bad == 0 && worst[vi][m] <= HIGHP_BOUND, "max difference %.3g (bound %.3g), %d results "
@@ -421,7 +459,7 @@ int main(int argc, char **argv)
             /* the film's port function is highp throughout */
             NOTE("vulkan: %s %s: %d to %d RelaxedPrecision decorations per module (the scene's functions are "
                  "highp throughout)", ident, va->name, relaxed_min, relaxed_max);
-        } else if (built) {
+        } else if (built && !va->half) {
             char name[256];
             snprintf(name, sizeof name, "vulkan: %s %s: %s RelaxedPrecision decorations (%d to %d per module)", ident,
                      va->name, va->relaxed ? "the modules have" : "no module has", relaxed_min, relaxed_max);
@@ -440,15 +478,15 @@ int main(int argc, char **argv)
         run_funcs(&v, dir, src, cosines);
     /* The table of ports/README.md, after the device it was measured on. */
     NOTE("table device: %s (%s)", v.device_name, v.device_info);
-    NOTE("table | %s | model | GLSL 4.50 highp | GLSL mediump | HLSL float | HLSL min16float | fresnel_f16.h bound |",
+    NOTE("table | %s | model | GLSL 4.50 highp | GLSL mediump | HLSL float | HLSL min16float | GLSL as Float16 | "
+         "Float16 bound |",
          ident);
     for (m = 0; m < sc.model_count; m++) {
-        double b16 = port_f16_bound(&sc, m);
         char cell[NVARIANTS][32];
         for (vi = 0; vi < NVARIANTS; vi++)
             port_cell(cell[vi], ran[vi], worst[vi][m]);
-        NOTE("table | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m].name, cell[0], cell[1], cell[2], cell[3],
-             b16);
+        NOTE("table | %s | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m].name, cell[0], cell[1], cell[2],
+             cell[3], cell[4], float16_bound(&sc, m));
     }
     vkrun_close(&v);
     for (i = 0; i < nmat * sc.model_count; i++)
