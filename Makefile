@@ -143,6 +143,11 @@ $(BUILD)/tests/mixed_precision: tests/shader_ports/mixed_precision.cpp $(MIXED_D
 	@mkdir -p $(@D)
 	$(CXX) -std=c++14 -O2 $(SAN) -Wall -Wextra -Werror -DFRESNEL_MSL_HALF -DFRESNEL_MSL_HOST_MIXED -Iports/msl \
 	    -Itests/shader_ports/msl -Iinclude -Igen -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
+# The WGSL port in a browser (tests/shader_ports/test_wgsl.sh): writes the page, then checks what it logged.
+$(BUILD)/wgsl/wgsl_page_test: tests/shader_ports/wgsl_page_test.c tests/shader_ports/port_checks.h $(GEN_OBJ) \
+                              $(BUILD)/libfresnel.a
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS_GEN) -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
 $(BUILD)/tests/viewer_lit: tests/shader_ports/viewer_lit.c $(GEN_OBJ) $(BUILD)/libfresnel.a
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS_GEN) -Itests/common -o $@ $< $(GEN_OBJ) $(BUILD)/libfresnel.a $(LDLIBS)
@@ -150,7 +155,8 @@ $(BUILD)/tests/viewer_lit: tests/shader_ports/viewer_lit.c $(GEN_OBJ) $(BUILD)/l
 # make check's programs; make test's add the two that link OSMesa and Vulkan.
 check-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
             $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit $(BUILD)/hlsl/fresnel.hlsl \
-            $(BUILD)/msl/msl_host_test $(BUILD)/msl/fresnel.metal $(BUILD)/tests/mixed_precision
+            $(BUILD)/msl/msl_host_test $(BUILD)/msl/fresnel.metal $(BUILD)/tests/mixed_precision \
+            $(BUILD)/wgsl/wgsl_page_test $(BUILD)/wgsl/fresnel.wgsl
 test-bins: check-bins $(BUILD)/glsl/glsl_port_osmesa $(BUILD)/vulkan/vulkan_test
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with
@@ -273,6 +279,7 @@ clean:
 include ports/glsl/glsl.mk
 include ports/hlsl/hlsl.mk
 include ports/msl/msl.mk
+include ports/wgsl/wgsl.mk
 
 # ---- fuzzing ----
 # `make fuzz` runs each libFuzzer target tests/fuzz/fuzz_*.c for FUZZ_SECONDS

@@ -36,6 +36,9 @@ typedef struct emit_backend {
     /* Print the scene to f (and its texture to tex, if not NULL): 0, or
      * CLI_BAD_INPUT after a message (the caller discards the output). */
     int (*print)(FILE *f, FILE *tex, const emit_input *in);
+    /* Without a manifest: print the port alone (a back end whose port is
+     * generated rather than a file of the tree); NULL: a manifest needed. */
+    int (*print_port)(FILE *f);
 } emit_backend;
 extern const emit_backend emit_backends[];
 extern const int emit_backend_count;

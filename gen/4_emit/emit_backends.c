@@ -24,6 +24,12 @@ static int print_msl(FILE *f, FILE *tex, const emit_input *in)
     return emit_msl(f, in);
 }
 
+static int print_wgsl(FILE *f, FILE *tex, const emit_input *in)
+{
+    (void)tex;
+    return emit_wgsl(f, in);
+}
+
 const emit_backend emit_backends[] = {
     {.option = NULL, .usage = "", .print = print_c,
      .help = "Without a back end's option: the C header for include/fresnel.h and the scene's\n"
@@ -41,6 +47,11 @@ const emit_backend emit_backends[] = {
      .help = "--msl writes them as Metal Shading Language for ports/msl/fresnel.metal\n"
              "(constant float3, constant float arrays), with\n"
              "float3 fresnel_<scene>_<material>_<model>_rgb(float c)."},
+    {.option = "--wgsl", .usage = "--wgsl", .shader = 1, .print = print_wgsl, .print_port = emit_wgsl_port,
+     .help = "--wgsl writes one WebGPU (WGSL) module: the port's functions, translated from\n"
+             "ports/glsl/fresnel.glsl, then the scene's const values and arrays, with\n"
+             "fn fresnel_<scene>_<material>_<model>_rgb(c: f32) -> vec3f. Without a SCENE:\n"
+             "the translated port alone."},
 };
 const int emit_backend_count = (int)(sizeof emit_backends / sizeof emit_backends[0]);
 

@@ -53,6 +53,13 @@ int emit_hlsl(FILE *f, const emit_input *in);
 /* The same for ports/msl/fresnel.metal (constant float3, ...). */
 int emit_msl(FILE *f, const emit_input *in);
 
+/* `fresnel gen --wgsl`: the port translated from ports/glsl/fresnel.glsl
+ * (wgsl_translate.c), then the scene, as one WGSL module (emit_wgsl.c). 0,
+ * or CLI_BAD_INPUT after a message. */
+int emit_wgsl(FILE *f, const emit_input *in);
+/* The translated port alone (make wgsl). 0, or -1 after a message. */
+int emit_wgsl_port(FILE *f);
+
 /* The GLSL to f and, if tex is not NULL, the LUT texture as a C header to
  * tex. 0, or CLI_BAD_INPUT after a message (the caller discards both). */
 int emit_glsl(FILE *f, FILE *tex, const emit_input *in);

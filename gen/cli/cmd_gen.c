@@ -120,6 +120,18 @@ int cmd_gen(int argc, char **argv)
             manifest = argv[i];
         }
     }
+    if (!manifest && out_path && backend->print_port && !tex_path) {
+        /* the port alone (make wgsl) */
+        cli_outfile o;
+        int rc = cli_out_open(&o, out_path);
+        if (rc)
+            return rc;
+        if (backend->print_port(o.f)) {
+            cli_out_abort(&o);
+            return CLI_FAILURE;
+        }
+        return cli_out_commit(&o);
+    }
     if (!manifest || !out_path)
         return cli_error(WHERE, "usage: fresnel gen SCENE -o OUT.h (see fresnel gen --help)");
     if (tex_path && !backend->texture)

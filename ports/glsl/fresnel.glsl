@@ -214,13 +214,13 @@
 /* ------------------------------------------------------------- helpers */
 
 FRESNEL_MP fresnel_i_unit(FRESNEL_MP x) { return FRESNEL_SATURATE(x); }
-FRESNEL_MP3 fresnel_i_unit(FRESNEL_MP3 x) { return FRESNEL_SATURATE(x); }
+FRESNEL_MP3 fresnel_i_unit_rgb(FRESNEL_MP3 x) { return FRESNEL_SATURATE(x); }
 FRESNEL_MP fresnel_i_pow5(FRESNEL_MP x)
 {
     FRESNEL_MP x2 = x * x;
     return x2 * x2 * x;
 }
-FRESNEL_MP3 fresnel_i_pow5(FRESNEL_MP3 x)
+FRESNEL_MP3 fresnel_i_pow5_rgb(FRESNEL_MP3 x)
 {
     FRESNEL_MP3 x2 = x * x;
     return x2 * x2 * x;
@@ -270,8 +270,8 @@ FRESNEL_MP fresnel_schlick(FRESNEL_MP f0, FRESNEL_MP c)
 }
 FRESNEL_MP3 fresnel_schlick_rgb(FRESNEL_MP3 f0, FRESNEL_MP c)
 {
-    f0 = fresnel_i_unit(f0);
-    return fresnel_i_unit(f0 + (1.0 - f0) * fresnel_i_pow5(1.0 - fresnel_i_unit(c)));
+    f0 = fresnel_i_unit_rgb(f0);
+    return fresnel_i_unit_rgb(f0 + (1.0 - f0) * fresnel_i_pow5(1.0 - fresnel_i_unit(c)));
 }
 
 /* F0 + (F90 - F0)(1 - c)^p, p clamped to [1e-3, 1e3]. mediump: as Schlick;
@@ -290,11 +290,11 @@ FRESNEL_MP3 fresnel_schlick_gen_rgb(FRESNEL_MP3 f0, FRESNEL_MP3 f90, FRESNEL_MP 
 {
     FRESNEL_MP t;
     c = fresnel_i_unit(c);
-    f0 = fresnel_i_unit(f0);
-    f90 = fresnel_i_unit(f90);
+    f0 = fresnel_i_unit_rgb(f0);
+    f90 = fresnel_i_unit_rgb(f90);
     p = clamp(p, FRESNEL_P_MIN, FRESNEL_P_MAX);
     t = p == 5.0 ? fresnel_i_pow5(1.0 - c) : fresnel_i_pow_one_minus(c, p);
-    return fresnel_i_unit(f0 + (f90 - f0) * t);
+    return fresnel_i_unit_rgb(f0 + (f90 - f0) * t);
 }
 
 /* Schlick at the transmitted angle for eta < 1 (1 past the critical angle).
@@ -375,11 +375,11 @@ FRESNEL_MP fresnel_lsk(FRESNEL_MP n, FRESNEL_MP k, FRESNEL_MP c)
 FRESNEL_MP3 fresnel_lsk_rgb(FRESNEL_MP3 n, FRESNEL_MP3 k, FRESNEL_MP c)
 {
     FRESNEL_MP3 k2;
-    n = clamp(n, FRESNEL_ETA_MIN, FRESNEL_MP_IOR_MAX);
-    k = clamp(k, 0.0, FRESNEL_MP_IOR_MAX);
+    n = clamp(n, FRESNEL_MP3(FRESNEL_ETA_MIN), FRESNEL_MP3(FRESNEL_MP_IOR_MAX));
+    k = clamp(k, FRESNEL_MP3(0.0), FRESNEL_MP3(FRESNEL_MP_IOR_MAX));
     c = fresnel_i_unit(c);
     k2 = k * k;
-    return fresnel_i_unit(((n - 1.0) * (n - 1.0) + 4.0 * n * fresnel_i_pow5(1.0 - c) + k2) /
+    return fresnel_i_unit_rgb(((n - 1.0) * (n - 1.0) + 4.0 * n * fresnel_i_pow5(1.0 - c) + k2) /
                           ((n + 1.0) * (n + 1.0) + k2));
 }
 
@@ -426,13 +426,13 @@ FRESNEL_MP3 fresnel_f82_rgb(FRESNEL_MP3 f0, FRESNEL_MP3 f82, FRESNEL_MP c)
 {
     FRESNEL_MP x, x5;
     FRESNEL_MP3 a;
-    f0 = fresnel_i_unit(f0);
-    f82 = fresnel_i_unit(f82);
+    f0 = fresnel_i_unit_rgb(f0);
+    f82 = fresnel_i_unit_rgb(f82);
     c = fresnel_i_unit(c);
     x = 1.0 - c;
     x5 = fresnel_i_pow5(x);
     a = FRESNEL_I_F82_A1 * (f0 - f82) + FRESNEL_I_F82_A2 * (1.0 - f0);
-    return fresnel_i_unit(f0 + (1.0 - f0) * x5 - a * c * x5 * x);
+    return fresnel_i_unit_rgb(f0 + (1.0 - f0) * x5 - a * c * x5 * x);
 }
 
 /* --------------------------------------------------- approximate conductor */
@@ -623,8 +623,8 @@ float fresnel_cook_torrance(FRESNEL_MP f0, FRESNEL_HP eta, FRESNEL_HP kappa, FRE
 FRESNEL_VEC3 fresnel_cook_torrance_rgb(FRESNEL_MP3 f0, FRESNEL_HP eta, FRESNEL_HP kappa, FRESNEL_HP c)
 {
     FRESNEL_HP t = fresnel_i_cook_torrance_t(eta, kappa, c);
-    f0 = fresnel_i_unit(f0);
-    return FRESNEL_VEC3(fresnel_i_unit(f0 + (1.0 - f0) * t));
+    f0 = fresnel_i_unit_rgb(f0);
+    return FRESNEL_VEC3(fresnel_i_unit_rgb(f0 + (1.0 - f0) * t));
 }
 
 /* --------------------------------------------------------------- LUTs */

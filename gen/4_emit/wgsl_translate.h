@@ -1,0 +1,29 @@
+/* The WGSL port, translated from the one shader source
+ * (ports/glsl/fresnel.glsl, embedded in the tool) rather than written a
+ * second time: a small C preprocessor runs the source with WGSL's spellings
+ * of the shader names (FRESNEL_MP = float, ..., FRESNEL_SATURATE(x) =
+ * saturate(x)), so the GLSL-only parts drop out, and the remaining GLSL
+ * subset (function definitions, local declarations, if/else, return,
+ * assignments, expressions with ?:) is rewritten in WGSL syntax. A scene's
+ * functions (`fresnel gen --wgsl`) are GLSL text of the same form, run
+ * through the same preprocessor state (the port's macros) and translator. */
+#ifndef FRESNEL_WGSL_TRANSLATE_H
+#define FRESNEL_WGSL_TRANSLATE_H
+
+#include <stdio.h>
+
+typedef struct wgsl_tr wgsl_tr;
+
+/* A translator whose macro table holds WGSL's spellings. NULL: no memory. */
+wgsl_tr *wgsl_tr_new(void);
+void wgsl_tr_free(wgsl_tr *t);
+
+/* Preprocess glsl (macros defined by earlier calls stay defined) and print
+ * its function definitions as WGSL to f. 0, or -1 after printing
+ * "wgsl: what was expected" to stderr (a construct outside the subset). */
+int wgsl_tr_text(wgsl_tr *t, const char *glsl, FILE *f);
+
+/* The GLSL port's source as the tool carries it (NUL-terminated). */
+const char *wgsl_glsl_port(void);
+
+#endif

@@ -1,0 +1,99 @@
+#!/bin/sh
+# passes: first (headless Chromium's WebGPU on its SwiftShader, the same in every pass)
+# The WGSL port: for the default scene and the three scenes of the Vulkan
+# test (every model, every LUT kind, the thin film), `fresnel gen --wgsl`
+# (the port translated from ports/glsl/fresnel.glsl, then the scene) runs as
+# a WebGPU compute shader in headless Chromium (Tint on SwiftShader,
+# binary32) on every cosine step of 1/1024, and
+# tests/shader_ports/wgsl_page_test.c compares every material and model with
+# the C runtime (max |WGSL - C| <= 1e-5, every result in [0, 1]); compile
+# errors come back with line numbers from getCompilationInfo(). Then the
+# port alone (make wgsl) compiles there, and gen --wgsl refuses what the
+# port lacks. The table:
+#   BUILD=build sh tests/shader_ports/test_wgsl.sh | sed -n 's/^NOTE table //p'
+BUILD=${BUILD:-build}
+out="$BUILD/wgsl/test"
+timeout_s=${WGSL_TIMEOUT:-240}
+browser=${CHROMIUM:-chromium}
+if ! command -v "$browser" >/dev/null 2>&1; then
+    echo "FAIL wgsl: $browser not found: install Debian's chromium"
+    exit 1
+fi
+for built in "$BUILD/wgsl/wgsl_page_test" "$BUILD/wgsl/fresnel.wgsl" "$BUILD/fresnel"; do
+    if [ ! -f "$built" ]; then
+        echo "FAIL wgsl: $built not built (make check-bins builds it)"
+        exit 1
+    fi
+done
+mkdir -p "$out"
+status=0
+
+# Opens page in headless Chromium and waits (at most timeout_s) for the
+# page's WGSL_DONE line in the log; the browser is stopped either way.
+run_page() { # page log
+    rm -rf "$out/profile"
+    "$browser" --headless=new --no-sandbox --enable-unsafe-webgpu --use-webgpu-adapter=swiftshader \
+        --user-data-dir="$out/profile" --enable-logging=stderr --v=0 "file://$(pwd)/$1" >/dev/null 2>"$2" &
+    pid=$!
+    waited=0
+    while ! grep -q 'WGSL_DONE' "$2" 2>/dev/null; do
+        if ! kill -0 $pid 2>/dev/null || [ $waited -ge $timeout_s ]; then
+            break
+        fi
+        sleep 1
+        waited=$((waited + 1))
+    done
+    kill $pid 2>/dev/null
+    wait $pid 2>/dev/null
+    grep -q 'WGSL_DONE' "$2"
+}
+
+for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene tests/data/scenes/vk_uniform.scene \
+    tests/data/scenes/vk_film.scene; do
+    ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
+    if ! "$BUILD/fresnel" gen "$manifest" --wgsl -o "$out/$ident.wgsl" 2>"$out/gen.log"; then
+        echo "FAIL wgsl: fresnel gen $manifest --wgsl: $(cat "$out/gen.log")"
+        status=1
+        continue
+    fi
+    if ! "$BUILD/wgsl/wgsl_page_test" page "$out/$ident.html" "$manifest" "$ident" "$out/$ident.wgsl"; then
+        status=1
+        continue
+    fi
+    run_page "$out/$ident.html" "$out/$ident.log" || echo "NOTE wgsl: $ident: no WGSL_DONE within ${timeout_s}s"
+    "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/$ident.log" chromium || status=1
+done
+
+# The port alone compiles (an entry point that calls nothing of it).
+{
+    echo '<!DOCTYPE html><html><body><script type="text/wgsl" id="wgsl">'
+    cat "$BUILD/wgsl/fresnel.wgsl"
+    echo '@compute @workgroup_size(1) fn fresnel_test_main() {}'
+    echo '</script><script>'
+    echo '(async () => { try { const d = await (await navigator.gpu.requestAdapter()).requestDevice();'
+    echo '  const m = d.createShaderModule({code: document.getElementById("wgsl").textContent});'
+    echo '  const info = await m.getCompilationInfo(); let bad = 0;'
+    echo '  for (const x of info.messages) { console.log("WGSL " + x.type + " line " + x.lineNum + ": " + x.message);'
+    echo '    if (x.type === "error") bad = 1; }'
+    echo '  console.log(bad ? "WGSL_DONE error" : "WGSL_DONE ok"); } catch (e) { console.log("WGSL_DONE error " + e); } })();'
+    echo '</script></body></html>'
+} >"$out/port.html"
+if run_page "$out/port.html" "$out/port.log" && grep -q 'WGSL_DONE ok' "$out/port.log"; then
+    echo "PASS wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in chromium"
+else
+    echo "FAIL wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in chromium: $(grep -o '"WGSL[^"]*' "$out/port.log" | head -5)"
+    status=1
+fi
+
+# What the port lacks is refused as by --msl: grazing-pl tables, with exit 2 and no output.
+printf 'materials = au\nmodels = lut16\ntypes = q15\nlut_spacing = grazing-pl\n' >"$out/pl.scene"
+rm -f "$out/pl.wgsl"
+"$BUILD/fresnel" gen "$out/pl.scene" --wgsl -o "$out/pl.wgsl" 2>"$out/pl.err"
+rc=$?
+if [ $rc -eq 2 ] && [ ! -e "$out/pl.wgsl" ] && grep -q "pl.scene" "$out/pl.err"; then
+    echo "PASS wgsl: gen --wgsl refuses lut_spacing grazing-pl at the manifest, exit 2, no output"
+else
+    echo "FAIL wgsl: gen --wgsl on a grazing-pl scene: exit $rc, $(head -2 "$out/pl.err")"
+    status=1
+fi
+exit $status

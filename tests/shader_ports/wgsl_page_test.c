@@ -1,0 +1,246 @@
+/* The WGSL port in a browser's WebGPU, two steps around the browser run
+ * (tests/shader_ports/test_wgsl.sh):
+ *
+ *   wgsl_page_test page OUT.html MANIFEST IDENT SCENE.wgsl
+ *       writes a page holding the output of `fresnel gen --wgsl` and a
+ *       compute shader that evaluates every material and model of the scene
+ *       on every cosine c = i/1024, i = -1..1025 (the thin film at
+ *       thicknesses 0-1195 nm scattered over the cosines, port_checks.h),
+ *       and for the default scene the port functions no scene model calls.
+ *       The page reports compile errors (getCompilationInfo, with line
+ *       numbers), then the results as the bits of each binary32 in hex
+ *       (console.log lines "R OFFSET HEX..."), then "WGSL_DONE".
+ *   wgsl_page_test check MANIFEST IDENT LOG BROWSER
+ *       reads those lines back from the browser's log and compares each
+ *       value with what the C runtime computes from the same manifest
+ *       (gen/model/encoded_scene.c): max |WGSL - C| <= 1e-5 per model, every
+ *       result in [0, 1]; NOTE table lines per model.
+ * Run from the top of the tree. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "common/cli.h"
+#include "harness.h"
+#include "port_checks.h"
+#include "1_spectral/spectral.h"
+
+#define WORKGROUP 64
+
+static int copy_file(FILE *f, const char *path)
+{
+    FILE *in = fopen(path, "r");
+    char buf[8192];
+    size_t n;
+    if (!in)
+        return -1;
+    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+        fwrite(buf, 1, n, f);
+    return fclose(in);
+}
+
+/* Slots: model m, material i at (m nmat + i) NCOS 3; then port function k
+ * at the end, one float per cosine. */
+static int write_page(const char *path, const scene *sc, const char *ident, const char *wgsl, int funcs)
+{
+    FILE *f = fopen(path, "w");
+    int i, m, k, nmat = sc->material_count;
+    long nres = 3L * NCOS * nmat * sc->model_count, total = nres + (funcs ? (long)NFUNCS * NCOS : 0);
+    if (!f)
+        return -1;
+    fputs("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>wgsl_page_test</title></head><body>\n"
+          "<script type=\"text/wgsl\" id=\"wgsl\">\n",
+          f);
+    if (copy_file(f, wgsl)) {
+        fclose(f);
+        return -1;
+    }
+    fprintf(f, "\n@group(0) @binding(0) var<storage, read_write> fresnel_test_out: array<f32>;\n"
+               "@compute @workgroup_size(%d)\n"
+               "fn fresnel_test_main(@builtin(global_invocation_id) gid: vec3u) {\n"
+               "    let i = i32(gid.x);\n    if (i >= %d) {\n        return;\n    }\n"
+               "    let c = f32(i + (%d)) / 1024.0;\n    var r: vec3f;\n",
+            WORKGROUP, NCOS, C_LO);
+    for (m = 0; m < sc->model_count; m++)
+        for (i = 0; i < nmat; i++) {
+            int film = (model_of(sc->models[m].row)->offered & MODEL_FILM) != 0;
+            long base = ((long)m * nmat + i) * NCOS * 3;
+            fprintf(f, "    r = fresnel_%s_%s_%s_rgb(c%s);\n", ident, sc->materials[i], sc->models[m].ident,
+                    film ? ", f32((i * 157) % 256) * 4.6875" : "");
+            fprintf(f, "    fresnel_test_out[%ld + 3 * i] = r.x;\n    fresnel_test_out[%ld + 3 * i + 1] = r.y;\n"
+                       "    fresnel_test_out[%ld + 3 * i + 2] = r.z;\n",
+                    base, base, base);
+        }
+    for (k = 0; funcs && k < NFUNCS; k++)
+        fprintf(f, "    fresnel_test_out[%ld + i] = f32(%s);\n", nres + (long)k * NCOS, port_funcs[k].expr);
+    fprintf(f, "}\n</script>\n<script>\n"
+               "const log = (s) => console.log(s);\n"
+               "(async () => {\n"
+               "  try {\n"
+               "    const adapter = await navigator.gpu.requestAdapter();\n"
+               "    const device = await adapter.requestDevice();\n"
+               "    const code = document.getElementById('wgsl').textContent;\n"
+               "    const module = device.createShaderModule({code});\n"
+               "    const info = await module.getCompilationInfo();\n"
+               "    let bad = false;\n"
+               "    for (const msg of info.messages) {\n"
+               "      log('WGSL ' + msg.type + ' line ' + msg.lineNum + ':' + msg.linePos + ': ' + msg.message);\n"
+               "      if (msg.type === 'error') bad = true;\n"
+               "    }\n"
+               "    if (bad) { log('WGSL_DONE compile error'); return; }\n"
+               "    const pipeline = await device.createComputePipelineAsync({layout: 'auto',\n"
+               "      compute: {module, entryPoint: 'fresnel_test_main'}});\n"
+               "    const size = %ld * 4;\n"
+               "    const buf = device.createBuffer({size, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC});\n"
+               "    const rb = device.createBuffer({size, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST});\n"
+               "    const bg = device.createBindGroup({layout: pipeline.getBindGroupLayout(0),\n"
+               "      entries: [{binding: 0, resource: {buffer: buf}}]});\n"
+               "    const enc = device.createCommandEncoder();\n"
+               "    const pass = enc.beginComputePass();\n"
+               "    pass.setPipeline(pipeline);\n    pass.setBindGroup(0, bg);\n"
+               "    pass.dispatchWorkgroups(%d);\n    pass.end();\n"
+               "    enc.copyBufferToBuffer(buf, 0, rb, 0, size);\n"
+               "    device.queue.submit([enc.finish()]);\n"
+               "    await rb.mapAsync(GPUMapMode.READ);\n"
+               "    const u = new Uint32Array(rb.getMappedRange());\n"
+               "    for (let k = 0; k < u.length; k += 256)\n"
+               "      log('R ' + k + ' ' + Array.from(u.subarray(k, k + 256), (x) => x.toString(16)).join(' '));\n"
+               "    log('WGSL_DONE ok');\n"
+               "  } catch (e) {\n"
+               "    log('WGSL_FAIL ' + e);\n    log('WGSL_DONE error');\n"
+               "  }\n"
+               "})();\n</script>\n</body></html>\n",
+            total, (NCOS + WORKGROUP - 1) / WORKGROUP);
+    return fclose(f);
+}
+
+static float from_bits(unsigned long b)
+{
+    unsigned int u = (unsigned int)b;
+    float v;
+    memcpy(&v, &u, sizeof v);
+    return v;
+}
+
+int main(int argc, char **argv)
+{
+    static scene sc;
+    static gen_context gc;
+    static double worst[SCENE_MAX_MODELS], fworst[64];
+    material_params *params;
+    spectrum *spectra;
+    scene_model *models;
+    float *ref, *got;
+    char *line = NULL, name[256];
+    size_t cap = 0;
+    long nres, total, filled = 0;
+    int i, m, k, nmat, funcs, done = 0, bad = 0;
+    FILE *log;
+    const char *ident, *browser;
+    (void)port_f16_bound; /* binary32 only: no binary16 bound applies */
+    if (argc == 6 && !strcmp(argv[1], "page")) {
+        if (scene_load(argv[3], &sc)) {
+            CHECK("wgsl: scene loads", 0, "%s", argv[3]);
+            return harness_exit();
+        }
+        if (write_page(argv[2], &sc, argv[4], argv[5], !strcmp(argv[4], "default"))) {
+            CHECK("wgsl: page written", 0, "%s", argv[2]);
+            return harness_exit();
+        }
+        return 0;
+    }
+    if (argc != 6 || strcmp(argv[1], "check")) {
+        fprintf(stderr, "usage: wgsl_page_test page OUT.html MANIFEST IDENT SCENE.wgsl\n"
+                        "       wgsl_page_test check MANIFEST IDENT LOG BROWSER\n");
+        return 2;
+    }
+    ident = argv[3];
+    browser = argv[5];
+    funcs = !strcmp(ident, "default");
+    if (scene_load(argv[2], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
+        CHECK("wgsl: scene loads", 0, "%s", argv[2]);
+        return harness_exit();
+    }
+    nmat = sc.material_count;
+    nres = 3L * NCOS * nmat * sc.model_count;
+    total = nres + (funcs ? (long)NFUNCS * NCOS : 0);
+    params = calloc((size_t)nmat, sizeof *params);
+    spectra = calloc((size_t)nmat, sizeof *spectra);
+    models = calloc((size_t)nmat * (size_t)sc.model_count, sizeof *models);
+    ref = malloc((size_t)nres * sizeof *ref);
+    got = calloc((size_t)total, sizeof *got);
+    if (!params || !spectra || !models || !ref || !got)
+        return 1;
+    if (port_scene_refs(&sc, &gc, params, spectra, models, ref)) {
+        CHECK("wgsl: the scene's materials derive", 0, "%s", argv[2]);
+        return harness_exit();
+    }
+    if (!(log = fopen(argv[4], "r"))) {
+        CHECK("wgsl: browser log", 0, "cannot read %s", argv[4]);
+        return harness_exit();
+    }
+    while (getline(&line, &cap, log) > 0) {
+        char *p = strstr(line, "\"R "), *e;
+        long off;
+        if (strstr(line, "\"WGSL ") || strstr(line, "WGSL_FAIL"))
+            fprintf(stdout, "wgsl: %s %s", browser, line);
+        if (strstr(line, "WGSL_DONE ok"))
+            done = 1;
+        if (!p)
+            continue;
+        off = strtol(p + 3, &e, 10);
+        for (p = e; off >= 0 && off < total; off++) {
+            unsigned long b = strtoul(p, &e, 16);
+            if (e == p)
+                break;
+            got[off] = from_bits(b);
+            filled++;
+            p = e;
+        }
+    }
+    free(line);
+    fclose(log);
+    snprintf(name, sizeof name, "wgsl: %s, %s runs the module", ident, browser);
+    CHECK(name, done && filled == total, "%ld of %ld results read%s", filled, total,
+          done ? "" : ", no WGSL_DONE ok (see the log)");
+    if (!done || filled != total)
+        return harness_exit();
+    for (m = 0; m < sc.model_count; m++)
+        for (i = 0; i < nmat; i++)
+            for (k = 0; k < 3 * NCOS; k++) {
+                size_t at = ((size_t)m * nmat + i) * NCOS * 3 + (size_t)k;
+                double v = got[at], d = fabs(v - ref[at]);
+                bad += !(v >= 0.0 && v <= 1.0);
+                if (!(d <= worst[m]))
+                    worst[m] = d;
+            }
+    for (k = 0; funcs && k < NFUNCS; k++)
+        for (i = 0; i < NCOS; i++) {
+            double d = port_func_diff(k, got[nres + (long)k * NCOS + i], port_cosine(i));
+            if (!(d <= fworst[k]))
+                fworst[k] = d;
+        }
+    snprintf(name, sizeof name, "wgsl: %s, %s, every result in [0, 1]", ident, browser);
+    CHECK(name, bad == 0, "%d results not in [0, 1]", bad);
+    for (m = 0; m < sc.model_count; m++) {
+        snprintf(name, sizeof name, "wgsl: %s %s, %d materials, %s", ident, sc.models[m].name, nmat, browser);
+        NOTE("%s: max |WGSL - C| %.2g (bound %.2g)", name, worst[m], HIGHP_BOUND);
+        CHECK(name, worst[m] <= HIGHP_BOUND, "max difference %.3g (bound %.3g)", worst[m], HIGHP_BOUND);
+    }
+    for (k = 0; funcs && k < NFUNCS; k++) {
+        snprintf(name, sizeof name, "wgsl: %s, %s", port_funcs[k].expr, browser);
+        NOTE("%s: max |WGSL - C|%s %.2g (bound %.2g)", name, port_funcs[k].rel ? " / max(|C|, 1)" : "", fworst[k],
+             HIGHP_BOUND);
+        CHECK(name, fworst[k] <= HIGHP_BOUND, "max difference %.3g (bound %.3g)", fworst[k], HIGHP_BOUND);
+    }
+    NOTE("table | %s | model | %s |", ident, browser);
+    for (m = 0; m < sc.model_count; m++)
+        NOTE("table | %s | %s | %.2g |", ident, sc.models[m].name, worst[m]);
+    free(params);
+    free(spectra);
+    free(models);
+    free(ref);
+    free(got);
+    return harness_exit();
+}
