@@ -705,9 +705,9 @@ FRESNEL_HP fresnel_lut_cubic_blend(FRESNEL_HP p0, FRESNEL_HP p1, FRESNEL_HP p2, 
  * the node pair around sqrt(c), linear interpolation, six poles
  *   F_j = zeta (A + B zeta) / (1 - P zeta + Q zeta^2),
  *   zeta = exp(2 pi i (x + i y)(nu + i gamma)),
- * and R = a0 + Re(sum_j w_j F_j) per channel, with the GPU's sin, cos and
- * exp where the C runtime has its own polynomials (the phase reduced to one
- * turn first). highp throughout: phases reach a hundred turns, and the
+ * and R = a0 + Re(sum_j w_j F_j) per channel, with the C runtime's
+ * polynomials for cos and sin (the phase reduced to half a turn first) and
+ * the GPU's exp where the C runtime has a polynomial too. highp throughout: phases reach a hundred turns, and the
  * denominators cancel near the fringes' peaks. Const arrays only (GLSL ES
  * 3.00 and desktop 1.30 and later, where FRESNEL_LUT_ARRAYS is 1; HLSL):
  * the table is indexed with a variable. No loops: the six poles are written
@@ -721,10 +721,18 @@ FRESNEL_HP fresnel_lut_cubic_blend(FRESNEL_HP p0, FRESNEL_HP p1, FRESNEL_HP p2, 
 FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a, FRESNEL_HP2 b, FRESNEL_HP2 p,
                                 FRESNEL_HP2 q)
 {
+    /* cos and sin of the phase by src/f32/film.c's polynomials: the phase
+     * less its nearest whole turn, h in [-1/2, 1/2], a quarter of it, then
+     * the double angle twice. A GPU's own sin and cos may be far coarser
+     * (WGSL allows an absolute error of 2^-11; SwiftShader's reaches 1.9e-4,
+     * which moves the film's result by 1.4e-4). */
     FRESNEL_HP turns = xy.x * pole.x - xy.y * pole.y;
-    FRESNEL_HP phase = 6.28318530718 * (turns - floor(turns));
+    FRESNEL_HP qa = 1.57079632679 * (turns - floor(turns + 0.5)), q2 = qa * qa, q4 = q2 * q2;
+    FRESNEL_HP s4 = qa * ((0.999999997 - 0.166666502 * q2) + q4 * (0.00833201724 - 0.000195018938 * q2));
+    FRESNEL_HP c4 = (0.999999968 - 0.499998427 * q2) + q4 * (0.0416544269 - 0.00135794706 * q2);
+    FRESNEL_HP c2 = (c4 - s4) * (c4 + s4), s2 = 2.0 * s4 * c4;
     FRESNEL_HP2 z = exp(-6.28318530718 * max(xy.x * pole.y + xy.y * pole.x, 0.0)) *
-                    FRESNEL_VEC2(cos(phase), sin(phase));
+                    FRESNEL_VEC2((c2 - s2) * (c2 + s2), 2.0 * s2 * c2);
     FRESNEL_HP2 z2 = FRESNEL_VEC2(z.x * z.x - z.y * z.y, 2.0 * z.x * z.y);
     FRESNEL_HP2 n0 = a + FRESNEL_VEC2(b.x * z.x - b.y * z.y, b.x * z.y + b.y * z.x);
     FRESNEL_HP2 n = FRESNEL_VEC2(z.x * n0.x - z.y * n0.y, z.x * n0.y + z.y * n0.x);

@@ -49,6 +49,7 @@ for s in data/scenes/*.scene tests/data/scenes/*.scene tests/data/identity/*.sce
     echo "$s:glsl-texture $s --glsl --glsl-texture TEX"
     echo "$s:hlsl $s --hlsl"
     echo "$s:msl $s --msl"
+    echo "$s:wgsl $s --wgsl"
 done >"$t/runs"
 jobs=${JOBS:-$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
 xargs -P "$jobs" -L 1 sh "$0" --one <"$t/runs" |
