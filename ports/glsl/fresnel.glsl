@@ -34,7 +34,12 @@
  *   and `float` for a result in the default float (GLSL: the default
  *   precision; HLSL: float). A language's prelude defines them and then
  *   includes this file (ports/hlsl/fresnel.hlsl, ports/msl/fresnel.metal);
- *   without one they are GLSL's, below. A value converts between FRESNEL_MP3
+ *   without one they are GLSL's, below. WGSL has no preprocessor and no
+ *   overloading: `fresnel gen --wgsl` runs this file through its own
+ *   preprocessor with WGSL's spellings and rewrites the result
+ *   (gen/4_emit/wgsl_translate.c), so each helper has one name per
+ *   argument type (fresnel_i_unit, fresnel_i_unit_rgb) and a vector is
+ *   clamped between vectors. A value converts between FRESNEL_MP3
  *   and FRESNEL_VEC3 only through a constructor (MSL converts no vector
  *   implicitly), and a conditional's two arms have one type. The texture forms of the tables (sampler2D) are GLSL's
  *   alone. Below, "mediump" means FRESNEL_MP and "highp" FRESNEL_HP.
@@ -724,8 +729,8 @@ FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a,
     /* cos and sin of the phase by src/f32/film.c's polynomials: the phase
      * less its nearest whole turn, h in [-1/2, 1/2], a quarter of it, then
      * the double angle twice. A GPU's own sin and cos may be far coarser
-     * (WGSL allows an absolute error of 2^-11; SwiftShader's reaches 1.9e-4,
-     * which moves the film's result by 1.4e-4). */
+     * (WGSL allows an absolute error of 2^-11; with SwiftShader's the film
+     * missed 1e-5, ports/wgsl/README.md). */
     FRESNEL_HP turns = xy.x * pole.x - xy.y * pole.y;
     FRESNEL_HP qa = 1.57079632679 * (turns - floor(turns + 0.5)), q2 = qa * qa, q4 = q2 * q2;
     FRESNEL_HP s4 = qa * ((0.999999997 - 0.166666502 * q2) + q4 * (0.00833201724 - 0.000195018938 * q2));
