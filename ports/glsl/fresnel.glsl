@@ -729,8 +729,8 @@ FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a,
     /* cos and sin of the phase by src/f32/film.c's polynomials: the phase
      * less its nearest whole turn, h in [-1/2, 1/2], a quarter of it, then
      * the double angle twice. A GPU's own sin and cos may be far coarser
-     * (WGSL allows an absolute error of 2^-11; with SwiftShader's the film
-     * missed 1e-5, ports/wgsl/README.md). */
+     * (WGSL allows an absolute error of 2^-11; SwiftShader's own would put
+     * the film outside 1e-5, ports/wgsl/README.md). */
     FRESNEL_HP turns = xy.x * pole.x - xy.y * pole.y;
     FRESNEL_HP qa = 1.57079632679 * (turns - floor(turns + 0.5)), q2 = qa * qa, q4 = q2 * q2;
     FRESNEL_HP s4 = qa * ((0.999999997 - 0.166666502 * q2) + q4 * (0.00833201724 - 0.000195018938 * q2));
