@@ -4,7 +4,8 @@
 # test (every model, every LUT kind, the thin film), `fresnel gen --wgsl`
 # (the port translated from ports/glsl/fresnel.glsl, then the scene) runs as
 # a WebGPU compute shader in headless Chromium (Tint on SwiftShader,
-# binary32) on every cosine step of 1/1024, and
+# binary32), and with WGSL_FIREFOX=1 also in Firefox ESR (naga on
+# lavapipe), on every cosine step of 1/1024, and
 # tests/shader_ports/wgsl_page_test.c compares every material and model with
 # the C runtime (max |WGSL - C| <= 1e-5, every result in [0, 1]); compile
 # errors come back with line numbers from getCompilationInfo(). Then the
@@ -28,15 +29,24 @@ done
 mkdir -p "$out"
 status=0
 
-# Opens page in headless Chromium and waits (at most timeout_s) for the
-# page's WGSL_DONE line in the log; the browser is stopped either way.
-run_page() { # page log
+# Opens page in headless Chromium (or Firefox) and waits (at most
+# timeout_s) for the page's WGSL_DONE line in the log (Chromium's stderr,
+# Firefox's stdout); the browser is stopped either way.
+run_page() { # page log [firefox]
     rm -rf "$out/profile"
-    "$browser" --headless=new --no-sandbox --enable-unsafe-webgpu --use-webgpu-adapter=swiftshader \
-        --user-data-dir="$out/profile" --enable-logging=stderr --v=0 "file://$(pwd)/$1" >/dev/null 2>"$2" &
+    mkdir -p "$out/profile"
+    if [ "${3-}" = firefox ]; then
+        # WebGPU on (lavapipe, naga) and dump() to stdout
+        printf 'user_pref("%s", true);\n' dom.webgpu.enabled gfx.webgpu.force-enabled gfx.webgpu.ignore-blocklist \
+            browser.dom.window.dump.enabled >"$out/profile/user.js"
+        firefox-esr --headless --no-remote --profile "$(pwd)/$out/profile" "file://$(pwd)/$1" >"$2" 2>&1 &
+    else
+        "$browser" --headless=new --no-sandbox --enable-unsafe-webgpu --use-webgpu-adapter=swiftshader \
+            --user-data-dir="$out/profile" --enable-logging=stderr --v=0 "file://$(pwd)/$1" >/dev/null 2>"$2" &
+    fi
     pid=$!
     waited=0
-    while ! grep -q 'WGSL_DONE' "$2" 2>/dev/null; do
+    while ! grep -aq 'WGSL_DONE' "$2" 2>/dev/null; do
         if ! kill -0 $pid 2>/dev/null || [ $waited -ge $timeout_s ]; then
             break
         fi
@@ -45,8 +55,20 @@ run_page() { # page log
     done
     kill $pid 2>/dev/null
     wait $pid 2>/dev/null
-    grep -q 'WGSL_DONE' "$2"
+    grep -aq 'WGSL_DONE' "$2"
 }
+
+# Firefox ESR (naga on lavapipe), with WGSL_FIREFOX=1: the same pages.
+# Opt-in: lavapipe compiles the larger modules slowly.
+firefox=
+if [ "${WGSL_FIREFOX:-0}" = 1 ]; then
+    if command -v firefox-esr >/dev/null 2>&1; then
+        firefox=firefox
+    else
+        echo "FAIL wgsl: WGSL_FIREFOX=1 but firefox-esr not found: install Debian's firefox-esr"
+        status=1
+    fi
+fi
 
 for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene tests/data/scenes/vk_uniform.scene \
     tests/data/scenes/vk_film.scene; do
@@ -60,8 +82,10 @@ for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene test
         status=1
         continue
     fi
-    run_page "$out/$ident.html" "$out/$ident.log" || echo "NOTE wgsl: $ident: no WGSL_DONE within ${timeout_s}s"
-    "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/$ident.log" chromium || status=1
+    for b in chromium $firefox; do
+        run_page "$out/$ident.html" "$out/${ident}_$b.log" $b || echo "NOTE wgsl: $ident: no WGSL_DONE from $b within ${timeout_s}s"
+        "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/${ident}_$b.log" $b || status=1
+    done
 done
 
 # The port alone compiles (an entry point that calls nothing of it).

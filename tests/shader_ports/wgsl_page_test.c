@@ -75,7 +75,10 @@ static int write_page(const char *path, const scene *sc, const char *ident, cons
     for (k = 0; funcs && k < NFUNCS; k++)
         fprintf(f, "    fresnel_test_out[%ld + i] = f32(%s);\n", nres + (long)k * NCOS, port_funcs[k].expr);
     fprintf(f, "}\n</script>\n<script>\n"
-               "const log = (s) => console.log(s);\n"
+               "const log = (s) => {\n"
+               "  console.log(s);\n"
+               "  if (typeof dump === 'function') dump(s + '\\n'); /* Firefox: to stdout */\n"
+               "};\n"
                "(async () => {\n"
                "  try {\n"
                "    const adapter = await navigator.gpu.requestAdapter();\n"
@@ -181,15 +184,19 @@ int main(int argc, char **argv)
         return harness_exit();
     }
     while (getline(&line, &cap, log) > 0) {
-        char *p = strstr(line, "\"R "), *e;
+        /* Chromium logs "R ..." quoted inside its own line, Firefox's
+         * dump() the bare text */
+        char *p = !strncmp(line, "R ", 2) ? line : strstr(line, "\"R "), *e;
         long off;
-        if (strstr(line, "\"WGSL ") || strstr(line, "WGSL_FAIL"))
+        if (p && p != line)
+            p++;
+        if (strstr(line, "\"WGSL ") || !strncmp(line, "WGSL ", 5) || strstr(line, "WGSL_FAIL"))
             fprintf(stdout, "wgsl: %s %s", browser, line);
         if (strstr(line, "WGSL_DONE ok"))
             done = 1;
         if (!p)
             continue;
-        off = strtol(p + 3, &e, 10);
+        off = strtol(p + 2, &e, 10);
         for (p = e; off >= 0 && off < total; off++) {
             unsigned long b = strtoul(p, &e, 16);
             if (e == p)
