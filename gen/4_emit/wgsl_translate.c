@@ -528,7 +528,7 @@ static void put(out *o, const char *s)
     const char *p = o->prev;
     int unary = 0;
     if ((!strcmp(s, "-") || !strcmp(s, "!") || !strcmp(s, "+")) &&
-        (!*p || (is_op(p) && strcmp(p, ")") && strcmp(p, "]"))))
+        (!*p || !strcmp(p, "return") || (is_op(p) && strcmp(p, ")") && strcmp(p, "]"))))
         unary = 1;
     if (*p && strcmp(p, "(") && strcmp(p, "[") && strcmp(p, ".") && !o->prev_unary && strcmp(s, ")") &&
         strcmp(s, "]") && strcmp(s, ",") && strcmp(s, ";") && strcmp(s, ".") && strcmp(s, "[") &&
