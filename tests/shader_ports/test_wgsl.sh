@@ -1,5 +1,6 @@
 #!/bin/sh
-# passes: first (headless Chromium's WebGPU on its SwiftShader, the same in every pass)
+# passes: first (headless Chromium runs the same pages in every pass)
+# make check: no (headless Chromium)
 # The WGSL port: for the default scene and the three scenes of the Vulkan
 # test (every model, every LUT kind, the thin film), `fresnel gen --wgsl`
 # (the port translated from ports/glsl/fresnel.glsl, then the scene) runs as
