@@ -40,7 +40,7 @@ static void wgsl_array(FILE *f, const char *prefix, const char *ident, const flo
 }
 
 static const char port_comment[] =
-    "/* ---- The Fresnel models of include/fresnel.h as WGSL functions, translated by\n"
+    "/* The Fresnel models of include/fresnel.h as WGSL functions, translated by\n"
     " * fresnel gen from ports/glsl/fresnel.glsl (the one source of every shader port;\n"
     " * its comments hold the derivations, guards and error analysis): the same names\n"
     " * (fresnel_schlick, fresnel_schlick_rgb, ...; vec3f for fresnel_rgb, vec2f for\n"

@@ -1,6 +1,6 @@
 #!/bin/sh
 # passes: all (the shader back ends of the tool, under ASan+UBSan in the sanitize pass)
-# `fresnel gen --glsl` (with --glsl-texture) and `--hlsl` on every committed
+# `fresnel gen --glsl` (with --glsl-texture), `--hlsl`, `--msl` and `--wgsl` on every committed
 # scene and every scene of the shader tests (tests/data/scenes/): exit 0, and a
 # function per material and model. Bad input for either back end: a clear
 # error, exit 2, existing outputs untouched, no temporary left. What the
@@ -14,13 +14,16 @@ trap 'rm -rf "$t"' EXIT
 for manifest in data/scenes/*.scene tests/data/scenes/*.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
     models=$(awk -F= '/^models/ { sub(/#.*/, "", $2); print $2 }' "$manifest" | wc -w)
-    for back in glsl hlsl msl; do
+    for back in glsl hlsl msl wgsl; do
         out=$back
         if [ $back = glsl ]; then
             set -- --glsl -o "$t/$ident.glsl"
             # the texture the LUT models read in GLSL ES 1.00, where there are some
             grep -q '^models *=.*lut' "$manifest" && set -- "$@" --glsl-texture "$t/${ident}_tex.h"
             sig="^vec3 fresnel_${ident}_[a-z0-9_]*_rgb(FRESNEL_HIGHP float c\(, FRESNEL_HIGHP float d_nm\)\{0,1\})$"
+        elif [ $back = wgsl ]; then
+            set -- --wgsl -o "$t/$ident.$out"
+            sig="^fn fresnel_${ident}_[a-z0-9_]*_rgb(c: f32\(, d_nm: f32\)\{0,1\}) -> vec3f {$"
         else
             [ $back = msl ] && out=metal
             set -- --$back -o "$t/$ident.$out"
@@ -81,7 +84,9 @@ expect_bad "a LUT spacing the shader ports lack, --hlsl" "pl.scene:4: expected l
 expect_bad "scene name with __, --hlsl" "no '__'\|double '_'" -- "$t/a__b.scene" --hlsl -o "$t/bad.hlsl"
 expect_bad "a LUT spacing the shader ports lack, --msl" "pl.scene:4: expected lut_spacing grazing or uniform with --msl" -- \
     "$t/pl.scene" --msl -o "$t/bad.hlsl"
-expect_bad "an unknown back end (--wgsl)" "--wgsl" -- data/scenes/default.scene --wgsl -o "$t/bad.hlsl"
+expect_bad "a LUT spacing the shader ports lack, --wgsl" "pl.scene:4: expected lut_spacing grazing or uniform with --wgsl" -- \
+    "$t/pl.scene" --wgsl -o "$t/bad.hlsl"
+expect_bad "an unknown back end (--spirv)" "--spirv" -- data/scenes/default.scene --spirv -o "$t/bad.hlsl"
 expect_bad "--glsl and --hlsl together" "one back end per run" -- data/scenes/default.scene --glsl --hlsl -o "$t/bad.hlsl"
 expect_bad "--glsl-texture with --hlsl" "needs --glsl" -- \
     data/scenes/default.scene --hlsl -o "$t/bad.hlsl" --glsl-texture "$t/bad_tex.h"
