@@ -29,9 +29,9 @@
  * a shader (FILM_D is valid GLSL, HLSL and MSL) and here: 0-1195 nm,
  * scattered over the cosines (every product exact). */
 #define FILM_D "float((i * 157) % 256) * 4.6875"
-static float film_d(int i) { return (float)((i * 157) % 256) * 4.6875f; }
+static inline float film_d(int i) { return (float)((i * 157) % 256) * 4.6875f; }
 
-static float port_cosine(int k) { return (float)(k + C_LO) / 1024.0f; }
+static inline float port_cosine(int k) { return (float)(k + C_LO) / 1024.0f; }
 
 /* The port functions no scene model calls: each an expression of c valid in
  * GLSL, HLSL and MSL, and the C runtime's value. 1/1.5 and 1/1.33 as their
@@ -66,7 +66,7 @@ static const struct port_func {
 #define NFUNCS ((int)(sizeof port_funcs / sizeof port_funcs[0]))
 
 /* |port - C| for port function k, relative where the function's is. */
-static double port_func_diff(int k, double got, float c)
+static inline double port_func_diff(int k, double got, float c)
 {
     double e = port_funcs[k].eval(c), d = got > e ? got - e : e - got;
     if (port_funcs[k].rel && (e > 1.0 || e < -1.0))
@@ -79,8 +79,8 @@ static double port_func_diff(int k, double got, float c)
  * each material's prepared models in models[i model_count + m] (the film's
  * table for a test that hands it to a GPU). 0, or -1 (the scene's
  * materials did not derive). */
-static int port_scene_refs(const scene *sc, const gen_context *gc, material_params *params, spectrum *spectra,
-                           scene_model *models, float *ref)
+static inline int port_scene_refs(const scene *sc, const gen_context *gc, material_params *params,
+                                  spectrum *spectra, scene_model *models, float *ref)
 {
     int i, m, k, nmat = sc->material_count;
     for (i = 0; i < nmat; i++) {
@@ -105,7 +105,7 @@ static int port_scene_refs(const scene *sc, const gen_context *gc, material_para
 }
 
 /* A cell of a port's NOTE table: the max difference, or "not run". */
-static void port_cell(char cell[32], int ran, double worst)
+static inline void port_cell(char cell[32], int ran, double worst)
 {
     if (ran)
         snprintf(cell, 32, "%.2g", worst);
@@ -114,7 +114,7 @@ static void port_cell(char cell[32], int ran, double worst)
 }
 
 /* The binary16 bound of scene model m (fresnel_f16.h's FRESNEL_BOUND_*). */
-static double port_f16_bound(const scene *sc, int m)
+static inline double port_f16_bound(const scene *sc, int m)
 {
     const model *row = model_of(sc->models[m].row);
     if (row->f16_bound > 0.0)
@@ -131,7 +131,7 @@ static double port_f16_bound(const scene *sc, int m)
  * the tables and the film compute in float whatever FRESNEL_MP is (1e-5);
  * Cook-Torrance interpolates in float between F0 and 1 with F0 and its
  * result in half: one binary16 rounding of each, 2 x 2^-11 below 1. */
-static double port_half_bound(const scene *sc, int m)
+static inline double port_half_bound(const scene *sc, int m)
 {
     const model *row = model_of(sc->models[m].row);
     if (sc->models[m].row == MODEL_ROW_cook_torrance)

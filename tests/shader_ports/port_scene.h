@@ -16,8 +16,8 @@
 /* The scene of a port test (label names it in the CHECK line) and room for
  * its materials' parameters, spectra and prepared models
  * ([material][model]). 0, or -1 after a FAIL line. */
-static int port_scene_load(const char *label, const char *manifest, scene *sc, gen_context *gc,
-                           material_params **params, spectrum **spectra, scene_model **models)
+static inline int port_scene_load(const char *label, const char *manifest, scene *sc, gen_context *gc,
+                                  material_params **params, spectrum **spectra, scene_model **models)
 {
     char what[128];
     int nmat;

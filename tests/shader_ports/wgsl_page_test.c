@@ -141,12 +141,6 @@ int main(int argc, char **argv)
     int i, m, k, nmat, funcs, done = 0, bad = 0;
     FILE *log;
     const char *ident, *browser;
-    /* binary32 only: no binary16 bound applies; the shared helpers this
-     * program does without */
-    (void)port_f16_bound;
-    (void)port_half_bound;
-    (void)port_cell;
-    (void)port_scene_load;
     if (argc == 6 && !strcmp(argv[1], "page")) {
         if (scene_load(argv[3], &sc)) {
             CHECK("wgsl: scene loads", 0, "%s", argv[3]);
