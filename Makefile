@@ -296,7 +296,7 @@ FUZZ_GEN     := gen/common/reference.c gen/common/reference_targets.c gen/common
                 gen/1_spectral/resample.c gen/scene/scene.c gen/2_derive/targets.c gen/1_spectral/colour_space.c \
                 gen/1_spectral/colorimetry.c gen/model/registry.c gen/model/number_type.c gen/3_encode/q15_params.c \
                 gen/model/eval_ref.c gen/model/eval_f32.c gen/model/eval_q15.c gen/model/eval_f16.c gen/3_encode/encoded_eta.c \
-                gen/common/reference_film.c
+                gen/common/reference_film.c gen/catalog/catalog.c
 FUZZ_TARGETS := $(patsubst tests/fuzz/%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 
 .PHONY: fuzz fuzz-bins
@@ -328,8 +328,10 @@ $(BUILD)/fuzz/fuzz_f16_models: $(FUZZ_F16_OBJ) $(call fuzz_obj,tests/fuzz/gcc_co
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) $^ -lm -o $@
 
-# The end-to-end generator target links `fresnel gen` and what it calls.
-FUZZ_GEN_HEADER := gen/cli/cmd_gen.c $(filter-out gen/cli/cmd_%.c gen/bench/% gen/report/% gen/viewer/%,$(GEN_SRC))
+# The end-to-end generator target links `fresnel gen` and what it calls
+# (the embedded GLSL port: the WGSL back end translates it).
+FUZZ_GEN_HEADER := gen/cli/cmd_gen.c $(filter-out gen/cli/cmd_%.c gen/bench/% gen/report/% gen/viewer/%,$(GEN_SRC)) \
+                   $(BUILD)/embed/viewer_assets.c
 $(BUILD)/fuzz/fuzz_gen_header: $(call fuzz_obj,tests/fuzz/fuzz_gen_header.c $(LIB_SRC) $(FUZZ_GEN_HEADER))
 	@mkdir -p $(@D)
 	$(FUZZ_CC) $(FUZZ_FLAGS) $^ -lm -o $@
