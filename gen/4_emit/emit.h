@@ -32,10 +32,10 @@ typedef struct emit_backend {
     const char *usage;  /* its part of `fresnel gen`'s usage line */
     const char *help;   /* its paragraph of `fresnel gen --help` */
     int shader;         /* 1: a shader port's source, which emit_shader_check admits a scene to */
-    int texture;        /* 1: it also writes the LUT texture (--glsl-texture) */
-    /* Print the scene to f (and its texture to tex, if not NULL): 0, or
+    int tables;         /* 1: it also writes the tables a program uploads (--tables) */
+    /* Print the scene to f (and its tables to tables, if not NULL): 0, or
      * CLI_BAD_INPUT after a message (the caller discards the output). */
-    int (*print)(FILE *f, FILE *tex, const emit_input *in);
+    int (*print)(FILE *f, FILE *tables, const emit_input *in);
     /* Without a manifest: print the port alone (a back end whose port is
      * generated rather than a file of the tree); NULL: a manifest needed. */
     int (*print_port)(FILE *f);

@@ -24,22 +24,23 @@ static int print_msl(FILE *f, FILE *tex, const emit_input *in)
     return emit_msl(f, in);
 }
 
-static int print_wgsl(FILE *f, FILE *tex, const emit_input *in)
+static int print_wgsl(FILE *f, FILE *tables, const emit_input *in)
 {
-    (void)tex;
-    return emit_wgsl(f, in);
+    return emit_wgsl(f, tables, in);
 }
 
 const emit_backend emit_backends[] = {
     {.option = NULL, .usage = "", .print = print_c,
      .help = "Without a back end's option: the C header for include/fresnel.h and the scene's\n"
              "number types (static const)."},
-    {.option = "--glsl", .usage = "--glsl [--glsl-texture OUT_TEX.h]", .shader = 1, .texture = 1, .print = emit_glsl,
+    {.option = "--glsl", .usage = "--glsl [--tables OUT_TABLES.h]", .shader = 1, .tables = 1, .print = emit_glsl,
      .help = "--glsl writes the same constants as GLSL instead (const vec3, float arrays)\n"
              "for use after ports/glsl/fresnel.glsl, with vec3 fresnel_<scene>_<material>_<model>_rgb(c)\n"
              "per material and model, in every dialect the port supports; lut_spacing\n"
-             "grazing or uniform. --glsl-texture writes, as a C header, the packed RGBA8\n"
-             "texture GLSL ES 1.00 reads the LUT models from (no const arrays there)."},
+             "grazing or uniform. --tables writes, as a C header, what a program uploads:\n"
+             "the packed RGBA8 texture GLSL ES 1.00 reads the LUT models from (no const\n"
+             "arrays there) and the thin film's tables (a texture, a uniform block or a\n"
+             "storage buffer: ports/glsl/README.md)."},
     {.option = "--hlsl", .usage = "--hlsl", .shader = 1, .print = print_hlsl,
      .help = "--hlsl writes them as HLSL for ports/hlsl/fresnel.hlsl (static const float3,\n"
              "float arrays), with float3 fresnel_<scene>_<material>_<model>_rgb(float c)."},
@@ -47,10 +48,11 @@ const emit_backend emit_backends[] = {
      .help = "--msl writes them as Metal Shading Language for ports/msl/fresnel.metal\n"
              "(constant float3, constant float arrays), with\n"
              "float3 fresnel_<scene>_<material>_<model>_rgb(float c)."},
-    {.option = "--wgsl", .usage = "--wgsl", .shader = 1, .print = print_wgsl, .print_port = emit_wgsl_port,
+    {.option = "--wgsl", .usage = "--wgsl [--tables OUT_TABLES.h]", .shader = 1, .tables = 1, .print = print_wgsl, .print_port = emit_wgsl_port,
      .help = "--wgsl writes one WebGPU (WGSL) module: the port's functions, translated from\n"
              "ports/glsl/fresnel.glsl, then the scene's const values and arrays, with\n"
-             "fn fresnel_<scene>_<material>_<model>_rgb(c: f32) -> vec3f. Without a SCENE:\n"
+             "fn fresnel_<scene>_<material>_<model>_rgb(c: f32) -> vec3f; the thin film\n"
+             "reads a storage buffer, whose contents --tables writes. Without a SCENE:\n"
              "the translated port alone."},
 };
 const int emit_backend_count = (int)(sizeof emit_backends / sizeof emit_backends[0]);

@@ -255,7 +255,7 @@ const char *emit_shader_more_params(const scene_entry *e, const char *float_type
 /* vec3 <prefix>_<model>_rgb(c): the model for this material, as
  * gen/model/encoded_scene.c evaluates it with the C runtime. */
 static void emit_model_function(FILE *f, const char *scene_prefix, const char *prefix, const scene_entry *e,
-                                const glsl_lut *u, lut_spacing spacing)
+                                const glsl_lut *u, lut_spacing spacing, const char *guard, int row)
 {
     fprintf(f, "vec3 %s_%s_rgb(FRESNEL_HIGHP float c%s)\n{\n", prefix, e->ident,
             emit_shader_more_params(e, "FRESNEL_HIGHP float"));
@@ -272,12 +272,29 @@ static void emit_model_function(FILE *f, const char *scene_prefix, const char *p
                 kind, f0, scene_prefix, prefix, u->name, u->n);
         return;
     }
-    fputs(model_of(e->row)->offered & MODEL_FILM ? "    " : "    return ", f); /* the film's is a body */
+    if (model_of(e->row)->offered & MODEL_FILM) { /* a body, over the scene's film route */
+        fputs("    ", f);
+        emit_shader_film_read(f, guard, row);
+        fputs("\n}\n", f);
+        return;
+    }
+    fputs("    return ", f);
     emit_shader_model_expr(f, prefix, model_of(e->row));
-    fputs(model_of(e->row)->offered & MODEL_FILM ? "\n}\n" : ";\n}\n", f);
+    fputs(";\n}\n", f);
 }
 
-static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, const char *guard)
+static int scene_has_film(const scene *sc)
+{
+    int m;
+    for (m = 0; m < sc->model_count; m++)
+        if (model_of(sc->models[m].row)->offered & MODEL_FILM)
+            return 1;
+    return 0;
+}
+
+/* The packed RGBA8 LUT texture's bytes (fresnel_lut_packed_rgb): 0, or
+ * CLI_BAD_INPUT after a message. */
+static int emit_lut_texture(FILE *f, const emit_input *in, const glsl_layout *l, const char *guard)
 {
     unsigned char *px = calloc((size_t)l->width * (size_t)l->height * 4, 1);
     size_t i, total = (size_t)l->width * (size_t)l->height * 4;
@@ -304,27 +321,134 @@ static int emit_texture(FILE *f, const emit_input *in, const glsl_layout *l, con
                 t[3] = (unsigned char)(b & 255);
             }
     }
-    fprintf(f, "/* LUT texture of the Fresnel scene \"%s\" for its GLSL (fresnel gen %s --glsl from %s).\n"
-               " * Do not edit: regenerate. Upload as the sampler uniform fresnel_%s_lut_texture:\n"
+    fprintf(f, "/* The LUT texture, for the GLSL where FRESNEL_LUT_ARRAYS is 0 (GLSL ES 1.00, desktop\n"
+               " * 1.10 and 1.20). Upload as the sampler uniform fresnel_%s_lut_texture:\n"
                " *   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, FRESNEL_%s_LUT_TEXTURE_WIDTH,\n"
                " *                FRESNEL_%s_LUT_TEXTURE_HEIGHT, 0, GL_RGBA, GL_UNSIGNED_BYTE, fresnel_%s_lut_texture);\n"
                " * with GL_NEAREST filters, GL_CLAMP_TO_EDGE and no mipmaps (rows bottom to top, as GL\n"
-               " * reads them). Needed where the GLSL has FRESNEL_LUT_ARRAYS 0 (GLSL ES 1.00, desktop\n"
-               " * 1.10 and 1.20). Texel layout and node code: fresnel_lut_packed_rgb in\n"
+               " * reads them). Texel layout and node code: fresnel_lut_packed_rgb in\n"
                " * ports/glsl/fresnel.glsl. */\n",
-            in->name, GEN_VERSION, in->manifest_name, in->name, guard, guard, in->name);
-    fprintf(f, "#ifndef FRESNEL_SCENE_%s_LUT_TEXTURE_H\n#define FRESNEL_SCENE_%s_LUT_TEXTURE_H\n\n", guard, guard);
-    fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
-               "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n\n");
+            in->name, guard, guard, in->name);
     fprintf(f, "#define FRESNEL_%s_LUT_TEXTURE_WIDTH %d\n#define FRESNEL_%s_LUT_TEXTURE_HEIGHT %d\n", guard, l->width,
             guard, l->height);
     fprintf(f, "static const unsigned char fresnel_%s_lut_texture[%d * %d * 4] FRESNEL_GEN_UNUSED = {", in->name,
             l->height, l->width);
     for (i = 0; i < total; i++)
         fprintf(f, "%s%u%s", i % 16 == 0 ? "\n    " : " ", (unsigned)px[i], i + 1 < total ? "," : "");
-    fprintf(f, "\n};\n\n#endif\n");
+    fprintf(f, "\n};\n\n");
     free(px);
     return 0;
+}
+
+/* The thin film's tables, one row of FILM_FLOATS binary32 values per
+ * material, for every route of emit_film_routes. */
+static void emit_film_tables(FILE *f, const emit_input *in, const char *guard)
+{
+    int i, k, rows = in->sc->material_count;
+    fprintf(f, "/* The thin film's tables: row i (the scene's material i, named before it) is its\n"
+               " * fresnel_film (include/fresnel_film.h) as %d binary32 values in the struct's order.\n"
+               " * Feed them to the GPU by the route the shader chose (ports/glsl/README.md):\n"
+               " *   texture (default): glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, FRESNEL_%s_FILM_TEXELS,\n"
+               " *     FRESNEL_%s_FILM_ROWS, 0, GL_RGBA, GL_FLOAT, fresnel_%s_film_table), GL_NEAREST\n"
+               " *     filters, no mipmaps, to the sampler uniform fresnel_%s_film_texture;\n"
+               " *   FRESNEL_FILM_UNIFORM: these bytes as the uniform block fresnel_%s_film_block (std140);\n"
+               " *   FRESNEL_FILM_STORAGE, WGSL: these bytes as the storage buffer fresnel_%s_film (std430). */\n",
+            FILM_FLOATS, guard, guard, in->name, in->name, in->name, in->name);
+    fprintf(f, "#define FRESNEL_%s_FILM_ROWS %d\n#define FRESNEL_%s_FILM_TEXELS %d\n", guard, rows, guard,
+            FILM_FLOATS / 4);
+    fprintf(f, "static const float fresnel_%s_film_table[%d * %d] FRESNEL_GEN_UNUSED = {", in->name, rows,
+            FILM_FLOATS);
+    for (i = 0; i < rows; i++) {
+        const float *v = &in->films[i].f32.freq[0];
+        fprintf(f, "\n    /* %s */", in->params[i].info.id);
+        for (k = 0; k < FILM_FLOATS; k++) {
+            fputs(k % 6 == 0 ? "\n    " : " ", f);
+            emit_c_float(f, v[k]);
+            if (k + 1 < FILM_FLOATS || i + 1 < rows)
+                fputc(',', f);
+        }
+    }
+    fprintf(f, "\n};\n\n");
+}
+
+static int write_tables(FILE *f, const emit_input *in, const glsl_layout *l, const char *flag)
+{
+    char guard[96];
+    int i, status = 0, film = scene_has_film(in->sc);
+    if (!film && (!l || l->count == 0))
+        return cli_error(WHERE, "--tables: scene %s has %s, so no tables to write", in->manifest_name,
+                         l ? "no LUT model and no thin film" : "no thin film");
+    for (i = 0; in->name[i] && i < 95; i++)
+        guard[i] = (char)toupper((unsigned char)in->name[i]);
+    guard[i] = '\0';
+    fprintf(f, "/* Tables of the Fresnel scene \"%s\" for its %s (fresnel gen %s %s --tables from %s),\n"
+               " * as a C header a program uploads to the GPU. Do not edit: regenerate. */\n",
+            in->name, flag, GEN_VERSION, flag, in->manifest_name);
+    fprintf(f, "#ifndef FRESNEL_SCENE_%s_TABLES_H\n#define FRESNEL_SCENE_%s_TABLES_H\n\n", guard, guard);
+    fprintf(f, "#ifndef FRESNEL_GEN_UNUSED\n#if defined(__GNUC__)\n#define FRESNEL_GEN_UNUSED __attribute__((unused))\n"
+               "#else\n#define FRESNEL_GEN_UNUSED\n#endif\n#endif\n\n");
+    if (l && l->count)
+        status = emit_lut_texture(f, in, l, guard);
+    if (film && !status)
+        emit_film_tables(f, in, guard);
+    fprintf(f, "#endif\n");
+    return status;
+}
+
+int emit_shader_film_tables(FILE *f, const emit_input *in, const char *flag)
+{
+    return write_tables(f, in, NULL, flag);
+}
+
+/* The routes by which a scene's GLSL reads the film's tables (one row per
+ * material), chosen by the includer's macros, each defining the reader
+ * FRESNEL_<SCENE>_FILM_READ(row, i) for FRESNEL_FILM_RGB_READ. */
+static void emit_film_routes(FILE *f, const emit_input *in, const char *guard)
+{
+    int rows = in->sc->material_count, bytes = rows * FILM_FLOATS * 4;
+    const char *s = in->name;
+    fprintf(f, "/* The thin film: its tables (one row of %d floats per material, written by --tables)\n"
+               " * reach the shader by one of three routes, chosen before this file:\n"
+               " *   the texture route (default but in Vulkan; GLSL ES 3.00 / WebGL 2, desktop 1.30+):\n"
+               " *     the sampler uniform fresnel_%s_film_texture, RGBA32F, %d x %d texels;\n"
+               " *   #define FRESNEL_FILM_UNIFORM: the uniform block fresnel_%s_film_block (std140,\n"
+               " *     %d bytes; GLES 3.0 guarantees 16384 per block);\n"
+               " *   #define FRESNEL_FILM_STORAGE (the default in Vulkan): the read-only storage buffer\n"
+               " *     fresnel_%s_film_buffer (std430; GLSL ES 3.10, desktop 4.30, Vulkan).\n"
+               " * The storage buffer sits at binding FRESNEL_FILM_BINDING (default 0); in Vulkan both\n"
+               " * blocks do, in set FRESNEL_FILM_SET (default 0). In GL, bind the uniform block with\n"
+               " * glUniformBlockBinding (GLSL ES 3.00 has no binding qualifier). */\n",
+            FILM_FLOATS, s, FILM_FLOATS / 4, rows, s, bytes, s);
+    fprintf(f, "#if FRESNEL_FILM\n#ifndef FRESNEL_FILM_BINDING\n#define FRESNEL_FILM_BINDING 0\n#endif\n"
+               "#if defined(VULKAN)\n#ifndef FRESNEL_FILM_SET\n#define FRESNEL_FILM_SET 0\n#endif\n"
+               "#define FRESNEL_I_FILM_LAYOUT(packing) layout(packing, set = FRESNEL_FILM_SET, binding = "
+               "FRESNEL_FILM_BINDING)\n"
+               "#else\n#define FRESNEL_I_FILM_LAYOUT(packing) layout(packing, binding = FRESNEL_FILM_BINDING)\n"
+               "#endif\n");
+    fprintf(f, "#if defined(FRESNEL_FILM_STORAGE) || (defined(VULKAN) && !defined(FRESNEL_FILM_UNIFORM))\n"
+               "FRESNEL_I_FILM_LAYOUT(std430) readonly buffer fresnel_%s_film_buffer\n{\n"
+               "    FRESNEL_HIGHP float fresnel_%s_film[];\n};\n"
+               "#define FRESNEL_%s_FILM_READ(row, i) fresnel_%s_film[(row) * %d + (i)]\n",
+            s, s, guard, s, FILM_FLOATS);
+    fputs("#elif defined(FRESNEL_FILM_UNIFORM)\n", f);
+    if (bytes > 16384)
+        fprintf(f, "#error \"scene %s: %d film tables are %d bytes, over the 16384 of a uniform block GLES 3.0 "
+                   "guarantees: use the texture or storage route\"\n",
+                s, rows, bytes);
+    fprintf(f, "#if defined(VULKAN)\nFRESNEL_I_FILM_LAYOUT(std140)\n#else\nlayout(std140)\n#endif\n"
+               "uniform fresnel_%s_film_block\n{\n"
+               "    FRESNEL_HIGHP vec4 fresnel_%s_film[%d];\n};\n"
+               "#define FRESNEL_%s_FILM_READ(row, i) fresnel_%s_film[(row) * %d + (i) / 4][(i) - 4 * ((i) / 4)]\n",
+            s, s, rows * FILM_FLOATS / 4, guard, s, FILM_FLOATS / 4);
+    fprintf(f, "#else\nuniform FRESNEL_HIGHP sampler2D fresnel_%s_film_texture;\n"
+               "#define FRESNEL_%s_FILM_READ(row, i) fresnel_film_texel(fresnel_%s_film_texture, row, i)\n"
+               "#endif\n#endif\n",
+            s, guard, s);
+}
+
+void emit_shader_film_read(FILE *f, const char *guard, int row)
+{
+    fprintf(f, "FRESNEL_FILM_RGB_READ(FRESNEL_%s_FILM_READ, %d, c, d_nm)", guard, row);
 }
 
 void emit_shader_opening(FILE *f, const emit_input *in, char guard[96])
@@ -350,7 +474,7 @@ void emit_shader_opening(FILE *f, const emit_input *in, char guard[96])
     emit_material_list(f, in);
 }
 
-int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
+int emit_glsl(FILE *f, FILE *tables, const emit_input *in)
 {
     const scene *sc = in->sc;
     lut_spacing spacing = sc->spacing;
@@ -360,10 +484,6 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
     snprintf(scene_prefix, sizeof scene_prefix, "fresnel_%s", in->name);
     if ((status = layout_build(in, &l)))
         return status;
-    if (tex && l.count == 0) {
-        layout_free(&l);
-        return cli_error(WHERE, "--glsl-texture: scene %s has no LUT model, so no texture to write", in->manifest_name);
-    }
 
     emit_shader_opening(f, in, guard);
     fprintf(f, " * GLSL for every dialect of ports/glsl/fresnel.glsl (GLSL ES 1.00, ES 3.00, desktop 3.30 and\n"
@@ -376,7 +496,7 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
                    " * where it is 0 (GLSL ES 1.00, desktop 1.10 and 1.20) a strip of the packed RGBA8 texture\n"
                    " * in the sampler uniform %s_lut_texture, %d x %d texels, 16 bits per node\n"
                    " * (quantisation <= 2^-16), whose\n"
-                   " * bytes `fresnel gen %s --glsl -o OUT.glsl --glsl-texture OUT_TEX.h` writes as a C array;\n"
+                   " * bytes `fresnel gen %s --glsl -o OUT.glsl --tables OUT_TABLES.h` writes as a C array;\n"
                    " * in fragment shaders (ES 2.0 promises no vertex texture units).\n",
                 scene_prefix, l.width, l.height, in->manifest_name);
     fprintf(f, " */\n#ifndef FRESNEL_SCENE_%s_GLSL\n#define FRESNEL_SCENE_%s_GLSL\n", guard, guard);
@@ -384,6 +504,8 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
                "#error \"paste ports/glsl/fresnel.glsl (with FRESNEL_LUT_ARRAYS) before this file\"\n#endif\n");
     if (l.count)
         fprintf(f, "#if !FRESNEL_LUT_ARRAYS\nuniform FRESNEL_HIGHP sampler2D %s_lut_texture;\n#endif\n", scene_prefix);
+    if (scene_has_film(sc))
+        emit_film_routes(f, in, guard);
 
     for (i = 0; i < sc->material_count; i++) {
         const material_params *p = &in->params[i];
@@ -398,19 +520,15 @@ int emit_glsl(FILE *f, FILE *tex, const emit_input *in)
         }
         for (m = 0; m < sc->model_count; m++) {
             const scene_entry *e = &sc->models[m];
-            if (model_of(e->row)->offered & MODEL_FILM) { /* const arrays only: none in GLSL ES 1.00 */
-                char open[32];
-                snprintf(open, sizeof open, "float[%d](", FILM_FLOATS);
-                fputs("#if FRESNEL_LUT_ARRAYS\n", f);
-                emit_shader_film_table(f, in, i, prefix, e, "const FRESNEL_HIGHP float", open, ")");
-            }
-            emit_model_function(f, scene_prefix, prefix, e, layout_find(&l, i, m), spacing);
+            if (model_of(e->row)->offered & MODEL_FILM) /* none in GLSL ES 1.00, desktop 1.10, 1.20 */
+                fputs("#if FRESNEL_FILM\n", f);
+            emit_model_function(f, scene_prefix, prefix, e, layout_find(&l, i, m), spacing, guard, i);
             if (model_of(e->row)->offered & MODEL_FILM)
                 fputs("#endif\n", f);
         }
     }
     fprintf(f, "\n#endif\n");
-    status = tex ? emit_texture(tex, in, &l, guard) : 0;
+    status = tables ? write_tables(tables, in, &l, "--glsl") : 0;
     layout_free(&l);
     return status;
 }

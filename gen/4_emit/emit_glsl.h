@@ -56,13 +56,20 @@ int emit_msl(FILE *f, const emit_input *in);
 /* `fresnel gen --wgsl`: the port translated from ports/glsl/fresnel.glsl
  * (wgsl_translate.c), then the scene, as one WGSL module (emit_wgsl.c). 0,
  * or CLI_BAD_INPUT after a message. */
-int emit_wgsl(FILE *f, const emit_input *in);
+int emit_wgsl(FILE *f, FILE *tables, const emit_input *in);
 /* The translated port alone (make wgsl). 0, or -1 after a message. */
 int emit_wgsl_port(FILE *f);
 
-/* The GLSL to f and, if tex is not NULL, the LUT texture as a C header to
- * tex. 0, or CLI_BAD_INPUT after a message (the caller discards both). */
-int emit_glsl(FILE *f, FILE *tex, const emit_input *in);
+/* The GLSL to f and, if tables is not NULL, the tables a program uploads
+ * (the LUT texture, the film's tables) as a C header to tables. 0, or
+ * CLI_BAD_INPUT after a message (the caller discards both). */
+int emit_glsl(FILE *f, FILE *tables, const emit_input *in);
+/* The film's tables alone as that C header (--wgsl --tables); flag names
+ * the back end. 0, or CLI_BAD_INPUT (a scene without a film). */
+int emit_shader_film_tables(FILE *f, const emit_input *in, const char *flag);
+/* FRESNEL_FILM_RGB_READ(FRESNEL_<guard>_FILM_READ, row, c, d_nm): the film
+ * function's body over the scene's film route, for material row. */
+void emit_shader_film_read(FILE *f, const char *guard, int row);
 
 /* A LUT node's 16-bit texel code: round(v 2^15) + 2^14 for v rounded to
  * binary32 first (what the C tables hold); -1 outside [-0.5, 1.5). */

@@ -70,7 +70,7 @@ int emit_wgsl_port(FILE *f)
 
 /* The GLSL text of model m's function for material prefix, as the other
  * shader back ends write it. NULL: no memory. */
-static char *model_glsl(const emit_input *in, const char *prefix, int m)
+static char *model_glsl(const emit_input *in, const char *prefix, int m, const char *guard, int material)
 {
     const scene_entry *e = &in->sc->models[m];
     const model *row = model_of(e->row);
@@ -81,7 +81,9 @@ static char *model_glsl(const emit_input *in, const char *prefix, int m)
         return NULL;
     fprintf(g, "vec3 %s_%s_rgb(float c%s)\n{\n    %s", prefix, e->ident, emit_shader_more_params(e, "float"),
             row->offered & MODEL_FILM ? "" : "return "); /* the film's is a body */
-    if (e->lut_n)
+    if (row->offered & MODEL_FILM)
+        emit_shader_film_read(g, guard, material);
+    else if (e->lut_n)
         emit_shader_lut_array_call(g, prefix, e->ident, e->lut_n, row->form, in->sc->spacing);
     else
         emit_shader_model_expr(g, prefix, row);
@@ -93,7 +95,23 @@ static char *model_glsl(const emit_input *in, const char *prefix, int m)
     return buf;
 }
 
-int emit_wgsl(FILE *f, const emit_input *in)
+/* The film's storage buffer, and its reader for FRESNEL_FILM_RGB_READ
+ * defined in the translator (t) rather than printed. */
+static int wgsl_film_buffer(FILE *f, wgsl_tr *t, const emit_input *in, const char *guard)
+{
+    char def[256];
+    fprintf(f, "\n/* The thin film's tables: one row of %d binary32 values per material (the\n"
+               " * order of fresnel_film in include/fresnel_film.h; material i in row i), %d bytes,\n"
+               " * bound as a read-only storage buffer at @group(0) @binding(0); `fresnel gen\n"
+               " * %s --wgsl --tables OUT.h` writes them as a C array. */\n"
+               "@group(0) @binding(0) var<storage, read> fresnel_%s_film: array<f32>;\n",
+            FILM_FLOATS, in->sc->material_count * FILM_FLOATS * 4, in->manifest_name, in->name);
+    snprintf(def, sizeof def, "#define FRESNEL_%s_FILM_READ(row, i) fresnel_%s_film[(row) * %d + (i)]\n", guard,
+             in->name, FILM_FLOATS);
+    return wgsl_tr_text(t, def, f);
+}
+
+int emit_wgsl(FILE *f, FILE *tables, const emit_input *in)
 {
     const scene *sc = in->sc;
     char guard[96];
@@ -107,9 +125,13 @@ int emit_wgsl(FILE *f, const emit_input *in)
                " * fn fresnel_%s_<material>_<model>_rgb(c: f32) -> vec3f (lsk-comp -> lsk_comp;\n"
                " * the thin film's also takes d_nm: f32), computing what the C runtime computes\n"
                " * from the C header of the same manifest. Constants and tables are module-scope\n"
-               " * const (binary32). WGSL has no #include: prepend this text to a shader.\n */\n",
+               " * const (binary32), but for the thin film's (a storage buffer, below). WGSL has\n"
+               " * no #include: prepend this text to a shader.\n */\n",
             in->name);
     rc = wgsl_port(f, t);
+    for (m = 0; m < sc->model_count && !rc; m++)
+        if (model_of(sc->models[m].row)->offered & MODEL_FILM)
+            rc = wgsl_film_buffer(f, t, in, guard);
     for (i = 0; i < sc->material_count && !rc; i++) {
         const material_params *p = &in->params[i];
         char prefix[160];
@@ -123,12 +145,10 @@ int emit_wgsl(FILE *f, const emit_input *in)
                 fprintf(f, "/* %s: %d nodes per channel (red, then green, then blue). */\n", e->ident, e->lut_n);
                 wgsl_array(f, prefix, e->ident, emit_lut(in, i, m)->f32, 3 * e->lut_n);
             }
-            if (model_of(e->row)->offered & MODEL_FILM) {
-                fprintf(f, "/* %s: a film of index %g on %s, the binary32 table of fresnel_film.h. */\n", e->name,
-                        in->films[i].n_film, p->info.id);
-                wgsl_array(f, prefix, e->ident, &in->films[i].f32.freq[0], FILM_FLOATS);
-            }
-            if (!(text = model_glsl(in, prefix, m)))
+            if (model_of(e->row)->offered & MODEL_FILM)
+                fprintf(f, "/* %s: a film of index %g on %s: row %d of fresnel_%s_film. */\n", e->name,
+                        in->films[i].n_film, p->info.id, i, in->name);
+            if (!(text = model_glsl(in, prefix, m, guard, i)))
                 rc = cli_error("wgsl", "out of memory");
             else if (wgsl_tr_text(t, text, f))
                 rc = cli_error("wgsl", "cannot translate the function of %s, %s", p->info.id, e->name);
@@ -136,5 +156,7 @@ int emit_wgsl(FILE *f, const emit_input *in)
         }
     }
     wgsl_tr_free(t);
+    if (!rc && tables)
+        rc = emit_shader_film_tables(tables, in, "--wgsl");
     return rc;
 }

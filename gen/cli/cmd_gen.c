@@ -88,7 +88,7 @@ int cmd_gen(int argc, char **argv)
     for (i = 0; i < emit_backend_count && n < 8; i++)
         if (emit_backends[i].option)
             options[n++] = emit_backends[i].option;
-    options[n++] = "--glsl-texture";
+    options[n++] = "--tables";
     options[n++] = "--data";
     options[n++] = "--help";
     options[n] = NULL;
@@ -102,13 +102,13 @@ int cmd_gen(int argc, char **argv)
                 return cli_error(WHERE, "%s and %s: one back end per run (see fresnel gen --help)", backend->option,
                                  chosen->option);
             backend = chosen;
-        } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data") || !strcmp(argv[i], "--glsl-texture")) {
+        } else if (!strcmp(argv[i], "-o") || !strcmp(argv[i], "--data") || !strcmp(argv[i], "--tables")) {
             const char *opt = argv[i], *val = cli_option_value(WHERE, argc, argv, &i);
             if (!val)
                 return CLI_BAD_INPUT;
             if (!strcmp(opt, "-o"))
                 out_path = val;
-            else if (!strcmp(opt, "--glsl-texture"))
+            else if (!strcmp(opt, "--tables"))
                 tex_path = val;
             else
                 dir_option = val;
@@ -134,11 +134,11 @@ int cmd_gen(int argc, char **argv)
     }
     if (!manifest || !out_path)
         return cli_error(WHERE, "usage: fresnel gen SCENE -o OUT.h (see fresnel gen --help)");
-    if (tex_path && !backend->texture)
-        return cli_error(WHERE, "--glsl-texture needs --glsl (see fresnel gen --help)");
+    if (tex_path && !backend->tables)
+        return cli_error(WHERE, "--tables needs --glsl or --wgsl (see fresnel gen --help)");
     /* Neither may be a file the run reads (the manifest, a material's file,
      * the data pack): cli_out_open refuses those. */
     if (tex_path && (!strcmp(tex_path, out_path) || cli_out_is_input(tex_path, out_path)))
-        return cli_error(WHERE, "--glsl-texture and -o name the same file '%s'", tex_path);
+        return cli_error(WHERE, "--tables and -o name the same file '%s'", tex_path);
     return emit_scene(manifest, out_path, tex_path, dir_option, backend);
 }

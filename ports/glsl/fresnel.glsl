@@ -162,8 +162,11 @@
 
 #if __VERSION__ >= 130
 #define FRESNEL_TEXTURE texture
+/* the thin film: integers, texelFetch, tables indexed with a variable */
+#define FRESNEL_FILM 1
 #else
 #define FRESNEL_TEXTURE texture2D
+#define FRESNEL_FILM 0
 #endif
 
 #define FRESNEL_MP float
@@ -713,16 +716,16 @@ FRESNEL_HP fresnel_lut_cubic_blend(FRESNEL_HP p0, FRESNEL_HP p1, FRESNEL_HP p2, 
  * and R = a0 + Re(sum_j w_j F_j) per channel, with the C runtime's
  * polynomials for cos and sin (the phase reduced to half a turn first) and
  * the GPU's exp where the C runtime has a polynomial too. highp throughout: phases reach a hundred turns, and the
- * denominators cancel near the fringes' peaks. Const arrays only (GLSL ES
- * 3.00 and desktop 1.30 and later, where FRESNEL_LUT_ARRAYS is 1; HLSL):
- * the table is indexed with a variable. No loops: the six poles are written
- * out (one-line macros: GLSL ES 1.00 and 3.30 have no line continuation).
- * fresnel_film_rgb(t, c, d_nm) takes any table; FRESNEL_FILM_RGB_BODY is its
- * body, for a function over one const array. */
+ * denominators cancel near the fringes' peaks. GLSL ES 3.00 and desktop
+ * 1.30 and later (integers, texelFetch; the table is indexed with a
+ * variable), HLSL, MSL, WGSL. No loops: the six poles are written out
+ * (one-line macros: GLSL ES 1.00 and 3.30 have no line continuation).
+ * fresnel_film_rgb(t, c, d_nm) takes any table as an array;
+ * FRESNEL_FILM_RGB_READ is its body over a table read any way. */
 #define FRESNEL_FILM_NODE 53
 #define FRESNEL_FILM_FLOATS 1744
 #define FRESNEL_FILM_D_MAX 5000.0
-#if !defined(FRESNEL_GLSL) || FRESNEL_LUT_ARRAYS
+#if !defined(FRESNEL_GLSL) || FRESNEL_FILM
 FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a, FRESNEL_HP2 b, FRESNEL_HP2 p,
                                 FRESNEL_HP2 q)
 {
@@ -745,22 +748,44 @@ FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a,
                                    -(p.x * z.y + p.y * z.x) + (q.x * z2.y + q.y * z2.x));
     return FRESNEL_VEC2(n.x * den.x + n.y * den.y, n.y * den.x - n.x * den.y) / dot(den, den);
 }
+/* The table is read through a reader r: r(t, i) is value i of table t.
+ * FRESNEL_FILM_ARRAY reads an array (a uniform or storage array, a const
+ * array, a parameter); `fresnel gen --glsl` and `--wgsl` define a reader
+ * per scene over a texture, a uniform block or a storage buffer, with t the
+ * material's row. */
+#define FRESNEL_FILM_ARRAY(t, i) (t)[i]
 /* value i of the node at base b and of the next, interpolated at w */
-#define FRESNEL_I_FILM_AT(t, b, i, w) fresnel_lut_lerp((t)[(b) + (i)], (t)[(b) + FRESNEL_FILM_NODE + (i)], (w))
-#define FRESNEL_I_FILM_C(t, b, i, w) FRESNEL_VEC2(FRESNEL_I_FILM_AT(t, b, i, w), FRESNEL_I_FILM_AT(t, b, (i) + 6, w))
-#define FRESNEL_I_FILM_POLE(t, b, w, xy, j) fresnel_i_film_pole(xy, FRESNEL_VEC2((t)[j], (t)[6 + (j)]), FRESNEL_I_FILM_C(t, b, 5 + (j), w), FRESNEL_I_FILM_C(t, b, 17 + (j), w), FRESNEL_I_FILM_C(t, b, 29 + (j), w), FRESNEL_I_FILM_C(t, b, 41 + (j), w))
+#define FRESNEL_I_FILM_AT(r, t, b, i, w) fresnel_lut_lerp(r(t, (b) + (i)), r(t, (b) + FRESNEL_FILM_NODE + (i)), (w))
+#define FRESNEL_I_FILM_C(r, t, b, i, w) FRESNEL_VEC2(FRESNEL_I_FILM_AT(r, t, b, i, w), FRESNEL_I_FILM_AT(r, t, b, (i) + 6, w))
+#define FRESNEL_I_FILM_POLE(r, t, b, w, xy, j) fresnel_i_film_pole(xy, FRESNEL_VEC2(r(t, j), r(t, 6 + (j))), FRESNEL_I_FILM_C(r, t, b, 5 + (j), w), FRESNEL_I_FILM_C(r, t, b, 17 + (j), w), FRESNEL_I_FILM_C(r, t, b, 29 + (j), w), FRESNEL_I_FILM_C(r, t, b, 41 + (j), w))
 /* channel ch: a0 + Re(w_j F_j) over the poles */
-#define FRESNEL_I_FILM_W(t, ch, j, f) ((t)[12 + 12 * (ch) + 2 * (j)] * (f).x - (t)[13 + 12 * (ch) + 2 * (j)] * (f).y)
-#define FRESNEL_I_FILM_CH(t, b, w, ch) (FRESNEL_I_FILM_AT(t, b, ch, w) + FRESNEL_I_FILM_W(t, ch, 0, fresnel_i_f0) + FRESNEL_I_FILM_W(t, ch, 1, fresnel_i_f1) + FRESNEL_I_FILM_W(t, ch, 2, fresnel_i_f2) + FRESNEL_I_FILM_W(t, ch, 3, fresnel_i_f3) + FRESNEL_I_FILM_W(t, ch, 4, fresnel_i_f4) + FRESNEL_I_FILM_W(t, ch, 5, fresnel_i_f5))
-/* The body of a function of c and d_nm returning the film's RGB from the
- * table t: `fresnel gen` writes one per material over its const array (read
- * in place, not passed: a 1744-float parameter would be a copy per call). */
-#define FRESNEL_FILM_RGB_BODY(t, c, d_nm) FRESNEL_HP fresnel_i_pos = sqrt(FRESNEL_SATURATE(c)) * 31.0; FRESNEL_HP fresnel_i_k = min(floor(fresnel_i_pos), 30.0); FRESNEL_HP fresnel_i_w = fresnel_i_pos - fresnel_i_k; int fresnel_i_b = 48 + FRESNEL_FILM_NODE * int(fresnel_i_k); FRESNEL_HP2 fresnel_i_xy = clamp(d_nm, 0.0, FRESNEL_FILM_D_MAX) * FRESNEL_VEC2(FRESNEL_I_FILM_AT(t, fresnel_i_b, 3, fresnel_i_w), FRESNEL_I_FILM_AT(t, fresnel_i_b, 4, fresnel_i_w)); FRESNEL_HP2 fresnel_i_f0 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 0); FRESNEL_HP2 fresnel_i_f1 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 1); FRESNEL_HP2 fresnel_i_f2 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 2); FRESNEL_HP2 fresnel_i_f3 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 3); FRESNEL_HP2 fresnel_i_f4 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 4); FRESNEL_HP2 fresnel_i_f5 = FRESNEL_I_FILM_POLE(t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 5); return FRESNEL_SATURATE(FRESNEL_VEC3(FRESNEL_I_FILM_CH(t, fresnel_i_b, fresnel_i_w, 0), FRESNEL_I_FILM_CH(t, fresnel_i_b, fresnel_i_w, 1), FRESNEL_I_FILM_CH(t, fresnel_i_b, fresnel_i_w, 2)));
+#define FRESNEL_I_FILM_W(r, t, ch, j, f) (r(t, 12 + 12 * (ch) + 2 * (j)) * (f).x - r(t, 13 + 12 * (ch) + 2 * (j)) * (f).y)
+#define FRESNEL_I_FILM_CH(r, t, b, w, ch) (FRESNEL_I_FILM_AT(r, t, b, ch, w) + FRESNEL_I_FILM_W(r, t, ch, 0, fresnel_i_f0) + FRESNEL_I_FILM_W(r, t, ch, 1, fresnel_i_f1) + FRESNEL_I_FILM_W(r, t, ch, 2, fresnel_i_f2) + FRESNEL_I_FILM_W(r, t, ch, 3, fresnel_i_f3) + FRESNEL_I_FILM_W(r, t, ch, 4, fresnel_i_f4) + FRESNEL_I_FILM_W(r, t, ch, 5, fresnel_i_f5))
+/* The body of a function of c and d_nm returning the film's RGB from table
+ * t read by r (the table read in place, not passed: a 1744-float parameter
+ * would be a copy per call). */
+#define FRESNEL_FILM_RGB_READ(r, t, c, d_nm) FRESNEL_HP fresnel_i_pos = sqrt(FRESNEL_SATURATE(c)) * 31.0; FRESNEL_HP fresnel_i_k = min(floor(fresnel_i_pos), 30.0); FRESNEL_HP fresnel_i_w = fresnel_i_pos - fresnel_i_k; int fresnel_i_b = 48 + FRESNEL_FILM_NODE * int(fresnel_i_k); FRESNEL_HP2 fresnel_i_xy = clamp(d_nm, 0.0, FRESNEL_FILM_D_MAX) * FRESNEL_VEC2(FRESNEL_I_FILM_AT(r, t, fresnel_i_b, 3, fresnel_i_w), FRESNEL_I_FILM_AT(r, t, fresnel_i_b, 4, fresnel_i_w)); FRESNEL_HP2 fresnel_i_f0 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 0); FRESNEL_HP2 fresnel_i_f1 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 1); FRESNEL_HP2 fresnel_i_f2 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 2); FRESNEL_HP2 fresnel_i_f3 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 3); FRESNEL_HP2 fresnel_i_f4 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 4); FRESNEL_HP2 fresnel_i_f5 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 5); return FRESNEL_SATURATE(FRESNEL_VEC3(FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 0), FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 1), FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 2)));
+/* The same over an array t. */
+#define FRESNEL_FILM_RGB_BODY(t, c, d_nm) FRESNEL_FILM_RGB_READ(FRESNEL_FILM_ARRAY, t, c, d_nm)
 /* The same as a function of any table (a uniform array, a cbuffer's). */
 FRESNEL_VEC3 fresnel_film_rgb(FRESNEL_HP t[FRESNEL_FILM_FLOATS], FRESNEL_HP c, FRESNEL_HP d_nm)
 {
     FRESNEL_FILM_RGB_BODY(t, c, d_nm)
 }
+#ifdef FRESNEL_GLSL
+/* THE RGBA32F TABLE TEXTURE (the film's texture route, `fresnel gen
+ * --glsl`): row `row` holds one table, FRESNEL_FILM_FLOATS / 4 texels, value
+ * i in component i % 4 of texel (i / 4, row). A float texture read with
+ * texelFetch (no filtering, no normalised coordinates), highp. */
+FRESNEL_HP fresnel_film_texel(FRESNEL_HIGHP sampler2D s, int row, int i)
+{
+    /* the component by a one-hot dot product: exact for finite values,
+     * and no dynamic vector index (which ANGLE rewrites into a function of
+     * four branches per read) */
+    int k = i / 4;
+    return dot(texelFetch(s, ivec2(k, row), 0), vec4(equal(ivec4(i - 4 * k), ivec4(0, 1, 2, 3))));
+}
+#endif
 #endif
 
 #ifdef FRESNEL_GLSL

@@ -14,8 +14,8 @@
 #                 --convert-relaxed-to-half -O: the RelaxedPrecision
 #                 operations in explicit 16-bit floats, with the conversions
 #                 that takes (what a driver that honours mediump runs)
-# The thin film's table is read from a storage buffer, as a GPU application
-# hands it over (FRESNEL_FILM_RGB_BODY), not from the scene's const array.
+# The thin film reads its tables from a storage buffer (the generated
+# GLSL's route in Vulkan), at binding 2.
 # Instruction counts, not cycles: a GPU's cost per instruction varies with
 # the instruction and the chip.
 B=${1:-build}
@@ -39,15 +39,15 @@ done
 shader() {
     cat ports/glsl/prelude_450.glsl
     echo "precision $1 float;"
+    echo "#define FRESNEL_FILM_BINDING 2"
     cat ports/glsl/fresnel.glsl "$t/scene.glsl"
     printf 'layout(local_size_x = 64) in;\n'
     printf 'layout(std430, set = 0, binding = 0) readonly buffer FrIn { highp float fr_in[]; };\n'
     printf 'layout(std430, set = 0, binding = 1) writeonly buffer FrOut { highp float fr_out[]; };\n'
-    [ "$2" = film ] && printf 'vec3 fr_film(highp float c, highp float d_nm)\n{\n    FRESNEL_FILM_RGB_BODY(fr_in, c, d_nm)\n}\n'
     printf 'void main()\n{\n    int i = int(gl_GlobalInvocationID.x);\n'
     printf '    highp float c = fr_in[FRESNEL_FILM_FLOATS + 2 * i], d = fr_in[FRESNEL_FILM_FLOATS + 2 * i + 1];\n'
     case $2 in
-    film) printf '    vec3 r = fr_film(c, d);\n' ;;
+    film) printf '    vec3 r = fresnel_spirv_count_au_thin_film_rgb(c, d);\n' ;;
     harness) printf '    vec3 r = vec3(c, c, c);\n' ;;
     *) printf '    vec3 r = %s;\n' "$2" ;;
     esac

@@ -46,7 +46,7 @@ for s in data/scenes/*.scene tests/data/scenes/*.scene tests/data/identity/*.sce
         echo "$s:c-every-type $t/all/$(basename "$s")"
     fi
     echo "$s:glsl $s --glsl"
-    echo "$s:glsl-texture $s --glsl --glsl-texture TEX"
+    echo "$s:tables $s --glsl --tables TEX"
     echo "$s:hlsl $s --hlsl"
     echo "$s:msl $s --msl"
     echo "$s:wgsl $s --wgsl"

@@ -4,13 +4,15 @@
  * (gen/model/encoded_scene.c, the evaluation `fresnel curve` and the report use),
  * for every material and model of the scene, in GLSL 3.30, ES 3.00 and
  * ES 1.00. ES 1.00 reads the LUT models from the packed RGBA8 texture that
- * `--glsl-texture` wrote (included here as FR_TEX_HEADER, the C header a
+ * `--tables` wrote (included here as FR_TEX_HEADER, the C header a
  * program uploads); ES 3.00 also runs that path with FRESNEL_LUT_ARRAYS 0.
  *
  * Bounds (highp): analytic models and const-array tables 1e-5, as the
- * port's own test, and the thin film too (const arrays only: GLSL 3.30,
- * ES 3.00; thicknesses 0-1195 nm scattered over the cosines), whose GPU
- * sin, cos and exp stand for the C runtime's polynomials. Texture tables: within 1e-5 of the C runtime on the
+ * port's own test, and the thin film too (thicknesses 0-1195 nm scattered
+ * over the cosines) on each of its routes: its RGBA32F texture (GLSL 3.30,
+ * ES 3.00), its uniform block (ES 3.00, where the scene's tables fit 16 KiB)
+ * and its storage buffer (GLSL 4.30), the GPU's exp standing for the C
+ * runtime's polynomial. Texture tables: within 1e-5 of the C runtime on the
  * decoded 16-bit nodes, and within the quantisation bound of the C runtime
  * on the binary32 nodes: 2^-16 for linear interpolation, 1.25 * 2^-16 for
  * Catmull-Rom (the sum of its weights' magnitudes is at most 1.25), plus
@@ -34,6 +36,7 @@
 
 #include FR_TEX_HEADER
 
+#define FILM_FLOATS ((int)(sizeof(fresnel_film) / sizeof(float))) /* the port's FRESNEL_FILM_FLOATS */
 #define W 260 /* pixel x: c = (x - 1) / 256, from -1/256 to 1 + 2/256, exact in binary32 */
 #define HIGHP_BOUND 1e-5
 /* FRESNEL_HIGHP = mediump: the table position x (n - 1) in binary16 and
@@ -42,17 +45,25 @@
  * the margin of the port's mediump bounds. */
 #define MEDIUMP_BOUND 2.5e-3
 
-enum { V_330, V_ES300, V_ES100, V_ES300_TEX, V_ES100_MEDIUMP, NVARIANTS };
+/* The film reads its tables by the texture route (330, es300), the uniform
+ * block (FRESNEL_FILM_UNIFORM, where the tables fit GLES 3's 16 KiB) or
+ * the storage buffer (FRESNEL_FILM_STORAGE, GLSL 4.30); film_only: a
+ * variant for the film's route alone. A prelude starting with '#' is the
+ * text itself, else a file of ports/glsl/. */
+enum { V_330, V_ES300, V_ES100, V_ES300_TEX, V_ES100_MEDIUMP, V_UNIFORM, V_STORAGE, NVARIANTS };
 static const struct variant {
     const char *name, *prelude, *defines;
-    int es, version, texture, lut_only;
+    int es, version, texture, lut_only, film_only;
 } variants[NVARIANTS] = {
-    {"330", "prelude_330.glsl", "", 0, 330, 0, 0},
-    {"es300", "prelude_es300.glsl", "precision highp float;\n", 1, 300, 0, 0},
-    {"es100", "prelude_es100.glsl", "precision highp float;\n", 1, 100, 1, 0},
+    {"330", "prelude_330.glsl", "", 0, 330, 0, 0, 0},
+    {"es300", "prelude_es300.glsl", "precision highp float;\n", 1, 300, 0, 0, 0},
+    {"es100", "prelude_es100.glsl", "precision highp float;\n", 1, 100, 1, 0, 0},
     {"es300, FRESNEL_LUT_ARRAYS 0", "prelude_es300.glsl", "precision highp float;\n#define FRESNEL_LUT_ARRAYS 0\n", 1,
-     300, 1, 1},
-    {"es100, FRESNEL_HIGHP mediump", "prelude_es100.glsl", "#define FRESNEL_HIGHP mediump\n", 1, 100, 1, 1},
+     300, 1, 1, 0},
+    {"es100, FRESNEL_HIGHP mediump", "prelude_es100.glsl", "#define FRESNEL_HIGHP mediump\n", 1, 100, 1, 1, 0},
+    {"es300, FRESNEL_FILM_UNIFORM", "prelude_es300.glsl", "precision highp float;\n#define FRESNEL_FILM_UNIFORM 1\n", 1,
+     300, 0, 0, 1},
+    {"430, FRESNEL_FILM_STORAGE", "#version 430\n", "#define FRESNEL_FILM_STORAGE 1\n", 0, 330, 0, 0, 1},
 };
 
 static char glsl_log[16384];
@@ -117,7 +128,8 @@ int main(int argc, char **argv)
     scene_model *models; /* [material][model] */
     float *out;
     glctx g;
-    GLuint fbo, target, tex;
+    GLuint fbo, target, tex, film_tex = 0, film_buf[2] = {0, 0};
+    long film_bytes = 0;
     int i, m, v, x, ch, nmat;
     if (argc != 5) {
         fprintf(stderr, "usage: glsl_generated_osmesa PORT_DIR MANIFEST IDENT SCENE.glsl\n");
@@ -147,8 +159,34 @@ int main(int argc, char **argv)
     }
     for (v = 0; v < NVARIANTS; v++) {
         snprintf(path, sizeof path, "%s/%s", argv[1], variants[v].prelude);
-        prelude[v] = glctx_read_file(path);
+        prelude[v] = variants[v].prelude[0] == '#' ? strdup(variants[v].prelude) : glctx_read_file(path);
     }
+    /* the film's tables (row i: material i), as --tables writes them, on
+     * every route at once: texture unit 1, uniform and storage binding 0 */
+    for (m = 0; m < sc.model_count; m++)
+        if (models[m].film) {
+            float *t = malloc((size_t)nmat * FILM_FLOATS * sizeof *t);
+            if (!t)
+                return 1;
+            for (i = 0; i < nmat; i++)
+                memcpy(t + (size_t)i * FILM_FLOATS, &models[i * sc.model_count + m].film->f32, sizeof(fresnel_film));
+            film_bytes = (long)nmat * FILM_FLOATS * 4;
+            glGenTextures(1, &film_tex);
+            glActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_2D, film_tex);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, FILM_FLOATS / 4, nmat, 0, GL_RGBA, GL_FLOAT, t);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            glActiveTexture(GL_TEXTURE0);
+            glGenBuffers(2, film_buf);
+            glBindBuffer(GL_UNIFORM_BUFFER, film_buf[0]);
+            glBufferData(GL_UNIFORM_BUFFER, film_bytes, t, GL_STATIC_DRAW);
+            glBindBufferBase(GL_UNIFORM_BUFFER, 0, film_buf[0]);
+            glBindBuffer(GL_SHADER_STORAGE_BUFFER, film_buf[1]);
+            glBufferData(GL_SHADER_STORAGE_BUFFER, film_bytes, t, GL_STATIC_DRAW);
+            glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, film_buf[1]);
+            free(t);
+        }
     fbo = glctx_float_target(W, nmat, &target);
     glGenTextures(1, &tex);
     glBindTexture(GL_TEXTURE_2D, tex);
@@ -168,13 +206,19 @@ int main(int argc, char **argv)
             double worst = 0.0, worst_q = 0.0, bound, bound_q = HIGHP_BOUND;
             char name[256], sampler[128];
             GLuint prog;
-            if ((va->lut_only && !is_lut) || (film && va->texture)) /* the film: const arrays only */
+            if ((va->lut_only && !is_lut) || (film && va->texture) || (va->film_only && !film))
+                continue; /* the film: GLSL ES 3.00, desktop 1.30 and later */
+            if (v == V_UNIFORM && film_bytes > 16384) {
+                NOTE("glsl gen: %s: the film's uniform route not run: %ld bytes of tables, over 16384", ident,
+                     film_bytes);
                 continue;
+            }
             bound = mediump ? MEDIUMP_BOUND
                   : texture ? (form == LUT_CUBIC ? 1.25 : 1.0) * ldexp(1.0, -16) + 1e-6
                             : HIGHP_BOUND;
             snprintf(name, sizeof name, "glsl gen: %s %s, %d materials, %s%s", ident, sc.models[m].name, nmat, va->name,
-                     is_lut ? (texture ? " (packed texture)" : " (const arrays)") : "");
+                     is_lut ? (texture ? " (packed texture)" : " (const arrays)")
+                            : (film && !va->film_only ? " (RGBA32F texture)" : ""));
             prog = prelude[v] ? program(va, prelude[v], port, scene_src, body) : 0;
             if (!prog) {
                 CHECK(name, 0, "compile/link failed:\n%s", glsl_log);
@@ -188,6 +232,22 @@ int main(int argc, char **argv)
                 glActiveTexture(GL_TEXTURE0);
                 glBindTexture(GL_TEXTURE_2D, tex);
                 glUniform1i(loc, 0);
+            }
+            if (film && !va->film_only) {
+                char film_sampler[128];
+                GLint loc;
+                snprintf(film_sampler, sizeof film_sampler, "fresnel_%s_film_texture", ident);
+                loc = glGetUniformLocation(prog, film_sampler);
+                CHECK(name, loc >= 0, "no sampler uniform %s", film_sampler);
+                glUniform1i(loc, 1);
+            }
+            if (v == V_UNIFORM) {
+                char block[128];
+                GLuint at;
+                snprintf(block, sizeof block, "fresnel_%s_film_block", ident);
+                at = glGetUniformBlockIndex(prog, block);
+                CHECK(name, at != GL_INVALID_INDEX, "no uniform block %s", block);
+                glUniformBlockBinding(prog, at, 0);
             }
             glBindFramebuffer(GL_FRAMEBUFFER, fbo);
             glViewport(0, 0, W, nmat);
@@ -249,6 +309,10 @@ int main(int argc, char **argv)
         CHECK("glsl gen: texture nodes within 2^-16 of the binary32 tables", q <= ldexp(1.0, -16), "%.3g", q);
     }
     glDeleteTextures(1, &tex);
+    if (film_bytes) {
+        glDeleteTextures(1, &film_tex);
+        glDeleteBuffers(2, film_buf);
+    }
     glctx_close(&g);
     for (i = 0; i < nmat * sc.model_count; i++)
         scene_model_free(&models[i]);

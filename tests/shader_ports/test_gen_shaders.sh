@@ -1,6 +1,6 @@
 #!/bin/sh
 # passes: all (the shader back ends of the tool, under ASan+UBSan in the sanitize pass)
-# `fresnel gen --glsl` (with --glsl-texture), `--hlsl`, `--msl` and `--wgsl` on every committed
+# `fresnel gen --glsl` (with --tables), `--hlsl`, `--msl` and `--wgsl` on every committed
 # scene and every scene of the shader tests (tests/data/scenes/): exit 0, and a
 # function per material and model. Bad input for either back end: a clear
 # error, exit 2, existing outputs untouched, no temporary left. What the
@@ -18,11 +18,13 @@ for manifest in data/scenes/*.scene tests/data/scenes/*.scene; do
         out=$back
         if [ $back = glsl ]; then
             set -- --glsl -o "$t/$ident.glsl"
-            # the texture the LUT models read in GLSL ES 1.00, where there are some
-            grep -q '^models *=.*lut' "$manifest" && set -- "$@" --glsl-texture "$t/${ident}_tex.h"
+            # the tables a program uploads (the LUT texture of GLSL ES 1.00, the
+            # film's), where there are some
+            grep -q '^models *=.*\(lut\|thin-film\)' "$manifest" && set -- "$@" --tables "$t/${ident}_tex.h"
             sig="^vec3 fresnel_${ident}_[a-z0-9_]*_rgb(FRESNEL_HIGHP float c\(, FRESNEL_HIGHP float d_nm\)\{0,1\})$"
         elif [ $back = wgsl ]; then
             set -- --wgsl -o "$t/$ident.$out"
+            grep -q '^models *=.*thin-film' "$manifest" && set -- "$@" --tables "$t/${ident}_tex.h"
             sig="^fn fresnel_${ident}_[a-z0-9_]*_rgb(c: f32\(, d_nm: f32\)\{0,1\}) -> vec3f {$"
         else
             [ $back = msl ] && out=metal
@@ -36,23 +38,24 @@ for manifest in data/scenes/*.scene tests/data/scenes/*.scene; do
         n=$(grep -c "$sig" "$t/$ident.$out")
         mats=$(grep -c '^/\* ---- ' "$t/$ident.$out")
         what="$n functions ($mats materials x $models models)"
-        if [ $back = glsl ] && [ -e "$t/${ident}_tex.h" ]; then
-            # the texture header, compiled by this pass's compiler
+        if { [ $back = glsl ] || [ $back = wgsl ]; } && [ -e "$t/${ident}_tex.h" ]; then
+            # the tables header, compiled by this pass's compiler
             printf '#include "%s_tex.h"\n' "$ident" >"$t/tex.c"
             # shellcheck disable=SC2086
             ${CC:-cc} -std=c99 -Wall -Wextra -Wpedantic -Werror -I"$t" -c "$t/tex.c" -o "$t/tex.o" >"$t/cc.log" 2>&1 &&
-                [ ! -s "$t/cc.log" ] && what="$what; its texture header compiles warning-free with ${CC:-cc}" ||
+                [ ! -s "$t/cc.log" ] && what="$what; its tables header compiles warning-free with ${CC:-cc}" ||
                 n="0 ($(head -3 "$t/cc.log" | tr '\n' ' '))"
         fi
+        rm -f "$t/${ident}_tex.h"
         if [ "$n" -gt 0 ] 2>/dev/null && [ "$n" -eq $((mats * models)) ]; then
-            echo "PASS gen shaders: $manifest --$back$([ $back = glsl ] && [ -e "$t/${ident}_tex.h" ] && echo ' --glsl-texture'): $what"
+            echo "PASS gen shaders: $manifest --$back$(echo "$what" | grep -q 'tables header' && echo ' --tables'): $what"
         else
             echo "FAIL gen shaders: $manifest --$back: $n functions for $mats materials x $models models"
         fi
     done
 done
 
-# expect_bad NAME WANT -- ARGS: fresnel gen ARGS with -o/--glsl-texture at
+# expect_bad NAME WANT -- ARGS: fresnel gen ARGS with -o/--tables at
 # files that exist beforehand and must survive unchanged.
 expect_bad() {
     name=$1
@@ -71,14 +74,16 @@ keep" ] && [ -z "$(ls "$t" | grep '\.tmp\.')" ]; then
 }
 printf 'materials = au\nmodels = lut16\ntypes = q15\nlut_spacing = grazing-pl\n' >"$t/pl.scene"
 expect_bad "grazing-pl with --glsl" "pl.scene:4: expected lut_spacing grazing or uniform" -- \
-    "$t/pl.scene" --glsl -o "$t/bad.glsl" --glsl-texture "$t/bad_tex.h"
+    "$t/pl.scene" --glsl -o "$t/bad.glsl" --tables "$t/bad_tex.h"
 printf 'name = a__b\nmaterials = au\nmodels = schlick\n' >"$t/a__b.scene"
 expect_bad "scene name with __ (reserved in GLSL)" "no '__'" -- "$t/a__b.scene" --glsl -o "$t/bad.glsl"
 printf 'materials = au\nmodels = schlick\n' >"$t/nolut.scene"
-expect_bad "--glsl-texture for a scene without LUTs" "no LUT model" -- \
-    "$t/nolut.scene" --glsl -o "$t/bad.glsl" --glsl-texture "$t/bad_tex.h"
-expect_bad "--glsl-texture without --glsl" "needs --glsl" -- \
-    data/scenes/default.scene -o "$t/bad.glsl" --glsl-texture "$t/bad_tex.h"
+expect_bad "--tables for a scene without LUTs or a film" "no LUT model and no thin film" -- \
+    "$t/nolut.scene" --glsl -o "$t/bad.glsl" --tables "$t/bad_tex.h"
+expect_bad "--wgsl --tables for a scene without a film" "no thin film" -- \
+    data/scenes/default.scene --wgsl -o "$t/bad.glsl" --tables "$t/bad_tex.h"
+expect_bad "--tables without --glsl" "needs --glsl" -- \
+    data/scenes/default.scene -o "$t/bad.glsl" --tables "$t/bad_tex.h"
 expect_bad "a LUT spacing the shader ports lack, --hlsl" "pl.scene:4: expected lut_spacing grazing or uniform with --hlsl" -- \
     "$t/pl.scene" --hlsl -o "$t/bad.hlsl"
 expect_bad "scene name with __, --hlsl" "no '__'\|double '_'" -- "$t/a__b.scene" --hlsl -o "$t/bad.hlsl"
@@ -88,7 +93,7 @@ expect_bad "a LUT spacing the shader ports lack, --wgsl" "pl.scene:4: expected l
     "$t/pl.scene" --wgsl -o "$t/bad.hlsl"
 expect_bad "an unknown back end (--spirv)" "--spirv" -- data/scenes/default.scene --spirv -o "$t/bad.hlsl"
 expect_bad "--glsl and --hlsl together" "one back end per run" -- data/scenes/default.scene --glsl --hlsl -o "$t/bad.hlsl"
-expect_bad "--glsl-texture with --hlsl" "needs --glsl" -- \
-    data/scenes/default.scene --hlsl -o "$t/bad.hlsl" --glsl-texture "$t/bad_tex.h"
+expect_bad "--tables with --hlsl" "needs --glsl" -- \
+    data/scenes/default.scene --hlsl -o "$t/bad.hlsl" --tables "$t/bad_tex.h"
 printf 'materials = au\nmodels = schlick nosuch\n' >"$t/unknown.scene"
 expect_bad "an unknown model, --hlsl" "unknown.scene:2" -- "$t/unknown.scene" --hlsl -o "$t/bad.hlsl"

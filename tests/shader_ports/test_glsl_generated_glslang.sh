@@ -80,7 +80,7 @@ for manifest in data/scenes/*.scene tests/data/scenes/glsl_luts.scene tests/data
     scene=$(basename "$manifest" .scene)
     ident=$(printf '%s' "$scene" | tr 'A-Z-' 'a-z_')
     glsl="$out/$ident.glsl"
-    if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$glsl" --glsl-texture "$out/${ident}_tex.h" 2>"$out/gen.log"; then
+    if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$glsl" --tables "$out/${ident}_tex.h" 2>"$out/gen.log"; then
         echo "FAIL glslang: fresnel gen $manifest --glsl: $(cat "$out/gen.log")"
         continue
     fi

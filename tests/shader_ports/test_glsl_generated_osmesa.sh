@@ -4,7 +4,7 @@
 # make check: no (OSMesa)
 # `fresnel gen --glsl` on the GPU: for the default scene and two scenes with
 # every LUT kind and every analytic model (and the thin film), the generated GLSL (and, for
-# GLSL ES 1.00, the packed LUT texture of --glsl-texture) evaluates in
+# GLSL ES 1.00, the packed LUT texture of --tables) evaluates in
 # OSMesa to what the C runtime computes from the same manifest, in GLSL 3.30,
 # ES 3.00 and ES 1.00 (tests/shader_ports/glsl_generated_osmesa.c, built once per scene because it
 # includes the scene's texture header). Needs OSMesa, like tests/shader_ports/test_glsl_port_osmesa.sh.
@@ -27,7 +27,7 @@ status=0
 for manifest in data/scenes/default.scene tests/data/scenes/glsl_all_models.scene tests/data/scenes/glsl_uniform.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
     IDENT=$(printf '%s' "$ident" | tr 'a-z' 'A-Z')
-    if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$out/$ident.glsl" --glsl-texture "$out/${ident}_tex.h" \
+    if ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$out/$ident.glsl" --tables "$out/${ident}_tex.h" \
         2>"$out/gen.log"; then
         echo "FAIL glsl gen: fresnel gen $manifest --glsl: $(cat "$out/gen.log")"
         status=1

@@ -95,20 +95,19 @@ static char *read_file(const char *path)
     return b;
 }
 
-/* The thin film runs from a storage buffer, as a GPU application hands
- * fresnel_film_rgb its table: the input buffer holds the material's
- * fresnel_film (FILM_FLOATS floats, the order of the C struct and of the
- * port's table) and then the cosines; the shader's function is the port's
- * FRESNEL_FILM_RGB_BODY over that buffer. (The scene's own film functions
- * index a const array, which SPIR-V copies into every invocation: over 25
- * minutes for one material's four pipelines on lavapipe. The scene's
- * tables are the C header's, tests/shader_ports/test_gen_shaders.sh.) */
+/* The thin film runs from a storage buffer, as a GPU application hands it
+ * the tables: the input buffer holds every material's fresnel_film
+ * (FILM_FLOATS floats each, the order of the C struct and of `gen
+ * --tables`, material i in row i) and then the cosines. In GLSL the scene's
+ * own function reads it (the generated GLSL's storage route, the default in
+ * Vulkan, at set 0, binding 0: the input buffer itself); in HLSL the
+ * port's FRESNEL_FILM_RGB_READ over the input buffer. */
 #define FILM_FLOATS (sizeof(fresnel_film) / sizeof(float)) /* the port's FRESNEL_FILM_FLOATS */
 
 /* The shader's main(): invocation i evaluates at cosine fr_c[i] the model
  * and material that specialisation constants 0 and 1 select (so each
  * pipeline compiles one function), and writes the three channels; the
- * thin film at thickness FILM_D, from the table before the cosines. */
+ * thin film at thickness FILM_D, from the tables before the cosines. */
 static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, int m)
 {
     int i, film = (model_of(sc->models[m].row)->offered & MODEL_FILM) != 0;
@@ -123,9 +122,9 @@ static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, in
                    "layout(std430, set = 0, binding = 1) writeonly buffer FrOut { highp float fr_out[]; };\n"
                    "layout(constant_id = 0) const int fr_material = 0;\n",
                 GROUP);
-    if (film)
-        fprintf(f, "%s fr_film(%s c, %s d_nm)\n{\n    FRESNEL_FILM_RGB_BODY(fr_c, c, d_nm)\n}\n",
-                hlsl ? "float3" : "vec3", hlsl ? "float" : "highp float", hlsl ? "float" : "highp float");
+    if (film && hlsl)
+        fprintf(f, "#define FR_FILM_READ(row, i) fr_c[(row) * FRESNEL_FILM_FLOATS + (i)]\n"
+                   "float3 fr_film(int row, float c, float d_nm)\n{\n    FRESNEL_FILM_RGB_READ(FR_FILM_READ, row, c, d_nm)\n}\n");
     if (hlsl)
         fprintf(f, "[numthreads(%d, 1, 1)]\nvoid main(uint3 fr_id : SV_DispatchThreadID)\n{\n"
                    "    int i = (int)fr_id.x;\n    float3 r = float3(-1.0, -1.0, -1.0);\n    float c;\n",
@@ -133,14 +132,17 @@ static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, in
     else
         fprintf(f, "void main()\n{\n    int i = int(gl_GlobalInvocationID.x);\n    vec3 r = vec3(-1.0);\n"
                    "    highp float c;\n");
-    fprintf(f, "    if (i >= %d)\n        return;\n    c = fr_c[%si];\n", NCOS, film ? "FRESNEL_FILM_FLOATS + " : "");
+    fprintf(f, "    if (i >= %d)\n        return;\n    c = fr_c[%d * FRESNEL_FILM_FLOATS * %d + i];\n", NCOS,
+            sc->material_count, film);
     snprintf(id, sizeof id, "%s", sc->models[m].ident);
-    if (film)
-        fputs("    r = fr_film(c, " FILM_D ");\n", f);
+    if (film && hlsl)
+        /* the row as a parameter: glslang's HLSL front end crashes on the
+         * spec constant inside the reader */
+        fputs("    r = fr_film(fr_material, c, " FILM_D ");\n", f);
     else
         for (i = 0; i < sc->material_count; i++)
-            fprintf(f, "    %sif (fr_material == %d) r = fresnel_%s_%s_%s_rgb(c);\n", i ? "else " : "", i, ident,
-                    sc->materials[i], id);
+            fprintf(f, "    %sif (fr_material == %d) r = fresnel_%s_%s_%s_rgb(c%s);\n", i ? "else " : "", i, ident,
+                    sc->materials[i], id, film ? ", " FILM_D : "");
     fprintf(f, "    fr_out[3 * i] = r.x;\n    fr_out[3 * i + 1] = r.y;\n    fr_out[3 * i + 2] = r.z;\n}\n");
 }
 
@@ -304,7 +306,7 @@ int main(int argc, char **argv)
     material_params *params;
     spectrum *spectra;
     scene_model *models; /* [material][model] */
-    static float film_in[FILM_FLOATS + NCOS]; /* a film's table, then the cosines */
+    float *film_in = NULL; /* the film's tables, then the cosines */
     float cosines[NCOS], *ref, *out[NVARIANTS];
     size_t nout;
     vkrun v;
@@ -338,7 +340,7 @@ int main(int argc, char **argv)
         if (!(out[vi] = malloc(nout * (size_t)sc.model_count * sizeof *out[vi])))
             return 1;
     for (i = 0; i < NCOS; i++)
-        film_in[FILM_FLOATS + i] = cosines[i] = (float)(i + C_LO) / 1024.0f;
+        cosines[i] = (float)(i + C_LO) / 1024.0f;
     if (port_scene_refs(&sc, &gc, params, spectra, models, ref))
         return 1;
     snprintf(path, sizeof path, "ports/glsl/prelude_450.glsl");
@@ -411,13 +413,18 @@ int main(int argc, char **argv)
             for (i = 0; i < nmat && ok; i++) {
                 int32_t spec = i;
                 vkrun_pipe p;
-                const encoded_film *ef = models[i * sc.model_count + m].film;
                 const float *in = cosines;
                 size_t nin = NCOS;
-                if (ef) {
-                    memcpy(film_in, &ef->f32, sizeof ef->f32);
+                if (models[i * sc.model_count + m].film) {
+                    int r;
+                    if (!film_in && !(film_in = malloc(((size_t)nmat * FILM_FLOATS + NCOS) * sizeof *film_in)))
+                        return 1;
+                    for (r = 0; r < nmat; r++)
+                        memcpy(film_in + (size_t)r * FILM_FLOATS, &models[r * sc.model_count + m].film->f32,
+                               sizeof(fresnel_film));
+                    memcpy(film_in + (size_t)nmat * FILM_FLOATS, cosines, sizeof cosines);
                     in = film_in;
-                    nin = FILM_FLOATS + NCOS;
+                    nin = (size_t)nmat * FILM_FLOATS + NCOS;
                 }
                 if (vkrun_pipeline(&v, words, nbytes, &spec, 1, 0, &p, err, sizeof err) ||
                     vkrun_dispatch(&v, &p, NULL, in, nin, o + (size_t)3 * NCOS * (size_t)i, (size_t)3 * NCOS,
@@ -496,6 +503,7 @@ int main(int argc, char **argv)
     for (i = 0; i < 2; i++)
         free(src[i]);
     free(models);
+    free(film_in);
     free(params);
     free(spectra);
     free(ref);

@@ -107,20 +107,20 @@ printf 'old\n' >"$t/lim.h"
     fail "ulimit -f: exit $rc, $(head -c 40 "$t/lim.h"), temps: $(find "$t" -name '.*.??????') $(cat "$t/err")"
 
 # Several outputs of one command commit together or not at all: gen's -o and
-# --glsl-texture (the header over a size limit the texture fits, or a full
+# --tables (the header over a size limit the texture fits, or a full
 # device), report -o DIR's report.md and plots (one plot unwritable).
 printf 'materials = au cu al ag\nmodels = schlick f82 lsk gulbrandsen lut8\n' >"$t/tex.scene"
 echo keep >"$t/g.glsl"; echo keep >"$t/t.h"
 # 8 blocks: 4096 bytes (POSIX's 512-byte blocks) or 8192 (bash's 1024)
-(ulimit -f 8; "$F" gen "$t/tex.scene" --glsl -o "$t/g.glsl" --glsl-texture "$t/t.h") 2>"$t/err"; rc=$?
-"$F" gen "$t/tex.scene" --glsl -o "$t/g0.glsl" --glsl-texture "$t/t0.h" 2>/dev/null
+(ulimit -f 8; "$F" gen "$t/tex.scene" --glsl -o "$t/g.glsl" --tables "$t/t.h") 2>"$t/err"; rc=$?
+"$F" gen "$t/tex.scene" --glsl -o "$t/g0.glsl" --tables "$t/t0.h" 2>/dev/null
 [ $rc -eq 1 ] && [ "$(cat "$t/g.glsl")" = keep ] && [ "$(cat "$t/t.h")" = keep ] && no_temps "$t" &&
     [ "$(wc -c <"$t/g0.glsl")" -gt 8192 ] && [ "$(wc -c <"$t/t0.h")" -lt 4096 ] &&
-    pass "gen --glsl -o OUT --glsl-texture TEX, OUT over ulimit -f: exit 1, both as they were ($(head -1 "$t/err" | sed "s|$t/||"))" ||
-    fail "gen --glsl-texture under ulimit -f: exit $rc, OUT '$(head -c 20 "$t/g.glsl")', TEX '$(head -c 20 "$t/t.h")' $(cat "$t/err")"
-"$F" gen "$t/tex.scene" --glsl -o /dev/full --glsl-texture "$t/t2.h" 2>"$t/err"; rc=$?
+    pass "gen --glsl -o OUT --tables TEX, OUT over ulimit -f: exit 1, both as they were ($(head -1 "$t/err" | sed "s|$t/||"))" ||
+    fail "gen --tables under ulimit -f: exit $rc, OUT '$(head -c 20 "$t/g.glsl")', TEX '$(head -c 20 "$t/t.h")' $(cat "$t/err")"
+"$F" gen "$t/tex.scene" --glsl -o /dev/full --tables "$t/t2.h" 2>"$t/err"; rc=$?
 [ $rc -eq 1 ] && [ ! -e "$t/t2.h" ] && no_temps "$t" &&
-    pass "gen --glsl -o /dev/full --glsl-texture TEX: exit 1, TEX not created" || fail "gen -o /dev/full --glsl-texture: exit $rc, $(ls "$t/t2.h" 2>&1) $(cat "$t/err")"
+    pass "gen --glsl -o /dev/full --tables TEX: exit 1, TEX not created" || fail "gen -o /dev/full --tables: exit $rc, $(ls "$t/t2.h" 2>&1) $(cat "$t/err")"
 "$F" report --scene "$t/s.scene" -o "$t/rep3" --no-timing --no-instructions >/dev/null 2>"$t/err" && cp "$t/rep3/report.md" "$t/rep3.md"
 rm "$t/rep3/curves/cu.svg"; mkdir "$t/rep3/curves/cu.svg"; echo old >"$t/rep3/report.md"
 "$F" report --scene "$t/s.scene" -o "$t/rep3" --no-timing --no-instructions >/dev/null 2>"$t/err"; rc=$?
