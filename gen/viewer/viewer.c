@@ -137,8 +137,8 @@ static int film_reference(const emit_loaded *l, int i, double *rgb)
 
 /* vec3 fresnel_select(int mat, int model, float c): the scene's functions
  * by index, in the scene's order of materials and models, the thin film at
- * the slider's thickness (uniform u_film_d; its function needs const
- * arrays, so WebGL 1 has it not); with FRESNEL_VIEWER_MATERIAL defined,
+ * the slider's thickness (uniform u_film_d; its function needs integers
+ * and texelFetch, so WebGL 1 has it not); with FRESNEL_VIEWER_MATERIAL defined,
  * only that material's (WebGL 1). */
 static void write_select(FILE *f, const emit_loaded *l)
 {
@@ -150,7 +150,7 @@ static void write_select(FILE *f, const emit_loaded *l)
         for (m = 0; m < l->sc->model_count; m++) {
             int film = (model_of(l->sc->models[m].row)->offered & MODEL_FILM) != 0;
             fprintf(f, "%s        if (model == %d)\n            return fresnel_%s_%s_%s_rgb(c%s);\n%s",
-                    film ? "#if FRESNEL_LUT_ARRAYS\n" : "", m, l->name, l->sc->materials[i], l->sc->models[m].ident,
+                    film ? "#if FRESNEL_FILM\n" : "", m, l->name, l->sc->materials[i], l->sc->models[m].ident,
                     film ? ", u_film_d" : "", film ? "#endif\n" : "");
         }
         fprintf(f, "    }\n#endif\n");
@@ -300,6 +300,14 @@ static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
     fprintf(f, "],\n\"report\":[");
     for (i = 0; i < sc->material_count; i++)
         fprintf(f, "%s{\"mean\":%.6g,\"max\":%.6g}", i ? "," : "", de[2 * i], de[2 * i + 1]);
+    /* the film's tables as `gen --tables` writes them (row i: material i),
+     * for the scene GLSL's texture route */
+    fprintf(f, "],\n\"table\":[");
+    for (i = 0; i < sc->material_count; i++) {
+        const float *t = &encoded_scene_model(&l->es, i, fm)->film->f32.freq[0];
+        for (k = 0; k < (int)(sizeof(fresnel_film) / sizeof(float)); k++)
+            fprintf(f, "%s%.9g", i + k ? "," : "", (double)t[k]);
+    }
     fprintf(f, "]}");
     free(de);
     return 0;
