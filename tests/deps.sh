@@ -46,6 +46,7 @@ all   spirv-val       spirv-tools
 all   vulkan          libvulkan-dev
 all   lavapipe        mesa-vulkan-drivers
 all   chromium        chromium
+all   firefox         firefox-esr
 cross arm-none-eabi   gcc-arm-none-eabi binutils-arm-none-eabi
 cross newlib          libnewlib-arm-none-eabi
 cross qemu-arm        qemu-system-arm
@@ -250,6 +251,28 @@ probe() {
             --window-size=64,64 --screenshot="$d/blank.png" about:blank >"$d/log" 2>&1 &&
             [ "$(head -c 4 "$d/blank.png" 2>/dev/null | od -An -tx1 | tr -d ' ')" = 89504e47 ] ||
             { echo "no screenshot of about:blank: $(tail -3 "$d/log")"; false; }
+        ;;
+    firefox)
+        # WebGPU in headless Firefox ESR, as tests/shader_ports/test_wgsl.sh
+        # runs it: the prefs, a page asking for an adapter, a marker on stdout
+        f=$(tool firefox-esr) || return 1
+        mkdir -p "$d/profile"
+        printf 'user_pref("%s", true);\n' dom.webgpu.enabled gfx.webgpu.force-enabled gfx.webgpu.ignore-blocklist \
+            browser.dom.window.dump.enabled >"$d/profile/user.js"
+        {
+            printf '<script>navigator.gpu.requestAdapter().then((a) => dump(a ? "WEBGPU_OK\\n" : "WEBGPU_NONE\\n"),\n'
+            printf '  (e) => dump("WEBGPU_ERROR " + e + "\\n"));</script>\n'
+        } >"$d/gpu.html"
+        HOME="$d" "$f" --headless --no-remote --profile "$d/profile" "file://$d/gpu.html" >"$d/log" 2>&1 &
+        pid=$!
+        n=0
+        while ! grep -q WEBGPU_ "$d/log" && kill -0 $pid 2>/dev/null && [ $n -lt 120 ]; do
+            sleep 1
+            n=$((n + 1))
+        done
+        kill $pid 2>/dev/null
+        wait $pid 2>/dev/null
+        grep -q WEBGPU_OK "$d/log" || { echo "no WebGPU adapter in headless Firefox: $(grep -a WEBGPU_ "$d/log" || tail -3 "$d/log")"; false; }
         ;;
     arm-none-eabi)
         arm=$(tool arm-none-eabi-gcc) && cortex_m "$d/m0.elf" "$M0" ports/cortex-m0/microbit.ld "$w/bare.c" &&

@@ -1,26 +1,29 @@
 #!/bin/sh
 # passes: first (headless Chromium runs the same pages in every pass)
-# make check: no (headless Chromium)
+# make check: no (headless browsers)
 # The WGSL port: for the default scene and the three scenes of the Vulkan
-# test (every model, every LUT kind, the thin film), `fresnel gen --wgsl`
-# (the port translated from ports/glsl/fresnel.glsl, then the scene) runs as
-# a WebGPU compute shader in headless Chromium (Tint on SwiftShader,
-# binary32), and with WGSL_FIREFOX=1 also in Firefox ESR (naga on
-# lavapipe), on every cosine step of 1/1024, and
+# test (every model, every LUT kind, the thin film from its storage
+# buffer), `fresnel gen --wgsl` (the port translated from
+# ports/glsl/fresnel.glsl, then the scene) runs as a WebGPU compute shader
+# in two implementations, headless Chromium (Tint on SwiftShader, binary32)
+# and headless Firefox ESR (naga on lavapipe), on every cosine step of
+# 1/1024, and
 # tests/shader_ports/wgsl_page_test.c compares every material and model with
 # the C runtime (max |WGSL - C| <= 1e-5, every result in [0, 1]); compile
 # errors come back with line numbers from getCompilationInfo(). Then the
-# port alone (make wgsl) compiles there, and gen --wgsl refuses what the
+# port alone (make wgsl) compiles in both, and gen --wgsl refuses what the
 # port lacks. The table:
 #   BUILD=build sh tests/shader_ports/test_wgsl.sh | sed -n 's/^NOTE table //p'
 BUILD=${BUILD:-build}
 out="$BUILD/wgsl/test"
 timeout_s=${WGSL_TIMEOUT:-240}
 browser=${CHROMIUM:-chromium}
-if ! command -v "$browser" >/dev/null 2>&1; then
-    echo "FAIL wgsl: $browser not found: install Debian's chromium"
-    exit 1
-fi
+for b in "$browser" firefox-esr; do
+    if ! command -v "$b" >/dev/null 2>&1; then
+        echo "FAIL wgsl: $b not found: install Debian's chromium and firefox-esr (tests/deps.sh does)"
+        exit 1
+    fi
+done
 for built in "$BUILD/wgsl/wgsl_page_test" "$BUILD/wgsl/fresnel.wgsl" "$BUILD/fresnel"; do
     if [ ! -f "$built" ]; then
         echo "FAIL wgsl: $built not built (make check-bins builds it)"
@@ -59,18 +62,8 @@ run_page() { # page log [firefox]
     grep -aq 'WGSL_DONE' "$2"
 }
 
-# Firefox ESR (naga on lavapipe), with WGSL_FIREFOX=1: the same pages.
-# Opt-in: lavapipe compiles the larger modules slowly.
-firefox=
-if [ "${WGSL_FIREFOX:-0}" = 1 ]; then
-    if command -v firefox-esr >/dev/null 2>&1; then
-        firefox=firefox
-    else
-        echo "FAIL wgsl: WGSL_FIREFOX=1 but firefox-esr not found: install Debian's firefox-esr"
-        status=1
-    fi
-fi
-
+echo "NOTE table | scene | model | browser | max \|WGSL − C\| |"
+echo "NOTE table |---|---|---|---|"
 for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene tests/data/scenes/vk_uniform.scene \
     tests/data/scenes/vk_film.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
@@ -83,7 +76,7 @@ for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene test
         status=1
         continue
     fi
-    for b in chromium $firefox; do
+    for b in chromium firefox; do
         run_page "$out/$ident.html" "$out/${ident}_$b.log" $b || echo "NOTE wgsl: $ident: no WGSL_DONE from $b within ${timeout_s}s"
         "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/${ident}_$b.log" $b || status=1
     done
@@ -98,17 +91,21 @@ done
     echo '(async () => { try { const d = await (await navigator.gpu.requestAdapter()).requestDevice();'
     echo '  const m = d.createShaderModule({code: document.getElementById("wgsl").textContent});'
     echo '  const info = await m.getCompilationInfo(); let bad = 0;'
-    echo '  for (const x of info.messages) { console.log("WGSL " + x.type + " line " + x.lineNum + ": " + x.message);'
+    echo '  const log = (s) => { console.log(s); if (typeof dump === "function") dump(s + String.fromCharCode(10)); };'
+    echo '  for (const x of info.messages) { log("WGSL " + x.type + " line " + x.lineNum + ": " + x.message);'
     echo '    if (x.type === "error") bad = 1; }'
-    echo '  console.log(bad ? "WGSL_DONE error" : "WGSL_DONE ok"); } catch (e) { console.log("WGSL_DONE error " + e); } })();'
+    echo '  log(bad ? "WGSL_DONE error" : "WGSL_DONE ok"); } catch (e) { console.log("WGSL_DONE error " + e);'
+    echo '    if (typeof dump === "function") dump("WGSL_DONE error " + e + String.fromCharCode(10)); } })();'
     echo '</script></body></html>'
 } >"$out/port.html"
-if run_page "$out/port.html" "$out/port.log" && grep -q 'WGSL_DONE ok' "$out/port.log"; then
-    echo "PASS wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in chromium"
-else
-    echo "FAIL wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in chromium: $(grep -o '"WGSL[^"]*' "$out/port.log" | head -5)"
-    status=1
-fi
+for b in chromium firefox; do
+    if run_page "$out/port.html" "$out/port_$b.log" $b && grep -q 'WGSL_DONE ok' "$out/port_$b.log"; then
+        echo "PASS wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in $b"
+    else
+        echo "FAIL wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in $b: $(grep -ao 'WGSL[^"]*' "$out/port_$b.log" | head -5)"
+        status=1
+    fi
+done
 
 # What the port lacks is refused as by --msl: grazing-pl tables, with exit 2 and no output.
 printf 'materials = au\nmodels = lut16\ntypes = q15\nlut_spacing = grazing-pl\n' >"$out/pl.scene"

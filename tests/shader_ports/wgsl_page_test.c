@@ -42,10 +42,11 @@ static int copy_file(FILE *f, const char *path)
 
 /* Slots: model m, material i at (m nmat + i) NCOS 3; then port function k
  * at the end, one float per cosine. */
-static int write_page(const char *path, const scene *sc, const char *ident, const char *wgsl, int funcs)
+static int write_page(const char *path, const scene *sc, const char *ident, const char *wgsl, int funcs,
+                      const scene_model *models)
 {
     FILE *f = fopen(path, "w");
-    int i, m, k, nmat = sc->material_count;
+    int i, m, k, nmat = sc->material_count, film_m = -1;
     long nres = 3L * NCOS * nmat * sc->model_count, total = nres + (funcs ? (long)NFUNCS * NCOS : 0);
     if (!f)
         return -1;
@@ -56,7 +57,10 @@ static int write_page(const char *path, const scene *sc, const char *ident, cons
         fclose(f);
         return -1;
     }
-    fprintf(f, "\n@group(0) @binding(0) var<storage, read_write> fresnel_test_out: array<f32>;\n"
+    for (m = 0; m < sc->model_count; m++)
+        if (model_of(sc->models[m].row)->offered & MODEL_FILM)
+            film_m = m;
+    fprintf(f, "\n@group(0) @binding(1) var<storage, read_write> fresnel_test_out: array<f32>;\n"
                "@compute @workgroup_size(%d)\n"
                "fn fresnel_test_main(@builtin(global_invocation_id) gid: vec3u) {\n"
                "    let i = i32(gid.x);\n    if (i >= %d) {\n        return;\n    }\n"
@@ -74,8 +78,20 @@ static int write_page(const char *path, const scene *sc, const char *ident, cons
         }
     for (k = 0; funcs && k < NFUNCS; k++)
         fprintf(f, "    fresnel_test_out[%ld + i] = f32(%s);\n", nres + (long)k * NCOS, port_funcs[k].expr);
-    fprintf(f, "}\n</script>\n<script>\n"
-               "const log = (s) => {\n"
+    fputs("}\n</script>\n<script>\n", f);
+    /* the film's tables, row i material i, as --tables writes them: the
+     * storage buffer at binding 0 of `gen --wgsl` */
+    fputs("const film = new Uint32Array([", f);
+    for (i = 0; film_m >= 0 && i < nmat; i++) {
+        const float *t = &models[(size_t)i * sc->model_count + film_m].film->f32.freq[0];
+        for (k = 0; k < (int)(sizeof(fresnel_film) / sizeof(float)); k++) {
+            unsigned int u;
+            memcpy(&u, &t[k], sizeof u);
+            fprintf(f, "%s0x%x", i || k ? (k % 8 ? "," : ",\n") : "", u);
+        }
+    }
+    fputs("]);\n", f);
+    fprintf(f, "const log = (s) => {\n"
                "  console.log(s);\n"
                "  if (typeof dump === 'function') dump(s + '\\n'); /* Firefox: to stdout */\n"
                "};\n"
@@ -97,8 +113,14 @@ static int write_page(const char *path, const scene *sc, const char *ident, cons
                "    const size = %ld * 4;\n"
                "    const buf = device.createBuffer({size, usage: GPUBufferUsage.STORAGE | GPUBufferUsage.COPY_SRC});\n"
                "    const rb = device.createBuffer({size, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST});\n"
-               "    const bg = device.createBindGroup({layout: pipeline.getBindGroupLayout(0),\n"
-               "      entries: [{binding: 0, resource: {buffer: buf}}]});\n"
+               "    const entries = [{binding: 1, resource: {buffer: buf}}];\n"
+               "    if (film.length) {\n"
+               "      const tb = device.createBuffer({size: film.byteLength, usage: GPUBufferUsage.STORAGE,\n"
+               "        mappedAtCreation: true});\n"
+               "      new Uint32Array(tb.getMappedRange()).set(film);\n      tb.unmap();\n"
+               "      entries.push({binding: 0, resource: {buffer: tb}});\n"
+               "    }\n"
+               "    const bg = device.createBindGroup({layout: pipeline.getBindGroupLayout(0), entries});\n"
                "    const enc = device.createCommandEncoder();\n"
                "    const pass = enc.beginComputePass();\n"
                "    pass.setPipeline(pipeline);\n    pass.setBindGroup(0, bg);\n"
@@ -142,11 +164,22 @@ int main(int argc, char **argv)
     FILE *log;
     const char *ident, *browser;
     if (argc == 6 && !strcmp(argv[1], "page")) {
-        if (scene_load(argv[3], &sc)) {
+        if (scene_load(argv[3], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
             CHECK("wgsl: scene loads", 0, "%s", argv[3]);
             return harness_exit();
         }
-        if (write_page(argv[2], &sc, argv[4], argv[5], !strcmp(argv[4], "default"))) {
+        nmat = sc.material_count;
+        params = calloc((size_t)nmat, sizeof *params);
+        spectra = calloc((size_t)nmat, sizeof *spectra);
+        models = calloc((size_t)nmat * (size_t)sc.model_count, sizeof *models);
+        ref = malloc(3L * NCOS * nmat * sc.model_count * sizeof *ref);
+        if (!params || !spectra || !models || !ref)
+            return 1;
+        if (port_scene_refs(&sc, &gc, params, spectra, models, ref)) {
+            CHECK("wgsl: the scene's materials derive", 0, "%s", argv[3]);
+            return harness_exit();
+        }
+        if (write_page(argv[2], &sc, argv[4], argv[5], !strcmp(argv[4], "default"), models)) {
             CHECK("wgsl: page written", 0, "%s", argv[2]);
             return harness_exit();
         }
@@ -240,9 +273,8 @@ int main(int argc, char **argv)
              HIGHP_BOUND);
         CHECK(name, fworst[k] <= HIGHP_BOUND, "max difference %.3g (bound %.3g)", fworst[k], HIGHP_BOUND);
     }
-    NOTE("table | %s | model | %s |", ident, browser);
-    for (m = 0; m < sc.model_count; m++)
-        NOTE("table | %s | %s | %.2g |", ident, sc.models[m].name, worst[m]);
+    for (m = 0; m < sc.model_count; m++) /* the table's header: test_wgsl.sh */
+        NOTE("table | %s | %s | %s | %.2g |", ident, sc.models[m].name, browser, worst[m]);
     free(params);
     free(spectra);
     free(models);
