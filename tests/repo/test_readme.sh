@@ -21,6 +21,8 @@
 #          tests/shader_ports/msl/metal_stdlib, with ports/msl/ and the
 #          .metal files the blocks before wrote, in float and with
 #          FRESNEL_MSL_HALF (Apple's compiler is macOS-only)
+#   wgsl   compiled as one module after the .wgsl files the blocks before
+#          wrote, in headless Chromium's WebGPU (tests/shader_ports/webgpu_page.sh)
 #   text   not run: a listing or a program's output
 # Any other block, and an indented code block, is a FAIL. In README.md's
 # prose every `build/fresnel ...` command runs (exit 0) and every `make ...`
@@ -141,6 +143,16 @@ for b in "$t"/blocks/[0-9]*; do
             echo "FAIL $where: metal: $(grep -m5 -i error "$t/log" | tr '\n' ' ')"
         fi
         rm -f "$run/block.metal.cpp"
+        ;;
+    wgsl)
+        { for g in "$run"/*.wgsl; do [ -f "$g" ] && [ ! -L "$g" ] && cat "$g"; done; cat "$b"; } >"$t/block.wgsl"
+        if ! command -v "${CHROMIUM:-chromium}" >/dev/null 2>&1; then
+            echo "FAIL $where: chromium not found (Debian's chromium; tests/deps.sh installs it)"
+        elif msg=$(sh tests/shader_ports/webgpu_page.sh compile "$t/block.wgsl" "$t"); then
+            echo "PASS $where: wgsl, compiles in Chromium's WebGPU after the module the blocks before wrote"
+        else
+            echo "FAIL $where: wgsl: $msg"
+        fi
         ;;
     indented) echo "FAIL $where: an indented code block: fence it and tag it (sh, c, text, ...)" ;;
     *) echo "FAIL $where: a code block tagged '$tag', which this test cannot check (tests/repo/test_readme.sh)" ;;

@@ -16,7 +16,6 @@
 #   BUILD=build sh tests/shader_ports/test_wgsl.sh | sed -n 's/^NOTE table //p'
 BUILD=${BUILD:-build}
 out="$BUILD/wgsl/test"
-timeout_s=${WGSL_TIMEOUT:-240}
 browser=${CHROMIUM:-chromium}
 for b in "$browser" firefox-esr; do
     if ! command -v "$b" >/dev/null 2>&1; then
@@ -33,33 +32,10 @@ done
 mkdir -p "$out"
 status=0
 
-# Opens page in headless Chromium (or Firefox) and waits (at most
-# timeout_s) for the page's WGSL_DONE line in the log (Chromium's stderr,
-# Firefox's stdout); the browser is stopped either way.
+# tests/shader_ports/webgpu_page.sh opens a page in either browser and
+# waits for its WGSL_DONE line.
 run_page() { # page log [firefox]
-    rm -rf "$out/profile"
-    mkdir -p "$out/profile"
-    if [ "${3-}" = firefox ]; then
-        # WebGPU on (lavapipe, naga) and dump() to stdout
-        printf 'user_pref("%s", true);\n' dom.webgpu.enabled gfx.webgpu.force-enabled gfx.webgpu.ignore-blocklist \
-            browser.dom.window.dump.enabled >"$out/profile/user.js"
-        firefox-esr --headless --no-remote --profile "$(pwd)/$out/profile" "file://$(pwd)/$1" >"$2" 2>&1 &
-    else
-        "$browser" --headless=new --no-sandbox --enable-unsafe-webgpu --use-webgpu-adapter=swiftshader \
-            --user-data-dir="$out/profile" --enable-logging=stderr --v=0 "file://$(pwd)/$1" >/dev/null 2>"$2" &
-    fi
-    pid=$!
-    waited=0
-    while ! grep -aq 'WGSL_DONE' "$2" 2>/dev/null; do
-        if ! kill -0 $pid 2>/dev/null || [ $waited -ge $timeout_s ]; then
-            break
-        fi
-        sleep 1
-        waited=$((waited + 1))
-    done
-    kill $pid 2>/dev/null
-    wait $pid 2>/dev/null
-    grep -aq 'WGSL_DONE' "$2"
+    sh tests/shader_ports/webgpu_page.sh run "$1" "$2" "${3:-chromium}"
 }
 
 echo "NOTE table | scene | model | browser | max \|WGSL − C\| |"
@@ -77,32 +53,17 @@ for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene test
         continue
     fi
     for b in chromium firefox; do
-        run_page "$out/$ident.html" "$out/${ident}_$b.log" $b || echo "NOTE wgsl: $ident: no WGSL_DONE from $b within ${timeout_s}s"
+        run_page "$out/$ident.html" "$out/${ident}_$b.log" $b || echo "NOTE wgsl: $ident: no WGSL_DONE from $b within ${WGSL_TIMEOUT:-240} s"
         "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/${ident}_$b.log" $b || status=1
     done
 done
 
-# The port alone compiles (an entry point that calls nothing of it).
-{
-    echo '<!DOCTYPE html><html><body><script type="text/wgsl" id="wgsl">'
-    cat "$BUILD/wgsl/fresnel.wgsl"
-    echo '@compute @workgroup_size(1) fn fresnel_test_main() {}'
-    echo '</script><script>'
-    echo '(async () => { try { const d = await (await navigator.gpu.requestAdapter()).requestDevice();'
-    echo '  const m = d.createShaderModule({code: document.getElementById("wgsl").textContent});'
-    echo '  const info = await m.getCompilationInfo(); let bad = 0;'
-    echo '  const log = (s) => { console.log(s); if (typeof dump === "function") dump(s + String.fromCharCode(10)); };'
-    echo '  for (const x of info.messages) { log("WGSL " + x.type + " line " + x.lineNum + ": " + x.message);'
-    echo '    if (x.type === "error") bad = 1; }'
-    echo '  log(bad ? "WGSL_DONE error" : "WGSL_DONE ok"); } catch (e) { console.log("WGSL_DONE error " + e);'
-    echo '    if (typeof dump === "function") dump("WGSL_DONE error " + e + String.fromCharCode(10)); } })();'
-    echo '</script></body></html>'
-} >"$out/port.html"
+# The port alone compiles.
 for b in chromium firefox; do
-    if run_page "$out/port.html" "$out/port_$b.log" $b && grep -q 'WGSL_DONE ok' "$out/port_$b.log"; then
+    if msg=$(sh tests/shader_ports/webgpu_page.sh compile "$BUILD/wgsl/fresnel.wgsl" "$out" $b); then
         echo "PASS wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in $b"
     else
-        echo "FAIL wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in $b: $(grep -ao 'WGSL[^"]*' "$out/port_$b.log" | head -5)"
+        echo "FAIL wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in $b: $msg"
         status=1
     fi
 done
