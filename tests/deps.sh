@@ -43,6 +43,7 @@ all   osmesa          libosmesa6-dev
 all   cmake           cmake
 all   glslang         glslang-tools
 all   spirv-val       spirv-tools
+all   spirv-cross     spirv-cross
 all   vulkan          libvulkan-dev
 all   lavapipe        mesa-vulkan-drivers
 all   chromium        chromium
@@ -236,6 +237,12 @@ probe() {
         v=$(tool spirv-val) || return 1
         g=$(tool glslangValidator) && "$g" -V "$w/f.frag" -o "$d/f.spv" >/dev/null || return 0
         "$v" --target-env vulkan1.0 "$d/f.spv"
+        ;;
+    spirv-cross)
+        # GLSL to SPIR-V to MSL, as tests/shader_ports/test_msl.sh translates it
+        x=$(tool spirv-cross) || return 1
+        g=$(tool glslangValidator) && "$g" -V "$w/f.frag" -o "$d/f.spv" >/dev/null || return 0
+        "$x" --msl "$d/f.spv" --output "$d/f.metal" && grep -q 'fragment' "$d/f.metal"
         ;;
     vulkan) cc=$(tool cc) && "$cc" $W "$w/vulkan.c" -lvulkan -o "$d/vulkan" ;;
     lavapipe)

@@ -143,4 +143,16 @@ static inline double port_half_bound(const scene *sc, int m)
     return port_f16_bound(sc, m);
 }
 
+/* A mediump shader's bound for scene model m after SPIR-V's relaxed
+ * precision became explicit binary16 (spirv-opt --convert-relaxed-to-half):
+ * the binary16 bound of the functions that compute in binary16
+ * (port_half_bound), and at least one binary16 rounding of the result
+ * (2^-12 below 1) for the highp ones, whose vec3 result a mediump shader
+ * returns in mediump. */
+static inline double port_float16_bound(const scene *sc, int m)
+{
+    double b = port_half_bound(sc, m);
+    return b > 0x1p-12 + HIGHP_BOUND ? b : 0x1p-12 + HIGHP_BOUND;
+}
+
 #endif

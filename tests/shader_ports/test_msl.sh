@@ -6,16 +6,19 @@
 # ports/msl/fresnel.metal compiled as C++ by g++ and clang++ through
 # tests/shader_ports/msl/metal_stdlib, in float and with FRESNEL_MP half,
 # run on every cosine step of 1/1024 and compared with the C runtime by
-# tests/shader_ports/msl_host_test.c (built by make check-bins). Then the
-# one-file port (make msl) compiles the same way, and gen --msl refuses
-# what the port lacks.
+# tests/shader_ports/msl_host_test.c (built by make check-bins); and the
+# same functions reached through SPIRV-Cross (the scene's GLSL compiled by
+# glslangValidator, spirv-opt, spirv-cross --msl, in float and with relaxed
+# precision as half), compiled and run the same way. Then the one-file port
+# (make msl) compiles the same way, and gen --msl refuses what the port
+# lacks.
 # The table of ports/README.md:
 #   BUILD=build sh tests/shader_ports/test_msl.sh | sed -n 's/^NOTE table //p'
 BUILD=${BUILD:-build}
 out="$BUILD/msl/test"
-for tool in g++ clang++; do
+for tool in g++ clang++ glslangValidator spirv-opt spirv-cross; do
     if ! command -v $tool >/dev/null 2>&1; then
-        echo "FAIL msl: $tool not found: install Debian's g++ and clang"
+        echo "FAIL msl: $tool not found: install Debian's g++, clang, glslang-tools, spirv-tools and spirv-cross (tests/deps.sh does)"
         exit 1
     fi
 done
@@ -27,15 +30,18 @@ for built in "$BUILD/msl/msl_host_test" "$BUILD/msl/fresnel.metal"; do
 done
 mkdir -p "$out"
 status=0
+echo "NOTE table | scene | model | g++ float | g++ half | clang float | clang half | half bound | spirv-cross float | spirv-cross half | its bound |"
+echo "NOTE table |---|---|---|---|---|---|---|---|---|---|"
 for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene tests/data/scenes/vk_uniform.scene \
     tests/data/scenes/vk_film.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
-    if ! "$BUILD/fresnel" gen "$manifest" --msl -o "$out/$ident.metal" 2>"$out/gen.log"; then
-        echo "FAIL msl: fresnel gen $manifest --msl: $(cat "$out/gen.log")"
+    if ! "$BUILD/fresnel" gen "$manifest" --msl -o "$out/$ident.metal" 2>"$out/gen.log" ||
+        ! "$BUILD/fresnel" gen "$manifest" --glsl -o "$out/$ident.glsl" 2>"$out/gen.log"; then
+        echo "FAIL msl: fresnel gen $manifest --msl / --glsl: $(cat "$out/gen.log")"
         status=1
         continue
     fi
-    "$BUILD/msl/msl_host_test" "$out" "$manifest" "$ident" "$out/$ident.metal" || status=1
+    "$BUILD/msl/msl_host_test" "$out" "$manifest" "$ident" "$out/$ident.metal" "$out/$ident.glsl" || status=1
 done
 
 # The one file of `make msl` stands in for the two of ports/ (a user who

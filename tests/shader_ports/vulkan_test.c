@@ -26,7 +26,7 @@
  *                       in explicit 16-bit floats (SPIR-V Float16), run
  *                       where the device has shaderFloat16 (lavapipe
  *                       does): within each model's binary16 bound
- *                       (float16_bound)
+ *                       (port_float16_bound)
  * The two relaxed variants are measured, not asserted (a Vulkan driver may
  * compute RelaxedPrecision at 32 bits, and lavapipe does: NOTE lines say
  * whether the results differ from the full-precision modules at all);
@@ -147,16 +147,6 @@ static void write_main(FILE *f, const scene *sc, const char *ident, int hlsl, in
 }
 
 static int build_module(const char *base, const char *label, const struct variant *va);
-
-/* The Float16 variant's bound for scene model m: the binary16 bound of the
- * functions that compute in binary16 (port_half_bound), and at least one
- * binary16 rounding of the result (2^-12 below 1) for the highp ones, whose
- * vec3 result a mediump shader returns in mediump. */
-static double float16_bound(const scene *sc, int m)
-{
-    double b = port_half_bound(sc, m);
-    return b > 0x1p-12 + HIGHP_BOUND ? b : 0x1p-12 + HIGHP_BOUND;
-}
 
 /* The port functions no scene model calls (port_checks.h), on the same grid
  * against the C runtime: one module per front end, a specialisation constant
@@ -450,7 +440,7 @@ int main(int argc, char **argv)
                 NOTE("%s: max |GPU - C| %.2g (measured; relaxed precision)", name, worst[vi][m]);
                 CHECK(name, bad == 0, "%d results not in [0, 1] (NaN or out of range)", bad);
             } else if (va->half) {
-                double hb = float16_bound(&sc, m);
+                double hb = port_float16_bound(&sc, m);
                 NOTE("%s: max |GPU - C| %.2g (bound %.2g)", name, worst[vi][m], hb);
                 CHECK(name, bad == 0 && worst[vi][m] <= hb, "max difference %.3g (bound %.3g), %d results not in "
                       "[0, 1]", worst[vi][m], hb, bad);
@@ -493,7 +483,7 @@ int main(int argc, char **argv)
         for (vi = 0; vi < NVARIANTS; vi++)
             port_cell(cell[vi], ran[vi], worst[vi][m]);
         NOTE("table | %s | %s | %s | %s | %s | %s | %s | %.2g |", ident, sc.models[m].name, cell[0], cell[1], cell[2],
-             cell[3], cell[4], float16_bound(&sc, m));
+             cell[3], cell[4], port_float16_bound(&sc, m));
     }
     vkrun_close(&v);
     for (i = 0; i < nmat * sc.model_count; i++)
