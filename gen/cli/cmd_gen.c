@@ -27,10 +27,9 @@ static void gen_usage(FILE *out)
                  "tables of exactly its materials, models and number types.\n");
     for (i = 0; i < emit_backend_count; i++)
         fprintf(out, "%s\n", emit_backends[i].help);
-    fprintf(out, "WGSL: cross-compile the SPIR-V of the GLSL or HLSL output (ports/README.md).\n"
-                 "The output is written to a temporary file beside OUT.h and renamed over it\n"
+    fprintf(out, "The output is written to a temporary file beside OUT.h and renamed over it\n"
                  "(an existing file keeps its mode; a symlink's target is replaced): on any\n"
-                 "error OUT.h (and OUT_TEX.h) is left as it was. -o - writes to stdout; a device\n"
+                 "error OUT.h (and OUT_TABLES.h) is left as it was. -o - writes to stdout; a device\n"
                  "or FIFO is written in place. Identical input gives byte-identical output.\n\n"
                  "Manifest format: `key = value` lines, # comments, each key once (the reference:\n"
                  "gen/scene/scene.h). At least one material, from either or both of:\n"

@@ -65,18 +65,6 @@ static const struct variant {
 
 static int is_film(const scene *sc, int m) { return (model_of(sc->models[m].row)->offered & MODEL_FILM) != 0; }
 
-static int append_file(FILE *f, const char *path)
-{
-    FILE *in = fopen(path, "r");
-    char buf[8192];
-    size_t n;
-    if (!in)
-        return -1;
-    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
-        fwrite(buf, 1, n, f);
-    return fclose(in);
-}
-
 /* The compute shader of the SPIRV-Cross variants: fr_in[0] selects
  * material x model (sel = m nmat + i), fr_in[1 + k] is cosine k. */
 static int write_compute(const char *path, const scene *sc, const char *ident, const char *glsl, int half)
@@ -85,11 +73,11 @@ static int write_compute(const char *path, const scene *sc, const char *ident, c
     int i, m, first = 1;
     if (!f)
         return -1;
-    if (append_file(f, "ports/glsl/prelude_450.glsl"))
+    if (port_append_file(f, "ports/glsl/prelude_450.glsl"))
         return fclose(f), -1;
     /* the film's storage buffer (unused here) off the kernel's bindings */
     fprintf(f, "precision %s float;\n#define FRESNEL_FILM_BINDING 2\n", half ? "mediump" : "highp");
-    if (append_file(f, "ports/glsl/fresnel.glsl") || append_file(f, glsl))
+    if (port_append_file(f, "ports/glsl/fresnel.glsl") || port_append_file(f, glsl))
         return fclose(f), -1;
     fputs("\nlayout(local_size_x = 1) in;\n"
           "layout(std430, set = 0, binding = 0) readonly buffer FrIn { highp float fr_in[]; };\n"

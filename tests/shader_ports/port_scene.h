@@ -13,6 +13,19 @@
 #include "scene/scene.h"
 #include "1_spectral/spectral.h"
 
+/* The file at path appended to f: 0, or -1 if it cannot be read. */
+static inline int port_append_file(FILE *f, const char *path)
+{
+    FILE *in = fopen(path, "r");
+    char buf[8192];
+    size_t n;
+    if (!in)
+        return -1;
+    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
+        fwrite(buf, 1, n, f);
+    return fclose(in);
+}
+
 /* The scene of a port test (label names it in the CHECK line) and room for
  * its materials' parameters, spectra and prepared models
  * ([material][model]). 0, or -1 after a FAIL line. */

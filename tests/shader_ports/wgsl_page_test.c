@@ -28,18 +28,6 @@
 
 #define WORKGROUP 64
 
-static int copy_file(FILE *f, const char *path)
-{
-    FILE *in = fopen(path, "r");
-    char buf[8192];
-    size_t n;
-    if (!in)
-        return -1;
-    while ((n = fread(buf, 1, sizeof buf, in)) > 0)
-        fwrite(buf, 1, n, f);
-    return fclose(in);
-}
-
 /* Slots: model m, material i at (m nmat + i) NCOS 3; then port function k
  * at the end, one float per cosine. */
 static int write_page(const char *path, const scene *sc, const char *ident, const char *wgsl, int funcs,
@@ -53,7 +41,7 @@ static int write_page(const char *path, const scene *sc, const char *ident, cons
     fputs("<!DOCTYPE html>\n<html><head><meta charset=\"utf-8\"><title>wgsl_page_test</title></head><body>\n"
           "<script type=\"text/wgsl\" id=\"wgsl\">\n",
           f);
-    if (copy_file(f, wgsl)) {
+    if (port_append_file(f, wgsl)) {
         fclose(f);
         return -1;
     }
