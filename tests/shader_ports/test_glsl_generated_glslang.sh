@@ -88,11 +88,17 @@ for manifest in data/scenes/*.scene tests/data/scenes/glsl_luts.scene tests/data
     nmat=$(grep -c '^/\* ---- ' "$glsl")
     for model in $models; do
         id=$(printf '%s' "$model" | tr '-' '_')
-        # the thin film takes the thickness too, and needs const arrays (not GLSL ES 1.00)
+        # the thin film takes the thickness too, needs integers and texelFetch
+        # (not GLSL ES 1.00), and reads its tables by three routes: the
+        # texture (default), the uniform block (ES 3.00, 16 KiB at most: an
+        # #error beyond) and the storage buffer (ES 3.10)
         params='FRESNEL_HIGHP float c' args='(fr_c)' variants="es100 es300 330"
         case $model in
         lut*) variants="$variants es300-texture" ;;
-        thin-film) params='FRESNEL_HIGHP float c, FRESNEL_HIGHP float d_nm' args='(fr_c, 700.0 * fr_c)' variants="es300 330" ;;
+        thin-film)
+            params='FRESNEL_HIGHP float c, FRESNEL_HIGHP float d_nm' args='(fr_c, 700.0 * fr_c)'
+            variants="es300 330 es300-uniform es310-storage"
+            ;;
         esac
         funcs=$(sed -n "s/^vec3 \(fresnel_${ident}_[a-z0-9_]*_${id}_rgb\)($params)$/\1/p" "$glsl")
         n=$(printf '%s\n' "$funcs" | grep -c .)
@@ -102,14 +108,27 @@ for manifest in data/scenes/*.scene tests/data/scenes/glsl_luts.scene tests/data
         fi
         expr=$(printf '%s\n' "$funcs" | sed "s/\$/$args/" | paste -sd+)
         for v in $variants; do
-            p=${v%-texture}
+            p=${v%-*}
             conf=
             [ "$p" = es100 ] && conf="$out/es100.conf"
             f="$out/${ident}_${id}_$v.frag"
             { prelude_of "$p"
-              [ "$v" != "$p" ] && echo '#define FRESNEL_LUT_ARRAYS 0'
+              case $v in
+              *-texture) echo '#define FRESNEL_LUT_ARRAYS 0' ;;
+              *-uniform) echo '#define FRESNEL_FILM_UNIFORM 1' ;;
+              *-storage) echo '#define FRESNEL_FILM_STORAGE 1' ;;
+              esac
               cat "$port/fresnel.glsl" "$glsl"
               main_of "$p" "$expr"; } >"$f"
+            if [ "$v" = es300-uniform ] && [ $((nmat * 6976)) -gt 16384 ]; then
+                # the tables do not fit the block GLES 3.0 guarantees: refused
+                if ! glslangValidator "$f" >"$f.log" 2>&1 && grep -q 'use the texture or storage route' "$f.log"; then
+                    echo "PASS glslang: $scene $model, $nmat materials, $v: refused at compile time ($((nmat * 6976)) bytes of tables)"
+                else
+                    echo "FAIL glslang: $scene $model, $nmat materials, $v: $((nmat * 6976)) bytes compiled without the #error"
+                fi
+                continue
+            fi
             validate "glslang: $scene $model, $nmat materials, $v" "$f" "$conf"
         done
     done
