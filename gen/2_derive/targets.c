@@ -125,7 +125,10 @@ const target target_table[TARGETS] = {
      2,
      {{"base_color", 0, 0.0, 1.0}, {"specular_color", 0, 0.0, 1.0}},
      0, "base_color = F0; specular_color = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
-     eval_openpbr, naive_f82_tint},
+     eval_openpbr, naive_f82_tint,
+     {"thin_film_weight", "thin_film_thickness", NULL, 1e-3, "thin_film_ior",
+      "OpenPBR's thin-film layer over the base: thin_film_thickness in micrometres (specification v1.1.1, "
+      "Parameter reference)"}},
     [TARGET_materialx] = {TARGET_NAME(materialx), "MaterialX generalized_schlick_bsdf (a metal: reflection only)",
      "Hoffman's generalized Schlick: color0 to color90 with exponent, a dip scaled by color82 at cos theta = 1/7",
      "MaterialX PBR specification, node generalized_schlick_bsdf (documents/Specification/MaterialX.PBRSpec.md)",
@@ -137,7 +140,10 @@ const target target_table[TARGETS] = {
       {"color90", 0, 0.0, MX_COLOUR_MAX},
       {"exponent", 1, MX_EXPONENT_MIN, MX_EXPONENT_MAX}},
      0, "color0 = F0; color82 = F82 / Schlick(F0) at cos theta = 1/7; color90 = 1; exponent 5",
-     eval_materialx, naive_materialx},
+     eval_materialx, naive_materialx,
+     {NULL, "thickness", NULL, 1.0, "ior",
+      "a thin_film_bsdf as the top of a layer node over the generalized_schlick_bsdf: thickness in nanometres "
+      "(MaterialX PBR specification, node thin_film_bsdf)"}},
     [TARGET_blender] = {TARGET_NAME(blender), "Blender 4.x Principled BSDF, Metallic = 1 (Cycles and EEVEE)",
      "OpenPBR's F82-tint, base colour and tint clamped to [0, 1], result clamped to [0, 1]",
      "Blender source: intern/cycles/kernel/svm/closure.h (Principled metallic), "
@@ -147,7 +153,9 @@ const target target_table[TARGETS] = {
      2,
      {{"base_color", 0, 0.0, 1.0}, {"specular_tint", 0, 0.0, 1.0}},
      0, "base_color = F0; specular_tint = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
-     eval_blender, naive_f82_tint},
+     eval_blender, naive_f82_tint,
+     {NULL, "Thin Film Thickness", NULL, 1.0, "Thin Film IOR",
+      "Principled BSDF (Blender 4.2 and later): Thin Film Thickness in nanometres"}},
     [TARGET_unreal] = {TARGET_NAME(unreal), "Unreal Engine F_AdobeF82(F0, F82, VoH)",
      "Adobe F82 as BRDF.ush writes it: the same curve as OpenPBR's, F82 being the tint at cos theta = 1/7",
      "Unreal Engine Engine/Shaders/Private/BRDF.ush, F_AdobeF82 (source under Epic's licence; which material "
@@ -166,7 +174,10 @@ const target target_table[TARGETS] = {
      1,
      {{"baseColorFactor", 0, 0.0, 1.0}},
      1, "baseColorFactor = F0",
-     eval_gltf, naive_f0},
+     eval_gltf, naive_f0,
+     {"iridescenceFactor", "iridescenceThicknessMaximum", "iridescenceThicknessMinimum", 1.0, "iridescenceIor",
+      "KHR_materials_iridescence: thicknesses in nanometres; without an iridescenceThicknessTexture the maximum is "
+      "the thickness, and the minimum is set to it too"}},
     [TARGET_filament] = {TARGET_NAME(filament), "Filament standard lit material, metallic = 1",
      "Schlick with f0 = baseColor and f90 = saturate(dot(f0, 50 * 0.33)) (1 for every metal)",
      "Filament source: shaders/src/surface_brdf.fs (fresnel), shaders/src/common_material.fs (computeF0)",
@@ -187,6 +198,21 @@ const target target_table[TARGETS] = {
      eval_gulbrandsen, naive_gulbrandsen},
 };
 const int target_count = (int)(sizeof target_table / sizeof target_table[0]);
+
+int target_film_rows(const target *t, double n, double d_nm, const char *names[4], double values[4])
+{
+    const target_film *f = &t->film;
+    int k = 0;
+    if (!f->thickness)
+        return 0;
+    if (f->weight)
+        names[k] = f->weight, values[k++] = 1.0;
+    names[k] = f->thickness, values[k++] = d_nm * f->per_nm;
+    if (f->thickness_min)
+        names[k] = f->thickness_min, values[k++] = d_nm * f->per_nm;
+    names[k] = f->ior, values[k++] = n;
+    return k;
+}
 
 const target *target_find(const char *name)
 {

@@ -36,6 +36,18 @@ typedef struct target_anchor {
     double f0[3], f82[3], eta[3];
 } target_anchor;
 
+/* A renderer's thin-film inputs over its metal, in its names and units
+ * (thickness NULL: it has none). The metal's own parameters stay the bare
+ * metal's: the renderer lays the film over them. */
+typedef struct target_film {
+    const char *weight;        /* the film's weight, set to 1; NULL: none */
+    const char *thickness;     /* the thickness input */
+    const char *thickness_min; /* a lower bound set to the same thickness (glTF's range); NULL: none */
+    double per_nm;             /* the thickness input's units per nanometre */
+    const char *ior;           /* the film's index */
+    const char *where;         /* the inputs' place and source, in a few words */
+} target_film;
+
 typedef struct target {
     const char *name;    /* `--for` and the scene key */
     const char *title;   /* the renderer and the part of it */
@@ -51,7 +63,12 @@ typedef struct target {
     void (*eval)(const double *x, double c, double rgb[3]);
     /* The naive parameters from the anchors, inside the ranges. */
     void (*naive)(const target_anchor *a, double *x);
+    target_film film;
 } target;
+
+/* The film inputs of t for a film of index n and thickness d_nm as
+ * name/value pairs (at most 4): their count, 0 if t has no film input. */
+int target_film_rows(const target *t, double n, double d_nm, const char *names[4], double values[4]);
 
 /* Indexed by target_id (catalog/targets.h). */
 extern const target target_table[TARGETS];

@@ -5,9 +5,28 @@
  * fixed-point header stays free of floats). Fixed formatting and a
  * deterministic fit keep the header byte-identical for identical input. */
 #include <stdio.h>
+#include <string.h>
 
 #include "2_derive/targets.h"
 #include "4_emit/emit.h"
+
+/* The renderer's thin-film inputs over the metal (fresnel params --for
+ * TARGET --film N:D), the thickness as the scene's range (one value when
+ * the range is one thickness; glTF's minimum and maximum are the range). */
+static void film_rows(FILE *f, const target *t, double n, double d_lo, double d_hi)
+{
+    const char *names[4];
+    double lo[4], hi[4];
+    int k, count = target_film_rows(t, n, d_lo, names, lo);
+    target_film_rows(t, n, d_hi, names, hi);
+    for (k = 0; k < count; k++) {
+        int is_min = t->film.thickness_min && !strcmp(names[k], t->film.thickness_min);
+        fprintf(f, " *   %-12s %-16s %.6g", "", names[k], is_min ? lo[k] : hi[k]);
+        if (lo[k] != hi[k] && !t->film.thickness_min)
+            fprintf(f, " (the scene's range %.6g-%.6g: set per use)", lo[k], hi[k]);
+        fputc('\n', f);
+    }
+}
 
 static void targets_comment(FILE *f, const emit_input *in, int material)
 {
@@ -29,6 +48,12 @@ static void targets_comment(FILE *f, const emit_input *in, int material)
         }
         fprintf(f, " *   %-12s dE2000 %.4f / %.4f (naive conversion %.4f / %.4f)\n", "", fit->fit_mean, fit->fit_max,
                 fit->naive_mean, fit->naive_max);
+        if (in->films && t->film.thickness) {
+            fprintf(f, " *   %-12s and the thin film over that metal:\n", "");
+            film_rows(f, t, in->films[material].n_film, sc->film_d_lo, sc->film_d_hi);
+        } else if (in->films) {
+            fprintf(f, " *   %-12s (no thin-film input known: the film is not carried)\n", "");
+        }
     }
     fprintf(f, " */\n");
 }

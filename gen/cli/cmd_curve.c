@@ -15,23 +15,6 @@
 #define WHERE "fresnel curve"
 
 
-/* --film N:D: 0, or -1 for anything but an index in [1, 4] and a thickness
- * in [0, FRESNEL_FILM_D_MAX] nm. */
-static int parse_film(const char *val, double *n, double *d)
-{
-    const char *colon = strchr(val, ':');
-    char text[64];
-    size_t len = colon ? (size_t)(colon - val) : sizeof text;
-    if (len >= sizeof text)
-        return -1;
-    memcpy(text, val, len);
-    text[len] = '\0';
-    return cli_parse_double(text, n) || !(*n >= 1.0 && *n <= 4.0) || cli_parse_double(colon + 1, d) ||
-                   !(*d >= 0.0 && *d <= FRESNEL_FILM_D_MAX)
-               ? -1
-               : 0;
-}
-
 int cmd_curve(int argc, char **argv)
 {
     material_options o;
@@ -96,11 +79,8 @@ int cmd_curve(int argc, char **argv)
                 model_list = val;
                 models_given = 1;
             } else if (!strcmp(argv[i - 1], "--film")) {
-                if (parse_film(val, &o.film_n, &film_d))
-                    return cli_error(WHERE,
-                                     "--film expects N:D, a film index N in [1, 4] and a thickness D of nm in "
-                                     "[0, %g], got '%s'",
-                                     FRESNEL_FILM_D_MAX, val);
+                if (film_option(WHERE, val, &o.film_n, &film_d))
+                    return CLI_BAD_INPUT;
             } else if (!strcmp(argv[i - 1], "--type")) {
                 if (type_option(WHERE, val, &type))
                     return CLI_BAD_INPUT;

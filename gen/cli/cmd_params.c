@@ -15,7 +15,7 @@
 #define WHERE "fresnel params"
 
 static const char *const option_names[] = {"--material", "--nk", "--name", "--format", "--space", "--gamut", "--sigma",
-                                           "--n1", "--data", "--for", "--help", NULL};
+                                           "--n1", "--data", "--for", "--film", "--help", NULL};
 
 static void row(const char *name, const double v[3])
 {
@@ -90,6 +90,22 @@ static void print_target(const target *t, const target_fit *f, const gen_context
     }
 }
 
+/* The renderer's thin-film inputs for a film of index n, d_nm thick, over
+ * the metal printed before. */
+static void print_film(const target *t, double n, double d_nm)
+{
+    const char *names[4];
+    double values[4];
+    int k, count = target_film_rows(t, n, d_nm, names, values);
+    printf("# thin film: index %g, %g nm, laid by %s over the metal above (whose parameters are the bare metal's): "
+           "%s\n",
+           n, d_nm, t->name, t->film.where);
+    for (k = 0; k < count; k++) {
+        const double v[3] = {values[k], values[k], values[k]};
+        row(names[k], v);
+    }
+}
+
 /* The scene's targets (one, or every one for "all"), as encode_scene
  * fitted them. */
 static int print_targets(const char *which, const encoded_scene *es)
@@ -142,6 +158,7 @@ int cmd_params(int argc, char **argv)
     encoded_scene es;
     const gen_context *g;
     const char *val, *for_target = NULL;
+    double film_n = 0.0, film_d = 0.0;
     int i, k, status = 0;
     material_options_init(&o);
     for (i = 1; i < argc; i++) {
@@ -149,7 +166,7 @@ int cmd_params(int argc, char **argv)
             const char *names[16];
             int n = target_names(names, 16), k;
             printf("usage: fresnel params (--material ID | --nk FILE [--name ID]) [--space NAME] [--gamut POLICY]\n"
-                   "                      [--sigma S] [--n1 X] [--data DIR] [--for TARGET]\n\n"
+                   "                      [--sigma S] [--n1 X] [--data DIR] [--for TARGET [--film N:D]]\n\n"
                    "Prints, as CSV parameter,r,g,b, every parameter the generator derives for one\n"
                    "material from its spectral ground truth (GT) in a colour space: dominant\n"
                    "wavelengths, F0 (unclipped, and under the --gamut policy), F82, the\n"
@@ -170,8 +187,11 @@ int cmd_params(int argc, char **argv)
                    "                  Gulbrandsen's g), its dE2000 and the gain.\n"
                    "                  --for all prints one row per target: target,fitted_mean,\n"
                    "                  fitted_max,naive_mean,naive_max (and the fit against the\n"
-                   "                  unclipped GT where the material leaves the gamut). Targets:\n"
-                   "                 ",
+                   "                  unclipped GT where the material leaves the gamut).\n"
+                   "  --film N:D      with --for TARGET: also that renderer's thin-film inputs, in its\n"
+                   "                  names and units, for a film of index N (1..4) and thickness D nm\n"
+                   "                  (0..5000) over the metal, for the targets that have them\n"
+                   "Targets:         ",
                    material_options_help);
             for (k = 0; k < n; k++)
                 printf(" %s", names[k]);
@@ -186,8 +206,22 @@ int cmd_params(int argc, char **argv)
             if (target_option(val))
                 return CLI_BAD_INPUT;
             for_target = val;
+        } else if (!strcmp(argv[i - 1], "--film")) {
+            if (film_option(WHERE, val, &film_n, &film_d))
+                return CLI_BAD_INPUT;
         } else if (material_option(WHERE, argv[i - 1], val, &o) == CLI_BAD_INPUT)
             return CLI_BAD_INPUT;
+    }
+    if (film_n > 0.0 && (!for_target || !strcmp(for_target, "all")))
+        return cli_error(WHERE, "--film needs --for TARGET, one renderer: its thin-film inputs are printed in its "
+                                "names and units");
+    if (film_n > 0.0 && !target_find(for_target)->film.thickness) {
+        char list[128] = "";
+        for (k = 0; k < target_count; k++)
+            if (target_table[k].film.thickness)
+                snprintf(list + strlen(list), sizeof list - strlen(list), " %s", target_table[k].name);
+        return cli_error(WHERE, "--film: target %s has no thin-film input this tool knows (those that have:%s)",
+                         for_target, list);
     }
     memset(&es, 0, sizeof es);
     if (!(sc = malloc(sizeof *sc))) {
@@ -210,6 +244,8 @@ int cmd_params(int argc, char **argv)
         printf("# space %s, sigma %g nm, n1 %g\n", g->cs.id, p.sigma, p.n1);
         if (for_target) {
             status = print_targets(for_target, &es);
+            if (!status && film_n > 0.0)
+                print_film(target_find(for_target), film_n, film_d);
             goto done;
         }
         printf("parameter,r,g,b\n");

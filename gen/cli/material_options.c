@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "common/cli.h"
+#include "fresnel_film.h"
 #include "scene/scene.h"
 
 const char material_options_help[] =
@@ -48,6 +49,22 @@ int type_option(const char *where, const char *val, const number_type **out)
     if (!(*out)->available)
         return cli_error(where, "--type %s: this build's compiler has no _Float16", val);
     return 0;
+}
+
+int film_option(const char *where, const char *val, double *n, double *d_nm)
+{
+    const char *colon = strchr(val, ':');
+    char text[64];
+    size_t len = colon ? (size_t)(colon - val) : sizeof text;
+    if (len < sizeof text) {
+        memcpy(text, val, len);
+        text[len] = '\0';
+        if (!cli_parse_double(text, n) && *n >= 1.0 && *n <= 4.0 && !cli_parse_double(colon + 1, d_nm) &&
+            *d_nm >= 0.0 && *d_nm <= FRESNEL_FILM_D_MAX)
+            return 0;
+    }
+    return cli_error(where, "--film expects N:D, a film index N in [1, 4] and a thickness D of nm in [0, %g], got '%s'",
+                     FRESNEL_FILM_D_MAX, val);
 }
 
 int gamut_option(const char *where, const char *val, gamut_policy *out)

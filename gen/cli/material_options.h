@@ -26,6 +26,9 @@ void material_options_init(material_options *o);
  * option. */
 int material_option(const char *where, const char *opt, const char *val, material_options *o);
 extern const char material_options_help[];
+/* --film N:D, a film of index N in [1, 4] and thickness D in [0,
+ * FRESNEL_FILM_D_MAX] nm: 0, or CLI_BAD_INPUT after a message. */
+int film_option(const char *where, const char *val, double *n, double *d_nm);
 /* --gamut's value: 0, or CLI_BAD_INPUT after a message. */
 int gamut_option(const char *where, const char *val, gamut_policy *out);
 /* --type's value, a number type this build evaluates (number_type_find):

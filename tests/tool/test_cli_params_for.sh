@@ -161,3 +161,35 @@ if "$F" gen "$t/t.scene" -o "$t/t.h" 2>"$t/err" && "$F" gen "$t/t.scene" --glsl 
 else
     echo "FAIL gen targets key: header '$h', params '$p': $(cat "$t/err")"
 fi
+
+# A thin film over the metal: each renderer's film inputs in its names and
+# units (OpenPBR micrometres, the others nanometres), those without one
+# refused by name, and in a film scene's header the same rows (glTF's
+# minimum and maximum the scene's thickness range).
+"$F" params --material au --for openpbr --film 1.38:300 >"$t/fo" 2>"$t/err" &&
+    "$F" params --material au --for gltf --film 1.38:300 >"$t/fg" 2>>"$t/err" &&
+    "$F" params --material au --for blender --film 1.38:300 >"$t/fb" 2>>"$t/err" &&
+    "$F" params --material au --for materialx --film 1.38:300 >"$t/fm" 2>>"$t/err"
+got=$(cat "$t/fo" "$t/fg" "$t/fb" "$t/fm" | grep -E '^(thin_film|iridescence|Thin Film|thickness|ior)' | cut -d, -f1,2 | tr '\n' ' ')
+want='thin_film_weight,1 thin_film_thickness,0.3 thin_film_ior,1.38 iridescenceFactor,1 iridescenceThicknessMaximum,300 iridescenceThicknessMinimum,300 iridescenceIor,1.38 Thin Film Thickness,300 Thin Film IOR,1.38 thickness,300 ior,1.38 '
+bare=$("$F" params --material au --for openpbr | grep '^base_color')
+if [ "$got" = "$want" ] && grep -q '^base_color' "$t/fo" && [ "$(grep '^base_color' "$t/fo")" = "$bare" ]; then
+    echo "PASS params --for --film: openpbr (micrometres), gltf, blender, materialx (nanometres) film inputs; the metal's rows the bare metal's"
+else
+    echo "FAIL params --for --film: got '$got' $(cat "$t/err")"
+fi
+bad "--film for a target without a film input names those with one" \
+    "target unreal has no thin-film input this tool knows \(those that have: openpbr materialx blender gltf\)" \
+    --material au --for unreal --film 1.38:300
+bad "--film without --for" "--film needs --for TARGET" --material au --film 1.38:300
+bad "--film with --for all" "--film needs --for TARGET" --material au --for all --film 1.38:300
+bad "--film out of range" "--film expects N:D" --material au --for openpbr --film 5:300
+printf 'materials = au\nmodels = f82 thin-film\nfilm = 1.38\nfilm_thickness = 100 400\ntargets = openpbr gltf unreal\n' >"$t/f.scene"
+if "$F" gen "$t/f.scene" -o "$t/f.h" 2>"$t/err" &&
+    grep -q '^ \*  *thin_film_thickness 0.4 (the scene.s range 0.1-0.4: set per use)$' "$t/f.h" &&
+    grep -q '^ \*  *iridescenceThicknessMinimum 100$' "$t/f.h" && grep -q '^ \*  *iridescenceThicknessMaximum 400$' "$t/f.h" &&
+    grep -q '^ \*  *iridescenceIor   1.38$' "$t/f.h" && grep -q 'no thin-film input known: the film is not carried' "$t/f.h"; then
+    echo "PASS gen targets key, film scene: each renderer's film inputs under its metal, the thickness range in its units"
+else
+    echo "FAIL gen targets key, film scene: $(grep -A3 'thin film over' "$t/f.h" | head -8) $(cat "$t/err")"
+fi
