@@ -128,3 +128,83 @@ void ref_film_model(const film_model *m, double c, double d_nm, int clamp, doubl
         for (ch = 0; ch < 3; ch++)
             rgb[ch] = rgb[ch] > 0.0 ? (rgb[ch] < 1.0 ? rgb[ch] : 1.0) : 0.0;
 }
+
+/* KHR_materials_iridescence (reference_film.h). The sensitivity of order m
+ * at optical path difference opd (nm) and phase shift phi: the Fourier
+ * transform of three Gaussians fitted to the CIE 1931 x, y, z functions
+ * (amplitude, centre frequency and variance per channel, and a second lobe
+ * for x), normalised by the integral of y, then to linear Rec. 709. The
+ * constants are Belcour and Barla's ("A Practical Extension to Microfacet
+ * Theory for the Modeling of Varying Iridescence", ACM TOG 36(4), 2017,
+ * supplemental material), as the extension's reference implementation
+ * quotes them. */
+static void khr_sensitivity(double opd, const double phi[3], double rgb[3])
+{
+    static const double amp[3] = {5.4856e-13, 4.4201e-13, 5.2481e-13};
+    static const double centre[3] = {1.6810e+06, 1.7953e+06, 2.2084e+06};
+    static const double var[3] = {4.3278e+09, 9.3046e+09, 6.6121e+09};
+    static const double to_709[3][3] = {{3.2404542, -1.5371385, -0.4985314},
+                                        {-0.9692660, 1.8760108, 0.0415560},
+                                        {0.0556434, -0.2040259, 1.0572252}};
+    const double two_pi = 6.283185307179586;
+    double phase = two_pi * opd * 1e-9, xyz[3];
+    int ch;
+    for (ch = 0; ch < 3; ch++)
+        xyz[ch] = amp[ch] * sqrt(two_pi * var[ch]) * cos(centre[ch] * phase + phi[ch]) * exp(-phase * phase * var[ch]);
+    xyz[0] += 9.7470e-14 * sqrt(two_pi * 4.5282e+09) * cos(2.2399e+06 * phase + phi[0]) * exp(-4.5282e+09 * phase * phase);
+    for (ch = 0; ch < 3; ch++)
+        xyz[ch] /= 1.0685e-7;
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = to_709[ch][0] * xyz[0] + to_709[ch][1] * xyz[1] + to_709[ch][2] * xyz[2];
+}
+
+static double khr_schlick(double f0, double c)
+{
+    double m = 1.0 - c, m2 = m * m;
+    return f0 + (1.0 - f0) * m2 * m2 * m;
+}
+
+void ref_film_khr_iridescence(double outside_ior, double film_ior, double d_nm, double c, const double base_f0[3],
+                              double rgb[3])
+{
+    const double pi = 3.141592653589793;
+    double t = d_nm / 0.03, fade = d_nm <= 0.0 ? 0.0 : (d_nm >= 0.03 ? 1.0 : t * t * (3.0 - 2.0 * t));
+    double eta2 = outside_ior + (film_ior - outside_ior) * fade;
+    double sin2_sq = (outside_ior / eta2) * (outside_ior / eta2) * (1.0 - c * c), cos2_sq = 1.0 - sin2_sq, cos2;
+    double r0, r12, t121, phi21, opd, sens[3], phi[3], base_ior[3], r23[3], r123[3], amp[3], rs[3];
+    int ch, m;
+    if (cos2_sq < 0.0) { /* total reflection inside the film */
+        rgb[0] = rgb[1] = rgb[2] = 1.0;
+        return;
+    }
+    cos2 = sqrt(cos2_sq);
+    r0 = (eta2 - outside_ior) / (eta2 + outside_ior);
+    r12 = khr_schlick(r0 * r0, c);
+    t121 = 1.0 - r12;
+    phi21 = pi - (eta2 < outside_ior ? pi : 0.0);
+    opd = 2.0 * eta2 * d_nm * cos2;
+    for (ch = 0; ch < 3; ch++) {
+        double f0 = base_f0[ch] < 0.0 ? 0.0 : (base_f0[ch] > 0.9999 ? 0.9999 : base_f0[ch]), s = sqrt(f0), r1;
+        base_ior[ch] = (1.0 + s) / (1.0 - s);
+        r1 = (base_ior[ch] - eta2) / (base_ior[ch] + eta2);
+        r23[ch] = khr_schlick(r1 * r1, cos2);
+        phi[ch] = phi21 + (base_ior[ch] < eta2 ? pi : 0.0);
+        r123[ch] = r12 * r23[ch];
+        r123[ch] = r123[ch] < 1e-5 ? 1e-5 : (r123[ch] > 0.9999 ? 0.9999 : r123[ch]);
+        rs[ch] = t121 * t121 * r23[ch] / (1.0 - r123[ch]);
+        rgb[ch] = r12 + rs[ch]; /* order 0 */
+        amp[ch] = rs[ch] - t121;
+    }
+    for (m = 1; m <= 2; m++) {
+        double phim[3];
+        for (ch = 0; ch < 3; ch++) {
+            amp[ch] *= sqrt(r123[ch]);
+            phim[ch] = m * phi[ch];
+        }
+        khr_sensitivity(m * opd, phim, sens);
+        for (ch = 0; ch < 3; ch++)
+            rgb[ch] += amp[ch] * 2.0 * sens[ch];
+    }
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = rgb[ch] > 0.0 ? rgb[ch] : 0.0;
+}

@@ -96,6 +96,22 @@ void ref_film_model(const film_model *m, double c, double d_nm, int clamp, doubl
 /* A, B, P, Q (above) from kappa and q of the s [0] and p [1] polarisations. */
 void film_pole_terms(const double complex kappa[2], const double complex q[2], double complex abpq[4]);
 
+/* The real-time standard for iridescence, as the KHR_materials_iridescence
+ * extension of glTF 2.0 specifies it and the Khronos glTF Sample Viewer
+ * evaluates it (evalIridescence; three.js and Babylon.js follow it):
+ * Belcour and Barla's 2017 thin-film model with Schlick's approximation at
+ * both interfaces, the base's index from its F0 (clamped to [0, 0.9999]) as
+ * if it were a dielectric, the film's index faded to the outside's below
+ * 0.03 nm, the Airy series to order m = 2 with each order's spectrum the
+ * Fourier transform of Gaussian fits of the CIE XYZ sensitivities, and the
+ * result in linear Rec. 709, negative channels set to 0 (no upper clamp).
+ * Inputs as the peer takes them: the outside's index, the film's index and
+ * thickness in nm, cos theta in the outside, and the base's F0 per channel.
+ * Transcribed from the extension's specification and the paper's published
+ * constants (gen/common/reference_film.c cites them). */
+void ref_film_khr_iridescence(double outside_ior, double film_ior, double d_nm, double c, const double base_f0[3],
+                              double rgb[3]);
+
 /* C99 has no CMPLX: a complex from its parts with the sign of a zero
  * imaginary part kept (it decides csqrt's branch on the negative axis). */
 double complex ref_complex(double re, double im);

@@ -63,6 +63,11 @@ typedef struct report_film {
     scene_model *models; /* [material]: views of the encoded scene's (not freed) */
     report_film_cell *cells; /* [material][type] */
     long samples;            /* angle x thickness samples per material */
+    /* [material] the KHR_materials_iridescence peer's CIEDE2000 on the same
+     * samples (ref_film_khr_iridescence, given the material's F0): mean,
+     * max; measured where the scene's space is srgb (the peer's Rec. 709) */
+    double *peer_mean, *peer_max;
+    int peer_measured;
     double ns[NUMBER_TYPES], schlick_ns; /* ns per RGB evaluation; NaN when not timed */
 } report_film;
 

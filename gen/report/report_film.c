@@ -9,6 +9,7 @@
 
 #include "bench/bench.h"
 #include "common/reference.h"
+#include "common/reference_film.h"
 #include "report/report.h"
 
 #define WHERE "fresnel report"
@@ -39,7 +40,9 @@ int report_film_take(report_run *r, const char *scene_path)
     f->film_n = calloc((size_t)r->sc.material_count, sizeof *f->film_n);
     f->models = calloc((size_t)r->sc.material_count, sizeof *f->models);
     f->cells = calloc((size_t)r->sc.material_count * number_types_available, sizeof *f->cells);
-    if (!f->film_n || !f->models || !f->cells)
+    f->peer_mean = calloc((size_t)r->sc.material_count, sizeof *f->peer_mean);
+    f->peer_max = calloc((size_t)r->sc.material_count, sizeof *f->peer_max);
+    if (!f->film_n || !f->models || !f->cells || !f->peer_mean || !f->peer_max)
         return cli_oom(WHERE);
     for (i = 0; i < r->sc.material_count; i++)
         f->film_n[i] = scene_film_n(&r->sc, i);
@@ -57,6 +60,8 @@ void report_film_free(report_run *r)
     free(f->models);
     free(f->film_n);
     free(f->cells);
+    free(f->peer_mean);
+    free(f->peer_max);
     memset(f, 0, sizeof *f);
 }
 
@@ -74,9 +79,11 @@ int report_film_measure(report_run *r, int i)
     film_stack stack;
     model_rgb q;
     int a, k, t, nd = r->sc.film_d_lo == r->sc.film_d_hi ? 1 : FILM_THICKNESSES;
+    int peer = !strcmp(r->g->cs.id, "srgb"); /* the peer writes linear Rec. 709 */
     long n = 0;
     if (!f->present)
         return 0;
+    f->peer_measured = peer;
     p.film_n = f->film_n[i];
     f->models[i] = *encoded_scene_model(&r->es, i, f->row);
     q = scene_model_rgb(&f->models[i]);
@@ -97,6 +104,16 @@ int report_film_measure(report_run *r, int i)
             for (ch = 0; ch < 3; ch++)
                 truth[ch] = ref_clamp(truth[ch], 0.0, 1.0);
             lab_space_lab(&r->ls, truth, lab_truth);
+            if (peer) { /* its best input: the material's F0 under the scene's gamut policy */
+                double rgb[3], lab[3], de;
+                ref_film_khr_iridescence(p.n1, p.film_n, q.d_nm, c, p.f0, rgb);
+                for (ch = 0; ch < 3; ch++)
+                    rgb[ch] = ref_clamp(rgb[ch], 0.0, 1.0);
+                lab_space_lab(&r->ls, rgb, lab);
+                de = ciede2000(lab_truth, lab);
+                f->peer_mean[i] += de;
+                f->peer_max[i] = fmax(f->peer_max[i], de);
+            }
             for (t = 0; t < number_types_available; t++) {
                 report_film_cell *cell = &f->cells[i * number_types_available + t];
                 double rgb[3], lab[3], de;
@@ -116,6 +133,7 @@ int report_film_measure(report_run *r, int i)
     }
     for (t = 0; t < number_types_available; t++)
         f->cells[i * number_types_available + t].de_mean /= (double)n;
+    f->peer_mean[i] /= (double)n;
     f->samples = n;
     return 0;
 }
@@ -200,6 +218,26 @@ void report_film_write(report_run *r, FILE *out)
         fprintf(out, " %.3f | %.3f |", mean, max);
     }
     fprintf(out, " |\n");
+    if (f->peer_measured) {
+        double mean = 0.0, max = 0.0, own_mean = 0.0, own_max = 0.0;
+        fprintf(out, "\nBeside the real-time standard: KHR_materials_iridescence as glTF 2.0 specifies it and the "
+                     "Khronos glTF Sample Viewer evaluates it (Belcour and Barla 2017 with Schlick at both interfaces, "
+                     "orders m <= 2; gen/common/reference_film.h), in double precision, given its best input for a "
+                     "measured substrate, the material's F0 under the scene's gamut policy, on the same samples "
+                     "against the same truth (its result held to [0, 1]):\n\n"
+                     "| material | %s %s mean | max | KHR_materials_iridescence mean | max |\n|---|---:|---:|---:|---:|\n",
+                f->entry.name, number_types[0].name);
+        for (i = 0; i < sc->material_count; i++) {
+            const report_film_cell *c0 = &f->cells[i * number_types_available];
+            fprintf(out, "| %s | %.3f | %.3f | %.3f | %.3f |\n", r->mats[i].p.info.id, c0->de_mean, c0->de_max,
+                    f->peer_mean[i], f->peer_max[i]);
+            mean += f->peer_mean[i] / sc->material_count;
+            max = fmax(max, f->peer_max[i]);
+            own_mean += c0->de_mean / sc->material_count;
+            own_max = fmax(own_max, c0->de_max);
+        }
+        fprintf(out, "| all | %.3f | %.3f | %.3f | %.3f |\n", own_mean, own_max, mean, max);
+    }
     fprintf(out, "\n| type | table bytes per material | ns per RGB evaluation | x fresnel_schlick_rgb |\n"
                  "|---|---:|---:|---:|\n");
     for (t = 0; t < number_types_available; t++) {

@@ -144,6 +144,16 @@ if "$F" report --scene "$t/r.scene" -o "$t/rep" --no-timing --no-instructions >/
 else
     echo "FAIL report thin film: $(cat "$t/err") $(sed -n '/## Thin film/,+12p' "$t/rep/report.md" 2>/dev/null | head -12)"
 fi
+# beside it the KHR_materials_iridescence peer on the same samples: a row per
+# material and the whole, each mean <= max
+peer=$(sed -n '/^Beside the real-time standard: KHR_materials_iridescence/,/^| all/p' "$t/rep/report.md" |
+    grep -E '^\| (au|bk7|all) \|( [0-9.]+ \|){4}$')
+if [ "$(printf '%s\n' "$peer" | grep -c .)" -eq 3 ] &&
+    printf '%s\n' "$peer" | awk -F'|' '{ if (!($3 + 0 <= $4 + 0 && $5 + 0 <= $6 + 0)) exit 1 }'; then
+    echo "PASS report: the film beside KHR_materials_iridescence, per material and all ($(printf '%s' "$peer" | tail -1))"
+else
+    echo "FAIL report: no KHR_materials_iridescence rows: '$peer'"
+fi
 # a scene whose only model is the film: refused (the report's tables compare models of angle)
 printf 'materials = au\nmodels = thin-film\nfilm = 1.5\n' >"$t/only.scene"
 "$F" report --scene "$t/only.scene" -o "$t/only" --no-timing --no-instructions >/dev/null 2>"$t/err"

@@ -265,6 +265,50 @@ static void test_grazing_and_extremes(const gen_context *g, spectrum *const *s)
           worst_clamp == 0.0, "worst %.3g", worst_clamp);
 }
 
+/* The KHR_materials_iridescence peer (ref_film_khr_iridescence): finite and
+ * never negative over films, bases, thicknesses and angles; for a thick
+ * film (100 um: an optical path of at least 2 x 1.2 x 0.55 x 1e5 nm, where
+ * the Gaussian sensitivities are below exp(-3000)) its orders m > 0 vanish and it is the incoherent sum of its two Schlick
+ * interfaces, R12 + T^2 R23 / (1 - R12 R23); below the critical angle of a
+ * film less dense than the outside, total reflection gives 1. */
+static void test_khr_peer(void)
+{
+    static const double films[] = {1.2, 1.38, 1.8, 2.5}, cosines[] = {0.0, 0.05, 0.3, 0.7, 1.0};
+    static const double bases[][3] = {{0.04, 0.04, 0.04}, {1.0, 0.71, 0.36}, {0.95, 0.64, 0.54}, {0.0, 0.5, 1.0}};
+    int bad = 0, f, b, k, ch, d;
+    double worst_incoherent = 0.0, rgb[3];
+    for (f = 0; f < 4; f++)
+        for (b = 0; b < 4; b++)
+            for (k = 0; k < 5; k++) {
+                double c = cosines[k], r0 = (films[f] - 1.0) / (films[f] + 1.0), m = 1.0 - c;
+                double r12 = r0 * r0 + (1.0 - r0 * r0) * m * m * m * m * m;
+                double cos2 = sqrt(1.0 - (1.0 - c * c) / (films[f] * films[f])), m2 = 1.0 - cos2;
+                for (d = 0; d <= 1000; d += 7) {
+                    ref_film_khr_iridescence(1.0, films[f], d, c, bases[b], rgb);
+                    for (ch = 0; ch < 3; ch++)
+                        bad += !(isfinite(rgb[ch]) && rgb[ch] >= 0.0);
+                }
+                ref_film_khr_iridescence(1.0, films[f], 1e5, c, bases[b], rgb);
+                for (ch = 0; ch < 3; ch++) {
+                    double f0 = bases[b][ch] > 0.9999 ? 0.9999 : bases[b][ch], s = sqrt(f0);
+                    double n3 = (1.0 + s) / (1.0 - s), r1 = (n3 - films[f]) / (n3 + films[f]);
+                    double r23 = r1 * r1 + (1.0 - r1 * r1) * m2 * m2 * m2 * m2 * m2, r123 = r12 * r23;
+                    double want;
+                    r123 = r123 < 1e-5 ? 1e-5 : (r123 > 0.9999 ? 0.9999 : r123);
+                    want = r12 + (1.0 - r12) * (1.0 - r12) * r23 / (1.0 - r123);
+                    worst_incoherent = fmax(worst_incoherent, fabs(rgb[ch] - want));
+                }
+            }
+    CHECK("KHR_materials_iridescence peer: finite and >= 0 (4 films, 4 bases, 5 cosines, 0-1000 nm)", bad == 0,
+          "%d channels not", bad);
+    NOTE("KHR_materials_iridescence peer, 100 um film: max |peer - incoherent Schlick sum| %.3g", worst_incoherent);
+    CHECK("KHR_materials_iridescence peer: a 100 um film is the incoherent sum of its interfaces within 1e-12",
+          worst_incoherent <= 1e-12, "%.3g", worst_incoherent);
+    ref_film_khr_iridescence(1.5, 1.2, 300.0, 0.3, bases[1], rgb);
+    CHECK("KHR_materials_iridescence peer: total reflection in a film less dense than the outside gives 1",
+          rgb[0] == 1.0 && rgb[1] == 1.0 && rgb[2] == 1.0, "%g %g %g", rgb[0], rgb[1], rgb[2]);
+}
+
 int main(void)
 {
     gen_context *g = malloc(sizeof *g);
@@ -287,6 +331,7 @@ int main(void)
     test_independent(g, s, dispersive);
     test_total_reflection(g, s);
     test_grazing_and_extremes(g, s);
+    test_khr_peer();
     for (i = 0; i < N_SUB; i++)
         free(s[i]);
     free(dispersive);
