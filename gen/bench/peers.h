@@ -12,7 +12,12 @@
  *     src/pbrt/util/scattering.h (Pharr, Jakob, Humphreys, Physically Based
  *     Rendering, 4th ed., section 9.5).
  * Both take c clamped to [0, 1] here (pbrt-v4 clamps; Mitsuba 3 assumes it),
- * so they see the inputs the library's functions see. */
+ * so they see the inputs the library's functions see.
+ *
+ * And the real-time thin film: KHR_materials_iridescence as the glTF 2.0
+ * extension specifies it and the Khronos glTF Sample Viewer evaluates it,
+ * in binary32 (peer_khr_iridescence_rgb; the double-precision reference and
+ * its sources: ref_film_khr_iridescence, gen/common/reference_film.h). */
 #ifndef FRESNEL_BENCH_PEERS_H
 #define FRESNEL_BENCH_PEERS_H
 
@@ -102,6 +107,79 @@ static inline float peer_pbrt_conductor(float eta, float kappa, float c)
     ncost = peer_cx_mul(n, cost);
     r_perp = peer_cx_div(peer_cx_sub(peer_cx_make(c, 0.0f), ncost), peer_cx_add(peer_cx_make(c, 0.0f), ncost));
     return 0.5f * (peer_cx_norm(r_par) + peer_cx_norm(r_perp));
+}
+
+/* KHR_materials_iridescence in binary32, in air (outside index 1): the
+ * film's index and thickness in nm, cos theta, the base's F0 per channel.
+ * The same steps as ref_film_khr_iridescence: Schlick at both interfaces,
+ * the base's index from its F0, orders 0-2 of the Airy series with the
+ * Gaussian fits of the XYZ sensitivities, linear Rec. 709, negatives to 0. */
+static inline void peer_khr_sensitivity(float opd, const float phi[3], float rgb[3])
+{
+    static const float amp[3] = {5.4856e-13f, 4.4201e-13f, 5.2481e-13f};
+    static const float centre[3] = {1.6810e+06f, 1.7953e+06f, 2.2084e+06f};
+    static const float var[3] = {4.3278e+09f, 9.3046e+09f, 6.6121e+09f};
+    static const float to_709[3][3] = {
+        {3.2404542f, -1.5371385f, -0.4985314f}, {-0.9692660f, 1.8760108f, 0.0415560f}, {0.0556434f, -0.2040259f, 1.0572252f}};
+    const float two_pi = 6.28318531f;
+    float phase = two_pi * opd * 1e-9f, xyz[3];
+    int ch;
+    for (ch = 0; ch < 3; ch++)
+        xyz[ch] = amp[ch] * sqrtf(two_pi * var[ch]) * cosf(centre[ch] * phase + phi[ch]) * expf(-phase * phase * var[ch]);
+    xyz[0] += 9.7470e-14f * sqrtf(two_pi * 4.5282e+09f) * cosf(2.2399e+06f * phase + phi[0]) *
+              expf(-4.5282e+09f * phase * phase);
+    for (ch = 0; ch < 3; ch++)
+        xyz[ch] /= 1.0685e-7f;
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = to_709[ch][0] * xyz[0] + to_709[ch][1] * xyz[1] + to_709[ch][2] * xyz[2];
+}
+
+static inline float peer_khr_schlick(float f0, float c)
+{
+    float m = 1.0f - c, m2 = m * m;
+    return f0 + (1.0f - f0) * m2 * m2 * m;
+}
+
+static inline void peer_khr_iridescence_rgb(float film_ior, float d_nm, float c, const float base_f0[3], float rgb[3])
+{
+    const float pi = 3.14159265f;
+    float t = d_nm / 0.03f, fade = d_nm <= 0.0f ? 0.0f : (d_nm >= 0.03f ? 1.0f : t * t * (3.0f - 2.0f * t));
+    float eta2 = 1.0f + (film_ior - 1.0f) * fade, cos2_sq = 1.0f - (1.0f - c * c) / (eta2 * eta2), cos2;
+    float r0, r12, t121, phi21, opd, sens[3], phi[3], r123[3], amp[3];
+    int ch, m;
+    if (cos2_sq < 0.0f) {
+        rgb[0] = rgb[1] = rgb[2] = 1.0f;
+        return;
+    }
+    cos2 = sqrtf(cos2_sq);
+    r0 = (eta2 - 1.0f) / (eta2 + 1.0f);
+    r12 = peer_khr_schlick(r0 * r0, c);
+    t121 = 1.0f - r12;
+    phi21 = eta2 < 1.0f ? 0.0f : pi;
+    opd = 2.0f * eta2 * d_nm * cos2;
+    for (ch = 0; ch < 3; ch++) {
+        float f0 = base_f0[ch] < 0.0f ? 0.0f : (base_f0[ch] > 0.9999f ? 0.9999f : base_f0[ch]), s = sqrtf(f0);
+        float base_ior = (1.0f + s) / (1.0f - s), r1 = (base_ior - eta2) / (base_ior + eta2);
+        float r23 = peer_khr_schlick(r1 * r1, cos2), rs;
+        phi[ch] = phi21 + (base_ior < eta2 ? pi : 0.0f);
+        r123[ch] = r12 * r23;
+        r123[ch] = r123[ch] < 1e-5f ? 1e-5f : (r123[ch] > 0.9999f ? 0.9999f : r123[ch]);
+        rs = t121 * t121 * r23 / (1.0f - r123[ch]);
+        rgb[ch] = r12 + rs;
+        amp[ch] = rs - t121;
+    }
+    for (m = 1; m <= 2; m++) {
+        float phim[3];
+        for (ch = 0; ch < 3; ch++) {
+            amp[ch] *= sqrtf(r123[ch]);
+            phim[ch] = (float)m * phi[ch];
+        }
+        peer_khr_sensitivity((float)m * opd, phim, sens);
+        for (ch = 0; ch < 3; ch++)
+            rgb[ch] += amp[ch] * 2.0f * sens[ch];
+    }
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = rgb[ch] > 0.0f ? rgb[ch] : 0.0f;
 }
 
 #endif

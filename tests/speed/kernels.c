@@ -132,6 +132,24 @@ static void k_film(const speed_ctx *x, const float *c, const int32_t *cq, float 
         outrgb[i] = fresnel_film_rgb(&fresnel_speed_au_thin_film, c[i], (float)(2 * (i & 511)));
 }
 
+/* The same film by the KHR_materials_iridescence form (gen/bench/peers.h),
+ * inlined as a glTF renderer runs it, given gold's F0 (the film's own table
+ * at normal incidence and no film: speed_ctx_init), its result held to
+ * [0, 1] as fresnel_film_rgb holds its own (the form sets only negatives
+ * to 0). */
+static void k_khr_iridescence(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
+                              fresnel_rgb *outrgb, int n)
+{
+    const float f0[3] = {x->film_f0.r, x->film_f0.g, x->film_f0.b};
+    int i;
+    (void)cq, (void)out, (void)outq;
+    for (i = 0; i < n; i++) {
+        float rgb[3];
+        peer_khr_iridescence_rgb(1.5f, (float)(2 * (i & 511)), peer_clamp01(c[i]), f0, rgb);
+        outrgb[i].r = peer_clamp01(rgb[0]), outrgb[i].g = peer_clamp01(rgb[1]), outrgb[i].b = peer_clamp01(rgb[2]);
+    }
+}
+
 const speed_kernel_def speed_kernels[] = {
     {"copy", "floor", k_copy, 0, 0},
     {"schlick-inline", "floor", k_schlick_inline, 0, 0},
@@ -158,6 +176,7 @@ const speed_kernel_def speed_kernels[] = {
     {"lut32-q15-fast", "inline", k_lut32_q15_fast, 1, 0},
     {"schlick-rgb-f32", "call", k_schlick_rgb, 0, 1},
     {"film-f32", "call", k_film, 0, 1},
+    {"khr-iridescence-inline", "inline", k_khr_iridescence, 0, 1},
 };
 const int speed_kernel_count = (int)(sizeof speed_kernels / sizeof speed_kernels[0]);
 
@@ -182,6 +201,7 @@ void speed_ctx_init(speed_ctx *x, float eta, float kappa)
     x->f0_3.r = fresnel_conductor(x->eta3[0], x->kappa3[0], 1.0f);
     x->f0_3.g = fresnel_conductor(x->eta3[1], x->kappa3[1], 1.0f);
     x->f0_3.b = fresnel_conductor(x->eta3[2], x->kappa3[2], 1.0f);
+    x->film_f0 = fresnel_film_rgb(&fresnel_speed_au_thin_film, 1.0f, 0.0f);
     for (i = 0; i < 32; i++) {
         float s = (float)i / 31.0f;
         x->lut32[i] = fresnel_conductor(eta, kappa, s * s);

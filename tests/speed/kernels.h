@@ -16,6 +16,7 @@ typedef struct speed_ctx {
     float eta3[3], kappa3[3]; /* the three channels of the RGB rows */
     fresnel_conductor_prep prep3[3];
     fresnel_rgb f0_3; /* their F0, for Schlick's RGB row */
+    fresnel_rgb film_f0; /* the film row's gold at normal incidence, bare: the KHR peer's F0 */
     float lut16[16], lut32[32], lin16[16];
     uint16_t q16[16], q32[32], qlin16[16];
 } speed_ctx;

@@ -10,6 +10,7 @@
 
 #include "harness.h"
 #include "2_derive/derive.h"
+#include "bench/peers.h"
 #include "common/reference_film.h"
 #include "1_spectral/spectral.h"
 
@@ -304,6 +305,26 @@ static void test_khr_peer(void)
     NOTE("KHR_materials_iridescence peer, 100 um film: max |peer - incoherent Schlick sum| %.3g", worst_incoherent);
     CHECK("KHR_materials_iridescence peer: a 100 um film is the incoherent sum of its interfaces within 1e-12",
           worst_incoherent <= 1e-12, "%.3g", worst_incoherent);
+    /* the binary32 transcription make bench times (gen/bench/peers.h): the
+     * same function, to binary32's rounding of phases up to 1000 nm x 2 x
+     * 2.5 optical path (arguments of cos to about 70 rad) */
+    {
+        double worst32 = 0.0;
+        for (f = 0; f < 4; f++)
+            for (b = 0; b < 4; b++)
+                for (k = 0; k < 5; k++)
+                    for (d = 0; d <= 1000; d += 7) {
+                        float f0f[3] = {(float)bases[b][0], (float)bases[b][1], (float)bases[b][2]}, r32[3];
+                        double f0d[3] = {f0f[0], f0f[1], f0f[2]};
+                        ref_film_khr_iridescence(1.0, (float)films[f], d, (float)cosines[k], f0d, rgb);
+                        peer_khr_iridescence_rgb((float)films[f], (float)d, (float)cosines[k], f0f, r32);
+                        for (ch = 0; ch < 3; ch++)
+                            worst32 = fmax(worst32, fabs(r32[ch] - rgb[ch]));
+                    }
+        NOTE("KHR_materials_iridescence peer: max |binary32 - double| %.3g", worst32);
+        CHECK("KHR_materials_iridescence peer: the binary32 transcription (make bench) within 1e-5 of the double one",
+              worst32 <= 1e-5, "%.3g", worst32);
+    }
     ref_film_khr_iridescence(1.5, 1.2, 300.0, 0.3, bases[1], rgb);
     CHECK("KHR_materials_iridescence peer: total reflection in a film less dense than the outside gives 1",
           rgb[0] == 1.0 && rgb[1] == 1.0 && rgb[2] == 1.0, "%g %g %g", rgb[0], rgb[1], rgb[2]);
