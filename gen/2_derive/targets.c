@@ -165,7 +165,7 @@ const target target_table[TARGETS] = {
      2,
      {{"F0", 0, 0.0, 1.0}, {"F82", 0, 0.0, 1.0}},
      0, "F0 = F0; F82 = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
-     eval_unreal, naive_f82_tint},
+     eval_unreal, naive_f82_tint, {NULL, NULL, NULL, 0.0, NULL, NULL}}, /* no thin-film input known */
     [TARGET_gltf] = {TARGET_NAME(gltf), "glTF 2.0 metallic-roughness, metallicFactor = 1",
      "Schlick with F0 = baseColor and F90 = 1 (KHR_materials_specular changes dielectrics only)",
      "glTF 2.0 specification, Appendix B, B.3.4 and B.3.5 (metal_brdf, conductor_fresnel)",
@@ -185,7 +185,7 @@ const target target_table[TARGETS] = {
      1,
      {{"baseColor", 0, 0.0, 1.0}},
      1, "baseColor = F0",
-     eval_filament, naive_f0},
+     eval_filament, naive_f0, {NULL, NULL, NULL, 0.0, NULL, NULL}}, /* no thin-film input known */
     [TARGET_gulbrandsen] = {TARGET_NAME(gulbrandsen), "Gulbrandsen's artist-friendly metallic Fresnel (reflectivity r, edge tint g)",
      "r, g to n, k, then the approximate unpolarised conductor Fresnel, as the paper defines it",
      "Gulbrandsen 2014, \"Artist Friendly Metallic Fresnel\", JCGT 3(4), section 2.3.3 (n, k from r, g) and "
@@ -195,7 +195,7 @@ const target target_table[TARGETS] = {
      2,
      {{"reflectivity", 0, 0.0, FRESNEL_GULBRANDSEN_R_MAX}, {"edge_tint", 0, 0.0, 1.0}},
      0, "reflectivity = F0; edge_tint = the generator's Gulbrandsen g, from F0 and the fitted eta",
-     eval_gulbrandsen, naive_gulbrandsen},
+     eval_gulbrandsen, naive_gulbrandsen, {NULL, NULL, NULL, 0.0, NULL, NULL}}, /* no thin-film input known */
 };
 const int target_count = (int)(sizeof target_table / sizeof target_table[0]);
 
