@@ -156,7 +156,7 @@ $(BUILD)/tests/viewer_lit: tests/shader_ports/viewer_lit.c $(GEN_OBJ) $(BUILD)/l
 check-bins: $(TEST_BIN) $(BUILD)/fresnel $(BUILD)/libfresnel.a $(BUILD)/scene_example $(SINGLE) $(FUZZ_REPLAY) \
             $(BUILD)/tests/gen_matrix_check $(BUILD)/tests/viewer_lit $(BUILD)/hlsl/fresnel.hlsl \
             $(BUILD)/msl/msl_host_test $(BUILD)/msl/fresnel.metal $(BUILD)/tests/mixed_precision \
-            $(BUILD)/wgsl/wgsl_page_test $(BUILD)/wgsl/fresnel.wgsl
+            $(BUILD)/wgsl/wgsl_page_test $(BUILD)/wgsl/fresnel.wgsl $(BUILD)/wgsl/fresnel_f16.wgsl
 test-bins: check-bins $(BUILD)/glsl/glsl_port_osmesa $(BUILD)/vulkan/vulkan_test
 
 # Every tool a test needs, from the one list in tests/deps.sh: installed with

@@ -54,6 +54,12 @@ const emit_backend emit_backends[] = {
              "fn fresnel_<scene>_<material>_<model>_rgb(c: f32) -> vec3f; the thin film\n"
              "reads a storage buffer, whose contents --tables writes. Without a SCENE:\n"
              "the translated port alone."},
+    {.option = "--wgsl-f16", .usage = "--wgsl-f16 [--tables OUT_TABLES.h]", .shader = 1, .tables = 1,
+     .print = emit_wgsl_f16, .print_port = emit_wgsl_f16_port,
+     .help = "--wgsl-f16 writes the same module with `enable f16;` (a device with the\n"
+             "shader-f16 feature) and the mediump-safe functions computing in f16, the\n"
+             "others in f32 as in a mediump GLSL shader; the scene's functions take and\n"
+             "return f32 as with --wgsl. Its bounds: ports/README.md."},
 };
 const int emit_backend_count = (int)(sizeof emit_backends / sizeof emit_backends[0]);
 

@@ -57,8 +57,13 @@ int emit_msl(FILE *f, const emit_input *in);
  * (wgsl_translate.c), then the scene, as one WGSL module (emit_wgsl.c). 0,
  * or CLI_BAD_INPUT after a message. */
 int emit_wgsl(FILE *f, FILE *tables, const emit_input *in);
-/* The translated port alone (make wgsl). 0, or -1 after a message. */
+/* The same with `enable f16;` and the mediump-safe functions in f16
+ * (`fresnel gen --wgsl-f16`). */
+int emit_wgsl_f16(FILE *f, FILE *tables, const emit_input *in);
+/* The translated port alone (make wgsl), in binary32 or with f16. 0, or -1
+ * after a message. */
 int emit_wgsl_port(FILE *f);
+int emit_wgsl_f16_port(FILE *f);
 
 /* The GLSL to f and, if tables is not NULL, the tables a program uploads
  * (the LUT texture, the film's tables) as a C header to tables. 0, or

@@ -11,9 +11,13 @@
  *    parameters, so ?: becomes select(), every if body is braced, `T a = e`
  *    becomes `var a: T = e`, and a parameter the body assigns is taken as
  *    NAME_in and copied into a var NAME. Types and constructors are renamed
- *    (float f32, vec3 vec3f, int i32). Anything else (loops, local arrays,
- *    a global declaration) is refused with a message, so a construct the
- *    source gains later is reported rather than mistranslated. */
+ *    (float f32, vec3 vec3f, int i32). Every expression is typed on the
+ *    way (types below), and where the source mixes FRESNEL_MP (f16 with
+ *    --wgsl-f16) and binary32 values the conversions GLSL makes implicitly
+ *    are written out. Anything else (loops, local arrays, a global
+ *    declaration, a name without a type) is refused with a message, so a
+ *    construct the source gains later is reported rather than
+ *    mistranslated. */
 #include "4_emit/wgsl_translate.h"
 
 #include <ctype.h>
@@ -108,9 +112,18 @@ typedef struct macro {
     tokv body;
 } macro;
 
+/* A function's signature, a module-scope value's type (types below). */
+typedef struct ty ty;
+typedef struct fnsig fnsig;
+typedef struct sym sym;
+
 struct wgsl_tr {
     macro *m;
     int nm, capm;
+    fnsig *f; /* the functions translated so far, for their calls' conversions */
+    int nf, capf;
+    sym *g; /* module-scope values declared by wgsl_tr_declare */
+    int ng, capg;
 };
 
 static int fail(const char *fmt, ...)
@@ -500,13 +513,84 @@ static int preprocess(wgsl_tr *t, const char *src, tokv *out)
     return rc;
 }
 
+/* ------------------------------------------------------------- types */
+
+/* What conversions need of a value's type. WGSL converts nothing
+ * implicitly but its abstract literals, so where the source mixes
+ * precisions (FRESNEL_MP and FRESNEL_HP: f16 and f32 when --wgsl-f16
+ * spells FRESNEL_MP f16) the translator writes GLSL's implicit conversions
+ * out: an operation between the two is done in f32 (GLSL: the higher
+ * precision of its operands), and a value is converted to the type of the
+ * parameter, variable or result it goes to. */
+enum { E_ABSTRACT, E_INT, E_BOOL, E_F32, E_F16 };
+struct ty {
+    unsigned char e, n, arr; /* element, components 1-4, an array of them */
+};
+
+/* A GLSL type name's type; 0 when s is none. */
+static int glsl_ty(const char *s, ty *out)
+{
+    static const struct {
+        const char *name;
+        unsigned char e, n;
+    } map[] = {{"float", E_F32, 1},     {"vec2", E_F32, 2},    {"vec3", E_F32, 3},    {"vec4", E_F32, 4},
+               {"float16_t", E_F16, 1}, {"f16vec2", E_F16, 2}, {"f16vec3", E_F16, 3}, {"f16vec4", E_F16, 4},
+               {"int", E_INT, 1},       {"bool", E_BOOL, 1}};
+    unsigned i;
+    for (i = 0; i < sizeof map / sizeof map[0]; i++)
+        if (!strcmp(s, map[i].name)) {
+            out->e = map[i].e, out->n = map[i].n, out->arr = 0;
+            return 1;
+        }
+    return 0;
+}
+
+/* WGSL's name of the float type of element e with n components. */
+static const char *float_name(int e, int n)
+{
+    static const char *const f32[] = {"f32", "vec2f", "vec3f", "vec4f"}, *const f16[] = {"f16", "vec2h", "vec3h", "vec4h"};
+    return (e == E_F16 ? f16 : f32)[n >= 1 && n <= 4 ? n - 1 : 0];
+}
+
+/* The type of an arithmetic operation (or a builtin's arguments) on a and
+ * b: abstract takes the other's element, f16 with f32 is f32, a scalar
+ * with a vector the vector. */
+static ty unify(ty a, ty b)
+{
+    ty r;
+    r.arr = 0;
+    r.n = a.n > b.n ? a.n : b.n;
+    if (a.e == E_ABSTRACT)
+        r.e = b.e;
+    else if (b.e == E_ABSTRACT)
+        r.e = a.e;
+    else if ((a.e == E_F16 && b.e == E_F32) || (a.e == E_F32 && b.e == E_F16))
+        r.e = E_F32;
+    else
+        r.e = a.e;
+    return r;
+}
+
+struct sym {
+    char *name;
+    ty type;
+};
+struct fnsig {
+    char *name;
+    ty ret;
+    int np;
+    ty p[32];
+};
+
 /* ---------------------------------------------------------- translator */
 
 /* WGSL's name for a GLSL type or constructor, or NULL. */
 static const char *wgsl_type(const char *s)
 {
-    static const char *const map[][2] = {{"float", "f32"}, {"vec2", "vec2f"}, {"vec3", "vec3f"}, {"vec4", "vec4f"},
-                                         {"int", "i32"},   {"bool", "bool"}};
+    static const char *const map[][2] = {{"float", "f32"},     {"vec2", "vec2f"},    {"vec3", "vec3f"},
+                                         {"vec4", "vec4f"},    {"float16_t", "f16"}, {"f16vec2", "vec2h"},
+                                         {"f16vec3", "vec3h"}, {"f16vec4", "vec4h"}, {"int", "i32"},
+                                         {"bool", "bool"}};
     unsigned i;
     for (i = 0; i < sizeof map / sizeof map[0]; i++)
         if (!strcmp(s, map[i][0]))
@@ -549,6 +633,13 @@ typedef struct tr {
     char **v;
     int n;
     out o;
+    wgsl_tr *w;
+    struct {
+        const char *name;
+        ty type;
+    } loc[256]; /* the function's parameters and variables */
+    int nloc;
+    ty ret; /* the function's result */
 } tr;
 
 static int eq(const tr *t, int i, const char *s) { return i < t->n && !strcmp(t->v[i], s); }
@@ -587,16 +678,176 @@ static int top_level(const tr *t, int a, int b, const char *const *ops)
 
 static const char *const assign_ops[] = {"=", "+=", "-=", "*=", "/=", NULL};
 
-/* The expression [a, b): ?: as select(else, then, condition), each
- * bracketed part and each of its comma-separated parts translated alike. */
-static int expr(tr *t, int a, int b)
+/* ------------------------------------------------------- expressions */
+
+static int ex(tr *t, int a, int b, int emit, ty *out);
+
+/* The opening bracket of the one closing at c, searching from a; -1. */
+static int opening(const tr *t, int c, int a)
+{
+    int depth = 0, i;
+    for (i = c; i >= a; i--) {
+        const char *s = t->v[i];
+        if (!strcmp(s, ")") || !strcmp(s, "]") || !strcmp(s, "}"))
+            depth++;
+        else if ((!strcmp(s, "(") || !strcmp(s, "[") || !strcmp(s, "{")) && --depth == 0)
+            return i;
+    }
+    return -1;
+}
+
+/* The precedence of the binary operator at i of [a, ...), lowest 1; 0 when
+ * the token is no binary operator there (a sign, or not an operator). */
+static int binary_level(const tr *t, int i, int a)
+{
+    static const char *const levels[][5] = {{"||"}, {"&&"}, {"==", "!="}, {"<", ">", "<=", ">="}, {"+", "-"},
+                                            {"*", "/", "%"}};
+    const char *s = t->v[i], *p;
+    unsigned l, k;
+    if (i == a)
+        return 0;
+    p = t->v[i - 1];
+    if (!(is_ident(p) || isdigit((unsigned char)p[0]) || p[0] == '.' || !strcmp(p, ")") || !strcmp(p, "]")))
+        return 0;
+    for (l = 0; l < sizeof levels / sizeof levels[0]; l++)
+        for (k = 0; k < 5 && levels[l][k]; k++)
+            if (!strcmp(s, levels[l][k]))
+                return (int)l + 1;
+    return 0;
+}
+
+/* [a, b) printed (when emit) as element e where it is a float of the other
+ * precision; *out its type before any conversion. e is E_ABSTRACT for "as
+ * it is". */
+static int ex_as(tr *t, int a, int b, int emit, int e, ty *out)
+{
+    ty x;
+    if (ex(t, a, b, 0, &x))
+        return -1;
+    if (out)
+        *out = x;
+    if (!emit)
+        return 0;
+    if ((e == E_F16 || e == E_F32) && (x.e == E_F16 || x.e == E_F32) && x.e != e && !x.arr) {
+        put(&t->o, float_name(e, x.n));
+        put(&t->o, "(");
+        if (ex(t, a, b, 1, NULL))
+            return -1;
+        put(&t->o, ")");
+        return 0;
+    }
+    return ex(t, a, b, 1, NULL);
+}
+
+static const fnsig *find_fn(const wgsl_tr *w, const char *name)
+{
+    int i;
+    for (i = 0; i < w->nf; i++)
+        if (!strcmp(w->f[i].name, name))
+            return &w->f[i];
+    return NULL;
+}
+
+/* The builtins the source calls: their arguments take one type (but
+ * select's condition), their result that type, dot's its element. */
+static int is_builtin(const char *s)
+{
+    static const char *const names[] = {"clamp", "min",  "max",   "pow", "saturate", "sqrt", "floor", "exp",
+                                        "dot",   "abs",  "select", "fma", "sin",      "cos",  "exp2",  "log2",
+                                        "sign",  "fract", "ceil",  "round", "trunc",  NULL};
+    int i;
+    for (i = 0; names[i]; i++)
+        if (!strcmp(s, names[i]))
+            return 1;
+    return 0;
+}
+
+/* A call name(args) over [a, b): b - 1 is its ')', o its '('. */
+static int call(tr *t, int a, int o, int b, int emit, ty *out)
+{
+    static const char *const comma[] = {",", NULL};
+    const char *name = t->v[a];
+    const fnsig *sig = find_fn(t->w, name);
+    ty args[32], u, r;
+    int ends[33], na = 0, p, k, ctor, builtin = is_builtin(name);
+    if (o != a + 1 || !is_ident(name))
+        return fail("expected a function name before '(' at '%s'", name);
+    ctor = glsl_ty(name, &r);
+    if (!sig && !ctor && !builtin)
+        return fail("unknown function %s", name);
+    ends[0] = o;
+    for (p = o + 1; p < b - 1 && na < 32; na++) {
+        int e = top_level(t, p, b - 1, comma);
+        if (ex(t, p, e, 0, &args[na]))
+            return -1;
+        ends[na + 1] = e;
+        p = e + 1;
+    }
+    if (p < b - 1)
+        return fail("%s: expected at most 32 arguments", name);
+    u = na ? args[0] : r;
+    for (k = 1; k < na && !(builtin && !strcmp(name, "select") && k == 2); k++)
+        u = unify(u, args[k]);
+    if (sig) {
+        if (na != sig->np)
+            return fail("%s: expected %d arguments, got %d", name, sig->np, na);
+        r = sig->ret;
+    } else if (builtin) {
+        r = u;
+        if (!strcmp(name, "dot"))
+            r.n = 1;
+    }
+    if (out)
+        *out = r;
+    if (!emit)
+        return 0;
+    put(&t->o, ctor ? wgsl_type(name) : name);
+    put(&t->o, "(");
+    for (k = 0; k < na; k++) {
+        /* a user function's argument as its parameter; a builtin's as the
+         * others; a constructor of several as its element (one argument:
+         * the constructor is the conversion) */
+        int e = sig ? sig->p[k].e : builtin ? (k == 2 && !strcmp(name, "select") ? E_ABSTRACT : u.e)
+                                             : na > 1 ? r.e : E_ABSTRACT;
+        if (ex_as(t, ends[k] + 1, ends[k + 1], 1, e, NULL))
+            return -1;
+        if (k + 1 < na)
+            put(&t->o, ",");
+    }
+    put(&t->o, ")");
+    return 0;
+}
+
+/* The type of a name: a local, then a module-scope value. */
+static int name_ty(const tr *t, const char *s, ty *out)
+{
+    int i;
+    for (i = t->nloc - 1; i >= 0; i--)
+        if (!strcmp(t->loc[i].name, s)) {
+            *out = t->loc[i].type;
+            return 0;
+        }
+    for (i = 0; i < t->w->ng; i++)
+        if (!strcmp(t->w->g[i].name, s)) {
+            *out = t->w->g[i].type;
+            return 0;
+        }
+    return fail("unknown name %s", s);
+}
+
+/* The expression [a, b), printed in WGSL when emit, its type in *out:
+ * ?: as select(else, then, condition), binary operators split at the
+ * lowest precedence (rightmost: left to right), then signs, calls, [],
+ * swizzles, brackets, names and literals. */
+static int ex(tr *t, int a, int b, int emit, ty *out)
 {
     static const char *const q[] = {"?", NULL};
-    int i = top_level(t, a, b, q);
+    ty x, y, u;
+    int i, best = 0, at = -1, depth = 0;
     if (a >= b)
         return fail("expected an expression");
-    if (i < b) {
-        int depth = 0, nest = 0, j;
+    if ((i = top_level(t, a, b, q)) < b) {
+        int nest = 0, j;
         for (j = i + 1; j < b; j++) {
             const char *s = t->v[j];
             if (!strcmp(s, "(") || !strcmp(s, "["))
@@ -610,44 +861,123 @@ static int expr(tr *t, int a, int b)
         }
         if (j >= b)
             return fail("expected ':' after '?'");
+        if (ex(t, i + 1, j, 0, &x) || ex(t, j + 1, b, 0, &y))
+            return -1;
+        u = unify(x, y);
+        if (out)
+            *out = u;
+        if (!emit)
+            return 0;
         put(&t->o, "select");
         put(&t->o, "(");
-        if (expr(t, j + 1, b))
+        if (ex_as(t, j + 1, b, 1, u.e, NULL))
             return -1;
         put(&t->o, ",");
-        if (expr(t, i + 1, j))
+        if (ex_as(t, i + 1, j, 1, u.e, NULL))
             return -1;
         put(&t->o, ",");
-        if (expr(t, a, i))
+        if (ex(t, a, i, 1, NULL))
             return -1;
         put(&t->o, ")");
         return 0;
     }
     for (i = a; i < b; i++) {
-        const char *s = t->v[i], *w = wgsl_type(s);
-        if (!strcmp(s, "(") || !strcmp(s, "[")) {
-            static const char *const comma[] = {",", NULL};
-            int c = closing(t, i), p;
-            if (c < 0 || c >= b)
-                return fail("expected the bracket opened before '%s' to close", i + 1 < b ? t->v[i + 1] : "");
-            put(&t->o, s);
-            for (p = i + 1; p < c;) {
-                int e = top_level(t, p, c, comma);
-                if (expr(t, p, e))
-                    return -1;
-                if (e < c)
-                    put(&t->o, ",");
-                p = e + 1;
-            }
-            put(&t->o, t->v[c]);
-            i = c;
-        } else if (!strcmp(s, "++") || !strcmp(s, "--") || !strcmp(s, "{") || !strcmp(s, ";"))
+        const char *s = t->v[i];
+        int l;
+        if (!strcmp(s, "(") || !strcmp(s, "["))
+            depth++;
+        else if (!strcmp(s, ")") || !strcmp(s, "]"))
+            depth--;
+        else if (!strcmp(s, "++") || !strcmp(s, "--") || !strcmp(s, "{") || !strcmp(s, ";") || !strcmp(s, "="))
             return fail("expected an expression without '%s'", s);
+        else if (depth == 0 && (l = binary_level(t, i, a)) && (!best || l <= best))
+            best = l, at = i;
+    }
+    if (at >= 0) {
+        int cmp = best == 3 || best == 4, logic = best <= 2;
+        if (ex(t, a, at, 0, &x) || ex(t, at + 1, b, 0, &y))
+            return -1;
+        u = unify(x, y);
+        if (out) {
+            *out = u;
+            if (cmp || logic)
+                out->e = E_BOOL, out->n = 1;
+        }
+        if (!emit)
+            return 0;
+        return ex_as(t, a, at, 1, logic ? E_ABSTRACT : u.e, NULL) || (put(&t->o, t->v[at]), 0) ||
+                       ex_as(t, at + 1, b, 1, logic ? E_ABSTRACT : u.e, NULL)
+                   ? -1
+                   : 0;
+    }
+    if (!strcmp(t->v[a], "-") || !strcmp(t->v[a], "+") || !strcmp(t->v[a], "!")) {
+        if (emit)
+            put(&t->o, t->v[a]);
+        return ex(t, a + 1, b, emit, out);
+    }
+    if (!strcmp(t->v[b - 1], ")") || !strcmp(t->v[b - 1], "]")) {
+        int o = opening(t, b - 1, a);
+        if (o < 0)
+            return fail("expected the bracket before '%s' to open", t->v[b - 1]);
+        if (!strcmp(t->v[b - 1], ")") && o == a) { /* (e) */
+            if (emit)
+                put(&t->o, "(");
+            if (ex(t, a + 1, b - 1, emit, out))
+                return -1;
+            if (emit)
+                put(&t->o, ")");
+            return 0;
+        }
+        if (!strcmp(t->v[b - 1], ")"))
+            return call(t, a, o, b, emit, out);
+        /* e[i]: an array's element or a vector's component */
+        if (ex(t, a, o, emit, &x))
+            return -1;
+        if (emit)
+            put(&t->o, "[");
+        if (ex(t, o + 1, b - 1, emit, NULL))
+            return -1;
+        if (emit)
+            put(&t->o, "]");
+        if (x.arr)
+            x.arr = 0;
         else
-            put(&t->o, w ? w : s);
+            x.n = 1;
+        if (out)
+            *out = x;
+        return 0;
+    }
+    if (b - a >= 3 && !strcmp(t->v[b - 2], ".") && is_ident(t->v[b - 1])) { /* a swizzle */
+        if (ex(t, a, b - 2, emit, &x))
+            return -1;
+        if (emit) {
+            put(&t->o, ".");
+            put(&t->o, t->v[b - 1]);
+        }
+        x.n = (unsigned char)strlen(t->v[b - 1]);
+        if (out)
+            *out = x;
+        return 0;
+    }
+    if (b - a != 1)
+        return fail("expected an operator or ';' after '%s'", t->v[a]);
+    {
+        const char *s = t->v[a];
+        if (isdigit((unsigned char)s[0]) || s[0] == '.') {
+            x.e = s[strlen(s) - 1] == 'u' ? E_INT : E_ABSTRACT, x.n = 1, x.arr = 0;
+        } else if (!strcmp(s, "true") || !strcmp(s, "false")) {
+            x.e = E_BOOL, x.n = 1, x.arr = 0;
+        } else if (!is_ident(s) || name_ty(t, s, &x))
+            return fail("expected a value, got '%s'", s);
+        if (emit)
+            put(&t->o, s);
+        if (out)
+            *out = x;
     }
     return 0;
 }
+
+static int expr(tr *t, int a, int b) { return ex(t, a, b, 1, NULL); }
 
 /* The end (index of ';') of the statement starting at i, or -1. */
 static int stmt_end(const tr *t, int i, int b)
@@ -659,11 +989,22 @@ static int stmt_end(const tr *t, int i, int b)
 
 static int stmts(tr *t, int a, int b, int indent);
 
+static int add_local(tr *t, const char *name, ty type)
+{
+    if (t->nloc == (int)(sizeof t->loc / sizeof t->loc[0]))
+        return fail("expected at most %d parameters and variables in a function",
+                    (int)(sizeof t->loc / sizeof t->loc[0]));
+    t->loc[t->nloc].name = name, t->loc[t->nloc].type = type;
+    t->nloc++;
+    return 0;
+}
+
 /* The statement at i (within [i, b)) at indent; *next past it. */
 static int stmt(tr *t, int i, int b, int indent, int *next)
 {
     const char *s = t->v[i], *w = wgsl_type(s);
     int e;
+    ty decl;
     if (!strcmp(s, ";")) {
         *next = i + 1;
         return 0;
@@ -724,14 +1065,14 @@ static int stmt(tr *t, int i, int b, int indent, int *next)
     if (!strcmp(s, "return")) {
         newline(&t->o, indent);
         put(&t->o, "return");
-        if (e > i + 1 && expr(t, i + 1, e))
+        if (e > i + 1 && ex_as(t, i + 1, e, 1, t->ret.e, NULL))
             return -1;
         put(&t->o, ";");
         return 0;
     }
     if (!strcmp(s, "const"))
         return fail("expected no local const (not in the subset)");
-    if (w) {
+    if (w && glsl_ty(s, &decl)) {
         /* T a, b = e, ...; -> var a: T; var b: T = e; ... */
         static const char *const comma[] = {",", NULL};
         int p = i + 1;
@@ -739,6 +1080,8 @@ static int stmt(tr *t, int i, int b, int indent, int *next)
             int d = top_level(t, p, e, comma);
             if (!is_ident(t->v[p]) || (d > p + 1 && !eq(t, p + 1, "=")))
                 return fail("expected NAME or NAME = value in a declaration of %s, got '%s'", s, t->v[p]);
+            if (add_local(t, t->v[p], decl))
+                return -1;
             newline(&t->o, indent);
             put(&t->o, "var");
             put(&t->o, t->v[p]);
@@ -747,7 +1090,7 @@ static int stmt(tr *t, int i, int b, int indent, int *next)
             t->o.prev = w;
             if (d > p + 1) {
                 put(&t->o, "=");
-                if (expr(t, p + 2, d))
+                if (ex_as(t, p + 2, d, 1, decl.e, NULL))
                     return -1;
             }
             put(&t->o, ";");
@@ -759,12 +1102,13 @@ static int stmt(tr *t, int i, int b, int indent, int *next)
         return fail("expected no '%s' (not in the subset)", s);
     {
         int a = top_level(t, i, e, assign_ops);
+        ty lhs;
         newline(&t->o, indent);
-        if (expr(t, i, a))
+        if (ex(t, i, a, 0, &lhs) || expr(t, i, a))
             return -1;
         if (a < e) {
             put(&t->o, t->v[a]);
-            if (expr(t, a + 1, e))
+            if (ex_as(t, a + 1, e, 1, lhs.e, NULL))
                 return -1;
         }
         put(&t->o, ";");
@@ -794,45 +1138,83 @@ static int assigns(const tr *t, int a, int b, const char *name)
 }
 
 /* Every function definition of the token list. */
+/* Records function name's signature (a later definition replaces a
+ * prototype's). */
+static int add_fn(wgsl_tr *w, const char *name, const fnsig *sig)
+{
+    fnsig *f = (fnsig *)find_fn(w, name);
+    if (!f) {
+        if (w->nf == w->capf) {
+            int cap = w->capf ? 2 * w->capf : 64;
+            fnsig *v = realloc(w->f, (size_t)cap * sizeof *v);
+            if (!v)
+                return fail("out of memory");
+            w->f = v, w->capf = cap;
+        }
+        f = &w->f[w->nf];
+        if (!(f->name = malloc(strlen(name) + 1)))
+            return fail("out of memory");
+        strcpy(f->name, name);
+        w->nf++;
+    }
+    f->ret = sig->ret, f->np = sig->np;
+    memcpy(f->p, sig->p, sizeof f->p);
+    return 0;
+}
+
+/* Every function definition of the token list. */
 static int functions(tr *t)
 {
     int i = 0;
     while (i < t->n) {
         const char *rt = wgsl_type(t->v[i]), *name;
-        int p, close, body, end, mutated[32], np = 0, k;
-        if (!rt || i + 2 >= t->n || !is_ident(t->v[i + 1]) || !eq(t, i + 2, "("))
+        int p, close, body, end = -1, mutated[32], np = 0, k, proto;
+        fnsig sig;
+        if (!rt || !glsl_ty(t->v[i], &sig.ret) || i + 2 >= t->n || !is_ident(t->v[i + 1]) || !eq(t, i + 2, "("))
             return fail("expected a function definition, got '%s %s'", t->v[i], i + 1 < t->n ? t->v[i + 1] : "");
         name = t->v[i + 1];
         if ((close = closing(t, i + 2)) < 0)
             return fail("%s: expected ')'", name);
-        if (eq(t, close + 1, ";")) { /* a prototype: WGSL needs none */
-            i = close + 2;
-            continue;
-        }
-        if (!eq(t, close + 1, "{") || (end = closing(t, close + 1)) < 0)
+        proto = eq(t, close + 1, ";"); /* a prototype: WGSL needs none, its calls its signature */
+        if (!proto && (!eq(t, close + 1, "{") || (end = closing(t, close + 1)) < 0))
             return fail("%s: expected a body", name);
         body = close + 2;
-        fprintf(t->o.f, "fn %s(", name);
+        t->nloc = 0;
+        if (!proto)
+            fprintf(t->o.f, "fn %s(", name);
         for (p = i + 3; p < close; np++) {
             const char *pt = wgsl_type(t->v[p]), *pn = p + 1 < close ? t->v[p + 1] : "";
             if (np == 32)
                 return fail("%s: expected at most 32 parameters", name);
-            if (!pt || !is_ident(pn))
+            if (!pt || !glsl_ty(t->v[p], &sig.p[np]) || !is_ident(pn))
                 return fail("%s: expected a parameter TYPE NAME, got '%s'", name, t->v[p]);
-            mutated[np] = assigns(t, body, end, pn);
-            fprintf(t->o.f, "%s%s%s: ", np ? ", " : "", pn, mutated[np] ? "_in" : "");
+            mutated[np] = !proto && assigns(t, body, end, pn);
+            if (!proto)
+                fprintf(t->o.f, "%s%s%s: ", np ? ", " : "", pn, mutated[np] ? "_in" : "");
             if (eq(t, p + 2, "[")) { /* T name[N] */
                 if (p + 4 >= close || !eq(t, p + 4, "]"))
                     return fail("%s: expected [N] after %s", name, pn);
-                fprintf(t->o.f, "array<%s, %s>", pt, t->v[p + 3]);
+                if (!proto)
+                    fprintf(t->o.f, "array<%s, %s>", pt, t->v[p + 3]);
+                sig.p[np].arr = 1;
                 p += 3;
-            } else
+            } else if (!proto)
                 fputs(pt, t->o.f);
+            if (add_local(t, pn, sig.p[np]))
+                return -1;
             p += 2;
             if (p < close && !eq(t, p, ","))
                 return fail("%s: expected ',' after parameter %s", name, pn);
             p++;
         }
+        sig.np = np;
+        if (add_fn(t->w, name, &sig))
+            return -1;
+        if (proto) {
+            i = close + 2;
+            continue;
+        }
+        t->ret = sig.ret;
         fprintf(t->o.f, ") -> %s {", rt);
         for (p = i + 3, k = 0; k < np; k++) {
             /* WGSL parameters are immutable: the one the body assigns is a copy */
@@ -851,22 +1233,49 @@ static int functions(tr *t)
 
 /* ------------------------------------------------------------- API */
 
-wgsl_tr *wgsl_tr_new(void)
+wgsl_tr *wgsl_tr_new(int f16)
 {
     /* WGSL's spellings of the shader names (fresnel.glsl, OTHER LANGUAGES):
-     * binary32 throughout, no precision qualifiers. */
+     * binary32, or with f16 the mediump-safe functions' values in f16 (the
+     * translator's names for it are GLSL's float16_t and f16vec3); no
+     * precision qualifiers. */
     static const char *const spellings[] = {
-        "FRESNEL_WGSL 1",     "FRESNEL_MP float",    "FRESNEL_MP3 vec3",   "FRESNEL_HP float",
-        "FRESNEL_HP2 vec2",   "FRESNEL_HP3 vec3",    "FRESNEL_VEC2 vec2",  "FRESNEL_VEC3 vec3",
-        "FRESNEL_SATURATE(x) saturate(x)"};
+        "FRESNEL_WGSL 1",    "FRESNEL_HP float",  "FRESNEL_HP2 vec2", "FRESNEL_HP3 vec3",
+        "FRESNEL_VEC2 vec2", "FRESNEL_VEC3 vec3", "FRESNEL_SATURATE(x) saturate(x)"};
     wgsl_tr *t = calloc(1, sizeof *t);
     unsigned i;
-    for (i = 0; t && i < sizeof spellings / sizeof spellings[0]; i++)
-        if (define(t, spellings[i])) {
-            wgsl_tr_free(t);
-            return NULL;
-        }
+    int rc = !t;
+    for (i = 0; !rc && i < sizeof spellings / sizeof spellings[0]; i++)
+        rc = define(t, spellings[i]);
+    if (!rc)
+        rc = define(t, f16 ? "FRESNEL_MP float16_t" : "FRESNEL_MP float") ||
+             define(t, f16 ? "FRESNEL_MP3 f16vec3" : "FRESNEL_MP3 vec3");
+    if (rc) {
+        wgsl_tr_free(t);
+        return NULL;
+    }
     return t;
+}
+
+int wgsl_tr_declare(wgsl_tr *t, const char *name, const char *glsl_type, int array)
+{
+    sym *g;
+    if (t->ng == t->capg) {
+        int cap = t->capg ? 2 * t->capg : 64;
+        sym *v = realloc(t->g, (size_t)cap * sizeof *v);
+        if (!v)
+            return fail("out of memory");
+        t->g = v, t->capg = cap;
+    }
+    g = &t->g[t->ng];
+    if (!glsl_ty(glsl_type, &g->type))
+        return fail("%s: unknown type %s", name, glsl_type);
+    g->type.arr = array != 0;
+    if (!(g->name = malloc(strlen(name) + 1)))
+        return fail("out of memory");
+    strcpy(g->name, name);
+    t->ng++;
+    return 0;
 }
 
 void wgsl_tr_free(wgsl_tr *t)
@@ -876,7 +1285,13 @@ void wgsl_tr_free(wgsl_tr *t)
         return;
     for (i = 0; i < t->nm; i++)
         macro_free(&t->m[i]);
+    for (i = 0; i < t->nf; i++)
+        free(t->f[i].name);
+    for (i = 0; i < t->ng; i++)
+        free(t->g[i].name);
     free(t->m);
+    free(t->f);
+    free(t->g);
     free(t);
 }
 
@@ -888,6 +1303,7 @@ int wgsl_tr_text(wgsl_tr *t, const char *glsl, FILE *f)
     if (!rc) {
         x.v = toks.v, x.n = toks.n;
         x.o.f = f, x.o.prev = "", x.o.prev_unary = 0;
+        x.w = t, x.nloc = 0;
         rc = functions(&x);
     }
     tokv_free(&toks);

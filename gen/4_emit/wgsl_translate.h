@@ -14,8 +14,16 @@
 
 typedef struct wgsl_tr wgsl_tr;
 
-/* A translator whose macro table holds WGSL's spellings. NULL: no memory. */
-wgsl_tr *wgsl_tr_new(void);
+/* A translator whose macro table holds WGSL's spellings: binary32, or with
+ * f16 the mediump-safe functions (FRESNEL_MP) in f16, the module needing
+ * `enable f16;`. NULL: no memory. */
+wgsl_tr *wgsl_tr_new(int f16);
+
+/* Declares a module-scope value printed outside the translator (a scene's
+ * const, the film's storage buffer) for the conversions of the functions
+ * that use it: its GLSL type (float, vec3), an array of it when array.
+ * 0, or -1 after a message. */
+int wgsl_tr_declare(wgsl_tr *t, const char *name, const char *glsl_type, int array);
 void wgsl_tr_free(wgsl_tr *t);
 
 /* Preprocess glsl (macros defined by earlier calls stay defined) and print

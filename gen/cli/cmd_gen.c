@@ -134,7 +134,7 @@ int cmd_gen(int argc, char **argv)
     if (!manifest || !out_path)
         return cli_error(WHERE, "usage: fresnel gen SCENE -o OUT.h (see fresnel gen --help)");
     if (tex_path && !backend->tables)
-        return cli_error(WHERE, "--tables needs --glsl or --wgsl (see fresnel gen --help)");
+        return cli_error(WHERE, "--tables needs --glsl, --wgsl or --wgsl-f16 (see fresnel gen --help)");
     /* Neither may be a file the run reads (the manifest, a material's file,
      * the data pack): cli_out_open refuses those. */
     if (tex_path && (!strcmp(tex_path, out_path) || cli_out_is_input(tex_path, out_path)))

@@ -39,7 +39,8 @@
  *   preprocessor with WGSL's spellings and rewrites the result
  *   (gen/4_emit/wgsl_translate.c), so each helper has one name per
  *   argument type (fresnel_i_unit, fresnel_i_unit_rgb) and a vector is
- *   clamped between vectors. A value converts between FRESNEL_MP3
+ *   clamped between vectors; with FRESNEL_MP as f16 (--wgsl-f16) the
+ *   translator writes GLSL's implicit precision conversions out. A value converts between FRESNEL_MP3
  *   and FRESNEL_VEC3 only through a constructor (MSL converts no vector
  *   implicitly), and a conditional's two arms have one type. The texture forms of the tables (sampler2D) are GLSL's
  *   alone. Below, "mediump" means FRESNEL_MP and "highp" FRESNEL_HP.

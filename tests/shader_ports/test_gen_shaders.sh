@@ -1,6 +1,6 @@
 #!/bin/sh
 # passes: all (the shader back ends of the tool, under ASan+UBSan in the sanitize pass)
-# `fresnel gen --glsl` (with --tables), `--hlsl`, `--msl` and `--wgsl` on every committed
+# `fresnel gen --glsl` (with --tables), `--hlsl`, `--msl`, `--wgsl` and `--wgsl-f16` on every committed
 # scene and every scene of the shader tests (tests/data/scenes/): exit 0, and a
 # function per material and model. Bad input for either back end: a clear
 # error, exit 2, existing outputs untouched, no temporary left. What the
@@ -14,7 +14,7 @@ trap 'rm -rf "$t"' EXIT
 for manifest in data/scenes/*.scene tests/data/scenes/*.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
     models=$(awk -F= '/^models/ { sub(/#.*/, "", $2); print $2 }' "$manifest" | wc -w)
-    for back in glsl hlsl msl wgsl; do
+    for back in glsl hlsl msl wgsl wgsl-f16; do
         out=$back
         if [ $back = glsl ]; then
             set -- --glsl -o "$t/$ident.glsl"
@@ -22,8 +22,8 @@ for manifest in data/scenes/*.scene tests/data/scenes/*.scene; do
             # film's), where there are some
             grep -q '^models *=.*\(lut\|thin-film\)' "$manifest" && set -- "$@" --tables "$t/${ident}_tex.h"
             sig="^vec3 fresnel_${ident}_[a-z0-9_]*_rgb(FRESNEL_HIGHP float c\(, FRESNEL_HIGHP float d_nm\)\{0,1\})$"
-        elif [ $back = wgsl ]; then
-            set -- --wgsl -o "$t/$ident.$out"
+        elif [ $back = wgsl ] || [ $back = wgsl-f16 ]; then
+            set -- --$back -o "$t/$ident.$out"
             grep -q '^models *=.*thin-film' "$manifest" && set -- "$@" --tables "$t/${ident}_tex.h"
             sig="^fn fresnel_${ident}_[a-z0-9_]*_rgb(c: f32\(, d_nm: f32\)\{0,1\}) -> vec3f {$"
         else
@@ -38,7 +38,7 @@ for manifest in data/scenes/*.scene tests/data/scenes/*.scene; do
         n=$(grep -c "$sig" "$t/$ident.$out")
         mats=$(grep -c '^/\* ---- ' "$t/$ident.$out")
         what="$n functions ($mats materials x $models models)"
-        if { [ $back = glsl ] || [ $back = wgsl ]; } && [ -e "$t/${ident}_tex.h" ]; then
+        if [ $back != hlsl ] && [ $back != msl ] && [ -e "$t/${ident}_tex.h" ]; then
             # the tables header, compiled by this pass's compiler
             printf '#include "%s_tex.h"\n' "$ident" >"$t/tex.c"
             # shellcheck disable=SC2086

@@ -10,7 +10,9 @@
 # 1/1024, and
 # tests/shader_ports/wgsl_page_test.c compares every material and model with
 # the C runtime (max |WGSL - C| <= 1e-5, every result in [0, 1]); compile
-# errors come back with line numbers from getCompilationInfo(). Then the
+# errors come back with line numbers from getCompilationInfo(). The same
+# scenes from `fresnel gen --wgsl-f16` run in Firefox with shader-f16, each
+# model within its binary16 bound (port_half_bound). Then the
 # port alone (make wgsl) compiles in both, and gen --wgsl refuses what the
 # port lacks. The table:
 #   BUILD=build sh tests/shader_ports/test_wgsl.sh | sed -n 's/^NOTE table //p'
@@ -38,8 +40,8 @@ run_page() { # page log [firefox]
     sh tests/shader_ports/webgpu_page.sh run "$1" "$2" "${3:-chromium}"
 }
 
-echo "NOTE table | scene | model | browser | max \|WGSL − C\| |"
-echo "NOTE table |---|---|---|---|"
+echo "NOTE table | scene | model | browser | max \|WGSL − C\| | bound |"
+echo "NOTE table |---|---|---|---|---|"
 for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene tests/data/scenes/vk_uniform.scene \
     tests/data/scenes/vk_film.scene; do
     ident=$(basename "$manifest" .scene | tr 'A-Z-' 'a-z_')
@@ -56,14 +58,28 @@ for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene test
         run_page "$out/$ident.html" "$out/${ident}_$b.log" $b || echo "NOTE wgsl: $ident: no WGSL_DONE from $b within ${WGSL_TIMEOUT:-240} s"
         "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/${ident}_$b.log" $b || status=1
     done
+    # f16 (gen --wgsl-f16) where WebGPU has shader-f16: Firefox's (naga,
+    # lavapipe's shaderFloat16); Chromium's SwiftShader adapter has none
+    if ! "$BUILD/fresnel" gen "$manifest" --wgsl-f16 -o "$out/${ident}_f16.wgsl" 2>"$out/gen.log"; then
+        echo "FAIL wgsl: fresnel gen $manifest --wgsl-f16: $(cat "$out/gen.log")"
+        status=1
+        continue
+    fi
+    if ! "$BUILD/wgsl/wgsl_page_test" page "$out/${ident}_f16.html" "$manifest" "$ident" "$out/${ident}_f16.wgsl" f16; then
+        status=1
+        continue
+    fi
+    run_page "$out/${ident}_f16.html" "$out/${ident}_f16.log" firefox || echo "NOTE wgsl: $ident f16: no WGSL_DONE from firefox within ${WGSL_TIMEOUT:-240} s"
+    "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/${ident}_f16.log" firefox f16 || status=1
 done
 
-# The port alone compiles.
-for b in chromium firefox; do
-    if msg=$(sh tests/shader_ports/webgpu_page.sh compile "$BUILD/wgsl/fresnel.wgsl" "$out" $b); then
-        echo "PASS wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in $b"
+# The port alone compiles, and with f16 in Firefox.
+for port in "fresnel.wgsl chromium" "fresnel.wgsl firefox" "fresnel_f16.wgsl firefox"; do
+    set -- $port
+    if msg=$(sh tests/shader_ports/webgpu_page.sh compile "$BUILD/wgsl/$1" "$out" $2); then
+        echo "PASS wgsl: make wgsl's build/wgsl/$1 compiles in $2"
     else
-        echo "FAIL wgsl: make wgsl's build/wgsl/fresnel.wgsl compiles in $b: $msg"
+        echo "FAIL wgsl: make wgsl's build/wgsl/$1 compiles in $2: $msg"
         status=1
     fi
 done

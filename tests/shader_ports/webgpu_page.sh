@@ -8,7 +8,8 @@
 #       stdout: a page logs through console.log and dump()); the browser is
 #       stopped either way. Exit 0 when the line came.
 #   sh tests/shader_ports/webgpu_page.sh compile MODULE.wgsl DIR [browser]
-#       a page in DIR that compiles MODULE (no entry point needed) and
+#       a page in DIR that compiles MODULE (no entry point needed; a module
+#       that starts with `enable f16;` on a device with shader-f16) and
 #       prints the compiler's messages from getCompilationInfo() with their
 #       line numbers; exit 0 when it compiled without an error.
 # Run from the top of the tree; CHROMIUM names Chromium's command.
@@ -57,8 +58,11 @@ compile)
         cat "$2"
         echo '</script><script>'
         echo 'const log = (s) => { console.log(s); if (typeof dump === "function") dump(s + String.fromCharCode(10)); };'
-        echo '(async () => { try { const d = await (await navigator.gpu.requestAdapter()).requestDevice();'
-        echo '  const m = d.createShaderModule({code: document.getElementById("wgsl").textContent});'
+        echo '(async () => { try { const code = document.getElementById("wgsl").textContent;'
+        echo '  const f16 = /^enable f16;/m.test(code), a = await navigator.gpu.requestAdapter();'
+        echo '  if (f16 && !a.features.has("shader-f16")) { log("WGSL_DONE error: no shader-f16 here"); return; }'
+        echo '  const d = await a.requestDevice(f16 ? {requiredFeatures: ["shader-f16"]} : {});'
+        echo '  const m = d.createShaderModule({code});'
         echo '  const info = await m.getCompilationInfo(); let bad = 0;'
         echo '  for (const x of info.messages) { log("WGSL " + x.type + " line " + x.lineNum + ": " + x.message);'
         echo '    if (x.type === "error") bad = 1; }'

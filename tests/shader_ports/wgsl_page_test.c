@@ -1,7 +1,7 @@
 /* The WGSL port in a browser's WebGPU, two steps around the browser run
  * (tests/shader_ports/test_wgsl.sh):
  *
- *   wgsl_page_test page OUT.html MANIFEST IDENT SCENE.wgsl
+ *   wgsl_page_test page OUT.html MANIFEST IDENT SCENE.wgsl [f16]
  *       writes a page holding the output of `fresnel gen --wgsl` and a
  *       compute shader that evaluates every material and model of the scene
  *       on every cosine c = i/1024, i = -1..1025 (the thin film at
@@ -10,11 +10,15 @@
  *       The page reports compile errors (getCompilationInfo, with line
  *       numbers), then the results as the bits of each binary32 in hex
  *       (console.log lines "R OFFSET HEX..."), then "WGSL_DONE".
- *   wgsl_page_test check MANIFEST IDENT LOG BROWSER
+ *   wgsl_page_test check MANIFEST IDENT LOG BROWSER [f16]
  *       reads those lines back from the browser's log and compares each
  *       value with what the C runtime computes from the same manifest
  *       (gen/model/encoded_scene.c): max |WGSL - C| <= 1e-5 per model, every
  *       result in [0, 1]; NOTE table lines per model.
+ * With f16 the module is `fresnel gen --wgsl-f16`'s: the page asks for the
+ * shader-f16 feature, leaves out the port functions, and each model is
+ * held to its bound with the mediump-safe functions in binary16
+ * (port_half_bound, as MSL's half).
  * Run from the top of the tree. */
 #include <math.h>
 #include <stdio.h>
@@ -31,7 +35,7 @@
 /* Slots: model m, material i at (m nmat + i) NCOS 3; then port function k
  * at the end, one float per cosine. */
 static int write_page(const char *path, const scene *sc, const char *ident, const char *wgsl, int funcs,
-                      const scene_model *models)
+                      const scene_model *models, int f16)
 {
     FILE *f = fopen(path, "w");
     int i, m, k, nmat = sc->material_count, film_m = -1;
@@ -86,7 +90,9 @@ static int write_page(const char *path, const scene *sc, const char *ident, cons
                "(async () => {\n"
                "  try {\n"
                "    const adapter = await navigator.gpu.requestAdapter();\n"
-               "    const device = await adapter.requestDevice();\n"
+               "    const f16 = %d;\n"
+               "    if (f16 && !adapter.features.has('shader-f16')) throw 'the adapter has no shader-f16';\n"
+               "    const device = await adapter.requestDevice(f16 ? {requiredFeatures: ['shader-f16']} : {});\n"
                "    const code = document.getElementById('wgsl').textContent;\n"
                "    const module = device.createShaderModule({code});\n"
                "    const info = await module.getCompilationInfo();\n"
@@ -124,7 +130,7 @@ static int write_page(const char *path, const scene *sc, const char *ident, cons
                "    log('WGSL_FAIL ' + e);\n    log('WGSL_DONE error');\n"
                "  }\n"
                "})();\n</script>\n</body></html>\n",
-            total, (NCOS + WORKGROUP - 1) / WORKGROUP);
+            f16, total, (NCOS + WORKGROUP - 1) / WORKGROUP);
     return fclose(f);
 }
 
@@ -151,7 +157,8 @@ int main(int argc, char **argv)
     int i, m, k, nmat, funcs, done = 0, bad = 0;
     FILE *log;
     const char *ident, *browser;
-    if (argc == 6 && !strcmp(argv[1], "page")) {
+    int f16 = argc == 7 && !strcmp(argv[6], "f16");
+    if ((argc == 6 || f16) && !strcmp(argv[1], "page")) {
         if (scene_load(argv[3], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
             CHECK("wgsl: scene loads", 0, "%s", argv[3]);
             return harness_exit();
@@ -167,20 +174,20 @@ int main(int argc, char **argv)
             CHECK("wgsl: the scene's materials derive", 0, "%s", argv[3]);
             return harness_exit();
         }
-        if (write_page(argv[2], &sc, argv[4], argv[5], !strcmp(argv[4], "default"), models)) {
+        if (write_page(argv[2], &sc, argv[4], argv[5], !f16 && !strcmp(argv[4], "default"), models, f16)) {
             CHECK("wgsl: page written", 0, "%s", argv[2]);
             return harness_exit();
         }
         return 0;
     }
-    if (argc != 6 || strcmp(argv[1], "check")) {
-        fprintf(stderr, "usage: wgsl_page_test page OUT.html MANIFEST IDENT SCENE.wgsl\n"
-                        "       wgsl_page_test check MANIFEST IDENT LOG BROWSER\n");
+    if ((argc != 6 && !f16) || strcmp(argv[1], "check")) {
+        fprintf(stderr, "usage: wgsl_page_test page OUT.html MANIFEST IDENT SCENE.wgsl [f16]\n"
+                        "       wgsl_page_test check MANIFEST IDENT LOG BROWSER [f16]\n");
         return 2;
     }
     ident = argv[3];
     browser = argv[5];
-    funcs = !strcmp(ident, "default");
+    funcs = !f16 && !strcmp(ident, "default");
     if (scene_load(argv[2], &sc) || gen_context_load(data_dir(NULL), sc.space, &gc)) {
         CHECK("wgsl: scene loads", 0, "%s", argv[2]);
         return harness_exit();
@@ -251,9 +258,13 @@ int main(int argc, char **argv)
     snprintf(name, sizeof name, "wgsl: %s, %s, every result in [0, 1]", ident, browser);
     CHECK(name, bad == 0, "%d results not in [0, 1]", bad);
     for (m = 0; m < sc.model_count; m++) {
-        snprintf(name, sizeof name, "wgsl: %s %s, %d materials, %s", ident, sc.models[m].name, nmat, browser);
-        NOTE("%s: max |WGSL - C| %.2g (bound %.2g)", name, worst[m], HIGHP_BOUND);
-        CHECK(name, worst[m] <= HIGHP_BOUND, "max difference %.3g (bound %.3g)", worst[m], HIGHP_BOUND);
+        /* f16: the mediump-safe functions in binary16, the others in
+         * binary32, as MSL's half (port_half_bound) */
+        double bound = f16 ? port_half_bound(&sc, m) : HIGHP_BOUND;
+        snprintf(name, sizeof name, "wgsl: %s %s, %d materials, %s%s", ident, sc.models[m].name, nmat, browser,
+                 f16 ? " f16" : "");
+        NOTE("%s: max |WGSL - C| %.2g (bound %.2g)", name, worst[m], bound);
+        CHECK(name, worst[m] <= bound, "max difference %.3g (bound %.3g)", worst[m], bound);
     }
     for (k = 0; funcs && k < NFUNCS; k++) {
         snprintf(name, sizeof name, "wgsl: %s, %s", port_funcs[k].expr, browser);
@@ -262,7 +273,8 @@ int main(int argc, char **argv)
         CHECK(name, fworst[k] <= HIGHP_BOUND, "max difference %.3g (bound %.3g)", fworst[k], HIGHP_BOUND);
     }
     for (m = 0; m < sc.model_count; m++) /* the table's header: test_wgsl.sh */
-        NOTE("table | %s | %s | %s | %.2g |", ident, sc.models[m].name, browser, worst[m]);
+        NOTE("table | %s | %s | %s%s | %.2g | %.2g |", ident, sc.models[m].name, browser, f16 ? " f16" : "", worst[m],
+             f16 ? port_half_bound(&sc, m) : HIGHP_BOUND);
     free(params);
     free(spectra);
     free(models);
