@@ -261,13 +261,15 @@ probe() {
         ;;
     firefox)
         # WebGPU in headless Firefox ESR, as tests/shader_ports/test_wgsl.sh
-        # runs it: the prefs, a page asking for an adapter, a marker on stdout
+        # runs it: the prefs, a page asking for an adapter with the
+        # shader-f16 feature (the --wgsl-f16 modules), a marker on stdout
         f=$(tool firefox-esr) || return 1
         mkdir -p "$d/profile"
         printf 'user_pref("%s", true);\n' dom.webgpu.enabled gfx.webgpu.force-enabled gfx.webgpu.ignore-blocklist \
             browser.dom.window.dump.enabled >"$d/profile/user.js"
         {
-            printf '<script>navigator.gpu.requestAdapter().then((a) => dump(a ? "WEBGPU_OK\\n" : "WEBGPU_NONE\\n"),\n'
+            printf '<script>navigator.gpu.requestAdapter().then((a) => dump(!a ? "WEBGPU_NONE\\n" :\n'
+            printf '  a.features.has("shader-f16") ? "WEBGPU_OK\\n" : "WEBGPU_NO_SHADER_F16\\n"),\n'
             printf '  (e) => dump("WEBGPU_ERROR " + e + "\\n"));</script>\n'
         } >"$d/gpu.html"
         HOME="$d" "$f" --headless --no-remote --profile "$d/profile" "file://$d/gpu.html" >"$d/log" 2>&1 &
@@ -279,7 +281,7 @@ probe() {
         done
         kill $pid 2>/dev/null
         wait $pid 2>/dev/null
-        grep -q WEBGPU_OK "$d/log" || { echo "no WebGPU adapter in headless Firefox: $(grep -a WEBGPU_ "$d/log" || tail -3 "$d/log")"; false; }
+        grep -q WEBGPU_OK "$d/log" || { echo "no WebGPU adapter with shader-f16 in headless Firefox: $(grep -a WEBGPU_ "$d/log" || tail -3 "$d/log")"; false; }
         ;;
     arm-none-eabi)
         arm=$(tool arm-none-eabi-gcc) && cortex_m "$d/m0.elf" "$M0" ports/cortex-m0/microbit.ld "$w/bare.c" &&
