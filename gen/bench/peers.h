@@ -17,7 +17,10 @@
  * And the real-time thin film: KHR_materials_iridescence as the glTF 2.0
  * extension specifies it and the Khronos glTF Sample Viewer evaluates it,
  * in binary32 (peer_khr_iridescence_rgb; the double-precision reference and
- * its sources: ref_film_khr_iridescence, gen/common/reference_film.h). */
+ * its sources: ref_film_khr_iridescence, gen/common/reference_film.h), and
+ * the same family with the exact polarised Fresnel equations on a base of
+ * per-channel eta, kappa (peer_belcour_polarised_rgb;
+ * ref_film_belcour_polarised). */
 #ifndef FRESNEL_BENCH_PEERS_H
 #define FRESNEL_BENCH_PEERS_H
 
@@ -180,6 +183,54 @@ static inline void peer_khr_iridescence_rgb(float film_ior, float d_nm, float c,
     }
     for (ch = 0; ch < 3; ch++)
         rgb[ch] = rgb[ch] > 0.0f ? rgb[ch] : 0.0f;
+}
+
+/* Belcour and Barla's polarised form in binary32, in air: the film's index
+ * and thickness in nm, cos theta, the base's eta and kappa per channel. The
+ * same steps as ref_film_belcour_polarised: the interfaces' complex
+ * amplitude coefficients (the base's with the complex helpers above), their
+ * reflectances and phases (atan2f), orders 0-2 per polarisation and
+ * channel, averaged; negatives to 0. */
+static inline void peer_belcour_polarised_rgb(float film_ior, float d_nm, float c, const float eta[3],
+                                              const float kappa[3], float rgb[3])
+{
+    const float pi = 3.14159265f;
+    float t = d_nm / 0.03f, fade = d_nm <= 0.0f ? 0.0f : (d_nm >= 0.03f ? 1.0f : t * t * (3.0f - 2.0f * t));
+    float n2 = 1.0f + (film_ior - 1.0f) * fade, sin2_sq = (1.0f - c * c) / (n2 * n2), cos2_sq = 1.0f - sin2_sq;
+    float cos2, opd, r12[2];
+    int ch, pol, m;
+    if (cos2_sq < 0.0f) {
+        rgb[0] = rgb[1] = rgb[2] = 1.0f;
+        return;
+    }
+    cos2 = sqrtf(cos2_sq);
+    opd = 2.0f * n2 * d_nm * cos2;
+    r12[0] = c + n2 * cos2 > 0.0f ? (c - n2 * cos2) / (c + n2 * cos2) : 0.0f; /* 0/0: grazing, no film */
+    r12[1] = n2 * c + cos2 > 0.0f ? (n2 * c - cos2) / (n2 * c + cos2) : 0.0f;
+    for (ch = 0; ch < 3; ch++) {
+        peer_cx n3 = peer_cx_make(eta[ch], kappa[ch]), n3sq = peer_cx_mul(n3, n3);
+        peer_cx n3cos3 = peer_cx_sqrt(peer_cx_sub(n3sq, peer_cx_make(n2 * n2 * sin2_sq, 0.0f)));
+        peer_cx a = peer_cx_make(n2 * cos2, 0.0f), r23[2];
+        float sum = 0.0f;
+        r23[0] = peer_cx_div(peer_cx_sub(a, n3cos3), peer_cx_add(a, n3cos3));
+        r23[1] = peer_cx_div(peer_cx_sub(peer_cx_scale(n3sq, cos2), peer_cx_scale(n3cos3, n2)),
+                             peer_cx_add(peer_cx_scale(n3sq, cos2), peer_cx_scale(n3cos3, n2)));
+        for (pol = 0; pol < 2; pol++) {
+            float big_r12 = r12[pol] * r12[pol], t121 = 1.0f - big_r12, big_r23 = peer_cx_norm(r23[pol]);
+            float phi = (r12[pol] > 0.0f ? pi : 0.0f) + atan2f(r23[pol].im, r23[pol].re);
+            float r123 = big_r12 * big_r23 < 0.9999f ? big_r12 * big_r23 : 0.9999f;
+            float rs = t121 * t121 * big_r23 / (1.0f - r123), amp = rs - t121, v = big_r12 + rs;
+            for (m = 1; m <= 2; m++) {
+                float phim[3], sens[3];
+                amp *= sqrtf(r123);
+                phim[0] = phim[1] = phim[2] = (float)m * phi;
+                peer_khr_sensitivity((float)m * opd, phim, sens);
+                v += amp * 2.0f * sens[ch];
+            }
+            sum += 0.5f * v;
+        }
+        rgb[ch] = sum > 0.0f ? sum : 0.0f;
+    }
 }
 
 #endif

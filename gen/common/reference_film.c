@@ -208,3 +208,54 @@ void ref_film_khr_iridescence(double outside_ior, double film_ior, double d_nm, 
     for (ch = 0; ch < 3; ch++)
         rgb[ch] = rgb[ch] > 0.0 ? rgb[ch] : 0.0;
 }
+
+/* Belcour and Barla's polarised form (reference_film.h). The amplitude
+ * coefficients of both interfaces in one convention (r_p = (n_b cos_a -
+ * n_a cos_b) / (n_b cos_a + n_a cos_b) for light from medium a into b, so
+ * that r_ba = -r_ab for either polarisation), the phase of each reflection
+ * its argument: the round trip in the film adds phi21 = arg(r21) =
+ * arg(-r12) and phi23 = arg(r23) to the path's phase, and order m of the
+ * Airy series is C_m 2 S(m OPD, m (phi21 + phi23)) with C_0 = R12 + Rs,
+ * C_m = (Rs - T121) sqrt(R12 R23)^m, Rs = T121^2 R23 / (1 - R12 R23), as
+ * in the Schlick form above but with the exact reflectances, per
+ * polarisation, and the two averaged. */
+void ref_film_belcour_polarised(double outside_ior, double film_ior, double d_nm, double c, const double eta[3],
+                                const double kappa[3], double rgb[3])
+{
+    double t = d_nm / 0.03, fade = d_nm <= 0.0 ? 0.0 : (d_nm >= 0.03 ? 1.0 : t * t * (3.0 - 2.0 * t));
+    double n1 = outside_ior, n2 = outside_ior + (film_ior - outside_ior) * fade;
+    double cos2_sq = 1.0 - (n1 / n2) * (n1 / n2) * (1.0 - c * c), cos2, opd, r12[2];
+    int ch, pol, m;
+    if (cos2_sq < 0.0) { /* total reflection inside the film */
+        rgb[0] = rgb[1] = rgb[2] = 1.0;
+        return;
+    }
+    cos2 = sqrt(cos2_sq);
+    opd = 2.0 * n2 * d_nm * cos2;
+    /* 0/0 only at grazing incidence with no film (n2 = n1): no interface */
+    r12[0] = n1 * c + n2 * cos2 > 0.0 ? (n1 * c - n2 * cos2) / (n1 * c + n2 * cos2) : 0.0;
+    r12[1] = n2 * c + n1 * cos2 > 0.0 ? (n2 * c - n1 * cos2) / (n2 * c + n1 * cos2) : 0.0;
+    for (ch = 0; ch < 3; ch++) {
+        double complex n3 = ref_complex(eta[ch], kappa[ch]);
+        double complex n3cos3 = csqrt(n3 * n3 - n2 * n2 * (1.0 - cos2_sq));
+        double complex r23[2];
+        double sum = 0.0;
+        r23[0] = (n2 * cos2 - n3cos3) / (n2 * cos2 + n3cos3);
+        r23[1] = (n3 * n3 * cos2 - n2 * n3cos3) / (n3 * n3 * cos2 + n2 * n3cos3);
+        for (pol = 0; pol < 2; pol++) {
+            double big_r12 = r12[pol] * r12[pol], t121 = 1.0 - big_r12, big_r23 = creal(r23[pol] * conj(r23[pol]));
+            double phi = (r12[pol] > 0.0 ? 3.141592653589793 : 0.0) + carg(r23[pol]);
+            double r123 = big_r12 * big_r23 < 0.9999 ? big_r12 * big_r23 : 0.9999;
+            double rs = t121 * t121 * big_r23 / (1.0 - r123), amp = rs - t121, v = big_r12 + rs;
+            for (m = 1; m <= 2; m++) {
+                double phim[3], sens[3];
+                amp *= sqrt(r123);
+                phim[0] = phim[1] = phim[2] = m * phi;
+                khr_sensitivity(m * opd, phim, sens);
+                v += amp * 2.0 * sens[ch];
+            }
+            sum += 0.5 * v;
+        }
+        rgb[ch] = sum > 0.0 ? sum : 0.0;
+    }
+}

@@ -112,6 +112,20 @@ void film_pole_terms(const double complex kappa[2], const double complex q[2], d
 void ref_film_khr_iridescence(double outside_ior, double film_ior, double d_nm, double c, const double base_f0[3],
                               double rgb[3]);
 
+/* The same family with the exact Fresnel equations, as Belcour and Barla's
+ * paper derives it: the s and p polarisations each carried through the Airy
+ * series (orders m <= 2, the sensitivities above) with the reflectance and
+ * the phase shift of each interface from its complex amplitude coefficient
+ * (the film's a dielectric's, the base's a conductor's with index
+ * eta + i kappa), then averaged. Per-channel base indices, as a renderer with
+ * RGB eta, kappa supplies them: channel ch is the ch-th Rec. 709 component
+ * of the form evaluated with eta[ch], kappa[ch]. The film's index fades to
+ * the outside's below 0.03 nm as above, R12 R23 is held below 0.9999 (the
+ * series' denominator), and negative results are set to 0. At d = 0 it is
+ * the base's exact unpolarised reflectance. */
+void ref_film_belcour_polarised(double outside_ior, double film_ior, double d_nm, double c, const double eta[3],
+                                const double kappa[3], double rgb[3]);
+
 /* C99 has no CMPLX: a complex from its parts with the sign of a zero
  * imaginary part kept (it decides csqrt's branch on the negative axis). */
 double complex ref_complex(double re, double im);

@@ -67,6 +67,10 @@ typedef struct report_film {
      * samples (ref_film_khr_iridescence, given the material's F0): mean,
      * max; measured where the scene's space is srgb (the peer's Rec. 709) */
     double *peer_mean, *peer_max;
+    /* [input set][material] the polarised peer's (ref_film_belcour_polarised)
+     * given each per-channel eta, kappa set the generator derives
+     * (FILM_POLARISED_INPUTS, report_film.c) */
+    double *pol_mean, *pol_max;
     int peer_measured;
     double ns[NUMBER_TYPES], schlick_ns; /* ns per RGB evaluation; NaN when not timed */
 } report_film;

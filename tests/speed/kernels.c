@@ -150,6 +150,20 @@ static void k_khr_iridescence(const speed_ctx *x, const float *c, const int32_t 
     }
 }
 
+/* The same film by the polarised form of the same family
+ * (peer_belcour_polarised_rgb), given gold's per-channel eta, kappa. */
+static void k_polarised_film(const speed_ctx *x, const float *c, const int32_t *cq, float *out, int32_t *outq,
+                             fresnel_rgb *outrgb, int n)
+{
+    int i;
+    (void)cq, (void)out, (void)outq;
+    for (i = 0; i < n; i++) {
+        float rgb[3];
+        peer_belcour_polarised_rgb(1.5f, (float)(2 * (i & 511)), peer_clamp01(c[i]), x->film_eta, x->film_kappa, rgb);
+        outrgb[i].r = peer_clamp01(rgb[0]), outrgb[i].g = peer_clamp01(rgb[1]), outrgb[i].b = peer_clamp01(rgb[2]);
+    }
+}
+
 const speed_kernel_def speed_kernels[] = {
     {"copy", "floor", k_copy, 0, 0},
     {"schlick-inline", "floor", k_schlick_inline, 0, 0},
@@ -177,6 +191,7 @@ const speed_kernel_def speed_kernels[] = {
     {"schlick-rgb-f32", "call", k_schlick_rgb, 0, 1},
     {"film-f32", "call", k_film, 0, 1},
     {"khr-iridescence-inline", "inline", k_khr_iridescence, 0, 1},
+    {"polarised-film-inline", "inline", k_polarised_film, 0, 1},
 };
 const int speed_kernel_count = (int)(sizeof speed_kernels / sizeof speed_kernels[0]);
 
@@ -202,6 +217,12 @@ void speed_ctx_init(speed_ctx *x, float eta, float kappa)
     x->f0_3.g = fresnel_conductor(x->eta3[1], x->kappa3[1], 1.0f);
     x->f0_3.b = fresnel_conductor(x->eta3[2], x->kappa3[2], 1.0f);
     x->film_f0 = fresnel_film_rgb(&fresnel_speed_au_thin_film, 1.0f, 0.0f);
+    for (i = 0; i < 3; i++) { /* `fresnel params --material au`: eta_gaussian, kappa_gaussian (srgb) */
+        static const float e3[3] = {0.231009409f, 0.471031517f, 1.27337468f},
+                           k3[3] = {3.19236207f, 2.45557332f, 1.89368963f};
+        x->film_eta[i] = e3[i];
+        x->film_kappa[i] = k3[i];
+    }
     for (i = 0; i < 32; i++) {
         float s = (float)i / 31.0f;
         x->lut32[i] = fresnel_conductor(eta, kappa, s * s);

@@ -17,6 +17,7 @@ typedef struct speed_ctx {
     fresnel_conductor_prep prep3[3];
     fresnel_rgb f0_3; /* their F0, for Schlick's RGB row */
     fresnel_rgb film_f0; /* the film row's gold at normal incidence, bare: the KHR peer's F0 */
+    float film_eta[3], film_kappa[3]; /* gold's Gaussian-window eta, kappa: the polarised peer's */
     float lut16[16], lut32[32], lin16[16];
     uint16_t q16[16], q32[32], qlin16[16];
 } speed_ctx;

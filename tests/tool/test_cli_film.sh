@@ -144,15 +144,18 @@ if "$F" report --scene "$t/r.scene" -o "$t/rep" --no-timing --no-instructions >/
 else
     echo "FAIL report thin film: $(cat "$t/err") $(sed -n '/## Thin film/,+12p' "$t/rep/report.md" 2>/dev/null | head -12)"
 fi
-# beside it the KHR_materials_iridescence peer on the same samples: a row per
-# material and the whole, each mean <= max
-peer=$(sed -n '/^Beside the real-time standard: KHR_materials_iridescence/,/^| all/p' "$t/rep/report.md" |
-    grep -E '^\| (au|bk7|all) \|( [0-9.]+ \|){4}$')
+# beside it the KHR_materials_iridescence peer and the polarised one on the
+# same samples: a row per material and the whole, each mean <= max; the
+# polarised form's input set named, and its mean with each set
+peer=$(sed -n '/^Beside the real-time standard, /,/^| all/p' "$t/rep/report.md" |
+    grep -E '^\| (au|bk7|all) \|( [0-9.]+ \|){6}$')
 if [ "$(printf '%s\n' "$peer" | grep -c .)" -eq 3 ] &&
-    printf '%s\n' "$peer" | awk -F'|' '{ if (!($3 + 0 <= $4 + 0 && $5 + 0 <= $6 + 0)) exit 1 }'; then
-    echo "PASS report: the film beside KHR_materials_iridescence, per material and all ($(printf '%s' "$peer" | tail -1))"
+    printf '%s\n' "$peer" | awk -F'|' '{ if (!($3 + 0 <= $4 + 0 && $5 + 0 <= $6 + 0 && $7 + 0 <= $8 + 0)) exit 1 }' &&
+    grep -q '^Beside the real-time standard, .*KHR_materials_iridescence.*polarised.*given the best of three sets on this scene (mean over its materials): .*eta' "$t/rep/report.md" &&
+    grep -Eq "^The polarised form's mean CIEDE2000 over the materials with each input set: fitted [0-9.]+; Gaussian window [0-9.]+; point-sampled [0-9.]+\.$" "$t/rep/report.md"; then
+    echo "PASS report: the film beside KHR_materials_iridescence and the polarised form, per material and all ($(printf '%s' "$peer" | tail -1))"
 else
-    echo "FAIL report: no KHR_materials_iridescence rows: '$peer'"
+    echo "FAIL report: no KHR_materials_iridescence and polarised rows: '$peer'"
 fi
 # a scene whose only model is the film: refused (the report's tables compare models of angle)
 printf 'materials = au\nmodels = thin-film\nfilm = 1.5\n' >"$t/only.scene"

@@ -11,6 +11,7 @@
 #include "harness.h"
 #include "2_derive/derive.h"
 #include "bench/peers.h"
+#include "common/reference.h"
 #include "common/reference_film.h"
 #include "1_spectral/spectral.h"
 
@@ -330,6 +331,82 @@ static void test_khr_peer(void)
           rgb[0] == 1.0 && rgb[1] == 1.0 && rgb[2] == 1.0, "%g %g %g", rgb[0], rgb[1], rgb[2]);
 }
 
+/* The polarised peer (ref_film_belcour_polarised): finite and never
+ * negative; with no film (d = 0) the base's exact reflectance
+ * (ref_conductor); a film of the base's own index on a dielectric base is
+ * invisible whatever its thickness (the film's surface alone,
+ * ref_dielectric); for a 100 um film its orders m > 0 vanish and each
+ * polarisation is the incoherent sum R12 + T^2 R23 / (1 - R12 R23) of the
+ * exact reflectances (ref_conductor_sp, relative index eta/n_film at the
+ * angle in the film), the two averaged; and the binary32 transcription
+ * make bench times. */
+static void test_belcour_peer(void)
+{
+    static const double films[] = {1.2, 1.38, 1.8, 2.5}, cosines[] = {0.0, 0.05, 0.3, 0.7, 1.0};
+    static const double eta[][3] = {{0.18, 0.42, 1.37}, {0.27, 1.12, 1.22}, {1.5, 1.5, 1.5}, {2.9, 2.7, 2.5}};
+    static const double kappa[][3] = {{3.4, 2.4, 1.8}, {3.6, 2.6, 2.5}, {0.0, 0.0, 0.0}, {3.1, 2.9, 2.7}};
+    int bad = 0, f, b, k, ch, d;
+    double worst_bare = 0.0, worst_same = 0.0, worst_incoherent = 0.0, worst32 = 0.0, rgb[3];
+    for (f = 0; f < 4; f++)
+        for (b = 0; b < 4; b++)
+            for (k = 0; k < 5; k++) {
+                double c = cosines[k], cos2 = sqrt(1.0 - (1.0 - c * c) / (films[f] * films[f]));
+                double r12s, r12p;
+                ref_conductor_sp(films[f], 0.0, c, &r12s, &r12p);
+                for (d = 0; d <= 1000; d += 7) {
+                    float etaf[3], kappaf[3], r32[3];
+                    double etad[3], kappad[3];
+                    ref_film_belcour_polarised(1.0, films[f], d, c, eta[b], kappa[b], rgb);
+                    for (ch = 0; ch < 3; ch++) {
+                        bad += !(isfinite(rgb[ch]) && rgb[ch] >= 0.0);
+                        etaf[ch] = (float)eta[b][ch], kappaf[ch] = (float)kappa[b][ch];
+                        etad[ch] = etaf[ch], kappad[ch] = kappaf[ch];
+                    }
+                    ref_film_belcour_polarised(1.0, (float)films[f], d, (float)c, etad, kappad, rgb);
+                    peer_belcour_polarised_rgb((float)films[f], (float)d, (float)c, etaf, kappaf, r32);
+                    for (ch = 0; ch < 3; ch++)
+                        worst32 = fmax(worst32, fabs(r32[ch] - rgb[ch]));
+                }
+                ref_film_belcour_polarised(1.0, films[f], 0.0, c, eta[b], kappa[b], rgb);
+                for (ch = 0; ch < 3; ch++)
+                    worst_bare = fmax(worst_bare, fabs(rgb[ch] - ref_conductor(eta[b][ch], kappa[b][ch], c)));
+                ref_film_belcour_polarised(1.0, films[f], 1e5, c, eta[b], kappa[b], rgb);
+                for (ch = 0; ch < 3; ch++) {
+                    double r23s, r23p, want = 0.0, r123;
+                    ref_conductor_sp(eta[b][ch] / films[f], kappa[b][ch] / films[f], cos2, &r23s, &r23p);
+                    r123 = fmin(r12s * r23s, 0.9999);
+                    want += 0.5 * (r12s + (1.0 - r12s) * (1.0 - r12s) * r23s / (1.0 - r123));
+                    r123 = fmin(r12p * r23p, 0.9999);
+                    want += 0.5 * (r12p + (1.0 - r12p) * (1.0 - r12p) * r23p / (1.0 - r123));
+                    worst_incoherent = fmax(worst_incoherent, fabs(rgb[ch] - want));
+                }
+                {
+                    double same[3] = {films[f], films[f], films[f]}, zero[3] = {0.0, 0.0, 0.0};
+                    for (d = 0; d <= 1000; d += 50) {
+                        ref_film_belcour_polarised(1.0, films[f], d, c, same, zero, rgb);
+                        for (ch = 0; ch < 3; ch++)
+                            worst_same = fmax(worst_same, fabs(rgb[ch] - ref_dielectric(films[f], c)));
+                    }
+                }
+            }
+    CHECK("polarised film peer: finite and >= 0 (4 films, 4 bases, 5 cosines, 0-1000 nm)", bad == 0,
+          "%d channels not", bad);
+    NOTE("polarised film peer: d = 0 vs the base's exact reflectance %.3g; a film of the base's index %.3g; "
+         "100 um vs the incoherent sums %.3g; binary32 vs double %.3g",
+         worst_bare, worst_same, worst_incoherent, worst32);
+    CHECK("polarised film peer: with no film, the base's exact reflectance within 1e-12", worst_bare <= 1e-12, "%.3g",
+          worst_bare);
+    CHECK("polarised film peer: a film of the base's own index is its surface alone within 1e-12",
+          worst_same <= 1e-12, "%.3g", worst_same);
+    CHECK("polarised film peer: a 100 um film is the incoherent sum of its exact interfaces within 1e-12",
+          worst_incoherent <= 1e-12, "%.3g", worst_incoherent);
+    CHECK("polarised film peer: the binary32 transcription (make bench) within 1e-5 of the double one",
+          worst32 <= 1e-5, "%.3g", worst32);
+    ref_film_belcour_polarised(1.5, 1.2, 300.0, 0.3, eta[0], kappa[0], rgb);
+    CHECK("polarised film peer: total reflection in a film less dense than the outside gives 1",
+          rgb[0] == 1.0 && rgb[1] == 1.0 && rgb[2] == 1.0, "%g %g %g", rgb[0], rgb[1], rgb[2]);
+}
+
 int main(void)
 {
     gen_context *g = malloc(sizeof *g);
@@ -353,6 +430,7 @@ int main(void)
     test_total_reflection(g, s);
     test_grazing_and_extremes(g, s);
     test_khr_peer();
+    test_belcour_peer();
     for (i = 0; i < N_SUB; i++)
         free(s[i]);
     free(dispersive);
