@@ -187,18 +187,26 @@ static inline void peer_khr_iridescence_rgb(float film_ior, float d_nm, float c,
 
 /* Belcour and Barla's polarised form in binary32, in air: the film's index
  * and thickness in nm, cos theta, the base's eta and kappa per channel. The
- * same steps as ref_film_belcour_polarised: the interfaces' complex
- * amplitude coefficients (the base's with the complex helpers above), their
- * reflectances and phases (atan2f), orders 0-2 per polarisation and
- * channel, averaged; negatives to 0. */
+ * same function as ref_film_belcour_polarised, arranged as a renderer at its
+ * best would run it: each order's Gaussian envelopes (the exponentials) and
+ * carrier (cos and sin of centre x phase) computed once and shared by the
+ * three channels and two polarisations, and each interface's phase taken as
+ * the unit vector of its amplitude coefficient (cos and sin of phi21 + phi23
+ * without atan2), so that cos(centre x phase + m phi) is two products; orders
+ * 0-2 per polarisation and channel, averaged; negatives to 0. */
 static inline void peer_belcour_polarised_rgb(float film_ior, float d_nm, float c, const float eta[3],
                                               const float kappa[3], float rgb[3])
 {
-    const float pi = 3.14159265f;
+    static const float amp[4] = {5.4856e-13f, 4.4201e-13f, 5.2481e-13f, 9.7470e-14f};
+    static const float centre[4] = {1.6810e+06f, 1.7953e+06f, 2.2084e+06f, 2.2399e+06f};
+    static const float var[4] = {4.3278e+09f, 9.3046e+09f, 6.6121e+09f, 4.5282e+09f};
+    static const float to_709[3][3] = {
+        {3.2404542f, -1.5371385f, -0.4985314f}, {-0.9692660f, 1.8760108f, 0.0415560f}, {0.0556434f, -0.2040259f, 1.0572252f}};
+    const float two_pi = 6.28318531f;
     float t = d_nm / 0.03f, fade = d_nm <= 0.0f ? 0.0f : (d_nm >= 0.03f ? 1.0f : t * t * (3.0f - 2.0f * t));
     float n2 = 1.0f + (film_ior - 1.0f) * fade, sin2_sq = (1.0f - c * c) / (n2 * n2), cos2_sq = 1.0f - sin2_sq;
-    float cos2, opd, r12[2];
-    int ch, pol, m;
+    float cos2, opd, r12[2], env[2][4], ca[2][4], sa[2][4];
+    int ch, pol, m, k;
     if (cos2_sq < 0.0f) {
         rgb[0] = rgb[1] = rgb[2] = 1.0f;
         return;
@@ -207,6 +215,14 @@ static inline void peer_belcour_polarised_rgb(float film_ior, float d_nm, float 
     opd = 2.0f * n2 * d_nm * cos2;
     r12[0] = c + n2 * cos2 > 0.0f ? (c - n2 * cos2) / (c + n2 * cos2) : 0.0f; /* 0/0: grazing, no film */
     r12[1] = n2 * c + cos2 > 0.0f ? (n2 * c - cos2) / (n2 * c + cos2) : 0.0f;
+    for (m = 0; m < 2; m++) { /* orders 1 and 2: the envelopes and carriers of x (two lobes), y, z */
+        float phase = two_pi * (float)(m + 1) * opd * 1e-9f;
+        for (k = 0; k < 4; k++) {
+            env[m][k] = amp[k] * sqrtf(two_pi * var[k]) / 1.0685e-7f * expf(-phase * phase * var[k]);
+            ca[m][k] = cosf(centre[k] * phase);
+            sa[m][k] = sinf(centre[k] * phase);
+        }
+    }
     for (ch = 0; ch < 3; ch++) {
         peer_cx n3 = peer_cx_make(eta[ch], kappa[ch]), n3sq = peer_cx_mul(n3, n3);
         peer_cx n3cos3 = peer_cx_sqrt(peer_cx_sub(n3sq, peer_cx_make(n2 * n2 * sin2_sq, 0.0f)));
@@ -217,15 +233,24 @@ static inline void peer_belcour_polarised_rgb(float film_ior, float d_nm, float 
                              peer_cx_add(peer_cx_scale(n3sq, cos2), peer_cx_scale(n3cos3, n2)));
         for (pol = 0; pol < 2; pol++) {
             float big_r12 = r12[pol] * r12[pol], t121 = 1.0f - big_r12, big_r23 = peer_cx_norm(r23[pol]);
-            float phi = (r12[pol] > 0.0f ? pi : 0.0f) + atan2f(r23[pol].im, r23[pol].re);
             float r123 = big_r12 * big_r23 < 0.9999f ? big_r12 * big_r23 : 0.9999f;
-            float rs = t121 * t121 * big_r23 / (1.0f - r123), amp = rs - t121, v = big_r12 + rs;
-            for (m = 1; m <= 2; m++) {
-                float phim[3], sens[3];
-                amp *= sqrtf(r123);
-                phim[0] = phim[1] = phim[2] = (float)m * phi;
-                peer_khr_sensitivity((float)m * opd, phim, sens);
-                v += amp * 2.0f * sens[ch];
+            float rs = t121 * t121 * big_r23 / (1.0f - r123), amp_m = rs - t121, v = big_r12 + rs;
+            /* e^{i phi}, phi = arg(-r12) + arg(r23); phi = 0 where r23 = 0 */
+            float norm = sqrtf(big_r23), sign = r12[pol] > 0.0f ? -1.0f : 1.0f;
+            float cp = norm > 0.0f ? sign * r23[pol].re / norm : 1.0f, sp = norm > 0.0f ? sign * r23[pol].im / norm : 0.0f;
+            float cpm = cp, spm = sp;
+            for (m = 0; m < 2; m++) {
+                float xyz[3], s_rgb;
+                if (m == 1) { /* e^{2 i phi} */
+                    cpm = cp * cp - sp * sp;
+                    spm = 2.0f * cp * sp;
+                }
+                for (k = 0; k < 3; k++)
+                    xyz[k] = env[m][k] * (ca[m][k] * cpm - sa[m][k] * spm);
+                xyz[0] += env[m][3] * (ca[m][3] * cpm - sa[m][3] * spm);
+                s_rgb = to_709[ch][0] * xyz[0] + to_709[ch][1] * xyz[1] + to_709[ch][2] * xyz[2];
+                amp_m *= sqrtf(r123);
+                v += amp_m * 2.0f * s_rgb;
             }
             sum += 0.5f * v;
         }

@@ -69,6 +69,14 @@ const speed_target speed_targets[] = {
     {"film-vs-schlick-rgb", "film-f32", "schlick-rgb-f32",
      "fresnel_film_rgb (a thin film: six poles, 53 interpolated table values, RGB) against fresnel_schlick_rgb",
      {10.0, 10.0}, NULL},
+    {"film-vs-polarised-film", "film-f32", "polarised-film-inline",
+     "fresnel_film_rgb against the same film by the polarised form of its family (Belcour and Barla's exact "
+     "Fresnel on per-channel eta, kappa; gen/bench/peers.h, inlined), a 1.5 film on gold",
+     {0.25, 0.25}, NULL},
+    {"film-vs-khr-iridescence", "film-f32", "khr-iridescence-inline",
+     "fresnel_film_rgb against the same film by KHR_materials_iridescence's form (Schlick at both interfaces, as "
+     "the glTF Sample Viewer evaluates it; gen/bench/peers.h, inlined)",
+     {0.5, 0.5}, NULL},
 };
 const int speed_target_count = (int)(sizeof speed_targets / sizeof speed_targets[0]);
 
