@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "common/cli.h"
+#include "common/reference_film.h"
 #include "common/reference.h"
 #include "4_emit/emit.h"
 #include "4_emit/emit_glsl.h"
@@ -226,6 +227,57 @@ static int write_lut_texture(FILE *f, const char *tex)
     return 0;
 }
 
+/* The film's peers on material i (gen/common/reference_film.h; the
+ * viewer's GLSL runs their binary32 transcriptions, gen/bench/peers.h):
+ * their inputs, KHR_materials_iridescence's the material's F0 under the
+ * scene's gamut policy and the polarised form's the eta, kappa fitted to the
+ * material's RGB ground truth (the best of the report's three sets on
+ * data/scenes/report.scene), absolute indices; and each one's CIEDE2000 on
+ * the samples of the film's own numbers (every degree x every step against
+ * the truth held to [0, 1]), in double precision. */
+static void write_film_peers(FILE *f, const emit_loaded *l, const lab_space *ls, int i)
+{
+    const material_params *p = &l->es.params[i];
+    const scene *sc = l->sc;
+    double eta[3], kappa[3], sum[2] = {0.0, 0.0}, max[2] = {0.0, 0.0};
+    film_stack stack;
+    int step, a, ch, k;
+    for (ch = 0; ch < 3; ch++)
+        eta[ch] = p->eta_fit[ch] * p->n1, kappa[ch] = p->kappa_fit[ch] * p->n1;
+    stack.n1 = p->n1;
+    stack.film = NULL;
+    stack.film_n = p->film_n;
+    stack.substrate = l->es.spectra[i];
+    for (step = 0; step < VIEWER_FILM_STEPS; step++)
+        for (a = 0; a < REPORT_ANGLES; a++) {
+            double c = report_cos(a), d = viewer_film_d(sc, step), truth[3], lt[3], rgb[2][3], lp[3], de;
+            film_truth(&stack, &l->es.g->cm, &l->es.g->cs, c, d, truth);
+            for (ch = 0; ch < 3; ch++)
+                truth[ch] = ref_clamp(truth[ch], 0.0, 1.0);
+            lab_space_lab(ls, truth, lt);
+            ref_film_khr_iridescence(p->n1, p->film_n, d, c, p->f0, rgb[0]);
+            ref_film_belcour_polarised(p->n1, p->film_n, d, c, eta, kappa, rgb[1]);
+            for (k = 0; k < 2; k++) {
+                for (ch = 0; ch < 3; ch++)
+                    rgb[k][ch] = ref_clamp(rgb[k][ch], 0.0, 1.0);
+                lab_space_lab(ls, rgb[k], lp);
+                de = ciede2000(lt, lp);
+                sum[k] += de;
+                max[k] = fmax(max[k], de);
+            }
+        }
+    fprintf(f, "%s{\"f0\":", i ? "," : "");
+    put_rgb(f, p->f0);
+    fprintf(f, ",\"eta\":");
+    put_rgb(f, eta);
+    fprintf(f, ",\"kappa\":");
+    put_rgb(f, kappa);
+    for (k = 0; k < 2; k++)
+        fprintf(f, ",\"%s\":{\"mean\":%.6g,\"max\":%.6g}", k ? "polarised" : "khr",
+                sum[k] / (VIEWER_FILM_STEPS * REPORT_ANGLES), max[k]);
+    fprintf(f, "}");
+}
+
 /* "film": the thin film's slider, reference tables, its curves at every
  * step (binary32, every degree) and CIEDE2000 over angle and the steps
  * against the truth held to [0, 1]; null for a scene without it. */
@@ -300,6 +352,9 @@ static int write_film(FILE *f, const emit_loaded *l, const lab_space *ls)
     fprintf(f, "],\n\"report\":[");
     for (i = 0; i < sc->material_count; i++)
         fprintf(f, "%s{\"mean\":%.6g,\"max\":%.6g}", i ? "," : "", de[2 * i], de[2 * i + 1]);
+    fprintf(f, "],\n\"peers\":[");
+    for (i = 0; i < sc->material_count; i++)
+        write_film_peers(f, l, ls, i);
     /* the film's tables as `gen --tables` writes them (row i: material i),
      * for the scene GLSL's texture route */
     fprintf(f, "],\n\"table\":[");

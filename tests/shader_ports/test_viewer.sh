@@ -28,7 +28,8 @@
 #   film's reference (a 128-node table per slider step) against `fresnel
 #   curve --film` (5e-5: SwiftShader's sin, cos and exp; 2e-3: the table's
 #   interpolation), the lit probes against tests/shader_ports/viewer_lit.c, and a
-#   screenshot. A separate page: each material's film function is a const
+#   screenshot; the film's two peers, shown in its place, against their
+#   binary32 C transcriptions (5e-5). A separate page: each material's film function is a const
 #   array of 1744 floats that SwiftShader copies per pixel, slow enough in
 #   the main scene's one shader to lose the WebGL context on a loaded
 #   machine.
@@ -182,6 +183,13 @@ lit=$(grep '^LIT ' "$t/domf" | "$BUILD/tests/viewer_lit" "$t/film.scene")
 echo "NOTE viewer: thin film, lit probes: $lit"
 echo "$lit" | awk -v n=$((2 * 4 * 8 * 2 * 3)) '{ exit !($1 <= 1e-3 && $2 == n && $3 == 0) }' &&
     pass "the film's lit pixels equal the host's shading within 1e-3 relative" || fail "the film's lit probes: $lit"
+# the film's peers in its place (the page's GLSL of KHR_materials_iridescence
+# and of the polarised form) against their binary32 C transcriptions
+peers=$(grep '^PEER ' "$t/domf" | "$BUILD/tests/viewer_lit" --peers "$t/film.scene")
+echo "NOTE viewer: the film's peers at $film_d nm, largest |page - C| over values: $peers"
+echo "$peers" | awk -v n=$((2 * 2 * 181 * 3)) '{ exit !($1 <= 5e-5 && $2 == n && $3 == 0) }' &&
+    pass "the film's peers (KHR_materials_iridescence, polarised) at 181 angles within 5e-5 of their C transcriptions" ||
+    fail "the film's peers: $peers"
 grep '^SHOT ' "$t/domf" | while read -r tag name data; do
     printf '%s' "${data#data:image/png;base64,}" | base64 -d >"$out/film-$name.png" 2>/dev/null
 done

@@ -7,13 +7,15 @@
  * Reads the page's "LIT material model dist u v r g b" lines on stdin;
  * prints, for tests/shader_ports/test_viewer.sh, the largest relative difference
  * |page - host| / max(|host|, 0.01) and how many values were compared.
- *   viewer_lit SCENE < lines */
+ *   viewer_lit SCENE < lines
+ *   viewer_lit --peers SCENE < lines   (the film's peers: peers() below) */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "4_emit/emit.h"
+#include "bench/peers.h"
 #include "model/encoded_scene.h"
 #include "viewer/viewer.h"
 
@@ -145,12 +147,64 @@ static vec3 shade(const row *r, int dist, double u, double w)
     return add(col, mul(fresnel(r, dot(n, vv)), env));
 }
 
+/* viewer_lit --peers SCENE < lines: the page's "PEER key material theta r g
+ * b" lines (the film's peers in its place, at the page's starting
+ * thickness) against their binary32 transcriptions (gen/bench/peers.h) on
+ * the inputs gen/viewer/viewer.c gives the page; prints the largest
+ * |page - host|, how many values were compared and how many lines named
+ * nothing known. */
+static int peers(const char *scene_path)
+{
+    emit_loaded l;
+    char line[512], key[32], mat[64];
+    double worst = 0.0;
+    int count = 0, bad = 0, i, ch;
+    if (emit_load(scene_path, NULL, emit_backend_find("--glsl"), &l))
+        return 2;
+    while (fgets(line, sizeof line, stdin)) {
+        double theta, got[3];
+        float f0[3], eta[3], kappa[3], want[3], c, d = (float)viewer_film_d(l.sc, VIEWER_FILM_START);
+        const material_params *p;
+        int mi = -1;
+        if (sscanf(line, "PEER %31s %63s %lf %lf %lf %lf", key, mat, &theta, &got[0], &got[1], &got[2]) != 6)
+            continue;
+        for (i = 0; i < l.sc->material_count; i++)
+            if (!strcmp(l.sc->materials[i], mat))
+                mi = i;
+        if (mi < 0 || (strcmp(key, "khr") && strcmp(key, "polarised"))) {
+            bad++;
+            continue;
+        }
+        p = &l.es.params[mi];
+        for (ch = 0; ch < 3; ch++) {
+            f0[ch] = (float)p->f0[ch];
+            eta[ch] = (float)(p->eta_fit[ch] * p->n1);
+            kappa[ch] = (float)(p->kappa_fit[ch] * p->n1);
+        }
+        c = (float)cos(theta * PI / 180.0);
+        c = c > 0.0f ? (c < 1.0f ? c : 1.0f) : 0.0f;
+        if (!strcmp(key, "khr"))
+            peer_khr_iridescence_rgb((float)p->film_n, d, c, f0, want);
+        else
+            peer_belcour_polarised_rgb((float)p->film_n, d, c, eta, kappa, want);
+        for (ch = 0; ch < 3; ch++) {
+            worst = fmax(worst, fabs(got[ch] - peer_clamp01(want[ch])));
+            count++;
+        }
+    }
+    printf("%.3g %d %d\n", worst, count, bad);
+    emit_loaded_free(&l);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     emit_loaded l;
     char line[512], mat[64], model[64];
     double worst = 0.0, *refs, *film_refs, d0;
     int count = 0, bad = 0, i, k;
+    if (argc == 3 && !strcmp(argv[1], "--peers"))
+        return peers(argv[2]);
     if (argc != 2 || emit_load(argv[1], NULL, emit_backend_find("--glsl"), &l))
         return 2;
     d0 = viewer_film_d(l.sc, VIEWER_FILM_START);
