@@ -71,6 +71,12 @@ typedef struct report_film {
      * given each per-channel eta, kappa set the generator derives
      * (FILM_POLARISED_INPUTS, report_film.c) */
     double *pol_mean, *pol_max;
+    /* CIEDE2000 summed over the materials by thickness band (quarters of the
+     * scene's range) and angle band (FILM_ANGLE_BANDS, report_film.c), for
+     * the binary32 film [0], the KHR peer [1] and the polarised one with its
+     * best set [2 + set], and the samples per band */
+    double band_de[2 + 3][4][4];
+    long band_n[4][4];
     int peer_measured;
     double ns[NUMBER_TYPES], schlick_ns; /* ns per RGB evaluation; NaN when not timed */
 } report_film;

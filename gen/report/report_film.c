@@ -25,6 +25,23 @@ static const char *const polarised_input_name[FILM_POLARISED_INPUTS] = {
     "eta, kappa fitted to the material's RGB ground truth (fresnel_conductor_rgb's `eta`, `kappa`)",
     "Metzgar's Gaussian-window eta, kappa (`eta_gaussian`, `kappa_gaussian`)",
     "eta, kappa point-sampled at the dominant wavelengths (`eta_point`, `kappa_point`)"};
+/* The angle bands of the film's breakdown: theta from each lower edge up to
+ * the next (degrees), the last to 90 inclusive. */
+static const int film_angle_band[4] = {0, 30, 60, 80};
+static int angle_band(int theta)
+{
+    int b = 3;
+    while (b > 0 && theta < film_angle_band[b])
+        b--;
+    return b;
+}
+static int thickness_band(const scene *sc, double d)
+{
+    double span = sc->film_d_hi - sc->film_d_lo;
+    int b = span > 0.0 ? (int)(4.0 * (d - sc->film_d_lo) / span) : 0;
+    return b < 0 ? 0 : (b > 3 ? 3 : b);
+}
+
 static void polarised_inputs(const material_params *p, int set, double eta[3], double kappa[3])
 {
     const double *e = set == 0 ? p->eta_fit : set == 1 ? p->eta_gauss : p->eta_point;
@@ -127,6 +144,8 @@ int report_film_measure(report_run *r, int i)
             lab_space_lab(&r->ls, truth, lab_truth);
             if (peer) { /* its best input: the material's F0 under the scene's gamut policy */
                 double rgb[3], lab[3], de;
+                int tb = thickness_band(&r->sc, q.d_nm), ab = angle_band(a);
+                f->band_n[tb][ab]++;
                 ref_film_khr_iridescence(p.n1, p.film_n, q.d_nm, c, p.f0, rgb);
                 for (ch = 0; ch < 3; ch++)
                     rgb[ch] = ref_clamp(rgb[ch], 0.0, 1.0);
@@ -134,6 +153,7 @@ int report_film_measure(report_run *r, int i)
                 de = ciede2000(lab_truth, lab);
                 f->peer_mean[i] += de;
                 f->peer_max[i] = fmax(f->peer_max[i], de);
+                f->band_de[1][tb][ab] += de;
                 for (set = 0; set < FILM_POLARISED_INPUTS; set++) {
                     double eta[3], kappa[3];
                     int at = set * r->sc.material_count + i;
@@ -145,6 +165,7 @@ int report_film_measure(report_run *r, int i)
                     de = ciede2000(lab_truth, lab);
                     f->pol_mean[at] += de;
                     f->pol_max[at] = fmax(f->pol_max[at], de);
+                    f->band_de[2 + set][tb][ab] += de;
                 }
             }
             for (t = 0; t < number_types_available; t++) {
@@ -153,6 +174,8 @@ int report_film_measure(report_run *r, int i)
                 number_types[t].eval(&q, c, rgb);
                 lab_space_lab(&r->ls, rgb, lab);
                 de = ciede2000(lab_truth, lab);
+                if (peer && t == 0)
+                    f->band_de[0][thickness_band(&r->sc, q.d_nm)][angle_band(a)] += de;
                 cell->de_mean += de;
                 if (de >= cell->de_max) {
                     cell->de_max = de;
@@ -256,7 +279,7 @@ void report_film_write(report_run *r, FILE *out)
     if (f->peer_measured) {
         double mean = 0.0, max = 0.0, own_mean = 0.0, own_max = 0.0, pol_all[FILM_POLARISED_INPUTS] = {0}, pmean = 0.0,
                pmax = 0.0;
-        int best = 0, set;
+        int best = 0, set, a, b;
         for (set = 0; set < FILM_POLARISED_INPUTS; set++) {
             for (i = 0; i < sc->material_count; i++)
                 pol_all[set] += f->pol_mean[set * sc->material_count + i] / sc->material_count;
@@ -291,7 +314,28 @@ void report_film_write(report_run *r, FILE *out)
         for (set = 0; set < FILM_POLARISED_INPUTS; set++)
             fprintf(out, "%s %s %.3f", set ? ";" : "", set == 0 ? "fitted" : set == 1 ? "Gaussian window" : "point-sampled",
                     pol_all[set]);
-        fprintf(out, ".\n");
+        fprintf(out, ".\n\nWhere they differ: mean CIEDE2000 over the materials by thickness and angle, %s %s / "
+                     "KHR_materials_iridescence / polarised:\n\n| thickness \\ theta |",
+                f->entry.name, number_types[0].name);
+        for (a = 0; a < 4; a++)
+            fprintf(out, a < 3 ? " %d-%d deg |" : " %d-90 deg |", film_angle_band[a], a < 3 ? film_angle_band[a + 1] - 1 : 90);
+        fprintf(out, "\n|---|---:|---:|---:|---:|\n");
+        for (b = 0; b < (nd > 1 ? 4 : 1); b++) {
+            double span = sc->film_d_hi - sc->film_d_lo;
+            if (nd > 1)
+                fprintf(out, "| %g-%g nm |", sc->film_d_lo + span * b / 4.0, sc->film_d_lo + span * (b + 1) / 4.0);
+            else
+                fprintf(out, "| %g nm |", sc->film_d_lo);
+            for (a = 0; a < 4; a++) {
+                double n = (double)f->band_n[b][a];
+                if (n > 0.0)
+                    fprintf(out, " %.3f / %.2f / %.2f |", f->band_de[0][b][a] / n, f->band_de[1][b][a] / n,
+                            f->band_de[2 + best][b][a] / n);
+                else
+                    fprintf(out, " |");
+            }
+            fprintf(out, "\n");
+        }
     }
     fprintf(out, "\n| type | table bytes per material | ns per RGB evaluation | x fresnel_schlick_rgb |\n"
                  "|---|---:|---:|---:|\n");

@@ -157,6 +157,16 @@ if [ "$(printf '%s\n' "$peer" | grep -c .)" -eq 3 ] &&
 else
     echo "FAIL report: no KHR_materials_iridescence and polarised rows: '$peer'"
 fi
+# and where they differ: a row per quarter of 0-400 nm, a cell per angle
+# band, each "film / KHR / polarised"
+bands=$(sed -n '/^Where they differ: mean CIEDE2000 over the materials by thickness and angle/,+7p' "$t/rep/report.md" |
+    grep -cE '^\| (0-100|100-200|200-300|300-400) nm \|( [0-9.]+ / [0-9.]+ / [0-9.]+ \|){4}$')
+[ "$bands" -eq 4 ] && pass_band=1 || pass_band=0
+if [ $pass_band = 1 ] && grep -q '^| thickness \\ theta | 0-29 deg | 30-59 deg | 60-79 deg | 80-90 deg |$' "$t/rep/report.md"; then
+    echo "PASS report: the film and its peers by thickness band (4) and angle band (4)"
+else
+    echo "FAIL report: the film and its peers by thickness and angle: $bands rows"
+fi
 # a scene whose only model is the film: refused (the report's tables compare models of angle)
 printf 'materials = au\nmodels = thin-film\nfilm = 1.5\n' >"$t/only.scene"
 "$F" report --scene "$t/only.scene" -o "$t/only" --no-timing --no-instructions >/dev/null 2>"$t/err"
