@@ -136,13 +136,21 @@ static double search(fit_ctx *c, int n, const double *lo, const double *hi, doub
 void target_fit_curve(const target *t, const lab_space *ls, const double (*truth)[3], const target_anchor *a,
                       target_fit *out)
 {
+    double start[TARGET_MAX_X] = {0};
+    t->naive(a, start);
+    target_fit_from(t, ls, truth, start, out);
+}
+
+void target_fit_from(const target *t, const lab_space *ls, const double (*truth)[3], const double *start,
+                     target_fit *out)
+{
     fit_ctx c;
     double lo[TARGET_MAX_X], hi[TARGET_MAX_X];
     int n = box(t, lo, hi);
     memset(out, 0, sizeof *out);
     out->t = t;
     ctx_init(&c, t, ls, truth);
-    t->naive(a, out->naive);
+    memcpy(out->naive, start, (size_t)n * sizeof *start);
     out->naive_mean = curve_de(&c, out->naive, &out->naive_max);
     memcpy(out->fitted, out->naive, sizeof out->fitted);
     search(&c, n, lo, hi, out->fitted);
@@ -167,4 +175,48 @@ void target_material_curve(const spectrum *s, const gen_context *g, const materi
         ground_truth(s, &g->cm, &g->cs, p->n1, 1.0 / 7.0, a->f82);
     }
     memcpy(a->eta, p->eta_fit, sizeof a->eta);
+}
+
+/* The film's fit: t's metal with two more numbers, the film's index and
+ * thickness, each held in a box of one point, so the search moves the
+ * metal's alone. */
+int target_film_fit(const target *t, const spectrum *s, const gen_context *g, const material_params *p, double n,
+                    double d_nm, target_fit *out)
+{
+    double truth[TARGET_ANGLES][3], start[TARGET_MAX_X] = {0};
+    target_anchor a;
+    target with_film = *t;
+    film_stack stack;
+    lab_space ls;
+    int i, ch, m = target_x_count(t);
+    if (!t->film.eval || t->param_count + 2 > TARGET_MAX_PARAMS || m + 2 > TARGET_MAX_X)
+        return -1;
+    with_film.param[with_film.param_count].name = t->film.ior;
+    with_film.param[with_film.param_count].scalar = 1;
+    with_film.param[with_film.param_count].lo = with_film.param[with_film.param_count].hi = n;
+    with_film.param_count++;
+    with_film.param[with_film.param_count].name = t->film.thickness;
+    with_film.param[with_film.param_count].scalar = 1;
+    with_film.param[with_film.param_count].lo = with_film.param[with_film.param_count].hi = d_nm;
+    with_film.param_count++;
+    with_film.eval = t->film.eval;
+    stack.n1 = p->n1;
+    stack.film = NULL;
+    stack.film_n = n;
+    stack.substrate = s;
+    for (i = 0; i < TARGET_ANGLES; i++) {
+        film_truth(&stack, &g->cm, &g->cs, target_cos(i), d_nm, truth[i]);
+        for (ch = 0; ch < 3; ch++)
+            truth[i][ch] = ref_clamp(truth[i][ch], 0.0, 1.0);
+    }
+    memcpy(a.f0, p->f0, sizeof a.f0);
+    memcpy(a.f82, p->f82, sizeof a.f82);
+    memcpy(a.eta, p->eta_fit, sizeof a.eta);
+    t->naive(&a, start);
+    start[m] = n;
+    start[m + 1] = d_nm;
+    lab_space_init(&ls, &g->cs);
+    target_fit_from(&with_film, &ls, (const double(*)[3])truth, start, out);
+    out->t = t;
+    return 0;
 }

@@ -8,6 +8,7 @@
 
 #include "fresnel.h"
 #include "common/reference.h"
+#include "common/reference_film.h"
 
 /* MaterialX states no range for generalized_schlick_bsdf's inputs; the fit
  * searches this box. The 16 metals of data/scenes/report.scene fit inside
@@ -25,6 +26,17 @@ static double tint_through(double f0, double f82)
 {
     double edge = f0 + (1.0 - f0) * (7776.0 / 16807.0); /* (6/7)^5 */
     return edge > 0.0 ? f82 / edge : 1.0;
+}
+
+/* glTF's film over its metal: x = baseColorFactor r, g, b, the film's
+ * index, its thickness in nm; in air, the result held to [0, 1] as a
+ * renderer's stored colour is. */
+static void eval_gltf_film(const double *x, double c, double rgb[3])
+{
+    int ch;
+    ref_film_khr_iridescence(1.0, x[3], x[4], c, x, rgb);
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = ref_clamp(rgb[ch], 0.0, 1.0);
 }
 
 static void eval_openpbr(const double *x, double c, double rgb[3])
@@ -128,7 +140,7 @@ const target target_table[TARGETS] = {
      eval_openpbr, naive_f82_tint,
      {"thin_film_weight", "thin_film_thickness", NULL, 1e-3, "thin_film_ior",
       "OpenPBR's thin-film layer over the base: thin_film_thickness in micrometres (specification v1.1.1, "
-      "Parameter reference)"}},
+      "Parameter reference)", NULL, NULL}},
     [TARGET_materialx] = {TARGET_NAME(materialx), "MaterialX generalized_schlick_bsdf (a metal: reflection only)",
      "Hoffman's generalized Schlick: color0 to color90 with exponent, a dip scaled by color82 at cos theta = 1/7",
      "MaterialX PBR specification, node generalized_schlick_bsdf (documents/Specification/MaterialX.PBRSpec.md)",
@@ -143,7 +155,7 @@ const target target_table[TARGETS] = {
      eval_materialx, naive_materialx,
      {NULL, "thickness", NULL, 1.0, "ior",
       "a thin_film_bsdf as the top of a layer node over the generalized_schlick_bsdf: thickness in nanometres "
-      "(MaterialX PBR specification, node thin_film_bsdf)"}},
+      "(MaterialX PBR specification, node thin_film_bsdf)", NULL, NULL}},
     [TARGET_blender] = {TARGET_NAME(blender), "Blender 4.x Principled BSDF, Metallic = 1 (Cycles and EEVEE)",
      "OpenPBR's F82-tint, base colour and tint clamped to [0, 1], result clamped to [0, 1]",
      "Blender source: intern/cycles/kernel/svm/closure.h (Principled metallic), "
@@ -155,7 +167,7 @@ const target target_table[TARGETS] = {
      0, "base_color = F0; specular_tint = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
      eval_blender, naive_f82_tint,
      {NULL, "Thin Film Thickness", NULL, 1.0, "Thin Film IOR",
-      "Principled BSDF (Blender 4.2 and later): Thin Film Thickness in nanometres"}},
+      "Principled BSDF (Blender 4.2 and later): Thin Film Thickness in nanometres", NULL, NULL}},
     [TARGET_unreal] = {TARGET_NAME(unreal), "Unreal Engine F_AdobeF82(F0, F82, VoH)",
      "Adobe F82 as BRDF.ush writes it: the same curve as OpenPBR's, F82 being the tint at cos theta = 1/7",
      "Unreal Engine Engine/Shaders/Private/BRDF.ush, F_AdobeF82 (source under Epic's licence; which material "
@@ -165,7 +177,7 @@ const target target_table[TARGETS] = {
      2,
      {{"F0", 0, 0.0, 1.0}, {"F82", 0, 0.0, 1.0}},
      0, "F0 = F0; F82 = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
-     eval_unreal, naive_f82_tint, {NULL, NULL, NULL, 0.0, NULL, NULL}}, /* no thin-film input known */
+     eval_unreal, naive_f82_tint, {NULL, NULL, NULL, 0.0, NULL, NULL, NULL, NULL}}, /* no thin-film input known */
     [TARGET_gltf] = {TARGET_NAME(gltf), "glTF 2.0 metallic-roughness, metallicFactor = 1",
      "Schlick with F0 = baseColor and F90 = 1 (KHR_materials_specular changes dielectrics only)",
      "glTF 2.0 specification, Appendix B, B.3.4 and B.3.5 (metal_brdf, conductor_fresnel)",
@@ -177,7 +189,10 @@ const target target_table[TARGETS] = {
      eval_gltf, naive_f0,
      {"iridescenceFactor", "iridescenceThicknessMaximum", "iridescenceThicknessMinimum", 1.0, "iridescenceIor",
       "KHR_materials_iridescence: thicknesses in nanometres; without an iridescenceThicknessTexture the maximum is "
-      "the thickness, and the minimum is set to it too"}},
+      "the thickness, and the minimum is set to it too",
+      eval_gltf_film,
+      "KHR_materials_iridescence as the glTF Sample Viewer evaluates it: Belcour and Barla 2017 with Schlick at both "
+      "interfaces, the base's index from baseColor as F0 (common/reference_film.c)"}},
     [TARGET_filament] = {TARGET_NAME(filament), "Filament standard lit material, metallic = 1",
      "Schlick with f0 = baseColor and f90 = saturate(dot(f0, 50 * 0.33)) (1 for every metal)",
      "Filament source: shaders/src/surface_brdf.fs (fresnel), shaders/src/common_material.fs (computeF0)",
@@ -185,7 +200,7 @@ const target target_table[TARGETS] = {
      1,
      {{"baseColor", 0, 0.0, 1.0}},
      1, "baseColor = F0",
-     eval_filament, naive_f0, {NULL, NULL, NULL, 0.0, NULL, NULL}}, /* no thin-film input known */
+     eval_filament, naive_f0, {NULL, NULL, NULL, 0.0, NULL, NULL, NULL, NULL}}, /* no thin-film input known */
     [TARGET_gulbrandsen] = {TARGET_NAME(gulbrandsen), "Gulbrandsen's artist-friendly metallic Fresnel (reflectivity r, edge tint g)",
      "r, g to n, k, then the approximate unpolarised conductor Fresnel, as the paper defines it",
      "Gulbrandsen 2014, \"Artist Friendly Metallic Fresnel\", JCGT 3(4), section 2.3.3 (n, k from r, g) and "
@@ -195,7 +210,7 @@ const target target_table[TARGETS] = {
      2,
      {{"reflectivity", 0, 0.0, FRESNEL_GULBRANDSEN_R_MAX}, {"edge_tint", 0, 0.0, 1.0}},
      0, "reflectivity = F0; edge_tint = the generator's Gulbrandsen g, from F0 and the fitted eta",
-     eval_gulbrandsen, naive_gulbrandsen, {NULL, NULL, NULL, 0.0, NULL, NULL}}, /* no thin-film input known */
+     eval_gulbrandsen, naive_gulbrandsen, {NULL, NULL, NULL, 0.0, NULL, NULL, NULL, NULL}}, /* no thin-film input known */
 };
 const int target_count = (int)(sizeof target_table / sizeof target_table[0]);
 

@@ -46,6 +46,12 @@ typedef struct target_film {
     double per_nm;             /* the thickness input's units per nanometre */
     const char *ior;           /* the film's index */
     const char *where;         /* the inputs' place and source, in a few words */
+    /* The renderer's film over its metal at cosine c: x is the metal's
+     * packed parameters, then the film's index, then its thickness in nm.
+     * NULL where this project has no transcription of the renderer's film
+     * formula. */
+    void (*eval)(const double *x, double c, double rgb[3]);
+    const char *formula;       /* that formula and its source, in a few words */
 } target_film;
 
 typedef struct target {
@@ -100,6 +106,17 @@ void target_curve_de(const target *t, const lab_space *ls, const double (*truth)
  * describing the same curve). Deterministic. */
 void target_fit_curve(const target *t, const lab_space *ls, const double (*truth)[3], const target_anchor *a,
                       target_fit *out);
+/* The same search started from start (x of t) rather than t's naive
+ * conversion; out->naive is start. */
+void target_fit_from(const target *t, const lab_space *ls, const double (*truth)[3], const double *start,
+                     target_fit *out);
+/* The metal's parameters of t refitted under a film of index n, d_nm thick,
+ * through t's own film formula (t->film.eval, not NULL) against the film's
+ * spectral truth on the material (each channel held to [0, 1]), started
+ * from t's naive conversion; out->fitted and out->naive hold the metal's
+ * numbers, then n and d_nm. 0, or -1 (no memory). */
+int target_film_fit(const target *t, const spectrum *s, const gen_context *g, const material_params *p, double n,
+                    double d_nm, target_fit *out);
 /* One material's truth and anchors: under the gamut policy (under_policy 1:
  * what the generator's other parameters are derived from) or the unclipped
  * spectral ground truth (0). */

@@ -91,12 +91,15 @@ static void print_target(const target *t, const target_fit *f, const gen_context
 }
 
 /* The renderer's thin-film inputs for a film of index n, d_nm thick, over
- * the metal printed before. */
-static void print_film(const target *t, double n, double d_nm)
+ * the metal printed before; then, where this project transcribes the
+ * renderer's film formula, the metal's parameters refitted under the film
+ * through it (target_film_fit) with the fitted and the naive CIEDE2000. */
+static int print_film(const target *t, double n, double d_nm, const encoded_scene *es)
 {
     const char *names[4];
     double values[4];
-    int k, count = target_film_rows(t, n, d_nm, names, values);
+    target_fit fit;
+    int k, ch, x = 0, count = target_film_rows(t, n, d_nm, names, values);
     printf("# thin film: index %g, %g nm, laid by %s over the metal above (whose parameters are the bare metal's): "
            "%s\n",
            n, d_nm, t->name, t->film.where);
@@ -104,6 +107,24 @@ static void print_film(const target *t, double n, double d_nm)
         const double v[3] = {values[k], values[k], values[k]};
         row(names[k], v);
     }
+    if (!t->film.eval) {
+        printf("# the metal is not refitted under the film: this tool has no transcription of %s's film formula\n",
+               t->name);
+        return 0;
+    }
+    if (target_film_fit(t, es->spectra[0], es->g, &es->params[0], n, d_nm, &fit))
+        return cli_oom(WHERE);
+    printf("# under the film, through %s's own film formula (%s), the metal's parameters refitted against the "
+           "film's spectral truth on this material (theta 0-90 deg in 1 deg steps, held to [0, 1]):",
+           t->name, t->film.formula);
+    for (k = 0; k < t->param_count; k++) {
+        printf(" %s", t->param[k].name);
+        for (ch = 0; ch < (t->param[k].scalar ? 1 : 3); ch++, x++)
+            printf("%s%.9g", ch ? "," : " ", fit.fitted[x]);
+    }
+    printf("\n# under the film, fitted: mean dE2000 %.4f, max %.4f; naive (%s): mean %.4f, max %.4f\n",
+           fit.fit_mean, fit.fit_max, t->naive_rule, fit.naive_mean, fit.naive_max);
+    return 0;
 }
 
 /* The scene's targets (one, or every one for "all"), as encode_scene
@@ -245,7 +266,7 @@ int cmd_params(int argc, char **argv)
         if (for_target) {
             status = print_targets(for_target, &es);
             if (!status && film_n > 0.0)
-                print_film(target_find(for_target), film_n, film_d);
+                status = print_film(target_find(for_target), film_n, film_d, &es);
             goto done;
         }
         printf("parameter,r,g,b\n");
