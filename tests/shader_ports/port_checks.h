@@ -136,6 +136,8 @@ static inline double port_half_bound(const scene *sc, int m)
     const model *row = model_of(sc->models[m].row);
     if (sc->models[m].row == MODEL_ROW_cook_torrance)
         return 2.0 * 0x1p-11;
+    if (sc->models[m].row == MODEL_ROW_gulbrandsen || (row->offered & MODEL_FILM))
+        return HIGHP_BOUND; /* highp functions in every port */
     if (sc->models[m].lut_n && row->form == LUT_RESIDUAL)
         return FRESNEL_BOUND_SCHLICK_F16;
     if (sc->models[m].lut_n || row->f16_bound >= 1.0)

@@ -55,7 +55,8 @@ for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene test
         continue
     fi
     for b in chromium firefox; do
-        run_page "$out/$ident.html" "$out/${ident}_$b.log" $b || echo "NOTE wgsl: $ident: no WGSL_DONE from $b within ${WGSL_TIMEOUT:-240} s"
+        run_page "$out/$ident.html" "$out/${ident}_$b.log" $b ||
+            echo "NOTE wgsl: $ident: no WGSL_DONE from $b within ${WGSL_TIMEOUT:-240} s; its log ends: $(tail -c 300 "$out/${ident}_$b.log" | tr '\n' ' ')"
         "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/${ident}_$b.log" $b || status=1
     done
     # f16 (gen --wgsl-f16) where WebGPU has shader-f16: Firefox's (naga,
@@ -69,7 +70,8 @@ for manifest in data/scenes/default.scene tests/data/scenes/vk_models.scene test
         status=1
         continue
     fi
-    run_page "$out/${ident}_f16.html" "$out/${ident}_f16.log" firefox || echo "NOTE wgsl: $ident f16: no WGSL_DONE from firefox within ${WGSL_TIMEOUT:-240} s"
+    run_page "$out/${ident}_f16.html" "$out/${ident}_f16.log" firefox ||
+        echo "NOTE wgsl: $ident f16: no WGSL_DONE from firefox within ${WGSL_TIMEOUT:-240} s; its log ends: $(tail -c 300 "$out/${ident}_f16.log" | tr '\n' ' ')"
     "$BUILD/wgsl/wgsl_page_test" check "$manifest" "$ident" "$out/${ident}_f16.log" firefox f16 || status=1
 done
 
