@@ -409,8 +409,9 @@ static void emit_film_routes(FILE *f, const emit_input *in, const char *guard)
     const char *s = in->name;
     fprintf(f, "/* The thin film: its tables (one row of %d floats per material, written by --tables)\n"
                " * reach the shader by one of three routes, chosen before this file:\n"
-               " *   the texture route (default but in Vulkan; GLSL ES 3.00 / WebGL 2, desktop 1.30+):\n"
-               " *     the sampler uniform fresnel_%s_film_texture, RGBA32F, %d x %d texels;\n"
+               " *   the texture route (default but in Vulkan; every GLSL dialect, WebGL 1 and 2): the\n"
+               " *     sampler uniform fresnel_%s_film_texture, RGBA32F (GLES 2, WebGL 1: RGBA, FLOAT by\n"
+               " *     OES_texture_float), %d x %d texels, GL_NEAREST;\n"
                " *   #define FRESNEL_FILM_UNIFORM: the uniform block fresnel_%s_film_block (std140,\n"
                " *     %d bytes; GLES 3.0 guarantees 16384 per block);\n"
                " *   #define FRESNEL_FILM_STORAGE (the default in Vulkan): the read-only storage buffer\n"
@@ -440,10 +441,11 @@ static void emit_film_routes(FILE *f, const emit_input *in, const char *guard)
                "    FRESNEL_HIGHP vec4 fresnel_%s_film[%d];\n};\n"
                "#define FRESNEL_%s_FILM_READ(row, i) fresnel_%s_film[(row) * %d + (i) / 4][(i) - 4 * ((i) / 4)]\n",
             s, s, rows * FILM_FLOATS / 4, guard, s, FILM_FLOATS / 4);
-    fprintf(f, "#else\nuniform FRESNEL_HIGHP sampler2D fresnel_%s_film_texture;\n"
-               "#define FRESNEL_%s_FILM_READ(row, i) fresnel_film_texel(fresnel_%s_film_texture, row, i)\n"
-               "#endif\n#endif\n",
-            s, guard, s);
+    fprintf(f, "#else\nuniform FRESNEL_HIGHP sampler2D fresnel_%s_film_texture;\n#if __VERSION__ >= 130\n"
+               "#define FRESNEL_%s_FILM_READ(row, i) fresnel_film_texel(fresnel_%s_film_texture, row, i)\n#else\n"
+               "#define FRESNEL_%s_FILM_READ(row, i) fresnel_film_texel2d(fresnel_%s_film_texture, (float(row) + 0.5) "
+               "* (1.0 / %d.0), i)\n#endif\n#endif\n#endif\n",
+            s, guard, s, guard, s, rows);
 }
 
 void emit_shader_film_read(FILE *f, const char *guard, int row)
@@ -520,7 +522,7 @@ int emit_glsl(FILE *f, FILE *tables, const emit_input *in)
         }
         for (m = 0; m < sc->model_count; m++) {
             const scene_entry *e = &sc->models[m];
-            if (model_of(e->row)->offered & MODEL_FILM) /* none in GLSL ES 1.00, desktop 1.10, 1.20 */
+            if (model_of(e->row)->offered & MODEL_FILM) /* highp only */
                 fputs("#if FRESNEL_FILM\n", f);
             emit_model_function(f, scene_prefix, prefix, e, layout_find(&l, i, m), spacing, guard, i);
             if (model_of(e->row)->offered & MODEL_FILM)

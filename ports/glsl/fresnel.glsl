@@ -163,12 +163,23 @@
 
 #if __VERSION__ >= 130
 #define FRESNEL_TEXTURE texture
-/* the thin film: integers, texelFetch, tables indexed with a variable */
-#define FRESNEL_FILM 1
 #else
 #define FRESNEL_TEXTURE texture2D
-#define FRESNEL_FILM 0
 #endif
+/* FRESNEL_FILM: 1 where the thin film's highp arithmetic exists, every
+ * dialect but a GLSL ES 1.00 fragment shader without
+ * GL_FRAGMENT_PRECISION_HIGH (binary16 would put its phases turns off and
+ * its table indices past mediump int's 2^10); generated scenes compile
+ * their films only where it is 1. */
+#ifndef FRESNEL_FILM
+#if defined(GL_ES) && !defined(GL_FRAGMENT_PRECISION_HIGH)
+#define FRESNEL_FILM 0
+#else
+#define FRESNEL_FILM 1
+#endif
+#endif
+/* an index into the film's table (up to 1743: highp in GLSL ES 1.00) */
+#define FRESNEL_INT FRESNEL_HIGHP int
 
 #define FRESNEL_MP float
 #define FRESNEL_MP3 vec3
@@ -717,15 +728,20 @@ FRESNEL_HP fresnel_lut_cubic_blend(FRESNEL_HP p0, FRESNEL_HP p1, FRESNEL_HP p2, 
  * and R = a0 + Re(sum_j w_j F_j) per channel, with the C runtime's
  * polynomials for cos and sin (the phase reduced to half a turn first) and
  * the GPU's exp where the C runtime has a polynomial too. highp throughout: phases reach a hundred turns, and the
- * denominators cancel near the fringes' peaks. GLSL ES 3.00 and desktop
- * 1.30 and later (integers, texelFetch; the table is indexed with a
- * variable), HLSL, MSL, WGSL. No loops: the six poles are written out
- * (one-line macros: GLSL ES 1.00 and 3.30 have no line continuation).
- * fresnel_film_rgb(t, c, d_nm) takes any table as an array;
- * FRESNEL_FILM_RGB_READ is its body over a table read any way. */
+ * denominators cancel near the fringes' peaks. Every GLSL dialect with
+ * highp (FRESNEL_FILM), HLSL, MSL, WGSL. No loops: the six poles are
+ * written out (one-line macros: GLSL ES 1.00 and 3.30 have no line
+ * continuation). fresnel_film_rgb(t, c, d_nm) takes any table as an array
+ * (GLSL ES 3.00, desktop 1.30 and later: ES 1.00 fragment shaders index
+ * only uniform arrays with a variable); FRESNEL_FILM_RGB_READ is its body
+ * over a table read any way, a texture in every dialect. */
 #define FRESNEL_FILM_NODE 53
 #define FRESNEL_FILM_FLOATS 1744
+#define FRESNEL_FILM_TEXELS 436
 #define FRESNEL_FILM_D_MAX 5000.0
+#ifndef FRESNEL_INT
+#define FRESNEL_INT int
+#endif
 #if !defined(FRESNEL_GLSL) || FRESNEL_FILM
 FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a, FRESNEL_HP2 b, FRESNEL_HP2 p,
                                 FRESNEL_HP2 q)
@@ -765,27 +781,44 @@ FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a,
 /* The body of a function of c and d_nm returning the film's RGB from table
  * t read by r (the table read in place, not passed: a 1744-float parameter
  * would be a copy per call). */
-#define FRESNEL_FILM_RGB_READ(r, t, c, d_nm) FRESNEL_HP fresnel_i_pos = sqrt(FRESNEL_SATURATE(c)) * 31.0; FRESNEL_HP fresnel_i_k = min(floor(fresnel_i_pos), 30.0); FRESNEL_HP fresnel_i_w = fresnel_i_pos - fresnel_i_k; int fresnel_i_b = 48 + FRESNEL_FILM_NODE * int(fresnel_i_k); FRESNEL_HP2 fresnel_i_xy = clamp(d_nm, 0.0, FRESNEL_FILM_D_MAX) * FRESNEL_VEC2(FRESNEL_I_FILM_AT(r, t, fresnel_i_b, 3, fresnel_i_w), FRESNEL_I_FILM_AT(r, t, fresnel_i_b, 4, fresnel_i_w)); FRESNEL_HP2 fresnel_i_f0 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 0); FRESNEL_HP2 fresnel_i_f1 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 1); FRESNEL_HP2 fresnel_i_f2 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 2); FRESNEL_HP2 fresnel_i_f3 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 3); FRESNEL_HP2 fresnel_i_f4 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 4); FRESNEL_HP2 fresnel_i_f5 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 5); return FRESNEL_SATURATE(FRESNEL_VEC3(FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 0), FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 1), FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 2)));
+#define FRESNEL_FILM_RGB_READ(r, t, c, d_nm) FRESNEL_HP fresnel_i_pos = sqrt(FRESNEL_SATURATE(c)) * 31.0; FRESNEL_HP fresnel_i_k = min(floor(fresnel_i_pos), 30.0); FRESNEL_HP fresnel_i_w = fresnel_i_pos - fresnel_i_k; FRESNEL_INT fresnel_i_b = 48 + FRESNEL_FILM_NODE * int(fresnel_i_k); FRESNEL_HP2 fresnel_i_xy = clamp(d_nm, 0.0, FRESNEL_FILM_D_MAX) * FRESNEL_VEC2(FRESNEL_I_FILM_AT(r, t, fresnel_i_b, 3, fresnel_i_w), FRESNEL_I_FILM_AT(r, t, fresnel_i_b, 4, fresnel_i_w)); FRESNEL_HP2 fresnel_i_f0 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 0); FRESNEL_HP2 fresnel_i_f1 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 1); FRESNEL_HP2 fresnel_i_f2 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 2); FRESNEL_HP2 fresnel_i_f3 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 3); FRESNEL_HP2 fresnel_i_f4 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 4); FRESNEL_HP2 fresnel_i_f5 = FRESNEL_I_FILM_POLE(r, t, fresnel_i_b, fresnel_i_w, fresnel_i_xy, 5); return FRESNEL_SATURATE(FRESNEL_VEC3(FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 0), FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 1), FRESNEL_I_FILM_CH(r, t, fresnel_i_b, fresnel_i_w, 2)));
 /* The same over an array t. */
 #define FRESNEL_FILM_RGB_BODY(t, c, d_nm) FRESNEL_FILM_RGB_READ(FRESNEL_FILM_ARRAY, t, c, d_nm)
 /* The same as a function of any table (a uniform array, a cbuffer's). */
+#if !defined(FRESNEL_GLSL) || __VERSION__ >= 130
 FRESNEL_VEC3 fresnel_film_rgb(FRESNEL_HP t[FRESNEL_FILM_FLOATS], FRESNEL_HP c, FRESNEL_HP d_nm)
 {
     FRESNEL_FILM_RGB_BODY(t, c, d_nm)
 }
+#endif
 #ifdef FRESNEL_GLSL
 /* THE RGBA32F TABLE TEXTURE (the film's texture route, `fresnel gen
- * --glsl`): row `row` holds one table, FRESNEL_FILM_FLOATS / 4 texels, value
- * i in component i % 4 of texel (i / 4, row). A float texture read with
- * texelFetch (no filtering, no normalised coordinates), highp. */
+ * --glsl`): row `row` holds one table, FRESNEL_FILM_TEXELS texels, value i
+ * in component i % 4 of texel (i / 4, row). A float texture (GLES 2, WebGL
+ * 1: OES_texture_float, format and internal format RGBA, type FLOAT), no
+ * mipmaps, highp. The component by a one-hot dot product: exact for finite
+ * values, and no dynamic vector index (which ANGLE rewrites into a
+ * function of four branches per read). */
+#if __VERSION__ >= 130
+/* texelFetch: no filtering, no normalised coordinates */
 FRESNEL_HP fresnel_film_texel(FRESNEL_HIGHP sampler2D s, int row, int i)
 {
-    /* the component by a one-hot dot product: exact for finite values,
-     * and no dynamic vector index (which ANGLE rewrites into a function of
-     * four branches per read) */
     int k = i / 4;
     return dot(texelFetch(s, ivec2(k, row), 0), vec4(equal(ivec4(i - 4 * k), ivec4(0, 1, 2, 3))));
 }
+#else
+/* GLSL ES 1.00, desktop 1.10 and 1.20: texture2D at the texel's centre,
+ * (i / 4 + 0.5) / FRESNEL_FILM_TEXELS across and v, the row's centre
+ * ((row + 0.5) / rows), down; GL_NEAREST filters (any filter reads a
+ * centre exactly, but GLES 2 filters no float texture without
+ * OES_texture_float_linear) */
+FRESNEL_HP fresnel_film_texel2d(FRESNEL_HIGHP sampler2D s, FRESNEL_HP v, FRESNEL_INT i)
+{
+    FRESNEL_INT k = i / 4;
+    FRESNEL_HP u = (float(k) + 0.5) * (1.0 / float(FRESNEL_FILM_TEXELS));
+    return dot(texture2D(s, FRESNEL_VEC2(u, v)), vec4(equal(ivec4(i - 4 * k), ivec4(0, 1, 2, 3))));
+}
+#endif
 #endif
 #endif
 

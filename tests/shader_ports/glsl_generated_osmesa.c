@@ -10,7 +10,7 @@
  * Bounds (highp): analytic models and const-array tables 1e-5, as the
  * port's own test, and the thin film too (thicknesses 0-1195 nm scattered
  * over the cosines) on each of its routes: its RGBA32F texture (GLSL 3.30,
- * ES 3.00), its uniform block (ES 3.00, where the scene's tables fit 16 KiB)
+ * ES 3.00 by texelFetch, ES 1.00 by texture2D at texel centres), its uniform block (ES 3.00, where the scene's tables fit 16 KiB)
  * and its storage buffer (GLSL 4.30), the GPU's exp standing for the C
  * runtime's polynomial. Texture tables: within 1e-5 of the C runtime on the
  * decoded 16-bit nodes, and within the quantisation bound of the C runtime
@@ -45,7 +45,7 @@
  * the margin of the port's mediump bounds. */
 #define MEDIUMP_BOUND 2.5e-3
 
-/* The film reads its tables by the texture route (330, es300), the uniform
+/* The film reads its tables by the texture route (330, es300, es100), the uniform
  * block (FRESNEL_FILM_UNIFORM, where the tables fit GLES 3's 16 KiB) or
  * the storage buffer (FRESNEL_FILM_STORAGE, GLSL 4.30); film_only: a
  * variant for the film's route alone. A prelude starting with '#' is the
@@ -206,8 +206,8 @@ int main(int argc, char **argv)
             double worst = 0.0, worst_q = 0.0, bound, bound_q = HIGHP_BOUND;
             char name[256], sampler[128];
             GLuint prog;
-            if ((va->lut_only && !is_lut) || (film && va->texture) || (va->film_only && !film))
-                continue; /* the film: GLSL ES 3.00, desktop 1.30 and later */
+            if ((va->lut_only && !is_lut) || (film && mediump) || (va->film_only && !film))
+                continue; /* the film: highp only */
             if (v == V_UNIFORM && film_bytes > 16384) {
                 NOTE("glsl gen: %s: the film's uniform route not run: %ld bytes of tables, over 16384", ident,
                      film_bytes);
