@@ -208,3 +208,26 @@ if [ "$rows" -gt 0 ] && [ -z "$bad" ]; then
 else
     echo "FAIL README.md's Cortex-M0 table:$bad"
 fi
+
+# ---- the thin film's row: its errors and its peers' against the report ----
+# The row's "mean / max" pairs, in order: binary32, Q1.15, binary16, then
+# KHR_materials_iridescence and the polarised form; the report's "all" rows
+# of the film's two tables ("Thin film"). Each README number equals the
+# report's within half a unit of its own last digit.
+film_row=$(grep '^| a thin film' README.md)
+readme_pairs=$(echo "$film_row" | grep -o '[0-9][0-9.]* / [0-9][0-9.]*' | sed 's| / | |' | tr '\n' ' ')
+report_pairs=$(sed -n '/^## Thin film/,/^## /p' data/report/report.md | awk -F'|' '
+    /^\| all \| \| / { a = $4 " " $5 " " $6 " " $7 " " $8 " " $9 }
+    /^\| all \| [0-9]/ { b = $5 " " $6 " " $7 " " $8 }
+    END { print a " " b }')
+verdict=$(echo "$readme_pairs | $report_pairs" | awk -F'|' '{
+    n = split($1, r, " "); m = split($2, q, " ")
+    if (n != 10 || m != 10) { print "README has " n " numbers, the report " m " (10 expected)"; exit }
+    for (i = 1; i <= n; i++) { d = index(r[i], ".") ? length(r[i]) - index(r[i], ".") : 0
+        half = 0.5 * 10 ^ -d; diff = r[i] - q[i]; if (diff < 0) diff = -diff
+        if (diff > half + 1e-12) printf "%s against the report'"'"'s %s; ", r[i], q[i] } }')
+if [ -n "$film_row" ] && [ -z "$verdict" ]; then
+    echo "PASS README.md's thin-film row: its CIEDE2000 (binary32, Q1.15, binary16) and its peers' (KHR_materials_iridescence, polarised) are data/report/report.md's"
+else
+    echo "FAIL README.md's thin-film row: ${verdict:-no row starting '| a thin film'}"
+fi
