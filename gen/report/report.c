@@ -424,7 +424,10 @@ static int write_cross(const report_run *r, FILE *f)
               "Instructions of each scene model's GLSL function on gold, compiled to SPIR-V and optimised "
               "(`make spirv-count`; ports/vulkan/spirv_count.sh says how). Counts of instructions, not cycles, "
               "and a table's size does not show in them: a LUT's const array is one instruction to SPIR-V, "
-              "however many floats a driver copies.\n\n", f);
+              "however many floats a driver copies; an extended instruction (exp, cos, sin) counts as one. "
+              "The thin film's peers, khr-iridescence-peer and polarised-film-peer, are the viewer's GLSL of "
+              "them (ports/webgl/viewer.html) on the same film and substrate: they call the GPU's cos, sin and "
+              "exp, where the film computes cos and sin by the C runtime's polynomials.\n\n", f);
         if ((status = copy_file(f, r->spirv_path)))
             return status;
     }

@@ -15,7 +15,13 @@
 #                 operations in explicit 16-bit floats, with the conversions
 #                 that takes (what a driver that honours mediump runs)
 # The thin film reads its tables from a storage buffer (the generated
-# GLSL's route in Vulkan), at binding 2.
+# GLSL's route in Vulkan), at binding 2. Its two peers follow, rows
+# khr-iridescence-peer and polarised-film-peer: the GLSL of
+# ports/webgl/viewer.html (KHR_materials_iridescence as the glTF Sample
+# Viewer evaluates it, given gold's F0; the polarised form of the same
+# family, given gold's eta, kappa), their inputs (film index, F0 or eta,
+# kappa) read from the input buffer as the film's table is, the cosine held
+# to [0, 1] and the result too, as the film's own function does.
 # Instruction counts, not cycles: a GPU's cost per instruction varies with
 # the instruction and the chip.
 B=${1:-build}
@@ -41,6 +47,7 @@ shader() {
     echo "precision $1 float;"
     echo "#define FRESNEL_FILM_BINDING 2"
     cat ports/glsl/fresnel.glsl "$t/scene.glsl"
+    case $2 in khr | polarised) cat "$t/peers.glsl" ;; esac
     printf 'layout(local_size_x = 64) in;\n'
     printf 'layout(std430, set = 0, binding = 0) readonly buffer FrIn { highp float fr_in[]; };\n'
     printf 'layout(std430, set = 0, binding = 1) writeonly buffer FrOut { highp float fr_out[]; };\n'
@@ -48,6 +55,8 @@ shader() {
     printf '    highp float c = fr_in[FRESNEL_FILM_FLOATS + 2 * i], d = fr_in[FRESNEL_FILM_FLOATS + 2 * i + 1];\n'
     case $2 in
     film) printf '    vec3 r = fresnel_spirv_count_au_thin_film_rgb(c, d);\n' ;;
+    khr) printf '    vec3 r = clamp(peer_khr(fr_in[0], d, clamp(c, 0.0, 1.0), vec3(fr_in[1], fr_in[2], fr_in[3])), 0.0, 1.0);\n' ;;
+    polarised) printf '    vec3 r = clamp(peer_polarised(fr_in[0], d, clamp(c, 0.0, 1.0), vec3(fr_in[1], fr_in[2], fr_in[3]), vec3(fr_in[4], fr_in[5], fr_in[6])), 0.0, 1.0);\n' ;;
     harness) printf '    vec3 r = vec3(c, c, c);\n' ;;
     *) printf '    vec3 r = %s;\n' "$2" ;;
     esac
@@ -70,6 +79,13 @@ count() {
     spirv-dis --no-header "$t/o.spv" | awk '/ OpFunction / || /^ *OpFunction / { f = 1 } f { n++ } /OpFunctionEnd/ { f = 0 } END { print n + 0 }'
 }
 
+# the peers' GLSL: the page's, from its constants to its film_peer()
+sed -n '/^const highp mat3 PEER_XYZ_TO_709/,/^vec3 film_peer(/p' ports/webgl/viewer.html | sed '$d' >"$t/peers.glsl"
+grep -q '^highp vec3 peer_polarised(' "$t/peers.glsl" || {
+    echo "spirv-count: the film's peers not found in ports/webgl/viewer.html" >&2
+    exit 1
+}
+
 hp0=$(count highp harness) && mp0=$(count mediump harness) || exit 1
 echo "| model | highp | mediump (16-bit) |"
 echo "|---|---:|---:|"
@@ -84,6 +100,11 @@ for model in $(sed -n 's/^models *= *//p' ports/vulkan/spirv_count.scene); do
     fi
     hp=$(count highp "$call") && mp=$(count mediump "$call") || exit 1
     echo "| $model | $((hp - hp0)) | $((mp - mp0)) |"
+done
+for peer in khr polarised; do
+    hp=$(count highp $peer) && mp=$(count mediump $peer) || exit 1
+    [ $peer = khr ] && row=khr-iridescence-peer || row=polarised-film-peer
+    echo "| $row | $((hp - hp0)) | $((mp - mp0)) |"
 done
 echo
 echo "Harness (main reading the cosine and writing it three times): $hp0 instructions highp, $mp0 mediump; subtracted above."

@@ -1,7 +1,7 @@
 #!/bin/sh
 # passes: first (glslangValidator and spirv-opt do the same work in every pass)
 # `make spirv-count` (ports/vulkan/spirv_count.sh): a row for every model of
-# ports/vulkan/spirv_count.scene with a positive instruction count in each
+# ports/vulkan/spirv_count.scene and for the thin film's two peers with a positive instruction count in each
 # column (the harness subtracted), every optimised module valid SPIR-V
 # (the script runs spirv-val and stops on a failure), the harness and the
 # tools named; and `fresnel report --spirv FILE` carries the table into the
@@ -14,12 +14,12 @@ if ! sh ports/vulkan/spirv_count.sh "$BUILD" >"$t/count.txt" 2>"$t/err"; then
     exit 1
 fi
 missing=""
-for model in $(sed -n 's/^models *= *//p' ports/vulkan/spirv_count.scene); do
+for model in $(sed -n 's/^models *= *//p' ports/vulkan/spirv_count.scene) khr-iridescence-peer polarised-film-peer; do
     grep -Eq "^\| $model \| [1-9][0-9]* \| [1-9][0-9]* \|$" "$t/count.txt" || missing="$missing $model"
 done
 n=$(sed -n 's/^models *= *//p' ports/vulkan/spirv_count.scene | wc -w)
 if [ -z "$missing" ] && grep -q '^Harness (main reading the cosine' "$t/count.txt" && grep -q '^Tools: glslang .*SPIRV-Tools' "$t/count.txt"; then
-    echo "PASS spirv-count: $n models, each a positive count highp and mediump (16-bit), harness and tools named"
+    echo "PASS spirv-count: $n models and the film's two peers, each a positive count highp and mediump (16-bit), harness and tools named"
 else
     echo "FAIL spirv-count: rows missing or malformed:$missing ($(head -4 "$t/count.txt" | tr '\n' ' '))"
 fi
