@@ -164,6 +164,9 @@ int report_film_measure(report_run *r, int i);
 void report_film_time(report_run *r);
 void report_film_write(report_run *r, FILE *f);
 void report_film_free(report_run *r);
+/* The polarised peer's input set of least mean CIEDE2000 over the
+ * materials (an index into pol_mean's sets). */
+int report_film_best_polarised(const report_film *f, int material_count);
 
 /* What `fresnel report` was asked for; report_write measures and writes it:
  * 0, or a CLI_* status after a message. */

@@ -226,6 +226,19 @@ void report_film_time(report_run *r)
     f->schlick_ns = ns[t];
 }
 
+int report_film_best_polarised(const report_film *f, int material_count)
+{
+    double mean[FILM_POLARISED_INPUTS] = {0};
+    int best = 0, set, i;
+    for (set = 0; set < FILM_POLARISED_INPUTS; set++) {
+        for (i = 0; i < material_count; i++)
+            mean[set] += f->pol_mean[set * material_count + i] / material_count;
+        if (mean[set] < mean[best])
+            best = set;
+    }
+    return best;
+}
+
 void report_film_write(report_run *r, FILE *out)
 {
     const report_film *f = &r->film;
@@ -279,13 +292,10 @@ void report_film_write(report_run *r, FILE *out)
     if (f->peer_measured) {
         double mean = 0.0, max = 0.0, own_mean = 0.0, own_max = 0.0, pol_all[FILM_POLARISED_INPUTS] = {0}, pmean = 0.0,
                pmax = 0.0;
-        int best = 0, set, a, b;
-        for (set = 0; set < FILM_POLARISED_INPUTS; set++) {
+        int best = report_film_best_polarised(f, sc->material_count), set, a, b;
+        for (set = 0; set < FILM_POLARISED_INPUTS; set++)
             for (i = 0; i < sc->material_count; i++)
                 pol_all[set] += f->pol_mean[set * sc->material_count + i] / sc->material_count;
-            if (pol_all[set] < pol_all[best])
-                best = set;
-        }
         fprintf(out, "\nBeside the real-time standard, in double precision (gen/common/reference_film.h), on the same "
                      "samples against the same truth, each result held to [0, 1]: KHR_materials_iridescence as glTF "
                      "2.0 specifies it and the Khronos glTF Sample Viewer evaluates it (Belcour and Barla 2017 with "

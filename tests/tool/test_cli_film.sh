@@ -157,6 +157,20 @@ if [ "$(printf '%s\n' "$peer" | grep -c .)" -eq 3 ] &&
 else
     echo "FAIL report: no KHR_materials_iridescence and polarised rows: '$peer'"
 fi
+# the goal beside the peers in targets.md: on the goal substrates the scene
+# has (au, bk7), the film's mean over the better peer's, each within 1/20 or
+# named with the film's mean in every type; the verdict from the worst ratio
+goal=$(grep '^| Thin film (thin-film) in f32 beside its peers' "$t/rep/targets.md")
+worst=$(printf '%s' "$goal" | sed -n 's/.* | worst \([0-9.]*\) (\(au\|bk7\)).*/\1/p')
+if [ -n "$worst" ] && printf '%s' "$goal" | grep -q 'Au, Cu, Al, Ti, Fe, BK7 in the scene (2) | <= 0.05, each substrate |' &&
+    { { awk -v w="$worst" 'BEGIN { exit !(w <= 0.05) }' && printf '%s' "$goal" | grep -q '| \*\*pass\*\* |$'; } ||
+        { awk -v w="$worst" 'BEGIN { exit !(w > 0.05) }' &&
+            printf '%s' "$goal" | grep -Eq '; over the goal: (au|bk7) [0-9.]+ \(film mean f32 [0-9.]+, q15 [0-9.]+' &&
+            printf '%s' "$goal" | grep -q '| \*\*MISS\*\* |$'; }; }; then
+    echo "PASS report: targets.md's goal for the film beside its peers on the goal substrates (worst $worst)"
+else
+    echo "FAIL report: targets.md's film-beside-peers goal: '$goal'"
+fi
 # and where they differ: a row per quarter of 0-400 nm, a cell per angle
 # band, each "film / KHR / polarised"
 bands=$(sed -n '/^Where they differ: mean CIEDE2000 over the materials by thickness and angle/,+7p' "$t/rep/report.md" |
