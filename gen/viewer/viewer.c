@@ -138,8 +138,8 @@ static int film_reference(const emit_loaded *l, int i, double *rgb)
 
 /* vec3 fresnel_select(int mat, int model, float c): the scene's functions
  * by index, in the scene's order of materials and models, the thin film at
- * the slider's thickness (uniform u_film_d; its function needs integers
- * and texelFetch, so WebGL 1 has it not); with FRESNEL_VIEWER_MATERIAL defined,
+ * the slider's thickness (uniform u_film_d; FRESNEL_FILM is 0 only in a
+ * WebGL 1 without highp in fragment shaders); with FRESNEL_VIEWER_MATERIAL defined,
  * only that material's (WebGL 1). */
 static void write_select(FILE *f, const emit_loaded *l)
 {
