@@ -134,28 +134,34 @@ done
 [ "$shots" -ge 7 ] && pass "$shots screenshots in $out/ (one per view, PNG from the page's canvas)" ||
     fail "$shots of 7 screenshots written"
 
-# The WebGL 1 fallback (#webgl1): the port's GLSL ES 1.00 dialect, tables
-# from its packed texture, one program per material, 8-bit read-back.
-sed -n '/<pre id="test-result">/,/<\/pre>/p' "$t/page1" | sed 's/.*<pre id="test-result">//; s/<\/pre>.*//' >"$t/dom1"
-if grep -q '^CONTEXT webgl1$' "$t/dom1" && grep -q '^DONE$' "$t/dom1" && ! grep -q '^ERROR' "$t/dom1" &&
-    ! grep -q CONSOLE "$t/log1"; then
-    pass "the WebGL 1 fallback renders its probes with no console message"
-else
-    fail "WebGL 1: $(grep -E '^(CONTEXT|ERROR)' "$t/dom1" | head -2) $(grep CONSOLE "$t/log1" | head -2)"
-fi
-# WebGL 1's read-back: float where the browser offers WEBGL_color_buffer_float
-# (the models within 2.5e-5: the LUTs' 16-bit texture nodes, 1.25 * 2^-16),
-# else 8-bit (4e-3, the read-back's 1/255, the C values held to [0, 1])
-if grep -q '^READBACK float$' "$t/dom1"; then
-    tol1="2.5e-5 2e-6 0" how="float read-back: models within 2.5e-5 (the LUTs' 16-bit texture nodes), the reference 2e-6"
-else
-    tol1="4e-3 4e-3 1" how="8-bit read-back: within 4e-3, its 1/255"
-fi
-worst1=$(compare "$t/dom1" $tol1)
-echo "NOTE viewer: WebGL 1, largest |page - C runtime| ($how): $worst1"
-echo "$worst1" | grep -q 'over\|missing' &&
-    fail "WebGL 1 page and C runtime differ: $(echo "$worst1" | tr ';' '\n' | grep 'over\|missing' | head -5)" ||
-    pass "WebGL 1: every model of every material and the reference equal the C runtime ($how)"
+# webgl1_page PAGE LOG WHAT [film]: a page run with #webgl1 (the port's GLSL
+# ES 1.00 dialect, the LUTs from their packed texture, the film's table by
+# texture2D at texel centres, one program per material): it finishes with
+# no console message, and its probes equal the C runtime. Its read-back is
+# float where the browser offers WEBGL_color_buffer_float (the models within
+# 2.5e-5: the LUTs' 16-bit texture nodes, 1.25 * 2^-16; the reference 2e-6;
+# the film 1e-5 and its reference 2e-3, as in WebGL 2), else 8-bit (4e-3,
+# its 1/255, the C values held to [0, 1]).
+webgl1_page() {
+    dom=$1.dom
+    sed -n '/<pre id="test-result">/,/<\/pre>/p' "$1" | sed 's/.*<pre id="test-result">//; s/<\/pre>.*//' >"$dom"
+    if grep -q '^CONTEXT webgl1$' "$dom" && grep -q '^DONE$' "$dom" && ! grep -q '^ERROR' "$dom" && ! grep -q CONSOLE "$2"; then
+        pass "$3 in WebGL 1 renders its probes with no console message"
+    else
+        fail "$3 in WebGL 1: $(grep -E '^(CONTEXT|ERROR)' "$dom" | head -2) $(grep CONSOLE "$2" | head -2)"
+    fi
+    if grep -q '^READBACK float$' "$dom"; then
+        tol="2.5e-5 2e-6 0${4:+ 1e-5 2e-3}" how="float read-back: models within 2.5e-5, the reference 2e-6${4:+, the film 1e-5, its reference 2e-3}"
+    else
+        tol="4e-3 4e-3 1${4:+ 4e-3 4e-3}" how="8-bit read-back: within 4e-3"
+    fi
+    worst1=$(compare "$dom" $tol)
+    echo "NOTE viewer: $3 in WebGL 1, largest |page - C runtime| ($how): $worst1"
+    echo "$worst1" | grep -q 'over\|missing' &&
+        fail "$3 in WebGL 1 and the C runtime differ: $(echo "$worst1" | tr ';' '\n' | grep 'over\|missing' | head -5)" ||
+        pass "$3 in WebGL 1: every model of every material and the reference equal the C runtime at 181 angles ($how)"
+}
+webgl1_page "$t/page1" "$t/log1" "the viewer's page"
 
 # The thin film's page: its own scene, the slider's starting thickness (the
 # page's FILM line), curve --film for the film's columns.
@@ -201,24 +207,7 @@ echo "NOTE viewer: the film's peers at $film_d nm, largest |page - C| over value
 echo "$peers" | awk -v n=$((2 * 2 * 181 * 3)) '{ exit !($1 <= 5e-5 && $2 == n && $3 == 0) }' &&
     pass "the film's peers (KHR_materials_iridescence, polarised) at 181 angles within 5e-5 of their C transcriptions" ||
     fail "the film's peers: $peers"
-# the film in WebGL 1: GLSL ES 1.00, the table by texture2D at texel centres
-sed -n '/<pre id="test-result">/,/<\/pre>/p' "$t/pagef1" | sed 's/.*<pre id="test-result">//; s/<\/pre>.*//' >"$t/domf1"
-if grep -q '^CONTEXT webgl1$' "$t/domf1" && grep -q '^DONE$' "$t/domf1" && ! grep -q '^ERROR' "$t/domf1" &&
-    ! grep -q CONSOLE "$t/logf1"; then
-    pass "the film's page in WebGL 1 renders its probes with no console message"
-else
-    fail "the film's page in WebGL 1: $(grep -E '^(CONTEXT|ERROR)' "$t/domf1" | head -2) $(grep CONSOLE "$t/logf1" | head -2)"
-fi
-if grep -q '^READBACK float$' "$t/domf1"; then
-    tolf1="2.5e-5 2e-6 0 1e-5 2e-3" how="float read-back: the film within 1e-5, its reference 2e-3, as in WebGL 2"
-else
-    tolf1="4e-3 4e-3 1 4e-3 4e-3" how="8-bit read-back: within 4e-3, its 1/255"
-fi
-worstf1=$(compare "$t/domf1" $tolf1)
-echo "NOTE viewer: thin film at $film_d nm in WebGL 1, largest |page - C runtime| ($how): $worstf1"
-echo "$worstf1" | grep -q 'over\|missing' &&
-    fail "the film's page in WebGL 1 and the C runtime differ: $(echo "$worstf1" | tr ';' '\n' | grep 'over\|missing' | head -5)" ||
-    pass "the thin film at $film_d nm in WebGL 1 (GLSL ES 1.00) and its reference, F82 and the reference, at 181 angles equal the C runtime ($how)"
+webgl1_page "$t/pagef1" "$t/logf1" "the thin film's page at $film_d nm" film
 grep '^SHOT ' "$t/domf" | while read -r tag name data; do
     printf '%s' "${data#data:image/png;base64,}" | base64 -d >"$out/film-$name.png" 2>/dev/null
 done
