@@ -163,8 +163,10 @@
 
 #if __VERSION__ >= 130
 #define FRESNEL_TEXTURE texture
+#define FRESNEL_I_INDEXED_ARRAYS 1 /* any array indexed with a variable */
 #else
 #define FRESNEL_TEXTURE texture2D
+#define FRESNEL_I_INDEXED_ARRAYS 0
 #endif
 /* FRESNEL_FILM: 1 where the thin film's highp arithmetic exists, every
  * dialect but a GLSL ES 1.00 fragment shader without
@@ -785,7 +787,7 @@ FRESNEL_HP2 fresnel_i_film_pole(FRESNEL_HP2 xy, FRESNEL_HP2 pole, FRESNEL_HP2 a,
 /* The same over an array t. */
 #define FRESNEL_FILM_RGB_BODY(t, c, d_nm) FRESNEL_FILM_RGB_READ(FRESNEL_FILM_ARRAY, t, c, d_nm)
 /* The same as a function of any table (a uniform array, a cbuffer's). */
-#if !defined(FRESNEL_GLSL) || __VERSION__ >= 130
+#if !defined(FRESNEL_GLSL) || FRESNEL_I_INDEXED_ARRAYS
 FRESNEL_VEC3 fresnel_film_rgb(FRESNEL_HP t[FRESNEL_FILM_FLOATS], FRESNEL_HP c, FRESNEL_HP d_nm)
 {
     FRESNEL_FILM_RGB_BODY(t, c, d_nm)
