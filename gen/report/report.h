@@ -55,6 +55,9 @@ typedef struct report_film_cell {
     int worst_theta;        /* where de_max is: degrees, nm */
     double worst_d;
 } report_film_cell;
+/* The polarised peer's input sets (report_film.c names them). */
+#define FILM_POLARISED_INPUTS 3
+
 typedef struct report_film {
     int present;        /* the scene has the thin-film model */
     scene_entry entry;  /* its entry, taken out of the scene's models */
@@ -165,8 +168,20 @@ void report_film_time(report_run *r);
 void report_film_write(report_run *r, FILE *f);
 void report_film_free(report_run *r);
 /* The polarised peer's input set of least mean CIEDE2000 over the
- * materials (an index into pol_mean's sets). */
-int report_film_best_polarised(const report_film *f, int material_count);
+ * materials (an index into pol_mean's sets): here, as the film's section
+ * and the targets both read it. */
+static inline int report_film_best_polarised(const report_film *f, int material_count)
+{
+    double mean[FILM_POLARISED_INPUTS] = {0};
+    int best = 0, set, i;
+    for (set = 0; set < FILM_POLARISED_INPUTS; set++) {
+        for (i = 0; i < material_count; i++)
+            mean[set] += f->pol_mean[set * material_count + i] / material_count;
+        if (mean[set] < mean[best])
+            best = set;
+    }
+    return best;
+}
 
 /* What `fresnel report` was asked for; report_write measures and writes it:
  * 0, or a CLI_* status after a message. */

@@ -20,7 +20,6 @@
 /* The per-channel eta, kappa sets the polarised peer is given (relative to
  * the outside medium; the peer takes absolute indices): the report shows
  * the best of them, and says which. */
-#define FILM_POLARISED_INPUTS 3
 static const char *const polarised_input_name[FILM_POLARISED_INPUTS] = {
     "eta, kappa fitted to the material's RGB ground truth (fresnel_conductor_rgb's `eta`, `kappa`)",
     "Metzgar's Gaussian-window eta, kappa (`eta_gaussian`, `kappa_gaussian`)",
@@ -224,19 +223,6 @@ void report_film_time(report_run *r)
     for (t = 0; t < number_types_available; t++)
         f->ns[t] = ns[t];
     f->schlick_ns = ns[t];
-}
-
-int report_film_best_polarised(const report_film *f, int material_count)
-{
-    double mean[FILM_POLARISED_INPUTS] = {0};
-    int best = 0, set, i;
-    for (set = 0; set < FILM_POLARISED_INPUTS; set++) {
-        for (i = 0; i < material_count; i++)
-            mean[set] += f->pol_mean[set * material_count + i] / material_count;
-        if (mean[set] < mean[best])
-            best = set;
-    }
-    return best;
 }
 
 void report_film_write(report_run *r, FILE *out)
