@@ -12,6 +12,7 @@
  * MaterialX in linear sRGB, `fresnel params --material cr --for materialx`;
  * tests/gen/test_renderer_targets.c counts the fits where it does). */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "1_spectral/colour_difference.h"
@@ -25,6 +26,7 @@
 
 typedef struct fit_ctx {
     const target *t;
+    const film_cmfs *cmfs; /* not NULL: the curve is t's film formula */
     const lab_space *ls;
     double lab[TARGET_ANGLES][3];
     long evaluations;
@@ -42,7 +44,10 @@ static double curve_de(fit_ctx *c, const double *x, double *max)
     c->evaluations++;
     for (i = 0; i < TARGET_ANGLES; i++) {
         double rgb[3], lab[3], d;
-        c->t->eval(x, target_cos(i), rgb);
+        if (c->cmfs)
+            c->t->film.eval(x, target_cos(i), c->cmfs, rgb);
+        else
+            c->t->eval(x, target_cos(i), rgb);
         lab_space_lab(c->ls, rgb, lab);
         d = ciede2000(c->lab[i], lab);
         sum += d;
@@ -57,6 +62,7 @@ static void ctx_init(fit_ctx *c, const target *t, const lab_space *ls, const dou
 {
     int i;
     c->t = t;
+    c->cmfs = NULL;
     c->ls = ls;
     c->evaluations = 0;
     for (i = 0; i < TARGET_ANGLES; i++)
@@ -141,21 +147,26 @@ void target_fit_curve(const target *t, const lab_space *ls, const double (*truth
     target_fit_from(t, ls, truth, start, out);
 }
 
+static void fit_from(fit_ctx *c, const target *box_of, const double *start, target_fit *out)
+{
+    double lo[TARGET_MAX_X], hi[TARGET_MAX_X];
+    int n = box(box_of, lo, hi);
+    memset(out, 0, sizeof *out);
+    out->t = c->t;
+    memcpy(out->naive, start, (size_t)n * sizeof *start);
+    out->naive_mean = curve_de(c, out->naive, &out->naive_max);
+    memcpy(out->fitted, out->naive, sizeof out->fitted);
+    search(c, n, lo, hi, out->fitted);
+    out->fit_mean = curve_de(c, out->fitted, &out->fit_max);
+    out->evaluations = c->evaluations;
+}
+
 void target_fit_from(const target *t, const lab_space *ls, const double (*truth)[3], const double *start,
                      target_fit *out)
 {
     fit_ctx c;
-    double lo[TARGET_MAX_X], hi[TARGET_MAX_X];
-    int n = box(t, lo, hi);
-    memset(out, 0, sizeof *out);
-    out->t = t;
     ctx_init(&c, t, ls, truth);
-    memcpy(out->naive, start, (size_t)n * sizeof *start);
-    out->naive_mean = curve_de(&c, out->naive, &out->naive_max);
-    memcpy(out->fitted, out->naive, sizeof out->fitted);
-    search(&c, n, lo, hi, out->fitted);
-    out->fit_mean = curve_de(&c, out->fitted, &out->fit_max);
-    out->evaluations = c.evaluations;
+    fit_from(&c, t, start, out);
 }
 
 void target_material_curve(const spectrum *s, const gen_context *g, const material_params *p, int under_policy,
@@ -177,6 +188,33 @@ void target_material_curve(const spectrum *s, const gen_context *g, const materi
     memcpy(a->eta, p->eta_fit, sizeof a->eta);
 }
 
+void target_film_cmfs(const gen_context *g, film_cmfs *k)
+{
+    double lo = 1.0 / (SPEC_LO_NM + CMF_N - 1), hi = 1.0 / SPEC_LO_NM, sum[3] = {0.0, 0.0, 0.0};
+    int j, ch;
+    k->nu0 = lo;
+    k->dnu = (hi - lo) / (FILM_CMF_SAMPLES - 1);
+    for (j = 0; j < FILM_CMF_SAMPLES; j++) {
+        double nu = lo + j * k->dnu, at = 1.0 / nu - SPEC_LO_NM, f, xyz[3];
+        int i = (int)at;
+        i = i < 0 ? 0 : (i > CMF_N - 2 ? CMF_N - 2 : i);
+        f = ref_clamp(at - i, 0.0, 1.0);
+        xyz[0] = g->cm.xbar[i] + (g->cm.xbar[i + 1] - g->cm.xbar[i]) * f;
+        xyz[1] = g->cm.ybar[i] + (g->cm.ybar[i + 1] - g->cm.ybar[i]) * f;
+        xyz[2] = g->cm.zbar[i] + (g->cm.zbar[i + 1] - g->cm.zbar[i]) * f;
+        for (ch = 0; ch < 3; ch++) {
+            /* d lambda = d nu / nu^2; the ends weigh half (trapezoid) */
+            double w = (g->cs.xyz_to_rgb[ch][0] * xyz[0] + g->cs.xyz_to_rgb[ch][1] * xyz[1] +
+                        g->cs.xyz_to_rgb[ch][2] * xyz[2]) / (nu * nu) * (j == 0 || j == FILM_CMF_SAMPLES - 1 ? 0.5 : 1.0);
+            k->w[j][ch] = w;
+            sum[ch] += w;
+        }
+    }
+    for (j = 0; j < FILM_CMF_SAMPLES; j++)
+        for (ch = 0; ch < 3; ch++)
+            k->w[j][ch] /= sum[ch];
+}
+
 /* The film's fit: t's metal with two more numbers, the film's index and
  * thickness, each held in a box of one point, so the search moves the
  * metal's alone. */
@@ -187,10 +225,16 @@ int target_film_fit(const target *t, const spectrum *s, const gen_context *g, co
     target_anchor a;
     target with_film = *t;
     film_stack stack;
+    film_cmfs *cmfs;
+    fit_ctx c;
     lab_space ls;
     int i, ch, m = target_x_count(t);
     if (!t->film.eval || t->param_count + 2 > TARGET_MAX_PARAMS || m + 2 > TARGET_MAX_X)
         return -1;
+    cmfs = malloc(sizeof *cmfs);
+    if (!cmfs)
+        return -1;
+    target_film_cmfs(g, cmfs);
     with_film.param[with_film.param_count].name = t->film.ior;
     with_film.param[with_film.param_count].scalar = 1;
     with_film.param[with_film.param_count].lo = with_film.param[with_film.param_count].hi = n;
@@ -199,7 +243,6 @@ int target_film_fit(const target *t, const spectrum *s, const gen_context *g, co
     with_film.param[with_film.param_count].scalar = 1;
     with_film.param[with_film.param_count].lo = with_film.param[with_film.param_count].hi = d_nm;
     with_film.param_count++;
-    with_film.eval = t->film.eval;
     stack.n1 = p->n1;
     stack.film = NULL;
     stack.film_n = n;
@@ -216,7 +259,9 @@ int target_film_fit(const target *t, const spectrum *s, const gen_context *g, co
     start[m] = n;
     start[m + 1] = d_nm;
     lab_space_init(&ls, &g->cs);
-    target_fit_from(&with_film, &ls, (const double(*)[3])truth, start, out);
-    out->t = t;
+    ctx_init(&c, t, &ls, (const double(*)[3])truth);
+    c.cmfs = cmfs;
+    fit_from(&c, &with_film, start, out);
+    free(cmfs);
     return 0;
 }

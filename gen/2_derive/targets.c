@@ -17,6 +17,9 @@
 #define MX_COLOUR_MAX 2.0
 #define MX_EXPONENT_MIN 1.0
 #define MX_EXPONENT_MAX 10.0
+/* MaterialX's shader generators sum the film's series to this order by
+ * default (GenOptions::hwAiryFresnelIterations). */
+#define MX_AIRY_ITERATIONS 2
 
 static double clamp_to(double x, double lo, double hi) { return ref_clamp(x, lo, hi); }
 
@@ -31,12 +34,39 @@ static double tint_through(double f0, double f82)
 /* glTF's film over its metal: x = baseColorFactor r, g, b, the film's
  * index, its thickness in nm; in air, the result held to [0, 1] as a
  * renderer's stored colour is. */
-static void eval_gltf_film(const double *x, double c, double rgb[3])
+static void eval_gltf_film(const double *x, double c, const film_cmfs *k, double rgb[3])
 {
     int ch;
+    (void)k;
     ref_film_khr_iridescence(1.0, x[3], x[4], c, x, rgb);
     for (ch = 0; ch < 3; ch++)
         rgb[ch] = ref_clamp(rgb[ch], 0.0, 1.0);
+}
+
+/* OpenPBR's film over its metal: x = base_color, specular_color, the film's
+ * index and thickness in nm; MaterialX's film with color90 = 1, exponent 5
+ * (the specification's reference graph, libraries/bxdf/open_pbr_surface.mtlx
+ * of MaterialX: the metal a generalized_schlick_bsdf with color0 =
+ * base_color, color82 = specular_color, under thinfilm_thickness
+ * = thin_film_thickness x 1000 and thinfilm_ior). */
+static void eval_openpbr_film(const double *x, double c, const film_cmfs *k, double rgb[3])
+{
+    const double one[3] = {1.0, 1.0, 1.0};
+    (void)k;
+    ref_film_materialx(x[6], x[7], c, x, x + 3, one, 5.0, MX_AIRY_ITERATIONS, rgb);
+}
+
+/* MaterialX's: x = color0, color82, color90, exponent, index, thickness. */
+static void eval_materialx_film(const double *x, double c, const film_cmfs *k, double rgb[3])
+{
+    (void)k;
+    ref_film_materialx(x[10], x[11], c, x, x + 3, x + 6, x[9], MX_AIRY_ITERATIONS, rgb);
+}
+
+/* Blender's: x = base_color, specular_tint, index, thickness. */
+static void eval_blender_film(const double *x, double c, const film_cmfs *k, double rgb[3])
+{
+    ref_film_blender(x[6], x[7], c, x, x + 3, k, rgb);
 }
 
 static void eval_openpbr(const double *x, double c, double rgb[3])
@@ -140,7 +170,10 @@ const target target_table[TARGETS] = {
      eval_openpbr, naive_f82_tint,
      {"thin_film_weight", "thin_film_thickness", NULL, 1e-3, "thin_film_ior",
       "OpenPBR's thin-film layer over the base: thin_film_thickness in micrometres (specification v1.1.1, "
-      "Parameter reference)", NULL, NULL}},
+      "Parameter reference)",
+      eval_openpbr_film,
+      "the specification's reference graph in MaterialX: its thin film over a generalized_schlick_bsdf with "
+      "color0 = base_color, color82 = specular_color, color90 = 1, exponent 5 (common/reference_film.c)"}},
     [TARGET_materialx] = {TARGET_NAME(materialx), "MaterialX generalized_schlick_bsdf (a metal: reflection only)",
      "Hoffman's generalized Schlick: color0 to color90 with exponent, a dip scaled by color82 at cos theta = 1/7",
      "MaterialX PBR specification, node generalized_schlick_bsdf (documents/Specification/MaterialX.PBRSpec.md)",
@@ -155,7 +188,10 @@ const target target_table[TARGETS] = {
      eval_materialx, naive_materialx,
      {NULL, "thickness", NULL, 1.0, "ior",
       "a thin_film_bsdf as the top of a layer node over the generalized_schlick_bsdf: thickness in nanometres "
-      "(MaterialX PBR specification, node thin_film_bsdf)", NULL, NULL}},
+      "(MaterialX PBR specification, node thin_film_bsdf)",
+      eval_materialx_film,
+      "mx_fresnel_airy of MaterialX's GLSL: Belcour and Barla 2017, the base's index from color0 as a "
+      "dielectric's, half its generalized Schlick inside the film, orders m <= 2, CIE RGB (common/reference_film.c)"}},
     [TARGET_blender] = {TARGET_NAME(blender), "Blender 4.x Principled BSDF, Metallic = 1 (Cycles and EEVEE)",
      "OpenPBR's F82-tint, base colour and tint clamped to [0, 1], result clamped to [0, 1]",
      "Blender source: intern/cycles/kernel/svm/closure.h (Principled metallic), "
@@ -167,7 +203,10 @@ const target target_table[TARGETS] = {
      0, "base_color = F0; specular_tint = F82 / Schlick(F0) at cos theta = 1/7, at most 1",
      eval_blender, naive_f82_tint,
      {NULL, "Thin Film Thickness", NULL, 1.0, "Thin Film IOR",
-      "Principled BSDF (Blender 4.2 and later): Thin Film Thickness in nanometres", NULL, NULL}},
+      "Principled BSDF (Blender 4.2 and later): Thin Film Thickness in nanometres",
+      eval_blender_film,
+      "Cycles: Belcour and Barla 2017 with the exact phases, the F82-tint metal read as Gulbrandsen's r, g for "
+      "its index, orders m <= 3 against the scene's CIE 1931 sensitivities (common/reference_film.c)"}},
     [TARGET_unreal] = {TARGET_NAME(unreal), "Unreal Engine F_AdobeF82(F0, F82, VoH)",
      "Adobe F82 as BRDF.ush writes it: the same curve as OpenPBR's, F82 being the tint at cos theta = 1/7",
      "Unreal Engine Engine/Shaders/Private/BRDF.ush, F_AdobeF82 (source under Epic's licence; which material "

@@ -19,9 +19,10 @@
 
 #include "2_derive/derive.h"
 #include "catalog/targets.h"
+#include "common/reference_film.h"
 
-#define TARGET_MAX_PARAMS 4 /* parameter rows of one target */
-#define TARGET_MAX_X 12     /* numbers: 3 per colour row, 1 per scalar row */
+#define TARGET_MAX_PARAMS 6 /* parameter rows of one target, with a film's index and thickness */
+#define TARGET_MAX_X 14     /* numbers: 3 per colour row, 1 per scalar row */
 #define TARGET_ANGLES GEN_FIT_ANGLES /* theta = 0, 1, ..., 90 degrees */
 
 typedef struct target_param {
@@ -47,10 +48,10 @@ typedef struct target_film {
     const char *ior;           /* the film's index */
     const char *where;         /* the inputs' place and source, in a few words */
     /* The renderer's film over its metal at cosine c: x is the metal's
-     * packed parameters, then the film's index, then its thickness in nm.
-     * NULL where this project has no transcription of the renderer's film
-     * formula. */
-    void (*eval)(const double *x, double c, double rgb[3]);
+     * packed parameters, then the film's index, then its thickness in nm;
+     * k the scene's sensitivities for a renderer that integrates against
+     * them (Blender). Every target with a film input has one. */
+    void (*eval)(const double *x, double c, const film_cmfs *k, double rgb[3]);
     const char *formula;       /* that formula and its source, in a few words */
 } target_film;
 
@@ -110,6 +111,12 @@ void target_fit_curve(const target *t, const lab_space *ls, const double (*truth
  * conversion; out->naive is start. */
 void target_fit_from(const target *t, const lab_space *ls, const double (*truth)[3], const double *start,
                      target_fit *out);
+/* The scene's sensitivities as Blender's film integrates against them
+ * (film_cmfs in common/reference_film.h): g's CIE 1931 functions through
+ * g's XYZ-to-RGB matrix, resampled uniformly in 1 / lambda by linear
+ * interpolation of the 1 nm table. */
+void target_film_cmfs(const gen_context *g, film_cmfs *k);
+
 /* The metal's parameters of t refitted under a film of index n, d_nm thick,
  * through t's own film formula (t->film.eval, not NULL) against the film's
  * spectral truth on the material (each channel held to [0, 1]), started

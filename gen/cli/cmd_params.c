@@ -91,9 +91,9 @@ static void print_target(const target *t, const target_fit *f, const gen_context
 }
 
 /* The renderer's thin-film inputs for a film of index n, d_nm thick, over
- * the metal printed before; then, where this project transcribes the
- * renderer's film formula, the metal's parameters refitted under the film
- * through it (target_film_fit) with the fitted and the naive CIEDE2000. */
+ * the metal printed before; then the metal's parameters refitted under the
+ * film through the renderer's own film formula (target_film_fit) with the
+ * fitted and the naive CIEDE2000. */
 static int print_film(const target *t, double n, double d_nm, const encoded_scene *es)
 {
     const char *names[4];
@@ -106,11 +106,6 @@ static int print_film(const target *t, double n, double d_nm, const encoded_scen
     for (k = 0; k < count; k++) {
         const double v[3] = {values[k], values[k], values[k]};
         row(names[k], v);
-    }
-    if (!t->film.eval) {
-        printf("# the metal is not refitted under the film: this tool has no transcription of %s's film formula\n",
-               t->name);
-        return 0;
     }
     if (target_film_fit(t, es->spectra[0], es->g, &es->params[0], n, d_nm, &fit))
         return cli_oom(WHERE);

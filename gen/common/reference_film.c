@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "common/reference.h"
+
 double complex ref_complex(double re, double im)
 {
     double complex z;
@@ -138,22 +140,29 @@ void ref_film_model(const film_model *m, double c, double d_nm, int clamp, doubl
  * Theory for the Modeling of Varying Iridescence", ACM TOG 36(4), 2017,
  * supplemental material), as the extension's reference implementation
  * quotes them. */
-static void khr_sensitivity(double opd, const double phi[3], double rgb[3])
+static void belcour_sensitivity_xyz(double opd, const double phi[3], double xyz[3])
 {
     static const double amp[3] = {5.4856e-13, 4.4201e-13, 5.2481e-13};
     static const double centre[3] = {1.6810e+06, 1.7953e+06, 2.2084e+06};
     static const double var[3] = {4.3278e+09, 9.3046e+09, 6.6121e+09};
-    static const double to_709[3][3] = {{3.2404542, -1.5371385, -0.4985314},
-                                        {-0.9692660, 1.8760108, 0.0415560},
-                                        {0.0556434, -0.2040259, 1.0572252}};
     const double two_pi = 6.283185307179586;
-    double phase = two_pi * opd * 1e-9, xyz[3];
+    double phase = two_pi * opd * 1e-9;
     int ch;
     for (ch = 0; ch < 3; ch++)
         xyz[ch] = amp[ch] * sqrt(two_pi * var[ch]) * cos(centre[ch] * phase + phi[ch]) * exp(-phase * phase * var[ch]);
     xyz[0] += 9.7470e-14 * sqrt(two_pi * 4.5282e+09) * cos(2.2399e+06 * phase + phi[0]) * exp(-4.5282e+09 * phase * phase);
     for (ch = 0; ch < 3; ch++)
         xyz[ch] /= 1.0685e-7;
+}
+
+static void khr_sensitivity(double opd, const double phi[3], double rgb[3])
+{
+    static const double to_709[3][3] = {{3.2404542, -1.5371385, -0.4985314},
+                                        {-0.9692660, 1.8760108, 0.0415560},
+                                        {0.0556434, -0.2040259, 1.0572252}};
+    double xyz[3];
+    int ch;
+    belcour_sensitivity_xyz(opd, phi, xyz);
     for (ch = 0; ch < 3; ch++)
         rgb[ch] = to_709[ch][0] * xyz[0] + to_709[ch][1] * xyz[1] + to_709[ch][2] * xyz[2];
 }
@@ -258,4 +267,189 @@ void ref_film_belcour_polarised(double outside_ior, double film_ior, double d_nm
         }
         rgb[ch] = sum > 0.0 ? sum : 0.0;
     }
+}
+
+/* Blender's film over its F82-tint metal (reference_film.h), transcribed
+ * from Cycles: intern/cycles/kernel/closure/bsdf_microfacet.h
+ * (microfacet_fresnel, the F82_TINT branch: r = min(F0, 0.999),
+ * g = F82 curve at 1/7, n = mix((1 + sqrt r) / (1 - sqrt r), (1 - r) / (1 + r), g),
+ * k = sqrt((r (n + 1)^2 - (n - 1)^2) / (1 - r))) and
+ * intern/cycles/kernel/closure/bsdf_util.h (fresnel_iridescence,
+ * fresnel_dielectric_polarized, fresnel_conductor_polarized with its F82
+ * branch, iridescence_airy_summation), THINFILM_THICKNESS_CUTOFF 0.1 nm in
+ * intern/cycles/kernel/svm/types.h. The order-m term
+ * C_m 2 (Re phasor^m Re S + Im phasor^m Im S) with Cycles' table S (an FFT,
+ * e^(-i...)) is C_m 2 Re(phasor^m S(m X)) with S as film_cmfs writes it. */
+static double blender_schlick(double f0, double c)
+{
+    double s = ref_clamp(1.0 - c, 0.0, 1.0), s2 = s * s;
+    return f0 + (1.0 - f0) * s2 * s2 * s;
+}
+
+static double blender_f82(double c, double f0, double b)
+{
+    double s = ref_clamp(1.0 - c, 0.0, 1.0), s2 = s * s, s5 = s2 * s2 * s;
+    return ref_clamp(f0 + (1.0 - f0) * s5 - b * c * s5 * s, 0.0, 1.0);
+}
+
+/* fresnel_f82_B: the dip's factor that puts the curve through f82 at 1/7. */
+static double blender_f82_b(double f0, double f82)
+{
+    const double f = 6.0 / 7.0, f5 = f * f * f * f * f;
+    return 7.0 / (f5 * f) * (f0 + (1.0 - f0) * f5 - f82);
+}
+
+static double complex blender_sensitivity(const film_cmfs *k, int ch, double x)
+{
+    const double two_pi = 6.283185307179586;
+    double complex step = cexp(ref_complex(0.0, two_pi * x * k->dnu)), z = cexp(ref_complex(0.0, two_pi * x * k->nu0));
+    double complex sum = 0.0;
+    int j;
+    for (j = 0; j < FILM_CMF_SAMPLES; j++) {
+        sum += k->w[j][ch] * z;
+        z *= step;
+    }
+    return sum;
+}
+
+void ref_film_blender(double film_ior, double d_nm, double c, const double base[3], const double tint[3],
+                      const film_cmfs *k, double rgb[3])
+{
+    double eta = film_ior, eta_cos_t_sq, cos_t, amp[2], r12[2], opd;
+    int ch, pol, m;
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = ref_blender_f82_tint(base[ch], tint[ch], c);
+    if (d_nm <= 0.1) /* THINFILM_THICKNESS_CUTOFF: the bare metal */
+        return;
+    if (d_nm < 1.0) {
+        double t = d_nm; /* smoothstep(0, 1, d) */
+        eta = 1.0 + (film_ior - 1.0) * t * t * (3.0 - 2.0 * t);
+    }
+    eta_cos_t_sq = eta * eta - (1.0 - c * c);
+    if (eta_cos_t_sq <= 0.0) { /* total reflection at the top */
+        rgb[0] = rgb[1] = rgb[2] = 1.0;
+        return;
+    }
+    cos_t = -sqrt(eta_cos_t_sq) / eta;
+    /* amplitudes as fresnel_dielectric_polarized writes them; 0/0 (grazing
+     * light, a film of the outside's index: no interface) taken as 0 */
+    amp[0] = c - eta * cos_t > 0.0 ? (c + eta * cos_t) / (c - eta * cos_t) : 0.0;
+    amp[1] = eta * c - cos_t > 0.0 ? (cos_t + eta * c) / (eta * c - cos_t) : 0.0;
+    r12[0] = amp[0] * amp[0];
+    r12[1] = amp[1] * amp[1];
+    if (r12[0] == 1.0 && r12[1] == 1.0) {
+        rgb[0] = rgb[1] = rgb[2] = 1.0;
+        return;
+    }
+    opd = -2.0 * eta * d_nm * cos_t;
+    for (ch = 0; ch < 3; ch++) {
+        /* fresnel_f82tint_B: B = Schlick(F0, 1/7) 7 / (6/7)^6 (1 - tint) */
+        double f0 = ref_clamp(base[ch], 0.0, 1.0), edge = blender_schlick(f0, 1.0 / 7.0);
+        double b = edge * 7.0 / pow(6.0 / 7.0, 6.0) * (1.0 - ref_clamp(tint[ch], 0.0, 1.0));
+        double g = blender_f82(1.0 / 7.0, f0, b), r = f0 < 0.999 ? f0 : 0.999, sr = sqrt(r);
+        double n = (1.0 + sr) / (1.0 - sr) + ((1.0 - r) / (1.0 + r) - (1.0 + sr) / (1.0 - sr)) * g;
+        double k2 = (r * (n + 1.0) * (n + 1.0) - (n - 1.0) * (n - 1.0)) / (1.0 - r), kk = k2 > 0.0 ? sqrt(k2) : 0.0;
+        double cosi = -cos_t, t1 = n * n - kk * kk - eta * eta * (1.0 - cosi * cosi);
+        double t2 = sqrt(t1 * t1 + 4.0 * n * n * kk * kk);
+        double u2 = 0.5 * (t2 + t1) > 0.0 ? 0.5 * (t2 + t1) : 0.0, v2 = 0.5 * (t2 - t1) > 0.0 ? 0.5 * (t2 - t1) : 0.0;
+        double u = sqrt(u2), v = sqrt(v2);
+        double nn = n / eta, kf2 = (kk / eta) * (kk / eta);
+        double f0_film = ((nn - 1.0) * (nn - 1.0) + kf2) / ((nn + 1.0) * (nn + 1.0) + kf2);
+        double r23 = blender_f82(cosi, f0_film, blender_f82_b(f0_film, g));
+        double complex phasor23[2];
+        double re, im, mag, sum = 0.0;
+        re = -u2 - v2 + (eta * cosi) * (eta * cosi);
+        im = -2.0 * eta * cosi * v;
+        mag = sqrt(re * re + im * im);
+        phasor23[0] = mag == 0.0 ? 1.0 : ref_complex(re / mag, im / mag);
+        re = ((n * n + kk * kk) * cosi) * ((n * n + kk * kk) * cosi) - eta * eta * (u2 + v2);
+        im = 2.0 * eta * cosi * (2.0 * n * kk * u - (n * n - kk * kk) * v);
+        mag = sqrt(re * re + im * im);
+        phasor23[1] = mag == 0.0 ? 1.0 : ref_complex(re / mag, im / mag);
+        for (pol = 0; pol < 2; pol++) {
+            double complex phasor = phasor23[pol] * -(amp[pol] >= 0.0 ? 1.0 : -1.0), power = phasor;
+            double t121 = 1.0 - r12[pol], r123 = r12[pol] * r23, rs, cm, v_pol;
+            if (r123 >= 1.0) {
+                sum += 0.5;
+                continue;
+            }
+            rs = t121 * t121 * r23 / (1.0 - r123);
+            v_pol = rs + r12[pol];
+            cm = rs - t121;
+            for (m = 1; m <= 3; m++) {
+                cm *= sqrt(r123);
+                v_pol += cm * 2.0 * creal(power * blender_sensitivity(k, ch, m * opd));
+                power *= phasor;
+            }
+            sum += 0.5 * v_pol;
+        }
+        rgb[ch] = ref_clamp(sum, 0.0, 1.0);
+    }
+}
+
+/* MaterialX's film over its generalized Schlick metal (reference_film.h),
+ * transcribed from mx_fresnel_airy, mx_fresnel_dielectric_polarized,
+ * mx_fresnel_hoffman_schlick, mx_f0_to_ior (F0 clamped to [0.01, 0.99])
+ * and mx_eval_sensitivity in libraries/pbrlib/genglsl/lib/
+ * mx_microfacet_specular.glsl (MaterialX 1.39), the iteration count
+ * hwAiryFresnelIterations = 2 of source/MaterialXGenShader/GenOptions.h. */
+void ref_film_materialx(double film_ior, double d_nm, double c, const double color0[3], const double color82[3],
+                        const double color90[3], double exponent, int iterations, double rgb[3])
+{
+    /* XYZ to CIE 1931 RGB under illuminant E, as the GLSL's XYZ_TO_RGB (its
+     * mat3 is column-major: these are its rows) */
+    static const double to_rgb[3][3] = {{2.3706743, -0.9000405, -0.4706338},
+                                        {-0.5138850, 1.4253036, 0.0885814},
+                                        {0.0052982, -0.0146949, 1.0093968}};
+    const double pi = 3.141592653589793;
+    double eta2 = film_ior > 1.0 ? film_ior : 1.0, eta3[3], r23[3], phi23[3], big[3] = {0.0, 0.0, 0.0};
+    double c2 = c * c, s2 = 1.0 - c2, t0, t1, t2, t3, t4, r12[2], phi21[2], cos_t, opd;
+    int ch, pol, m;
+    if (d_nm <= 0.0) { /* no film: the bare curve */
+        for (ch = 0; ch < 3; ch++)
+            rgb[ch] = ref_materialx_schlick(color0[ch], color82[ch], color90[ch], exponent, c);
+        return;
+    }
+    cos_t = sqrt(1.0 - s2 / (eta2 * eta2));
+    /* mx_fresnel_dielectric_polarized(c, eta2): (Rp, Rs) */
+    t0 = eta2 * eta2 - s2 > 0.0 ? eta2 * eta2 - s2 : 0.0;
+    t1 = t0 + c2;
+    t2 = 2.0 * sqrt(t0) * c;
+    r12[1] = t1 + t2 > 0.0 ? (t1 - t2) / (t1 + t2) : 0.0;
+    t3 = c2 * t0 + s2 * s2;
+    t4 = t2 * s2;
+    r12[0] = t3 + t4 > 0.0 ? r12[1] * (t3 - t4) / (t3 + t4) : 0.0;
+    phi21[0] = c < cos(atan(eta2)) ? 0.0 : pi;
+    phi21[1] = pi;
+    opd = 2.0 * eta2 * cos_t * d_nm;
+    for (ch = 0; ch < 3; ch++) {
+        double s = sqrt(ref_clamp(color0[ch], 0.01, 0.99));
+        eta3[ch] = (1.0 + s) / (1.0 - s);
+        r23[ch] = 0.5 * ref_materialx_schlick(color0[ch], color82[ch], color90[ch], exponent, cos_t);
+        phi23[ch] = eta3[ch] < eta2 ? pi : 0.0;
+    }
+    for (pol = 0; pol < 2; pol++) {
+        double t121 = 1.0 - r12[pol], cm[3], r123[3];
+        for (ch = 0; ch < 3; ch++) {
+            double rs = t121 * t121 * r23[ch] / (1.0 - r12[pol] * r23[ch]);
+            /* GLSL's max(sqrt(x), 0): sqrt of a negative product is undefined there; 0 here */
+            r123[ch] = r12[pol] * r23[ch] > 0.0 ? sqrt(r12[pol] * r23[ch]) : 0.0;
+            big[ch] += r12[pol] + rs;
+            cm[ch] = rs - t121;
+        }
+        for (m = 1; m <= iterations; m++) {
+            double shift[3], sens[3];
+            for (ch = 0; ch < 3; ch++)
+                shift[ch] = m * (phi23[ch] + phi21[pol]);
+            belcour_sensitivity_xyz(m * opd, shift, sens);
+            for (ch = 0; ch < 3; ch++) {
+                cm[ch] *= r123[ch];
+                big[ch] += cm[ch] * 2.0 * sens[ch];
+            }
+        }
+    }
+    for (ch = 0; ch < 3; ch++)
+        big[ch] *= 0.5;
+    for (ch = 0; ch < 3; ch++)
+        rgb[ch] = ref_clamp(to_rgb[ch][0] * big[0] + to_rgb[ch][1] * big[1] + to_rgb[ch][2] * big[2], 0.0, 1.0);
 }

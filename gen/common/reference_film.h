@@ -126,6 +126,48 @@ void ref_film_khr_iridescence(double outside_ior, double film_ior, double d_nm, 
 void ref_film_belcour_polarised(double outside_ior, double film_ior, double d_nm, double c, const double eta[3],
                                 const double kappa[3], double rgb[3]);
 
+/* A colour space's sensitivities as Blender's Cycles feeds its thin film
+ * (intern/cycles/scene/shader.cpp, compute_thin_film_table;
+ * intern/cycles/doc/precompute/thin_film_table.py): the CIE 1931 functions
+ * mapped to the space's RGB, each channel scaled to unit area, sampled
+ * uniformly in frequency nu = 1 / lambda (per nm) with the Jacobian
+ * d lambda = d nu / nu^2, so that the channel's spectrum of order m is
+ *   S_ch(X) = sum_j w[j][ch] exp(2 pi i X nu_j),  nu_j = nu0 + j dnu,
+ * the Fourier transform Cycles tabulates (512 entries over X = 0-60 um,
+ * read with linear interpolation; here the sum itself). Built by
+ * 2_derive/target_fit.c from the scene's CMFs and colour space. */
+#define FILM_CMF_SAMPLES 1024
+typedef struct film_cmfs {
+    double nu0, dnu;
+    double w[FILM_CMF_SAMPLES][3];
+} film_cmfs;
+
+/* Blender's Principled BSDF with Metallic = 1 under its thin film (Cycles,
+ * Blender 4.2 and later): the F82-tint metal's F0 = base (Base Color) and
+ * F82 = g (the curve at cos theta = 1/7, from Specular Tint) read as
+ * Gulbrandsen's r and g to give the metal an index n + i k; Belcour and
+ * Barla's series per polarisation with the exact phase of each interface
+ * and orders m <= 3 against the sensitivities above, the base's reflectance
+ * inside the film the F82 curve refitted to the index seen from the film;
+ * result held to [0, 1]. No film at or below 0.1 nm (the bare metal); the
+ * film's index faded to the outside's below 1 nm. In air (index 1).
+ * reference_film.c transcribes it from the source files it names. */
+void ref_film_blender(double film_ior, double d_nm, double c, const double base[3], const double tint[3],
+                      const film_cmfs *k, double rgb[3]);
+
+/* MaterialX's thin_film_bsdf over a generalized_schlick_bsdf (and so
+ * OpenPBR's thin film over its metal, whose reference graph is that node
+ * with color90 = 1 and exponent 5): mx_fresnel_airy of
+ * libraries/pbrlib/genglsl/lib/mx_microfacet_specular.glsl. The base's
+ * index from color0 as a dielectric's, its reflectance inside the film half
+ * of Hoffman's curve at the film's angle, phase shifts of 0 or pi, orders
+ * m <= iterations (the generator's default 2) against Belcour and Barla's
+ * Gaussian fits of the XYZ sensitivities, each RGB channel's terms taken as
+ * the same-numbered XYZ component, then CIE RGB (illuminant E) held to
+ * [0, 1]. At d = 0 the bare generalized Schlick curve. In air. */
+void ref_film_materialx(double film_ior, double d_nm, double c, const double color0[3], const double color82[3],
+                        const double color90[3], double exponent, int iterations, double rgb[3]);
+
 /* C99 has no CMPLX: a complex from its parts with the sign of a zero
  * imaginary part kept (it decides csqrt's branch on the negative axis). */
 double complex ref_complex(double re, double im);

@@ -178,17 +178,21 @@ if [ "$got" = "$want" ] && grep -q '^base_color' "$t/fo" && [ "$(grep '^base_col
 else
     echo "FAIL params --for --film: got '$got' $(cat "$t/err")"
 fi
-# under the film, glTF's metal refitted through KHR_materials_iridescence's
-# own formula: the fitted mean never above the naive one; the renderers
-# whose film formula this tool does not transcribe say so
-fit=$(sed -n 's/^# under the film, fitted: mean dE2000 \([0-9.]*\), max [0-9.]*; naive (baseColorFactor = F0): mean \([0-9.]*\), max [0-9.]*$/\1 \2/p' "$t/fg")
-if [ -n "$fit" ] && echo "$fit" | awk '{ exit !($1 <= $2) }' &&
-    grep -Eq '^# under the film, through gltf.s own film formula .*: baseColorFactor [0-9.]+,[0-9.]+,[0-9.]+$' "$t/fg" &&
-    grep -q "^# the metal is not refitted under the film: this tool has no transcription of blender's film formula$" "$t/fb"; then
-    echo "PASS params --for gltf --film: baseColorFactor refitted under the film (fitted and naive mean dE2000: $fit); blender says it is not"
-else
-    echo "FAIL params --for gltf --film: refit '$fit' $(tail -2 "$t/fg")"
-fi
+# under the film, each renderer's metal refitted through the renderer's own
+# film formula: the fitted mean never above the naive one, the max beside it
+for r in fo:openpbr:base_color fg:gltf:baseColorFactor fb:blender:base_color fm:materialx:color0; do
+    file=${r%%:*}
+    rest=${r#*:}
+    target=${rest%%:*}
+    first=${rest#*:}
+    fit=$(sed -n 's/^# under the film, fitted: mean dE2000 \([0-9.]*\), max \([0-9.]*\); naive (.*): mean \([0-9.]*\), max \([0-9.]*\)$/\1 \3 \2 \4/p' "$t/$file")
+    if [ -n "$fit" ] && echo "$fit" | awk '{ exit !($1 <= $2) }' &&
+        grep -Eq "^# under the film, through $target.s own film formula .*: $first [0-9.]+,[0-9.]+,[0-9.]+( |\$)" "$t/$file"; then
+        echo "PASS params --for $target --film: $first refitted under the film through $target's own film formula (fitted, naive mean dE2000; fitted, naive max: $fit)"
+    else
+        echo "FAIL params --for $target --film: refit '$fit' $(tail -2 "$t/$file")"
+    fi
+done
 bad "--film for a target without a film input names those with one" \
     "target unreal has no thin-film input this tool knows \(those that have: openpbr materialx blender gltf\)" \
     --material au --for unreal --film 1.38:300

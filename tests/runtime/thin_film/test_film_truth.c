@@ -10,6 +10,7 @@
 
 #include "harness.h"
 #include "2_derive/derive.h"
+#include "2_derive/targets.h"
 #include "bench/peers.h"
 #include "common/reference.h"
 #include "common/reference_film.h"
@@ -407,6 +408,112 @@ static void test_belcour_peer(void)
           rgb[0] == 1.0 && rgb[1] == 1.0 && rgb[2] == 1.0, "%g %g %g", rgb[0], rgb[1], rgb[2]);
 }
 
+/* The renderers' own films (params --for TARGET --film): Blender's
+ * (ref_film_blender) and MaterialX's, which OpenPBR's reference graph uses
+ * (ref_film_materialx). Each finite and in [0, 1]; at no thickness the
+ * renderer's bare metal (ref_blender_f82_tint below Cycles' 0.1 nm cutoff,
+ * ref_materialx_schlick at d = 0); a film of the outside's index over
+ * Blender's metal the bare metal (its index read from F0 gives back F0, and
+ * the F82 curve seen from index 1 is the metal's own); over MaterialX's,
+ * half the bare curve read as XYZ and taken to CIE RGB, as its R23 = f / 2
+ * makes it. Blender's sensitivities (film_cmfs) against the Fourier sum
+ * taken directly over the CIE table at 1 nm. */
+static void test_renderer_films(const gen_context *g)
+{
+    static const double films[] = {1.0, 1.2, 1.38, 1.8, 2.5}, cosines[] = {0.0, 0.05, 0.3, 0.7, 1.0};
+    static const double bases[][3] = {{0.04, 0.04, 0.04}, {1.0, 0.71, 0.36}, {0.95, 0.64, 0.54}, {0.0, 0.5, 1.0}};
+    static const double tints[][3] = {{1.0, 1.0, 1.0}, {0.9, 1.0, 0.8}, {0.0, 0.5, 1.0}, {1.0, 0.3, 0.6}};
+    static const double to_rgb[3][3] = {{2.3706743, -0.9000405, -0.4706338},
+                                        {-0.5138850, 1.4253036, 0.0885814},
+                                        {0.0052982, -0.0146949, 1.0093968}};
+    film_cmfs *k = malloc(sizeof *k);
+    int bad = 0, f, b, i, ch, d;
+    double worst_bare = 0.0, worst_index1 = 0.0, worst_mx_bare = 0.0, worst_mx_index1 = 0.0, worst_s = 0.0;
+    double rgb[3], one[3] = {1.0, 1.0, 1.0};
+    if (!k) {
+        CHECK("renderer films: memory", 0, "malloc failed");
+        return;
+    }
+    target_film_cmfs(g, k);
+    for (f = 0; f < 5; f++)
+        for (b = 0; b < 4; b++)
+            for (i = 0; i < 5; i++) {
+                double c = cosines[i], bare[3], mx_bare[3];
+                for (ch = 0; ch < 3; ch++) {
+                    bare[ch] = ref_blender_f82_tint(bases[b][ch], tints[b][ch], c);
+                    mx_bare[ch] = ref_materialx_schlick(bases[b][ch], tints[b][ch], 1.0, 5.0, c);
+                }
+                for (d = 0; d <= 1000; d += 13) {
+                    ref_film_blender(films[f], d, c, bases[b], tints[b], k, rgb);
+                    for (ch = 0; ch < 3; ch++)
+                        bad += !(rgb[ch] >= 0.0 && rgb[ch] <= 1.0);
+                    ref_film_materialx(films[f], d, c, bases[b], tints[b], one, 5.0, 2, rgb);
+                    for (ch = 0; ch < 3; ch++)
+                        bad += !(rgb[ch] >= 0.0 && rgb[ch] <= 1.0);
+                }
+                ref_film_blender(films[f], 0.1, c, bases[b], tints[b], k, rgb);
+                for (ch = 0; ch < 3; ch++)
+                    worst_bare = fmax(worst_bare, fabs(rgb[ch] - bare[ch]));
+                ref_film_materialx(films[f], 0.0, c, bases[b], tints[b], one, 5.0, 2, rgb);
+                for (ch = 0; ch < 3; ch++)
+                    worst_mx_bare = fmax(worst_mx_bare, fabs(rgb[ch] - mx_bare[ch]));
+                if (films[f] == 1.0 && c > 0.0) {
+                    double want[3];
+                    for (d = 50; d <= 1000; d += 50) {
+                        if (bases[b][0] < 0.999 && bases[b][1] < 0.999 && bases[b][2] < 0.999) {
+                            ref_film_blender(1.0, d, c, bases[b], tints[b], k, rgb);
+                            for (ch = 0; ch < 3; ch++)
+                                worst_index1 = fmax(worst_index1, fabs(rgb[ch] - bare[ch]));
+                        }
+                        ref_film_materialx(1.0, d, c, bases[b], tints[b], one, 5.0, 2, rgb);
+                        for (ch = 0; ch < 3; ch++) {
+                            want[ch] = 0.5 * (to_rgb[ch][0] * mx_bare[0] + to_rgb[ch][1] * mx_bare[1] +
+                                              to_rgb[ch][2] * mx_bare[2]);
+                            want[ch] = want[ch] < 0.0 ? 0.0 : (want[ch] > 1.0 ? 1.0 : want[ch]);
+                            worst_mx_index1 = fmax(worst_mx_index1, fabs(rgb[ch] - want[ch]));
+                        }
+                    }
+                }
+            }
+    /* S_ch(X) = sum_j w_j exp(2 pi i X nu_j) against the same transform
+     * summed over wavelength: sum_lambda rgb_ch(lambda) exp(2 pi i X /
+     * lambda) / sum_lambda rgb_ch(lambda), the CIE table at 1 nm */
+    for (d = 0; d <= 15000; d += 1500)
+        for (ch = 0; ch < 3; ch++) {
+            double complex fs = 0.0, direct = 0.0;
+            double area = 0.0;
+            int j;
+            for (j = 0; j < FILM_CMF_SAMPLES; j++)
+                fs += k->w[j][ch] * cexp(2.0 * 3.141592653589793 * I * d * (k->nu0 + j * k->dnu));
+            for (j = 0; j < CMF_N; j++) {
+                double lambda = SPEC_LO_NM + j, w = g->cs.xyz_to_rgb[ch][0] * g->cm.xbar[j] +
+                                                    g->cs.xyz_to_rgb[ch][1] * g->cm.ybar[j] +
+                                                    g->cs.xyz_to_rgb[ch][2] * g->cm.zbar[j];
+                direct += w * cexp(2.0 * 3.141592653589793 * I * d / lambda);
+                area += w;
+            }
+            worst_s = fmax(worst_s, cabs(fs - direct / area));
+        }
+    free(k);
+    CHECK("renderer films (Blender's, MaterialX's): in [0, 1] (5 films, 4 metals, 5 cosines, 0-1000 nm)", bad == 0,
+          "%d channels not", bad);
+    NOTE("renderer films: Blender's at 0.1 nm vs its bare metal %.3g, under a film of index 1 %.3g; MaterialX's at "
+         "d = 0 %.3g, index 1 vs half the bare curve in CIE RGB %.3g; Blender's sensitivities vs the 1 nm sum %.3g",
+         worst_bare, worst_index1, worst_mx_bare, worst_mx_index1, worst_s);
+    CHECK("Blender's film: at Cycles' 0.1 nm cutoff, the bare F82-tint metal exactly", worst_bare == 0.0, "%.3g",
+          worst_bare);
+    CHECK("Blender's film: a film of the outside's index is the bare metal within 1e-12", worst_index1 <= 1e-12,
+          "%.3g", worst_index1);
+    CHECK("MaterialX's film: with no film, the bare generalized Schlick curve exactly", worst_mx_bare == 0.0, "%.3g",
+          worst_mx_bare);
+    /* R12 rounds to about 1e-16 there, and its square root enters the
+     * series' orders m > 0 */
+    CHECK("MaterialX's film: a film of the outside's index is half the bare curve taken from XYZ to CIE RGB, "
+          "within 1e-7", worst_mx_index1 <= 1e-7, "%.3g", worst_mx_index1);
+    CHECK("Blender's sensitivities: the frequency-sampled sum within 2e-3 of the 1 nm wavelength sum (0-15 um)",
+          worst_s <= 2e-3, "%.3g", worst_s);
+}
+
 int main(void)
 {
     gen_context *g = malloc(sizeof *g);
@@ -431,6 +538,7 @@ int main(void)
     test_grazing_and_extremes(g, s);
     test_khr_peer();
     test_belcour_peer();
+    test_renderer_films(g);
     for (i = 0; i < N_SUB; i++)
         free(s[i]);
     free(dispersive);
