@@ -26,9 +26,12 @@
 
 typedef struct fit_ctx {
     const target *t;
-    const film_cmfs *cmfs; /* not NULL: the curve is t's film formula */
+    const film_cmfs *cmfs; /* not NULL: the curves are t's film formula */
     const lab_space *ls;
-    double lab[TARGET_ANGLES][3];
+    int curves;            /* 1, or a film's thicknesses */
+    int d_at;              /* where x holds the film's thickness */
+    double d[TARGET_FILM_CURVES];
+    double lab[TARGET_FILM_CURVES][TARGET_ANGLES][3];
     long evaluations;
 } fit_ctx;
 
@@ -37,25 +40,32 @@ double target_cos(int i)
     return i >= TARGET_ANGLES - 1 ? 0.0 : cos(i * (3.14159265358979323846 / 180.0));
 }
 
+/* Mean (and max) CIEDE2000 over every curve's angles: a film's curves are
+ * x's with the thickness set to each of c->d. */
 static double curve_de(fit_ctx *c, const double *x, double *max)
 {
-    double sum = 0.0, worst = 0.0;
-    int i;
+    double sum = 0.0, worst = 0.0, xd[TARGET_MAX_X];
+    int i, k;
     c->evaluations++;
-    for (i = 0; i < TARGET_ANGLES; i++) {
-        double rgb[3], lab[3], d;
+    memcpy(xd, x, sizeof xd);
+    for (k = 0; k < c->curves; k++) {
         if (c->cmfs)
-            c->t->film.eval(x, target_cos(i), c->cmfs, rgb);
-        else
-            c->t->eval(x, target_cos(i), rgb);
-        lab_space_lab(c->ls, rgb, lab);
-        d = ciede2000(c->lab[i], lab);
-        sum += d;
-        worst = d > worst ? d : worst;
+            xd[c->d_at] = c->d[k];
+        for (i = 0; i < TARGET_ANGLES; i++) {
+            double rgb[3], lab[3], d;
+            if (c->cmfs)
+                c->t->film.eval(xd, target_cos(i), c->cmfs, rgb);
+            else
+                c->t->eval(x, target_cos(i), rgb);
+            lab_space_lab(c->ls, rgb, lab);
+            d = ciede2000(c->lab[k][i], lab);
+            sum += d;
+            worst = d > worst ? d : worst;
+        }
     }
     if (max)
         *max = worst;
-    return sum / TARGET_ANGLES;
+    return sum / (c->curves * TARGET_ANGLES);
 }
 
 static void ctx_init(fit_ctx *c, const target *t, const lab_space *ls, const double (*truth)[3])
@@ -64,9 +74,11 @@ static void ctx_init(fit_ctx *c, const target *t, const lab_space *ls, const dou
     c->t = t;
     c->cmfs = NULL;
     c->ls = ls;
+    c->curves = 1;
+    c->d_at = 0;
     c->evaluations = 0;
-    for (i = 0; i < TARGET_ANGLES; i++)
-        lab_space_lab(ls, truth[i], c->lab[i]);
+    for (i = 0; truth && i < TARGET_ANGLES; i++)
+        lab_space_lab(ls, truth[i], c->lab[0][i]);
 }
 
 void target_curve_de(const target *t, const lab_space *ls, const double (*truth)[3], const double *x, double *mean,
@@ -216,24 +228,24 @@ void target_film_cmfs(const gen_context *g, film_cmfs *k)
 }
 
 /* The film's fit: t's metal with two more numbers, the film's index and
- * thickness, each held in a box of one point, so the search moves the
- * metal's alone. */
+ * thickness, the index held in a box of one point and the thickness set to
+ * each curve's, so the search moves the metal's alone. */
 int target_film_fit(const target *t, const spectrum *s, const gen_context *g, const material_params *p, double n,
-                    double d_nm, target_fit *out)
+                    double d_lo, double d_hi, target_fit *out)
 {
     double truth[TARGET_ANGLES][3], start[TARGET_MAX_X] = {0};
     target_anchor a;
     target with_film = *t;
     film_stack stack;
-    film_cmfs *cmfs;
-    fit_ctx c;
+    fit_ctx *c = malloc(sizeof *c);
+    film_cmfs *cmfs = malloc(sizeof *cmfs);
     lab_space ls;
-    int i, ch, m = target_x_count(t);
-    if (!t->film.eval || t->param_count + 2 > TARGET_MAX_PARAMS || m + 2 > TARGET_MAX_X)
+    int i, k, ch, m = target_x_count(t);
+    if (!c || !cmfs || !t->film.eval || t->param_count + 2 > TARGET_MAX_PARAMS || m + 2 > TARGET_MAX_X) {
+        free(c);
+        free(cmfs);
         return -1;
-    cmfs = malloc(sizeof *cmfs);
-    if (!cmfs)
-        return -1;
+    }
     target_film_cmfs(g, cmfs);
     with_film.param[with_film.param_count].name = t->film.ior;
     with_film.param[with_film.param_count].scalar = 1;
@@ -241,27 +253,34 @@ int target_film_fit(const target *t, const spectrum *s, const gen_context *g, co
     with_film.param_count++;
     with_film.param[with_film.param_count].name = t->film.thickness;
     with_film.param[with_film.param_count].scalar = 1;
-    with_film.param[with_film.param_count].lo = with_film.param[with_film.param_count].hi = d_nm;
+    with_film.param[with_film.param_count].lo = with_film.param[with_film.param_count].hi = d_hi;
     with_film.param_count++;
+    lab_space_init(&ls, &g->cs);
+    ctx_init(c, t, &ls, NULL);
+    c->cmfs = cmfs;
+    c->d_at = m + 1;
+    c->curves = d_hi > d_lo ? TARGET_FILM_CURVES : 1;
     stack.n1 = p->n1;
     stack.film = NULL;
     stack.film_n = n;
     stack.substrate = s;
-    for (i = 0; i < TARGET_ANGLES; i++) {
-        film_truth(&stack, &g->cm, &g->cs, target_cos(i), d_nm, truth[i]);
-        for (ch = 0; ch < 3; ch++)
-            truth[i][ch] = ref_clamp(truth[i][ch], 0.0, 1.0);
+    for (k = 0; k < c->curves; k++) {
+        c->d[k] = c->curves > 1 ? d_lo + (d_hi - d_lo) * k / (TARGET_FILM_CURVES - 1) : d_lo;
+        for (i = 0; i < TARGET_ANGLES; i++) {
+            film_truth(&stack, &g->cm, &g->cs, target_cos(i), c->d[k], truth[i]);
+            for (ch = 0; ch < 3; ch++)
+                truth[i][ch] = ref_clamp(truth[i][ch], 0.0, 1.0);
+            lab_space_lab(&ls, truth[i], c->lab[k][i]);
+        }
     }
     memcpy(a.f0, p->f0, sizeof a.f0);
     memcpy(a.f82, p->f82, sizeof a.f82);
     memcpy(a.eta, p->eta_fit, sizeof a.eta);
     t->naive(&a, start);
     start[m] = n;
-    start[m + 1] = d_nm;
-    lab_space_init(&ls, &g->cs);
-    ctx_init(&c, t, &ls, (const double(*)[3])truth);
-    c.cmfs = cmfs;
-    fit_from(&c, &with_film, start, out);
+    start[m + 1] = d_hi;
+    fit_from(c, &with_film, start, out);
+    free(c);
     free(cmfs);
     return 0;
 }

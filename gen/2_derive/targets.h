@@ -117,13 +117,17 @@ void target_fit_from(const target *t, const lab_space *ls, const double (*truth)
  * interpolation of the 1 nm table. */
 void target_film_cmfs(const gen_context *g, film_cmfs *k);
 
-/* The metal's parameters of t refitted under a film of index n, d_nm thick,
- * through t's own film formula (t->film.eval, not NULL) against the film's
- * spectral truth on the material (each channel held to [0, 1]), started
- * from t's naive conversion; out->fitted and out->naive hold the metal's
- * numbers, then n and d_nm. 0, or -1 (no memory). */
+/* The metal's parameters of t refitted under a film of index n through t's
+ * own film formula (t->film.eval, not NULL) against the film's spectral
+ * truth on the material (each channel held to [0, 1]), started from t's
+ * naive conversion: for one thickness d_lo = d_hi nm, or for every
+ * thickness of the range at once (the mean over TARGET_FILM_CURVES
+ * thicknesses evenly spaced from d_lo to d_hi, and the max over them).
+ * out->fitted and out->naive hold the metal's numbers, then n and d_hi.
+ * 0, or -1 (no memory). */
+#define TARGET_FILM_CURVES 7
 int target_film_fit(const target *t, const spectrum *s, const gen_context *g, const material_params *p, double n,
-                    double d_nm, target_fit *out);
+                    double d_lo, double d_hi, target_fit *out);
 /* One material's truth and anchors: under the gamut policy (under_policy 1:
  * what the generator's other parameters are derived from) or the unclipped
  * spectral ground truth (0). */

@@ -23,6 +23,7 @@ typedef struct emit_input {
     const encoded_material *enc;   /* the same, encoded: every constant the back ends write */
     const encoded_film *films;     /* the same: each material's film; NULL for a scene without thin-film */
     const target_fit *fits;        /* [material * sc->target_count + target]: the targets key's fits */
+    const target_fit *film_fits;   /* the same under the film (encoded_scene.h); t NULL where none */
 } emit_input;
 
 /* The back ends of `fresnel gen` (emit_backends.c): the C header, GLSL for

@@ -49,6 +49,7 @@ int emit_load(const char *manifest, const char *dir_option, const emit_backend *
     l->in.enc = l->es.enc;
     l->in.films = l->es.films;
     l->in.fits = l->es.fits;
+    l->in.film_fits = l->es.film_fits;
 done:
     if (status)
         emit_loaded_free(l);

@@ -12,7 +12,9 @@
 
 /* The renderer's thin-film inputs over the metal (fresnel params --for
  * TARGET --film N:D), the thickness as the scene's range (one value when
- * the range is one thickness; glTF's minimum and maximum are the range). */
+ * the range is one thickness; glTF's minimum and maximum are the range).
+ * Under them, the metal refitted through the renderer's film formula over
+ * the range (target_film_fit), as params prints it for one thickness. */
 static void film_rows(FILE *f, const target *t, double n, double d_lo, double d_hi)
 {
     const char *names[4];
@@ -49,8 +51,25 @@ static void targets_comment(FILE *f, const emit_input *in, int material)
         fprintf(f, " *   %-12s dE2000 %.4f / %.4f (naive conversion %.4f / %.4f)\n", "", fit->fit_mean, fit->fit_max,
                 fit->naive_mean, fit->naive_max);
         if (in->films && t->film.thickness) {
+            const target_fit *ff = in->film_fits ? &in->film_fits[material * sc->target_count + i] : NULL;
             fprintf(f, " *   %-12s and the thin film over that metal:\n", "");
             film_rows(f, t, in->films[material].n_film, sc->film_d_lo, sc->film_d_hi);
+            if (ff && ff->t) {
+                fprintf(f, " *   %-12s under that film, the metal refitted through %s's own film formula:\n", "",
+                        t->name);
+                for (k = n = 0; k < t->param_count; k++) {
+                    fprintf(f, " *   %-12s %-16s", "", t->param[k].name);
+                    for (ch = 0; ch < 3; ch++)
+                        fprintf(f, " %.6f", ff->fitted[t->param[k].scalar ? n : n + ch]);
+                    fputc('\n', f);
+                    n += t->param[k].scalar ? 1 : 3;
+                }
+                fprintf(f, " *   %-12s dE2000 %.4f / %.4f against the film's truth%s (naive conversion %.4f / "
+                           "%.4f)\n",
+                        "", ff->fit_mean, ff->fit_max,
+                        sc->film_d_hi > sc->film_d_lo ? " over the thickness range" : "", ff->naive_mean,
+                        ff->naive_max);
+            }
         } else if (in->films) {
             fprintf(f, " *   %-12s (no thin-film input known: the film is not carried)\n", "");
         }

@@ -107,7 +107,7 @@ static int print_film(const target *t, double n, double d_nm, const encoded_scen
         const double v[3] = {values[k], values[k], values[k]};
         row(names[k], v);
     }
-    if (target_film_fit(t, es->spectra[0], es->g, &es->params[0], n, d_nm, &fit))
+    if (target_film_fit(t, es->spectra[0], es->g, &es->params[0], n, d_nm, d_nm, &fit))
         return cli_oom(WHERE);
     printf("# under the film, through %s's own film formula (%s), the metal's parameters refitted against the "
            "film's spectral truth on this material (theta 0-90 deg in 1 deg steps, held to [0, 1]):",

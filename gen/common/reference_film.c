@@ -299,23 +299,26 @@ static double blender_f82_b(double f0, double f82)
     return 7.0 / (f5 * f) * (f0 + (1.0 - f0) * f5 - f82);
 }
 
-static double complex blender_sensitivity(const film_cmfs *k, int ch, double x)
+/* S_ch(x) of the three channels in one pass (film_cmfs). */
+static void blender_sensitivity(const film_cmfs *k, double x, double complex s[3])
 {
     const double two_pi = 6.283185307179586;
     double complex step = cexp(ref_complex(0.0, two_pi * x * k->dnu)), z = cexp(ref_complex(0.0, two_pi * x * k->nu0));
-    double complex sum = 0.0;
     int j;
+    s[0] = s[1] = s[2] = 0.0;
     for (j = 0; j < FILM_CMF_SAMPLES; j++) {
-        sum += k->w[j][ch] * z;
+        s[0] += k->w[j][0] * z;
+        s[1] += k->w[j][1] * z;
+        s[2] += k->w[j][2] * z;
         z *= step;
     }
-    return sum;
 }
 
 void ref_film_blender(double film_ior, double d_nm, double c, const double base[3], const double tint[3],
                       const film_cmfs *k, double rgb[3])
 {
     double eta = film_ior, eta_cos_t_sq, cos_t, amp[2], r12[2], opd;
+    double complex sens[3][3];
     int ch, pol, m;
     for (ch = 0; ch < 3; ch++)
         rgb[ch] = ref_blender_f82_tint(base[ch], tint[ch], c);
@@ -342,6 +345,8 @@ void ref_film_blender(double film_ior, double d_nm, double c, const double base[
         return;
     }
     opd = -2.0 * eta * d_nm * cos_t;
+    for (m = 1; m <= 3; m++)
+        blender_sensitivity(k, m * opd, sens[m - 1]);
     for (ch = 0; ch < 3; ch++) {
         /* fresnel_f82tint_B: B = Schlick(F0, 1/7) 7 / (6/7)^6 (1 - tint) */
         double f0 = ref_clamp(base[ch], 0.0, 1.0), edge = blender_schlick(f0, 1.0 / 7.0);
@@ -378,7 +383,7 @@ void ref_film_blender(double film_ior, double d_nm, double c, const double base[
             cm = rs - t121;
             for (m = 1; m <= 3; m++) {
                 cm *= sqrt(r123);
-                v_pol += cm * 2.0 * creal(power * blender_sensitivity(k, ch, m * opd));
+                v_pol += cm * 2.0 * creal(power * sens[m - 1][ch]);
                 power *= phasor;
             }
             sum += 0.5 * v_pol;

@@ -136,6 +136,7 @@ void encoded_scene_free(encoded_scene *es)
     free(es->enc);
     free(es->films);
     free(es->fits);
+    free(es->film_fits);
     free(es->g);
     memset(es, 0, sizeof *es);
 }
@@ -244,8 +245,15 @@ static int derive_all(encoded_scene *es)
             continue;
         lab_space_init(&ls, &es->g->cs);
         target_material_curve(es->spectra[i], es->g, &es->params[i], 1, truth, &a);
-        for (k = 0; k < sc->target_count; k++)
-            target_fit_curve(&target_table[sc->targets[k]], &ls, (const double(*)[3])truth, &a, &es->fits[i * sc->target_count + k]);
+        for (k = 0; k < sc->target_count; k++) {
+            const target *t = &target_table[sc->targets[k]];
+            target_fit_curve(t, &ls, (const double(*)[3])truth, &a, &es->fits[i * sc->target_count + k]);
+            /* under the scene's film, through the renderer's own film */
+            if (es->params[i].film_n > 0.0 && t->film.eval &&
+                target_film_fit(t, es->spectra[i], es->g, &es->params[i], es->params[i].film_n, sc->film_d_lo,
+                                sc->film_d_hi, &es->film_fits[i * sc->target_count + k]))
+                return cli_oom("encode scene");
+        }
     }
     return 0;
 }
@@ -306,7 +314,8 @@ int encode_scene(const scene *sc, const char *manifest, const char *where, const
     out->enc = calloc(n ? n : 1, sizeof *out->enc);
     out->models = calloc(n * (size_t)sc->model_count + 1, sizeof *out->models);
     out->fits = calloc(n * (size_t)sc->target_count + 1, sizeof *out->fits);
-    if (!out->g || !out->params || !out->spectra || !out->enc || !out->models || !out->fits) {
+    out->film_fits = calloc(n * (size_t)sc->target_count + 1, sizeof *out->film_fits);
+    if (!out->g || !out->params || !out->spectra || !out->enc || !out->models || !out->fits || !out->film_fits) {
         status = cli_oom("encode scene");
         goto done;
     }

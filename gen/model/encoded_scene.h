@@ -41,6 +41,8 @@ typedef struct encoded_scene {
     encoded_film *films;       /* [material]; NULL for a scene without the thin-film model */
     scene_model *models;       /* [material * sc->model_count + model] */
     target_fit *fits;          /* [material * sc->target_count + target]: the targets key's renderers */
+    target_fit *film_fits;     /* the same under the scene's film, through each renderer's own film formula
+                                * (t NULL: no film, or no film input) */
 } encoded_scene;
 
 /* Every stage for every material of sc (which must outlive out), with the

@@ -208,3 +208,16 @@ if "$F" gen "$t/f.scene" -o "$t/f.h" 2>"$t/err" &&
 else
     echo "FAIL gen targets key, film scene: $(grep -A3 'thin film over' "$t/f.h" | head -8) $(cat "$t/err")"
 fi
+# under the film, the header's refit over the scene's range: one per
+# renderer with a film input, the fitted mean never above the naive one;
+# for a range of one thickness, the values params --for --film prints
+fits=$(sed -n "s/^ \*  *dE2000 \([0-9.]*\) \/ [0-9.]* against the film's truth over the thickness range (naive conversion \([0-9.]*\) \/ [0-9.]*)$/\1 \2/p" "$t/f.h")
+printf 'materials = au\nmodels = thin-film\nfilm = 1.38\nfilm_thickness = 300 300\ntargets = blender\n' >"$t/f1.scene"
+one=$("$F" gen "$t/f1.scene" -o "$t/f1.h" 2>>"$t/err" && awk '/under that film/ { on = 1; next } on && $2 == "base_color" { print $3, $4, $5; exit }' "$t/f1.h")
+want=$(sed -n 's/^# under the film, through .*: base_color \([0-9.]*\),\([0-9.]*\),\([0-9.]*\) .*/\1 \2 \3/p' "$t/fb" | awk '{ printf "%.6f %.6f %.6f", $1, $2, $3 }')
+if [ "$(echo "$fits" | grep -c .)" = 2 ] && echo "$fits" | awk '{ if (!($1 <= $2)) bad = 1 } END { exit bad }' &&
+    [ -n "$one" ] && [ "$one" = "$want" ]; then
+    echo "PASS gen targets key, film scene: the metal refitted under the film over the thickness range for openpbr and gltf (fitted, naive mean: $(echo "$fits" | tr '\n' ';')); one thickness: params --film's values ($one)"
+else
+    echo "FAIL gen targets key, film scene: refits '$fits', one thickness '$one' against params '$want' $(cat "$t/err")"
+fi
