@@ -362,6 +362,59 @@ fresnel_rgb_q15 fresnel_lut_avg_u16_q15_rgb(const uint16_t *table, int n);
 fresnel_rgb_q15 fresnel_lut_cubic_avg_u16_q15_rgb(const uint16_t *table, int n);
 fresnel_rgb_q15 fresnel_lut_linear_avg_u16_q15_rgb(const uint16_t *table, int n);
 
+/* ------------------------------------------------------------------ batches */
+
+/* A scanline of one material at a time: out[i] is the scalar call's result
+ * for cosine c[i], i < n, bit for bit (so within the same bound):
+ *   fresnel_schlick_q15_batch(f0, c, out, n)            fresnel_schlick_q15
+ *   fresnel_schlick_gen_q15_batch(f0, f90, p, c, out, n) fresnel_schlick_gen_q15
+ *   fresnel_f82_q15_batch(f0, f82, c, out, n)            fresnel_f82_q15
+ *   fresnel_lut_u16_q15_batch(table, nodes, c, out, n)   fresnel_lut_u16_q15
+ *   (and _linear_, _cubic_), and the _rgb_batch forms, one fresnel_rgb_q15
+ *   per cosine as the _rgb call returns it.
+ * c: Q15 cosine codes, as a scanline's N.V holds them (0..65535; a code
+ * above one reads as one, as the scalar calls' clamp reads it). out must
+ * not overlap c; n <= 0 writes nothing; nothing at or past n is read or
+ * written. Reentrant, no state, no allocation.
+ * The body is chosen at compile time from the target:
+ *   Helium (__ARM_FEATURE_MVE: Cortex-M55, M85): Schlick, generalized
+ *     Schlick at p = 5, F82 and their _rgb forms four cosines per step in
+ *     32-bit lanes, the last step predicated (no scalar tail);
+ *   a 32 x 32 -> 64-bit multiply in one instruction (Arm but Armv6-M and
+ *     Armv8-M Baseline, so Cortex-M3, M4, M7, M33; RISC-V with M; x86-64;
+ *     AArch64): each Q30 product one multiply, where the scalar calls take
+ *     four of 15-bit halves (they keep to 32-bit products for the
+ *     Cortex-M0);
+ *   otherwise (Cortex-M0, M0+, M23) the scalar calls' arithmetic, with
+ *     their per-call clamps and set-up done once.
+ * The Armv7-E DSP extension's 16-bit lane instructions are not used: the
+ * Q30 intermediates that keep the bound need 32-bit lanes, which is what
+ * the long multiply gives. Every body takes the same exact floors, so all
+ * agree bit for bit: tests/runtime/q15/test_q15_batch.c checks every cos
+ * code on the host against the scalar calls, `make cross-test` the
+ * Cortex-M0, M4F and M55 under qemu against the host. The LUTs'
+ * position (a square root from tables) and the power of p != 5 are the
+ * scalar calls' in every body.
+ * Cost per cosine: `make cross-count` (rows ending in "batch", against the
+ * scalar call's rows; ports/README.md). */
+void fresnel_schlick_q15_batch(int32_t f0, const fresnel_q15 *c, fresnel_q15 *out, int n);
+void fresnel_schlick_q15_rgb_batch(fresnel_rgb_q15 f0, const fresnel_q15 *c, fresnel_rgb_q15 *out, int n);
+void fresnel_schlick_gen_q15_batch(int32_t f0, int32_t f90, fresnel_q16 p, const fresnel_q15 *c, fresnel_q15 *out,
+                                   int n);
+void fresnel_schlick_gen_q15_rgb_batch(fresnel_rgb_q15 f0, fresnel_rgb_q15 f90, fresnel_q16 p, const fresnel_q15 *c,
+                                       fresnel_rgb_q15 *out, int n);
+void fresnel_f82_q15_batch(int32_t f0, int32_t f82, const fresnel_q15 *c, fresnel_q15 *out, int n);
+void fresnel_f82_q15_rgb_batch(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82, const fresnel_q15 *c, fresnel_rgb_q15 *out,
+                               int n);
+void fresnel_lut_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n);
+void fresnel_lut_linear_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n);
+void fresnel_lut_cubic_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n);
+void fresnel_lut_u16_q15_rgb_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_rgb_q15 *out, int n);
+void fresnel_lut_linear_u16_q15_rgb_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_rgb_q15 *out,
+                                          int n);
+void fresnel_lut_cubic_u16_q15_rgb_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_rgb_q15 *out,
+                                         int n);
+
 /* ------------------------------------------------------------- math_q15.c */
 
 /* floor(sqrt(x)) for every uint32_t x. Exact.

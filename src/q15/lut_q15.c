@@ -405,6 +405,78 @@ fresnel_rgb_q15 fresnel_lut_linear_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const
                 fresnel_i_lut_s8(f0.b, table, n, 2, frac, x, c));
 }
 
+/* ---- batches (fresnel_q15.h, BATCHES): the scalar calls' position,
+ * interpolation and clamp per cosine, n's clamp once. */
+void fresnel_lut_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n)
+{
+    int i, k = fresnel_i_qlut_n(nodes);
+    for (i = 0; i < n; i++)
+        out[i] = fresnel_i_lut_u16(table, k, 0, fresnel_i_sqrt_q30(fresnel_i_batch_c(c[i])));
+}
+
+void fresnel_lut_linear_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n)
+{
+    int i, k = fresnel_i_qlut_n(nodes);
+    for (i = 0; i < n; i++)
+        out[i] = fresnel_i_lut_u16(table, k, 0, fresnel_i_batch_c(c[i]) << 15);
+}
+
+void fresnel_lut_cubic_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n)
+{
+    int i, k = fresnel_i_qlut_n(nodes);
+    for (i = 0; i < n; i++) {
+        fresnel_i_pos p;
+        if (k == 0) {
+            out[i] = 0;
+            continue;
+        }
+        p = fresnel_i_position(fresnel_i_sqrt_q30(fresnel_i_batch_c(c[i])), k);
+        out[i] = fresnel_i_cubic_u16(table, k, 0, p, fresnel_i_cubic_weights(p.t));
+    }
+}
+
+void fresnel_lut_u16_q15_rgb_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_rgb_q15 *out, int n)
+{
+    int i, k = fresnel_i_qlut_n(nodes);
+    for (i = 0; i < n; i++) {
+        uint32_t x = fresnel_i_sqrt_q30(fresnel_i_batch_c(c[i]));
+        out[i].r = fresnel_i_lut_u16(table, k, 0, x);
+        out[i].g = fresnel_i_lut_u16(table, k, 1, x);
+        out[i].b = fresnel_i_lut_u16(table, k, 2, x);
+    }
+}
+
+void fresnel_lut_linear_u16_q15_rgb_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_rgb_q15 *out,
+                                          int n)
+{
+    int i, k = fresnel_i_qlut_n(nodes);
+    for (i = 0; i < n; i++) {
+        uint32_t x = fresnel_i_batch_c(c[i]) << 15;
+        out[i].r = fresnel_i_lut_u16(table, k, 0, x);
+        out[i].g = fresnel_i_lut_u16(table, k, 1, x);
+        out[i].b = fresnel_i_lut_u16(table, k, 2, x);
+    }
+}
+
+void fresnel_lut_cubic_u16_q15_rgb_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_rgb_q15 *out,
+                                         int n)
+{
+    int i, k = fresnel_i_qlut_n(nodes);
+    for (i = 0; i < n; i++) {
+        fresnel_i_pos p;
+        fresnel_i_cubic_w w;
+        if (k == 0) {
+            out[i].r = out[i].g = out[i].b = 0;
+            continue;
+        }
+        p = fresnel_i_position(fresnel_i_sqrt_q30(fresnel_i_batch_c(c[i])), k);
+        w = fresnel_i_cubic_weights(p.t);
+        out[i].r = fresnel_i_cubic_u16(table, k, 0, p, w);
+        out[i].g = fresnel_i_cubic_u16(table, k, 1, p, w);
+        out[i].b = fresnel_i_cubic_u16(table, k, 2, p, w);
+    }
+}
+
 #else
 typedef int fresnel_i_lut_q15_disabled;
 #endif

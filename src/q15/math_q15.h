@@ -85,6 +85,54 @@ static inline uint32_t fresnel_i_pow5_q30(uint32_t x)
     return fresnel_i_mul_q30_q15(x4, x);
 }
 
+/* ---- the batches' bodies (fresnel_q15.h, BATCHES). Each computes the
+ * exact floors above, so all give the scalar calls' results bit for bit.
+ *
+ * FRESNEL_I_LONG_MUL: the target multiplies 32 x 32 -> 64 bits in one
+ * instruction (every Arm core but Armv6-M and Armv8-M Baseline: UMULL;
+ * RISC-V with M: MUL and MULHU; x86-64, AArch64), so a product floored by
+ * 2^k is one multiply and a shift instead of four multiplies of 15-bit
+ * halves. Armv6-M (Cortex-M0, M0+) and Armv8-M Baseline (M23) would call a
+ * library routine for it: there the batches use the halves. */
+#ifndef FRESNEL_I_LONG_MUL
+#if defined(__ARM_ARCH_6M__) || defined(__ARM_ARCH_8M_BASE__)
+#define FRESNEL_I_LONG_MUL 0
+#else
+#define FRESNEL_I_LONG_MUL 1
+#endif
+#endif
+
+#if FRESNEL_I_LONG_MUL
+/* floor(a b / 2^30), a < 2^31, b <= 2^30: fresnel_i_mul_q30's value */
+static inline uint32_t fresnel_i_mulw_q30(uint32_t a, uint32_t b) { return (uint32_t)(((uint64_t)a * b) >> 30); }
+/* floor(a b / 2^15), a < 2^31, b <= 2^15: fresnel_i_mul_q30_q15's value */
+static inline uint32_t fresnel_i_mulw_q15(uint32_t a, uint32_t b) { return (uint32_t)(((uint64_t)a * b) >> 15); }
+#else
+#define fresnel_i_mulw_q30 fresnel_i_mul_q30
+#define fresnel_i_mulw_q15 fresnel_i_mul_q30_q15
+#endif
+
+/* x^5 in Q30 (fresnel_i_pow5_q30's value) with the batches' products. */
+static inline uint32_t fresnel_i_batch_pow5_q30(uint32_t x)
+{
+    uint32_t x2 = x * x;
+    return fresnel_i_mulw_q15(fresnel_i_mulw_q30(x2, x2), x);
+}
+
+/* A cosine code of a batch's input as fresnel_i_q15_arg reads it: codes
+ * above one are one. */
+static inline uint32_t fresnel_i_batch_c(uint32_t c) { return c > FRESNEL_I_ONE_Q15 ? FRESNEL_I_ONE_Q15 : c; }
+
+/* Helium (Armv8.1-M MVE): four 32-bit lanes, floor(a b / 2^k) as the high
+ * and low words of the 64-bit product joined by a shift-and-insert. */
+#if defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 1) && !defined(FRESNEL_I_NO_MVE)
+#include <arm_mve.h>
+#define FRESNEL_I_MVE 1
+#define FRESNEL_I_MVE_MULSHR(a, b, k) vsliq_n_u32(vshrq_n_u32(vmulq_u32((a), (b)), (k)), vmulhq_u32((a), (b)), 32 - (k))
+#else
+#define FRESNEL_I_MVE 0
+#endif
+
 /* Round a Q30 value in [0, 2^30] to Q15 (half up). R: v + 2^14 < 2^31. */
 static inline fresnel_q15 fresnel_i_q30_to_q15(uint32_t v)
 {

@@ -157,6 +157,110 @@ fresnel_q15 fresnel_f0_in_medium_q15(int32_t f0_in, fresnel_q16 eta_e)
     return fresnel_i_q30_to_q15(fresnel_i_qf_to_q30_unit(fresnel_i_qf_mul(q, q)));
 }
 
+/* ---- batches (fresnel_q15.h, BATCHES): F0 + (F90 - F0) x^5, x = 1 - c,
+ * with F90 = one for Schlick; w = |F90 - F0|, added when F90 >= F0. The
+ * scalar calls' arithmetic: x^5 and the product floored exactly, rounded
+ * once (fresnel_i_q30_to_q15). */
+#if FRESNEL_I_MVE
+/* Helium: four cosines per step, the last step predicated to the n - i left. */
+static void fresnel_i_mix5_mve(uint32_t f0, uint32_t w, int up, const fresnel_q15 *c, fresnel_q15 *out, int n)
+{
+    const uint32x4_t one = vdupq_n_u32(FRESNEL_I_ONE_Q15), wv = vdupq_n_u32(w);
+    const uint32_t base = f0 << 15;
+    int i;
+    for (i = 0; i < n; i += 4) {
+        mve_pred16_t p = vctp32q((uint32_t)(n - i));
+        uint32x4_t x = vsubq_u32(one, vminq_u32(vldrhq_z_u32(c + i, p), one));
+        uint32x4_t x2 = vmulq_u32(x, x);
+        uint32x4_t x4 = FRESNEL_I_MVE_MULSHR(x2, x2, 30);
+        uint32x4_t x5 = FRESNEL_I_MVE_MULSHR(x4, x, 15);
+        uint32x4_t d = FRESNEL_I_MVE_MULSHR(x5, wv, 15);
+        uint32x4_t v = up ? vaddq_u32(vdupq_n_u32(base), d) : vsubq_u32(vdupq_n_u32(base), d);
+        vstrhq_p_u32(out + i, vrshrq_n_u32(v, 15), p);
+    }
+}
+#endif
+
+static void fresnel_i_mix5_batch(uint32_t f0, uint32_t f90, const fresnel_q15 *c, fresnel_q15 *out, int n)
+{
+    uint32_t base = f0 << 15, w = f90 >= f0 ? f90 - f0 : f0 - f90;
+    int i;
+#if FRESNEL_I_MVE
+    fresnel_i_mix5_mve(f0, w, f90 >= f0, c, out, n);
+    return;
+#endif
+    if (f90 >= f0) {
+        for (i = 0; i < n; i++)
+            out[i] = fresnel_i_q30_to_q15(
+                base + fresnel_i_mulw_q15(fresnel_i_batch_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_batch_c(c[i])), w));
+    } else {
+        for (i = 0; i < n; i++)
+            out[i] = fresnel_i_q30_to_q15(
+                base - fresnel_i_mulw_q15(fresnel_i_batch_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_batch_c(c[i])), w));
+    }
+}
+
+void fresnel_schlick_q15_batch(int32_t f0, const fresnel_q15 *c, fresnel_q15 *out, int n)
+{
+    fresnel_i_mix5_batch(fresnel_i_q15_arg(f0), FRESNEL_I_ONE_Q15, c, out, n);
+}
+
+/* Three channels per cosine: x^5 once, three blends (fresnel_schlick_q15_rgb). */
+void fresnel_schlick_q15_rgb_batch(fresnel_rgb_q15 f0, const fresnel_q15 *c, fresnel_rgb_q15 *out, int n)
+{
+    uint32_t r = fresnel_i_q15_arg(f0.r), g = fresnel_i_q15_arg(f0.g), b = fresnel_i_q15_arg(f0.b);
+    int i;
+#if FRESNEL_I_MVE
+    {
+        const uint32x4_t one = vdupq_n_u32(FRESNEL_I_ONE_Q15), wr = vdupq_n_u32(FRESNEL_I_ONE_Q15 - r),
+                         wg = vdupq_n_u32(FRESNEL_I_ONE_Q15 - g), wb = vdupq_n_u32(FRESNEL_I_ONE_Q15 - b);
+        /* byte offsets of four fresnel_rgb_q15 in a row */
+        const uint32x4_t at = vmulq_n_u32(vidupq_n_u32(0, 1), (uint32_t)sizeof *out);
+        for (i = 0; i < n; i += 4) {
+            mve_pred16_t p = vctp32q((uint32_t)(n - i));
+            uint32x4_t x = vsubq_u32(one, vminq_u32(vldrhq_z_u32(c + i, p), one));
+            uint32x4_t x2 = vmulq_u32(x, x);
+            uint32x4_t x4 = FRESNEL_I_MVE_MULSHR(x2, x2, 30);
+            uint32x4_t x5 = FRESNEL_I_MVE_MULSHR(x4, x, 15);
+            uint16_t *row = (uint16_t *)(void *)(out + i);
+            vstrhq_scatter_offset_p_u32(row, at, vrshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_MULSHR(x5, wr, 15), r << 15), 15), p);
+            vstrhq_scatter_offset_p_u32(row + 1, at, vrshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_MULSHR(x5, wg, 15), g << 15), 15), p);
+            vstrhq_scatter_offset_p_u32(row + 2, at, vrshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_MULSHR(x5, wb, 15), b << 15), 15), p);
+        }
+        return;
+    }
+#endif
+    for (i = 0; i < n; i++) {
+        uint32_t x5 = fresnel_i_batch_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_batch_c(c[i]));
+        out[i].r = fresnel_i_q30_to_q15((r << 15) + fresnel_i_mulw_q15(x5, FRESNEL_I_ONE_Q15 - r));
+        out[i].g = fresnel_i_q30_to_q15((g << 15) + fresnel_i_mulw_q15(x5, FRESNEL_I_ONE_Q15 - g));
+        out[i].b = fresnel_i_q30_to_q15((b << 15) + fresnel_i_mulw_q15(x5, FRESNEL_I_ONE_Q15 - b));
+    }
+}
+
+/* p = 5 as Schlick's blend toward F90; any other p through the power
+ * function, per cosine, as fresnel_schlick_gen_q15 does. */
+void fresnel_schlick_gen_q15_batch(int32_t f0_in, int32_t f90_in, fresnel_q16 p_in, const fresnel_q15 *c,
+                                   fresnel_q15 *out, int n)
+{
+    uint32_t f0 = fresnel_i_q15_arg(f0_in), f90 = fresnel_i_q15_arg(f90_in), p = fresnel_i_clamp_p(p_in);
+    int i;
+    if (p == 5u * 65536u) {
+        fresnel_i_mix5_batch(f0, f90, c, out, n);
+        return;
+    }
+    for (i = 0; i < n; i++)
+        out[i] = fresnel_i_mix_q15(f0, f90, fresnel_i_weight_q30(fresnel_i_batch_c(c[i]), p));
+}
+
+void fresnel_schlick_gen_q15_rgb_batch(fresnel_rgb_q15 f0, fresnel_rgb_q15 f90, fresnel_q16 p, const fresnel_q15 *c,
+                                       fresnel_rgb_q15 *out, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        out[i] = fresnel_schlick_gen_q15_rgb(f0, f90, p, c[i]);
+}
+
 #else
 typedef int fresnel_i_schlick_q15_disabled;
 #endif
