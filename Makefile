@@ -423,11 +423,11 @@ cross-test: cross-deps cross-data
 	@BUILD=$(BUILD) sh ports/cross.sh nm
 
 cross-count: cross-deps cross-data
-	@for t in m0 m4f rv32; do \
+	@for t in m0 m4f m55 rv32; do \
 	    echo "== $$t fixed point: per call over 3 materials x 3 cosine sets x 17 cosines (tests/ports/cross/bench.c):" \
 	        "instructions mean min max$$( [ $$t = m0 ] && echo '; Cortex-M0 cycles, 1-cycle MULS: mean min max; 32-cycle MULS: mean min max')"; \
-	    BUILD=$(BUILD) sh ports/cross.sh count $$t | awk -F'\t' '{ printf "%-28s %6d %6d %6d", $$1, $$2, $$3, $$4; \
-	        if (NF >= 10) printf "   %6d %6d %6d   %6d %6d %6d", $$5, $$6, $$7, $$8, $$9, $$10; printf "\n" }' || exit 1; \
+	    BUILD=$(BUILD) sh ports/cross.sh count $$t | awk -F'\t' '{ printf "%-28s %6s %6s %6s", $$1, $$2, $$3, $$4; \
+	        if (NF >= 10) printf "   %6s %6s %6s   %6s %6s %6s", $$5, $$6, $$7, $$8, $$9, $$10; printf "\n" }' || exit 1; \
 	done
 	@for t in m0 m4f; do \
 	    echo "== $$t binary32 and binary16 (newlib libm$$( [ $$t = m0 ] && echo ', soft-float')), copper at 550 nm, 33 cosines: instructions mean min max$$( [ $$t = m0 ] && echo '; Cortex-M0 cycles, 1-cycle MULS: mean min max; 32-cycle MULS: mean min max')"; \

@@ -106,7 +106,9 @@ END {
             if (v < lo32) lo32 = v
             if (v > hi32) hi32 = v
         }
-        if (ncyc)
+        if (ncyc && each[r] > 1)
+            printf "%s\t%.1f\t%.1f\t%.1f\t%.1f\t%.1f\t%.1f\t%.1f\t%.1f\t%.1f\n", name[r], s / (per - 1) / each[r], lo / each[r], hi / each[r], s1 / (per - 1) / each[r], lo1 / each[r], hi1 / each[r], s32 / (per - 1) / each[r], lo32 / each[r], hi32 / each[r]
+        else if (ncyc)
             printf "%s\t%.0f\t%d\t%d\t%.0f\t%d\t%d\t%.0f\t%d\t%d\n", name[r], s / (per - 1), lo, hi, s1 / (per - 1), lo1, hi1, s32 / (per - 1), lo32, hi32
         else if (each[r] > 1)
             printf "%s\t%.1f\t%.1f\t%.1f\n", name[r], s / (per - 1) / each[r], lo / each[r], hi / each[r]

@@ -19,7 +19,8 @@
 #   cross.sh size                      .text/.rodata per model, type and target
 #
 # TARGET is m0 (qemu -M microbit, Cortex-M0), m4f (qemu -M mps2-an386,
-# Cortex-M4F) or rv32 (qemu-riscv32 user mode, RV32IMC); for count also a64
+# Cortex-M4F), m55 (qemu -M mps3-an547, Cortex-M55 with Helium) or rv32
+# (qemu-riscv32 user mode, RV32IMC); for count also a64
 # (qemu-aarch64 user mode, AArch64 Linux, static glibc).
 set -u
 BUILD=${BUILD:-build}
@@ -39,15 +40,20 @@ INC="-Iinclude -Iports/common -Itests/ports/cross"
 
 target() { # sets CC CF LD PORT RUN NMT SZ AR for $1
     case $1 in
-    m0 | m4f)
+    m0 | m4f | m55)
         CC=arm-none-eabi-gcc NMT=arm-none-eabi-nm SZ=arm-none-eabi-size AR=arm-none-eabi-ar
         PORT="ports/cortex-m/startup.c"
-        if [ "$1" = m0 ]; then
-            CF="-mcpu=cortex-m0 -mthumb -Os" MACHINE=microbit SCRIPT=ports/cortex-m0/microbit.ld
-        else
+        case $1 in
+        m0) CF="-mcpu=cortex-m0 -mthumb -Os" MACHINE=microbit SCRIPT=ports/cortex-m0/microbit.ld ;;
+        m4f)
             CF="-mcpu=cortex-m4 -mthumb -mfloat-abi=hard -mfpu=fpv4-sp-d16 -O2" MACHINE=mps2-an386
             SCRIPT=ports/cortex-m4f/mps2-an386.ld
-        fi
+            ;;
+        m55)
+            CF="-mcpu=cortex-m55 -mthumb -mfloat-abi=hard -O2" MACHINE=mps3-an547
+            SCRIPT=ports/cortex-m55/mps3-an547.ld
+            ;;
+        esac
         CF="$CF -mfp16-format=ieee"
         LD="-nostdlib -nostartfiles -Wl,--gc-sections -Lports/cortex-m -T$SCRIPT"
         RUN="qemu-system-arm -M $MACHINE -display none -monitor none -serial none -chardev stdio,id=sh -semihosting-config enable=on,target=native,chardev=sh -kernel"

@@ -1,9 +1,10 @@
 /* Start-up and the port interface for Cortex-M under qemu-system-arm:
  * vector table, reset (copy .data, clear .bss, enable the FPU where there
  * is one, call main), and Arm semihosting (BKPT 0xAB) for text and exit.
- * Used by ports/cortex-m0 (qemu -M microbit, a Cortex-M0) and
- * ports/cortex-m4f (qemu -M mps2-an386, a Cortex-M4F); each has its own
- * linker script with the memory map. */
+ * Used by ports/cortex-m0 (qemu -M microbit, a Cortex-M0),
+ * ports/cortex-m4f (qemu -M mps2-an386, a Cortex-M4F) and ports/cortex-m55
+ * (qemu -M mps3-an547, a Cortex-M55 with Helium); each has its own linker
+ * script with the memory map. */
 #include <stdint.h>
 
 #include "port.h"
@@ -50,8 +51,8 @@ void reset_handler(void)
         *dst++ = *src++;
     for (dst = &__bss_start; dst < &__bss_end;)
         *dst++ = 0;
-#if defined(__ARM_FP)
-    /* CPACR: full access to CP10 and CP11 (the FPU), then wait for it */
+#if defined(__ARM_FP) || defined(__ARM_FEATURE_MVE)
+    /* CPACR: full access to CP10 and CP11 (the FPU and Helium), then wait for it */
     *(volatile uint32_t *)0xE000ED88u |= 0xFu << 20;
     __asm__ volatile("dsb\n\tisb" ::: "memory");
 #endif

@@ -103,21 +103,24 @@ typedef struct fresnel_i_f82_mve_xg {
     uint32x4_t x5, g;
 } fresnel_i_f82_mve_xg;
 
-static fresnel_i_f82_mve_xg fresnel_i_f82_mve_xg_at(const fresnel_q15 *c, mve_pred16_t p)
+static fresnel_i_f82_mve_xg fresnel_i_f82_mve_xg_at(uint32x4_t c)
 {
     const uint32x4_t one = vdupq_n_u32(FRESNEL_I_ONE_Q15);
     fresnel_i_f82_mve_xg r;
-    uint32x4_t cv = vminq_u32(vldrhq_z_u32(c, p), one), x = vsubq_u32(one, cv), x2 = vmulq_u32(x, x), t;
-    r.x5 = FRESNEL_I_MVE_MULSHR(FRESNEL_I_MVE_MULSHR(x2, x2, 30), x, 15);
-    t = FRESNEL_I_MVE_MULSHR(FRESNEL_I_MVE_MULSHR(r.x5, x, 15), cv, 15);
-    r.g = vaddq_u32(vmulq_n_u32(t, 17u), FRESNEL_I_MVE_MULSHR(t, vdupq_n_u32(FRESNEL_I_K1_FRAC_Q30), 30));
+    uint32x4_t cv = vminq_u32(c, one), x = vsubq_u32(one, cv), x16 = vshlq_n_u32(x, 16);
+    uint32x4_t x2s = vshlq_n_u32(vmulq_u32(x, x), 1), t;
+    r.x5 = FRESNEL_I_MVE_Q15(vmulhq_u32(x2s, x2s), x16);
+    t = FRESNEL_I_MVE_Q15(FRESNEL_I_MVE_Q15(r.x5, x16), vshlq_n_u32(cv, 16));
+    r.g = vaddq_u32(vmulq_n_u32(t, 17u), FRESNEL_I_MVE_Q30(t, vdupq_n_u32(FRESNEL_I_K1_FRAC_Q30 << 1)));
     return r;
 }
 
+/* F for one channel: Schlick's part, then g h added or taken away by h's
+ * sign, held to [0, 2^30] and rounded (fresnel_i_q30s_to_q15). */
 static uint32x4_t fresnel_i_f82_mve_channel(fresnel_i_f82_mve_xg xg, uint32_t f0, int32_t h)
 {
-    uint32x4_t s = vaddq_n_u32(FRESNEL_I_MVE_MULSHR(xg.x5, vdupq_n_u32(FRESNEL_I_ONE_Q15 - f0), 15), f0 << 15);
-    uint32x4_t gh = FRESNEL_I_MVE_MULSHR(vdupq_n_u32(h < 0 ? (uint32_t)-h : (uint32_t)h), xg.g, 30);
+    uint32x4_t s = vaddq_n_u32(FRESNEL_I_MVE_Q15(xg.x5, vdupq_n_u32((FRESNEL_I_ONE_Q15 - f0) << 16)), f0 << 15);
+    uint32x4_t gh = FRESNEL_I_MVE_Q30(xg.g, vdupq_n_u32((h < 0 ? (uint32_t)-h : (uint32_t)h) << 1));
     int32x4_t f = vreinterpretq_s32_u32(h < 0 ? vaddq_u32(s, gh) : vsubq_u32(s, gh));
     f = vminq_s32(vmaxq_s32(f, vdupq_n_s32(0)), vdupq_n_s32((int32_t)FRESNEL_I_ONE_Q30));
     return vrshrq_n_u32(vreinterpretq_u32_s32(f), 15);
@@ -130,9 +133,11 @@ void fresnel_f82_q15_batch(int32_t f0_in, int32_t f82_in, const fresnel_q15 *c, 
     int32_t h = fresnel_i_f82_h(f0, fresnel_i_q15_arg(f82_in));
     int i;
 #if FRESNEL_I_MVE
-    for (i = 0; i < n; i += 4) {
+    for (i = 0; i + 4 <= n; i += 4)
+        vstrhq_u32(out + i, fresnel_i_f82_mve_channel(fresnel_i_f82_mve_xg_at(vldrhq_u32(c + i)), f0, h));
+    if (i < n) {
         mve_pred16_t p = vctp32q((uint32_t)(n - i));
-        vstrhq_p_u32(out + i, fresnel_i_f82_mve_channel(fresnel_i_f82_mve_xg_at(c + i, p), f0, h), p);
+        vstrhq_p_u32(out + i, fresnel_i_f82_mve_channel(fresnel_i_f82_mve_xg_at(vldrhq_z_u32(c + i, p)), f0, h), p);
     }
     return;
 #endif
@@ -154,7 +159,7 @@ void fresnel_f82_q15_rgb_batch(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82, const fr
         const uint32x4_t at = vmulq_n_u32(vidupq_n_u32(0, 1), (uint32_t)sizeof *out);
         for (i = 0; i < n; i += 4) {
             mve_pred16_t p = vctp32q((uint32_t)(n - i));
-            fresnel_i_f82_mve_xg xg = fresnel_i_f82_mve_xg_at(c + i, p);
+            fresnel_i_f82_mve_xg xg = fresnel_i_f82_mve_xg_at(vldrhq_z_u32(c + i, p));
             uint16_t *row = (uint16_t *)(void *)(out + i);
             vstrhq_scatter_offset_p_u32(row, at, fresnel_i_f82_mve_channel(xg, r, hr), p);
             vstrhq_scatter_offset_p_u32(row + 1, at, fresnel_i_f82_mve_channel(xg, g, hg), p);

@@ -103,10 +103,15 @@ static inline uint32_t fresnel_i_pow5_q30(uint32_t x)
 #endif
 
 #if FRESNEL_I_LONG_MUL
+/* floor(a b / 2^32): the high word of the product, one instruction (UMULL,
+ * MULHU). The products below are this with operands shifted so that the
+ * floor falls on the word boundary: floor(a b / 2^k) = floor((a 2^i)(b 2^j)
+ * / 2^32) for i + j = 32 - k, each shifted operand below 2^32. */
+static inline uint32_t fresnel_i_mulhi(uint32_t a, uint32_t b) { return (uint32_t)(((uint64_t)a * b) >> 32); }
 /* floor(a b / 2^30), a < 2^31, b <= 2^30: fresnel_i_mul_q30's value */
-static inline uint32_t fresnel_i_mulw_q30(uint32_t a, uint32_t b) { return (uint32_t)(((uint64_t)a * b) >> 30); }
+static inline uint32_t fresnel_i_mulw_q30(uint32_t a, uint32_t b) { return fresnel_i_mulhi(a << 1, b << 1); }
 /* floor(a b / 2^15), a < 2^31, b <= 2^15: fresnel_i_mul_q30_q15's value */
-static inline uint32_t fresnel_i_mulw_q15(uint32_t a, uint32_t b) { return (uint32_t)(((uint64_t)a * b) >> 15); }
+static inline uint32_t fresnel_i_mulw_q15(uint32_t a, uint32_t b) { return fresnel_i_mulhi(a << 1, b << 16); }
 #else
 #define fresnel_i_mulw_q30 fresnel_i_mul_q30
 #define fresnel_i_mulw_q15 fresnel_i_mul_q30_q15
@@ -123,12 +128,15 @@ static inline uint32_t fresnel_i_batch_pow5_q30(uint32_t x)
  * above one are one. */
 static inline uint32_t fresnel_i_batch_c(uint32_t c) { return c > FRESNEL_I_ONE_Q15 ? FRESNEL_I_ONE_Q15 : c; }
 
-/* Helium (Armv8.1-M MVE): four 32-bit lanes, floor(a b / 2^k) as the high
- * and low words of the 64-bit product joined by a shift-and-insert. */
+/* Helium (Armv8.1-M MVE): four 32-bit lanes; floor(a b / 2^k) as the high
+ * words of the products of shifted operands, as fresnel_i_mulhi. */
 #if defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 1) && !defined(FRESNEL_I_NO_MVE)
 #include <arm_mve.h>
 #define FRESNEL_I_MVE 1
-#define FRESNEL_I_MVE_MULSHR(a, b, k) vsliq_n_u32(vshrq_n_u32(vmulq_u32((a), (b)), (k)), vmulhq_u32((a), (b)), 32 - (k))
+/* floor(a b / 2^15), a < 2^31, b <= 2^15; b16 = b << 16 */
+#define FRESNEL_I_MVE_Q15(a, b16) vmulhq_u32(vshlq_n_u32((a), 1), (b16))
+/* floor(a b / 2^30), a < 2^31, b <= 2^30; b1 = b << 1 */
+#define FRESNEL_I_MVE_Q30(a, b1) vmulhq_u32(vshlq_n_u32((a), 1), (b1))
 #else
 #define FRESNEL_I_MVE 0
 #endif

@@ -163,20 +163,30 @@ fresnel_q15 fresnel_f0_in_medium_q15(int32_t f0_in, fresnel_q16 eta_e)
  * once (fresnel_i_q30_to_q15). */
 #if FRESNEL_I_MVE
 /* Helium: four cosines per step, the last step predicated to the n - i left. */
+/* x^5 of four cosines: x^2 doubled, its square's high word floor(x^4 / 2^30),
+ * then floor(x^4 x / 2^15) (fresnel_i_pow5_q30's floors). */
+static uint32x4_t fresnel_i_pow5_mve(uint32x4_t c)
+{
+    const uint32x4_t one = vdupq_n_u32(FRESNEL_I_ONE_Q15);
+    uint32x4_t x = vsubq_u32(one, vminq_u32(c, one)), x2s = vshlq_n_u32(vmulq_u32(x, x), 1);
+    return FRESNEL_I_MVE_Q15(vmulhq_u32(x2s, x2s), vshlq_n_u32(x, 16));
+}
+
+/* Helium: four cosines per step; the last, short step predicated. */
 static void fresnel_i_mix5_mve(uint32_t f0, uint32_t w, int up, const fresnel_q15 *c, fresnel_q15 *out, int n)
 {
-    const uint32x4_t one = vdupq_n_u32(FRESNEL_I_ONE_Q15), wv = vdupq_n_u32(w);
-    const uint32_t base = f0 << 15;
-    int i;
-    for (i = 0; i < n; i += 4) {
+    const uint32x4_t w16 = vdupq_n_u32(w << 16), base = vdupq_n_u32((f0 << 15) + (1u << 14));
+    int i = 0;
+    if (up)
+        for (; i + 4 <= n; i += 4)
+            vstrhq_u32(out + i, vshrq_n_u32(vaddq_u32(base, FRESNEL_I_MVE_Q15(fresnel_i_pow5_mve(vldrhq_u32(c + i)), w16)), 15));
+    else
+        for (; i + 4 <= n; i += 4)
+            vstrhq_u32(out + i, vshrq_n_u32(vsubq_u32(base, FRESNEL_I_MVE_Q15(fresnel_i_pow5_mve(vldrhq_u32(c + i)), w16)), 15));
+    if (i < n) {
         mve_pred16_t p = vctp32q((uint32_t)(n - i));
-        uint32x4_t x = vsubq_u32(one, vminq_u32(vldrhq_z_u32(c + i, p), one));
-        uint32x4_t x2 = vmulq_u32(x, x);
-        uint32x4_t x4 = FRESNEL_I_MVE_MULSHR(x2, x2, 30);
-        uint32x4_t x5 = FRESNEL_I_MVE_MULSHR(x4, x, 15);
-        uint32x4_t d = FRESNEL_I_MVE_MULSHR(x5, wv, 15);
-        uint32x4_t v = up ? vaddq_u32(vdupq_n_u32(base), d) : vsubq_u32(vdupq_n_u32(base), d);
-        vstrhq_p_u32(out + i, vrshrq_n_u32(v, 15), p);
+        uint32x4_t d = FRESNEL_I_MVE_Q15(fresnel_i_pow5_mve(vldrhq_z_u32(c + i, p)), w16);
+        vstrhq_p_u32(out + i, vshrq_n_u32(up ? vaddq_u32(base, d) : vsubq_u32(base, d), 15), p);
     }
 }
 #endif
@@ -212,20 +222,18 @@ void fresnel_schlick_q15_rgb_batch(fresnel_rgb_q15 f0, const fresnel_q15 *c, fre
     int i;
 #if FRESNEL_I_MVE
     {
-        const uint32x4_t one = vdupq_n_u32(FRESNEL_I_ONE_Q15), wr = vdupq_n_u32(FRESNEL_I_ONE_Q15 - r),
-                         wg = vdupq_n_u32(FRESNEL_I_ONE_Q15 - g), wb = vdupq_n_u32(FRESNEL_I_ONE_Q15 - b);
+        const uint32x4_t wr = vdupq_n_u32((FRESNEL_I_ONE_Q15 - r) << 16), wg = vdupq_n_u32((FRESNEL_I_ONE_Q15 - g) << 16),
+                         wb = vdupq_n_u32((FRESNEL_I_ONE_Q15 - b) << 16);
+        const uint32_t half = 1u << 14;
         /* byte offsets of four fresnel_rgb_q15 in a row */
         const uint32x4_t at = vmulq_n_u32(vidupq_n_u32(0, 1), (uint32_t)sizeof *out);
         for (i = 0; i < n; i += 4) {
             mve_pred16_t p = vctp32q((uint32_t)(n - i));
-            uint32x4_t x = vsubq_u32(one, vminq_u32(vldrhq_z_u32(c + i, p), one));
-            uint32x4_t x2 = vmulq_u32(x, x);
-            uint32x4_t x4 = FRESNEL_I_MVE_MULSHR(x2, x2, 30);
-            uint32x4_t x5 = FRESNEL_I_MVE_MULSHR(x4, x, 15);
+            uint32x4_t x5 = fresnel_i_pow5_mve(vldrhq_z_u32(c + i, p));
             uint16_t *row = (uint16_t *)(void *)(out + i);
-            vstrhq_scatter_offset_p_u32(row, at, vrshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_MULSHR(x5, wr, 15), r << 15), 15), p);
-            vstrhq_scatter_offset_p_u32(row + 1, at, vrshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_MULSHR(x5, wg, 15), g << 15), 15), p);
-            vstrhq_scatter_offset_p_u32(row + 2, at, vrshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_MULSHR(x5, wb, 15), b << 15), 15), p);
+            vstrhq_scatter_offset_p_u32(row, at, vshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_Q15(x5, wr), (r << 15) + half), 15), p);
+            vstrhq_scatter_offset_p_u32(row + 1, at, vshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_Q15(x5, wg), (g << 15) + half), 15), p);
+            vstrhq_scatter_offset_p_u32(row + 2, at, vshrq_n_u32(vaddq_n_u32(FRESNEL_I_MVE_Q15(x5, wb), (b << 15) + half), 15), p);
         }
         return;
     }

@@ -52,6 +52,28 @@ static fresnel_q15 e_gulbrandsen_nk(const conform_material *m, int32_t c)
     return (fresnel_q15)out.n.m;
 }
 
+/* The batches: each call shades a scanline of BATCH_MAX cosines (the three
+ * sets' codes in turn) of the row's material; the row's name carries
+ * BATCH_MAX after a tab, so ports/count.sh reports it per cosine. */
+static fresnel_q15 scanline[BATCH_MAX], scanline_out[BATCH_MAX];
+static void run_batch(const batch_model *b)
+{
+    int i, j, k;
+    uint32_t calls = 0;
+    port_puts(b->name);
+    port_puts("\t");
+    port_put_dec(BATCH_MAX);
+    port_puts("\n");
+    for (i = 0; i < CONFORM_BENCH_MATERIALS; i++)
+        for (j = 0; j < CONFORM_BENCH_SETS; j++)
+            for (k = 0; k < CONFORM_BENCH_CODES; k++) {
+                port_mark(calls++);
+                b->fn(&conform_materials[conform_bench_materials[i]], scanline, scanline_out, BATCH_MAX);
+                bench_sink += scanline_out[k];
+            }
+    port_mark(calls);
+}
+
 int main(void)
 {
     int i;
@@ -61,6 +83,11 @@ int main(void)
     run("(loop)", e_none);
     for (i = 0; i < FIXED_MODEL_COUNT; i++)
         run(fixed_models[i].name, fixed_models[i].fn);
+    batch_tables_init();
+    for (i = 0; i < BATCH_MAX; i++)
+        scanline[i] = (fresnel_q15)conform_bench_cos[i % CONFORM_BENCH_SETS][i % CONFORM_BENCH_CODES];
+    for (i = 0; i < BATCH_MODEL_COUNT; i++)
+        run_batch(&batch_models[i]);
     run("fresnel_ior_prepare_q15", e_ior_prepare);
     run("fresnel_gulbrandsen_nk_q15", e_gulbrandsen_nk);
     port_puts("END\n");

@@ -151,4 +151,87 @@ static const fixed_model fixed_models[] = {
 };
 #define FIXED_MODEL_COUNT ((int)(sizeof fixed_models / sizeof fixed_models[0]))
 
+/* The batches (fresnel_q15.h, BATCHES): one material's cosines in, one
+ * result each out; the _rgb forms take the material and the next two for
+ * their channels and fold each result's channels into one value (as the
+ * film's row does), the LUTs' a three-channel table made from the gold
+ * curve (batch_lut_rgb, filled by batch_tables_init). */
+typedef void (*batch_eval)(const conform_material *m, const fresnel_q15 *c, fresnel_q15 *out, int n);
+static uint16_t batch_lut_rgb[3 * CONFORM_LUT_N];
+static void batch_tables_init(void)
+{
+    int i;
+    for (i = 0; i < CONFORM_LUT_N; i++) {
+        batch_lut_rgb[i] = conform_lut_u16[0][i];
+        batch_lut_rgb[CONFORM_LUT_N + i] = (uint16_t)(conform_lut_u16[0][i] - (conform_lut_u16[0][i] >> 3));
+        batch_lut_rgb[2 * CONFORM_LUT_N + i] = (uint16_t)(conform_lut_u16[0][i] >> 1);
+    }
+}
+static fresnel_rgb_q15 rgb_of(const conform_material *m, int which)
+{
+    fresnel_rgb_q15 v;
+    const int32_t *f = which ? &m->f82 : &m->f0;
+    v.r = (fresnel_q15)f[0];
+    v.g = (fresnel_q15)(which ? m[1].f82 : m[1].f0);
+    v.b = (fresnel_q15)(which ? m[2].f82 : m[2].f0);
+    return v;
+}
+static fresnel_q15 fold_rgb(fresnel_rgb_q15 r) { return (fresnel_q15)(r.r ^ (uint32_t)r.g << 5 ^ (uint32_t)r.b << 10); }
+#define BATCH_MAX 64
+static fresnel_rgb_q15 batch_rgb_out[BATCH_MAX];
+static void b_schlick(const conform_material *m, const fresnel_q15 *c, fresnel_q15 *o, int n) { fresnel_schlick_q15_batch(m->f0, c, o, n); }
+static void b_schlick_gen(const conform_material *m, const fresnel_q15 *c, fresnel_q15 *o, int n)
+{
+    fresnel_schlick_gen_q15_batch(m->f0, m->f90, m->p, c, o, n);
+}
+static void b_f82(const conform_material *m, const fresnel_q15 *c, fresnel_q15 *o, int n) { fresnel_f82_q15_batch(m->f0, m->f82, c, o, n); }
+static void b_lut_u16(const conform_material *m, const fresnel_q15 *c, fresnel_q15 *o, int n)
+{
+    (void)m;
+    fresnel_lut_u16_q15_batch(conform_lut_u16[0], CONFORM_LUT_N, c, o, n);
+}
+static void b_lut_linear_u16(const conform_material *m, const fresnel_q15 *c, fresnel_q15 *o, int n)
+{
+    (void)m;
+    fresnel_lut_linear_u16_q15_batch(conform_lut_u16[1], CONFORM_LUT_N, c, o, n);
+}
+static void b_lut_cubic_u16(const conform_material *m, const fresnel_q15 *c, fresnel_q15 *o, int n)
+{
+    (void)m;
+    fresnel_lut_cubic_u16_q15_batch(conform_lut_u16[0], CONFORM_LUT_N, c, o, n);
+}
+#define BATCH_RGB(name, call)                                                                                          \
+    static void name(const conform_material *m, const fresnel_q15 *c, fresnel_q15 *o, int n)                          \
+    {                                                                                                                  \
+        int i_;                                                                                                        \
+        (void)m;                                                                                                       \
+        call;                                                                                                          \
+        for (i_ = 0; i_ < n; i_++)                                                                                     \
+            o[i_] = fold_rgb(batch_rgb_out[i_]);                                                                       \
+    }
+BATCH_RGB(b_schlick_rgb, fresnel_schlick_q15_rgb_batch(rgb_of(m, 0), c, batch_rgb_out, n))
+BATCH_RGB(b_f82_rgb, fresnel_f82_q15_rgb_batch(rgb_of(m, 0), rgb_of(m, 1), c, batch_rgb_out, n))
+BATCH_RGB(b_lut_u16_rgb, fresnel_lut_u16_q15_rgb_batch(batch_lut_rgb, CONFORM_LUT_N, c, batch_rgb_out, n))
+BATCH_RGB(b_lut_cubic_u16_rgb, fresnel_lut_cubic_u16_q15_rgb_batch(batch_lut_rgb, CONFORM_LUT_N, c, batch_rgb_out, n))
+
+typedef struct batch_model {
+    const char *name;
+    batch_eval fn;
+    int per_material; /* 0: the LUTs; the rgb forms read materials k, k+1, k+2 */
+} batch_model;
+
+static const batch_model batch_models[] = {
+    {"schlick batch", b_schlick, 1},
+    {"schlick-gen batch", b_schlick_gen, 1},
+    {"f82 batch", b_f82, 1},
+    {"lut u16 batch", b_lut_u16, 0},
+    {"lut-linear u16 batch", b_lut_linear_u16, 0},
+    {"lut-cubic u16 batch", b_lut_cubic_u16, 0},
+    {"schlick rgb batch", b_schlick_rgb, 2},
+    {"f82 rgb batch", b_f82_rgb, 2},
+    {"lut u16 rgb batch", b_lut_u16_rgb, 0},
+    {"lut-cubic u16 rgb batch", b_lut_cubic_u16_rgb, 0},
+};
+#define BATCH_MODEL_COUNT ((int)(sizeof batch_models / sizeof batch_models[0]))
+
 #endif
