@@ -142,7 +142,7 @@ void fresnel_f82_q15_batch(int32_t f0_in, int32_t f82_in, const fresnel_q15 *c, 
     return;
 #endif
     for (i = 0; i < n; i++) {
-        uint32_t ci = fresnel_i_batch_c(c[i]), x5 = fresnel_i_batch_pow5_q30(FRESNEL_I_ONE_Q15 - ci);
+        uint32_t x = fresnel_i_batch_x(c[i]), ci = FRESNEL_I_ONE_Q15 - x, x5 = fresnel_i_batch_pow5_q30(x);
         out[i] = fresnel_i_f82_batch_one(f0, h, x5, fresnel_i_f82_g_batch(x5, ci));
     }
 }
@@ -169,7 +169,7 @@ void fresnel_f82_q15_rgb_batch(fresnel_rgb_q15 f0, fresnel_rgb_q15 f82, const fr
     }
 #endif
     for (i = 0; i < n; i++) {
-        uint32_t ci = fresnel_i_batch_c(c[i]), x5 = fresnel_i_batch_pow5_q30(FRESNEL_I_ONE_Q15 - ci);
+        uint32_t x = fresnel_i_batch_x(c[i]), ci = FRESNEL_I_ONE_Q15 - x, x5 = fresnel_i_batch_pow5_q30(x);
         uint32_t gg = fresnel_i_f82_g_batch(x5, ci);
         out[i].r = fresnel_i_f82_batch_one(r, hr, x5, gg);
         out[i].g = fresnel_i_f82_batch_one(g, hg, x5, gg);

@@ -128,6 +128,15 @@ static inline uint32_t fresnel_i_batch_pow5_q30(uint32_t x)
  * above one are one. */
 static inline uint32_t fresnel_i_batch_c(uint32_t c) { return c > FRESNEL_I_ONE_Q15 ? FRESNEL_I_ONE_Q15 : c; }
 
+/* 1 - c for such a code, c in [0, 65535]: one - c held to [0, one], one
+ * USAT where the target saturates (Armv6 and later, not Armv6-M). */
+#if defined(__ARM_FEATURE_SAT) && __ARM_FEATURE_SAT
+#include <arm_acle.h>
+static inline uint32_t fresnel_i_batch_x(uint32_t c) { return (uint32_t)__usat((int32_t)FRESNEL_I_ONE_Q15 - (int32_t)c, 16); }
+#else
+static inline uint32_t fresnel_i_batch_x(uint32_t c) { return FRESNEL_I_ONE_Q15 - fresnel_i_batch_c(c); }
+#endif
+
 /* Helium (Armv8.1-M MVE): four 32-bit lanes; floor(a b / 2^k) as the high
  * words of the products of shifted operands, as fresnel_i_mulhi. */
 #if defined(__ARM_FEATURE_MVE) && (__ARM_FEATURE_MVE & 1) && !defined(FRESNEL_I_NO_MVE)

@@ -199,14 +199,49 @@ static void fresnel_i_mix5_batch(uint32_t f0, uint32_t f90, const fresnel_q15 *c
     fresnel_i_mix5_mve(f0, w, f90 >= f0, c, out, n);
     return;
 #endif
+#if FRESNEL_I_LONG_MUL
+    /* w = one (F0 0, F90 1): the product is x^5 itself; else
+     * floor(x^5 w / 2^15) is the high word of (2 x^5)(w 2^16) and of
+     * x^5 (w 2^17) alike, the latter one shift fewer, for w < 2^15 */
+    if (w == FRESNEL_I_ONE_Q15 && f90 >= f0) {
+        for (i = 0; i < n; i++)
+            out[i] = fresnel_i_q30_to_q15(base + fresnel_i_batch_pow5_q30(fresnel_i_batch_x(c[i])));
+        return;
+    }
+    if (w < FRESNEL_I_ONE_Q15) {
+        uint32_t w17 = w << 17;
+        base += 1u << 14;
+        /* four cosines a step: one loop test for four */
+#define FRESNEL_I_MIX5_AT(k, op) (fresnel_q15)((base op fresnel_i_mulhi(fresnel_i_batch_pow5_q30(fresnel_i_batch_x(c[k])), w17)) >> 15)
+        if (f90 >= f0) {
+            for (i = 0; i + 4 <= n; i += 4) {
+                out[i] = FRESNEL_I_MIX5_AT(i, +);
+                out[i + 1] = FRESNEL_I_MIX5_AT(i + 1, +);
+                out[i + 2] = FRESNEL_I_MIX5_AT(i + 2, +);
+                out[i + 3] = FRESNEL_I_MIX5_AT(i + 3, +);
+            }
+            for (; i < n; i++)
+                out[i] = FRESNEL_I_MIX5_AT(i, +);
+        } else {
+            for (i = 0; i + 4 <= n; i += 4) {
+                out[i] = FRESNEL_I_MIX5_AT(i, -);
+                out[i + 1] = FRESNEL_I_MIX5_AT(i + 1, -);
+                out[i + 2] = FRESNEL_I_MIX5_AT(i + 2, -);
+                out[i + 3] = FRESNEL_I_MIX5_AT(i + 3, -);
+            }
+            for (; i < n; i++)
+                out[i] = FRESNEL_I_MIX5_AT(i, -);
+        }
+#undef FRESNEL_I_MIX5_AT
+        return;
+    }
+#endif
     if (f90 >= f0) {
         for (i = 0; i < n; i++)
-            out[i] = fresnel_i_q30_to_q15(
-                base + fresnel_i_mulw_q15(fresnel_i_batch_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_batch_c(c[i])), w));
+            out[i] = fresnel_i_q30_to_q15(base + fresnel_i_mulw_q15(fresnel_i_batch_pow5_q30(fresnel_i_batch_x(c[i])), w));
     } else {
         for (i = 0; i < n; i++)
-            out[i] = fresnel_i_q30_to_q15(
-                base - fresnel_i_mulw_q15(fresnel_i_batch_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_batch_c(c[i])), w));
+            out[i] = fresnel_i_q30_to_q15(base - fresnel_i_mulw_q15(fresnel_i_batch_pow5_q30(fresnel_i_batch_x(c[i])), w));
     }
 }
 
@@ -239,7 +274,7 @@ void fresnel_schlick_q15_rgb_batch(fresnel_rgb_q15 f0, const fresnel_q15 *c, fre
     }
 #endif
     for (i = 0; i < n; i++) {
-        uint32_t x5 = fresnel_i_batch_pow5_q30(FRESNEL_I_ONE_Q15 - fresnel_i_batch_c(c[i]));
+        uint32_t x5 = fresnel_i_batch_pow5_q30(fresnel_i_batch_x(c[i]));
         out[i].r = fresnel_i_q30_to_q15((r << 15) + fresnel_i_mulw_q15(x5, FRESNEL_I_ONE_Q15 - r));
         out[i].g = fresnel_i_q30_to_q15((g << 15) + fresnel_i_mulw_q15(x5, FRESNEL_I_ONE_Q15 - g));
         out[i].b = fresnel_i_q30_to_q15((b << 15) + fresnel_i_mulw_q15(x5, FRESNEL_I_ONE_Q15 - b));
