@@ -407,9 +407,121 @@ fresnel_rgb_q15 fresnel_lut_linear_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const
 
 /* ---- batches (fresnel_q15.h, BATCHES): the scalar calls' position,
  * interpolation and clamp per cosine, n's clamp once. */
+#if FRESNEL_I_MVE
+/* Helium, four cosines in 32-bit lanes, every step the scalar one's.
+ * fresnel_i_sqrt_q30 of c in [0, one]: the normalising m from the leading
+ * zeros (the one m with c 4^m in [2^13, 2^15], as the scalar's tests find
+ * it; c = 0 is read as 2^13 and given 0 at the end), the two chords
+ * gathered from their tables, then the scalar's corrections. */
+static uint32x4_t fresnel_i_sqrt_q30_mve(uint32x4_t c)
+{
+    /* m = max(clz - 17, 0) / 2; c = 0 gives 0 below, whatever its lanes read */
+    uint32x4_t m = vshrq_n_u32(vqsubq_n_u32(vclzq_u32(c), 17u), 1);
+    uint32x4_t cn = vshlq_u32(c, vreinterpretq_s32_u32(vshlq_n_u32(m, 1)));
+    uint32x4_t q8 = vshrq_n_u32(cn, 8), q7 = vshrq_n_u32(cn, 7), si = vqsubq_n_u32(q8, 32u), ti = vqsubq_n_u32(q7, 64u);
+    uint32x4_t s0 = vldrwq_gather_shifted_offset_u32(fresnel_i_sqrt_chord_q15, si);
+    uint32x4_t s1 = vldrwq_gather_shifted_offset_u32(fresnel_i_sqrt_chord_q15 + 1, si);
+    uint32x4_t y = vshrq_n_u32(vaddq_u32(s0, vshrq_n_u32(vmulq_u32(vsubq_u32(s1, s0), vsubq_u32(cn, vshlq_n_u32(q8, 8))), 8)), 16);
+    uint32x4_t t0 = vldrwq_gather_shifted_offset_u32(fresnel_i_rsqrt_chord_q15, ti);
+    uint32x4_t t1 = vldrwq_gather_shifted_offset_u32(fresnel_i_rsqrt_chord_q15 + 1, ti);
+    uint32x4_t g = vsubq_u32(t0, vshrq_n_u32(vmulq_u32(vsubq_u32(t0, t1), vsubq_u32(cn, vshlq_n_u32(q7, 7))), 7));
+    uint32x4_t rem = vsubq_u32(vshlq_n_u32(cn, 15), vmulq_u32(y, y)), y2 = vshlq_n_u32(y, 1), z, zl, w, b;
+    mve_pred16_t big = vcmphiq_u32(rem, y2), pass;
+    rem = vsubq_m_u32(rem, rem, vaddq_n_u32(y2, 1u), big);
+    y = vaddq_m_n_u32(y, y, 1u, big);
+    y2 = vshlq_n_u32(y, 1);
+    z = FRESNEL_I_MVE_Q30(rem, vshlq_n_u32(g, 1));
+    /* G = rem 2^15 - 2 y w against ceil(w^2 / 2^15), compared signed (the
+     * scalar offsets both by 2^18 to compare them unsigned: |G| < 2^18) */
+    w = vsubq_u32(vshlq_n_u32(rem, 15), vmulq_u32(y2, z));
+    b = vmulq_u32(z, z);
+    pass = vcmpgeq_s32(vreinterpretq_s32_u32(w), vreinterpretq_s32_u32(vshrq_n_u32(vaddq_n_u32(b, 32767u), 15)));
+    zl = vsubq_n_u32(z, 1u);
+    zl = vaddq_m_n_u32(zl, zl, 1u, pass); /* z0 - 1 + the first pass */
+    w = vsubq_u32(w, y2);
+    b = vaddq_u32(b, vaddq_n_u32(vshlq_n_u32(z, 1), 1u)); /* + 2 z0 + 1 */
+    pass = vcmpgeq_s32(vreinterpretq_s32_u32(w), vreinterpretq_s32_u32(vshrq_n_u32(vaddq_n_u32(b, 32767u), 15)));
+    zl = vaddq_m_n_u32(zl, zl, 1u, pass);
+    y = vshlq_u32(vaddq_u32(vshlq_n_u32(y, 15), zl), vnegq_s32(vreinterpretq_s32_u32(m)));
+    return vpselq_u32(c, y, vcmpeqq_n_u32(c, 0u)); /* c = 0: 0 */
+}
+
+/* fresnel_i_position for k = nodes + 1 >= 2 nodes, then the two nodes
+ * around each lane interpolated and rounded. The position is at most
+ * nodes 2^15, so i passes nodes - 1 only at the last node, where the
+ * scalar takes the last segment's end: i = nodes - 1 and t = pos - i 2^15
+ * give that and, below it, pos's own fraction. The linear interpolation
+ * of two nodes never exceeds the larger, so fresnel_i_curve_q15's clamp
+ * leaves its rounding as it is. */
+static uint32x4_t fresnel_i_lut_at_mve(const uint16_t *table, uint32x4_t x, uint32_t nodes, uint32x4_t last)
+{
+    uint32x4_t xh = vshrq_n_u32(x, 15);
+    uint32x4_t pos = vaddq_u32(vmulq_n_u32(xh, nodes),
+                               vshrq_n_u32(vaddq_n_u32(vmulq_n_u32(vsubq_u32(x, vshlq_n_u32(xh, 15)), nodes), 1u << 14), 15));
+    uint32x4_t i = vminq_u32(vshrq_n_u32(pos, 15), last), t = vsubq_u32(pos, vshlq_n_u32(i, 15));
+    uint32x4_t v0 = vldrhq_gather_shifted_offset_u32(table, i), v1 = vldrhq_gather_shifted_offset_u32(table + 1, i);
+    return vrshrq_n_u32(vaddq_u32(vshlq_n_u32(v0, 15), vmulq_u32(vsubq_u32(v1, v0), t)), 15);
+}
+
+#define FRESNEL_I_LUT_MVE_LOOP(position)                                                                               \
+    const uint32x4_t last = vdupq_n_u32((uint32_t)k - 2u), one = vdupq_n_u32(FRESNEL_I_ONE_Q15);                       \
+    int j;                                                                                                             \
+    for (j = 0; j + 4 <= n; j += 4) {                                                                                  \
+        uint32x4_t cv = vminq_u32(vldrhq_u32(c + j), one);                                                             \
+        vstrhq_u32(out + j, fresnel_i_lut_at_mve(table, position, (uint32_t)k - 1u, last));                           \
+    }                                                                                                                  \
+    if (j < n) {                                                                                                       \
+        mve_pred16_t p = vctp32q((uint32_t)(n - j));                                                                   \
+        uint32x4_t cv = vminq_u32(vldrhq_z_u32(c + j, p), one);                                                        \
+        vstrhq_p_u32(out + j, fresnel_i_lut_at_mve(table, position, (uint32_t)k - 1u, last), p);                      \
+    }
+
+/* Four cosines a step, a short last one predicated. */
+static void fresnel_i_lut_u16_mve(const uint16_t *table, int k, const fresnel_q15 *c, fresnel_q15 *out, int n)
+{
+    FRESNEL_I_LUT_MVE_LOOP(fresnel_i_sqrt_q30_mve(cv))
+}
+
+static void fresnel_i_lut_linear_u16_mve(const uint16_t *table, int k, const fresnel_q15 *c, fresnel_q15 *out, int n)
+{
+    FRESNEL_I_LUT_MVE_LOOP(vshlq_n_u32(cv, 15))
+}
+#undef FRESNEL_I_LUT_MVE_LOOP
+#endif
+
+#if FRESNEL_I_LONG_MUL && !FRESNEL_I_MVE
+/* A position (fresnel_i_position's pos) to its node pair and rounded
+ * interpolation, for k >= 2 nodes (last = k - 2), as fresnel_i_lut_at_mve
+ * explains: the same as fresnel_i_lut_u16's. */
+static fresnel_q15 fresnel_i_lut_pos_u16(const uint16_t *table, uint32_t pos, uint32_t last)
+{
+    uint32_t i = pos >> 15, t, v0;
+    i = i > last ? last : i;
+    t = pos - (i << 15);
+    v0 = table[i];
+    return (fresnel_q15)(((v0 << 15) + (table[i + 1] - v0) * t + (1u << 14)) >> 15);
+}
+#endif
+
 void fresnel_lut_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n)
 {
     int i, k = fresnel_i_qlut_n(nodes);
+#if FRESNEL_I_MVE
+    if (k >= 2) {
+        fresnel_i_lut_u16_mve(table, k, c, out, n);
+        return;
+    }
+#elif FRESNEL_I_LONG_MUL
+    /* pos = floor((x (k - 1) + 2^14) / 2^15), the scalar's from halves */
+    if (k >= 2) {
+        for (i = 0; i < n; i++)
+            out[i] = fresnel_i_lut_pos_u16(
+                table,
+                (uint32_t)(((uint64_t)fresnel_i_sqrt_q30(fresnel_i_batch_c(c[i])) * (uint32_t)(k - 1) + (1u << 14)) >> 15),
+                (uint32_t)k - 2u);
+        return;
+    }
+#endif
     for (i = 0; i < n; i++)
         out[i] = fresnel_i_lut_u16(table, k, 0, fresnel_i_sqrt_q30(fresnel_i_batch_c(c[i])));
 }
@@ -417,6 +529,19 @@ void fresnel_lut_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q
 void fresnel_lut_linear_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n)
 {
     int i, k = fresnel_i_qlut_n(nodes);
+#if FRESNEL_I_MVE
+    if (k >= 2) {
+        fresnel_i_lut_linear_u16_mve(table, k, c, out, n);
+        return;
+    }
+#elif FRESNEL_I_LONG_MUL
+    /* x = c 2^15 has no fraction bits: the position is c (k - 1) exactly */
+    if (k >= 2) {
+        for (i = 0; i < n; i++)
+            out[i] = fresnel_i_lut_pos_u16(table, fresnel_i_batch_c(c[i]) * (uint32_t)(k - 1), (uint32_t)k - 2u);
+        return;
+    }
+#endif
     for (i = 0; i < n; i++)
         out[i] = fresnel_i_lut_u16(table, k, 0, fresnel_i_batch_c(c[i]) << 15);
 }
