@@ -407,19 +407,20 @@ $(BUILD)/cross/conform_data.c: $(BUILD)/tests/conform_gen
 	$< > $@.tmp && mv $@.tmp $@
 cross-data: $(BUILD)/cross/conform_data.c
 
-# Every cos code on the Cortex-M0; on the Cortex-M4F and the RV32IMC every
-# code within 64 of 0 and one and every CROSS_STRIDE-th between, from
-# CROSS_OFFSET: the day's number modulo the stride, so that CROSS_STRIDE
-# days of runs cover every code there too (CROSS_STRIDE=1: every code).
-# The three in parallel.
+# Every cos code on the Cortex-M0; on the Cortex-M4F, the Cortex-M55 and
+# the RV32IMC every code within 64 of 0 and one and every CROSS_STRIDE-th
+# between, from CROSS_OFFSET: the day's number modulo the stride, so that
+# CROSS_STRIDE days of runs cover every code there too (CROSS_STRIDE=1:
+# every code). The four in parallel.
 CROSS_STRIDE ?= 4
 CROSS_OFFSET ?= $(shell echo $$(( $$(date +%s) / 86400 % $(CROSS_STRIDE) )))
 cross-test: cross-deps cross-data
 	@d=$(BUILD)/cross; \
 	BUILD=$(BUILD) sh ports/cross.sh conform m0 1 >$$d/m0.log 2>&1 & \
 	BUILD=$(BUILD) sh ports/cross.sh conform m4f $(CROSS_STRIDE) $(CROSS_OFFSET) >$$d/m4f.log 2>&1 & \
+	BUILD=$(BUILD) sh ports/cross.sh conform m55 $(CROSS_STRIDE) $(CROSS_OFFSET) >$$d/m55.log 2>&1 & \
 	BUILD=$(BUILD) sh ports/cross.sh conform rv32 $(CROSS_STRIDE) $(CROSS_OFFSET) >$$d/rv32.log 2>&1 & \
-	wait; cat $$d/m0.log $$d/m4f.log $$d/rv32.log
+	wait; cat $$d/m0.log $$d/m4f.log $$d/m55.log $$d/rv32.log
 	@BUILD=$(BUILD) sh ports/cross.sh nm
 
 cross-count: cross-deps cross-data
