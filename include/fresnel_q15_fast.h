@@ -543,13 +543,19 @@ FRESNEL_I_INLINE fresnel_q15 fresnel_conductor_q15_fast(const fresnel_conductor_
 }
 
 /* The same for three channels, on <prefix>_ior_fast_q15[3] as `fresnel gen`
- * emits it; each channel equals fresnel_conductor_q15_fast's. */
+ * emits it; each channel equals fresnel_conductor_q15_fast's. The channels
+ * go round one loop, so the body is inlined once, not three times: the RGB
+ * call costs one channel's code (`make size`, exact-conductor-rgb-fast). */
 FRESNEL_I_INLINE fresnel_rgb_q15 fresnel_conductor_q15_rgb_fast(const fresnel_conductor_prep_q15_fast p[3], int32_t c)
 {
+    fresnel_q15 v[3];
     fresnel_rgb_q15 r;
-    r.r = fresnel_conductor_q15_fast(&p[0], c);
-    r.g = fresnel_conductor_q15_fast(&p[1], c);
-    r.b = fresnel_conductor_q15_fast(&p[2], c);
+    int ch;
+    for (ch = 0; ch < 3; ch++)
+        v[ch] = fresnel_conductor_q15_fast(&p[ch], c);
+    r.r = v[0];
+    r.g = v[1];
+    r.b = v[2];
     return r;
 }
 

@@ -294,8 +294,12 @@ cmd_size() {
             echo "$row"
         done
     done
-    # The inline fast paths of fresnel_q15_fast.h, fixed point only.
-    for mj in schlick-fast:16 f82-fast:17 lut-u16-fast:18 lut-u16-pl-fast:21; do
+    # The inline fast paths of fresnel_q15_fast.h, the exact conductor's RGB
+    # call beside its fast form, and the batches (a 64-cosine scanline),
+    # fixed point only.
+    for mj in schlick-fast:16 f82-fast:17 lut-u16-fast:18 lut-u16-pl-fast:21 exact-conductor-fast:22 \
+        exact-conductor-rgb-fast:23 exact-conductor-rgb:24 schlick-batch:30 schlick-gen-batch:37 f82-batch:31 \
+        lut-batch:32 lut-linear-batch:33 lut-cubic-batch:34 schlick-rgb-batch:35 f82-rgb-batch:36; do
         m=${mj%:*} j=${mj#*:}
         row="| $m | fixed |"
         for t in m0 m4f rv32; do
@@ -344,5 +348,15 @@ nm) cmd_check && cmd_nm ;;
 conform) cmd_check && cmd_conform "$2" "$3" "${4:-0}" ;;
 count) [ "$2" = a64 ] || cmd_check; cmd_count "$2" "${3:-}" "${4:-}" ;;
 size) cmd_check && cmd_size ;;
+probe) # target id: .text and .rodata one size_probe.c probe adds to the empty program
+    cmd_check
+    target "$2"
+    mkdir -p "$OUT/$2"
+    size_lib "$2" fixed || exit 1
+    set -- "$2" $(probe_size "$2" PROBE 0 fixed) "$3"
+    b1=$2 b2=$3
+    set -- $(probe_size "$1" PROBE "$4" fixed)
+    echo ".text $(($1 - b1)) .rodata $(($2 - b2))"
+    ;;
 *) sed -n '2,22p' "$0"; exit 2 ;;
 esac

@@ -23,6 +23,19 @@ static const fresnel_nk_prep_q15 nk = {{1073741824u, -30}, {1073741824u, -27}};
 static const fresnel_lsk_prep_q15 lsk = {700000000u, {1073741824u, -29}, 7 << 16};
 static const uint16_t t16[8] = {32768, 30000, 28000, 27000, 26500, 26200, 26100, 26000};
 static const int8_t t8[8] = {0, 10, 20, 30, 20, 10, 5, 0};
+/* gold at 550 nm (tests/ports/cross/conform_data.c's constants) in each of
+ * three channels, for the conductor's fast path and its library call; read
+ * through volatile pointers, so that nothing of them is folded into the
+ * code */
+#define PROBE_AU_FAST {-1860561660, -17564, 2, 562919072, 0, 34358, 14, 0}
+#define PROBE_AU_IOR {-1860561660, -287761152, 2, {1125838144, -29}, {1327946657, -25}, {1287789325, -28}, {1492115577, -28}}
+static const fresnel_conductor_prep_q15_fast cfast[3] = {PROBE_AU_FAST, PROBE_AU_FAST, PROBE_AU_FAST};
+static const fresnel_conductor_prep_q15_fast *volatile cfast_at = cfast;
+static const fresnel_ior_prep_q15 ior3[3] = {PROBE_AU_IOR, PROBE_AU_IOR, PROBE_AU_IOR};
+static const fresnel_ior_prep_q15 *volatile ior_at = ior3;
+#ifndef PROBE_N
+#define PROBE_N 64
+#endif
 void probe(void)
 {
     int32_t c = probe_c, f = probe_i;
@@ -81,8 +94,47 @@ void probe(void)
     }
 #elif PROBE == 15
     probe_out = fresnel_schlick_q15_rgb((fresnel_rgb_q15){(fresnel_q15)f, (fresnel_q15)(f + 1), (fresnel_q15)(f + 2)}, c).g;
+#elif PROBE == 22
+    probe_out = fresnel_conductor_q15_fast(cfast_at, c);
+#elif PROBE == 23
+    {
+        fresnel_rgb_q15 r = fresnel_conductor_q15_rgb_fast(cfast_at, c);
+        probe_out = (fresnel_q15)(r.r ^ r.g ^ r.b);
+    }
+#elif PROBE == 24
+    {
+        fresnel_rgb_q15 r = fresnel_conductor_q15_rgb(ior_at, c);
+        probe_out = (fresnel_q15)(r.r ^ r.g ^ r.b);
+    }
+#elif PROBE >= 30 && PROBE < 50
+    {
+        /* the batches: a scanline of PROBE_N cosines */
+        static fresnel_q15 in[PROBE_N], out[PROBE_N];
+        static fresnel_rgb_q15 out3[PROBE_N];
+        const fresnel_rgb_q15 f3 = {(fresnel_q15)f, (fresnel_q15)(f + 1), (fresnel_q15)(f + 2)};
+        in[0] = (fresnel_q15)c;
+#if PROBE == 30
+        fresnel_schlick_q15_batch(f, in, out, PROBE_N);
+#elif PROBE == 31
+        fresnel_f82_q15_batch(f, f + 100, in, out, PROBE_N);
+#elif PROBE == 32
+        fresnel_lut_u16_q15_batch(t16, 8, in, out, PROBE_N);
+#elif PROBE == 33
+        fresnel_lut_linear_u16_q15_batch(t16, 8, in, out, PROBE_N);
+#elif PROBE == 34
+        fresnel_lut_cubic_u16_q15_batch(t16, 8, in, out, PROBE_N);
+#elif PROBE == 35
+        fresnel_schlick_q15_rgb_batch(f3, in, out3, PROBE_N);
+#elif PROBE == 36
+        fresnel_f82_q15_rgb_batch(f3, f3, in, out3, PROBE_N);
+#elif PROBE == 37
+        fresnel_schlick_gen_q15_batch(f, 32768, f * 64, in, out, PROBE_N);
 #endif
-    (void)c, (void)f, (void)ior, (void)nk, (void)lsk, (void)t16, (void)t8;
+        probe_out = (uint32_t)out[1] ^ out3[1].g;
+        (void)f3;
+    }
+#endif
+    (void)c, (void)f, (void)ior, (void)nk, (void)lsk, (void)t16, (void)t8, (void)cfast_at, (void)ior_at;
 }
 
 #elif defined(PROBE_F32)
