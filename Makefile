@@ -441,5 +441,16 @@ cross-count: cross-deps cross-data
 	    BUILD=$(BUILD) sh ports/cross.sh count a64 $$cc $$opt | awk -F'\t' '{ printf "%-28s %6s %6s %6s\n", $$1, $$2, $$3, $$4 }' || exit 1; \
 	done; done
 
+# make measure FILE=prog.c [TARGET=m0|m4f|m55|rv32] [INCLUDE=dir]: a
+# firmware's own program, built with the fixed-point runtime for TARGET
+# (default m0) and run under qemu; the instructions between its first two
+# port_mark calls (Cortex-M0: and cycles), and the library bytes it links
+# (ports/README.md, "Firmware"). Builds only that program.
+TARGET ?= m0
+.PHONY: measure
+measure: cross-deps
+	@test -n "$(FILE)" || { echo "make measure: FILE=prog.c is required" >&2; exit 2; }
+	@BUILD=$(BUILD) sh ports/cross.sh measure $(TARGET) $(FILE) $(if $(INCLUDE),-I$(INCLUDE))
+
 size: cross-deps cross-data
 	@BUILD=$(BUILD) sh ports/cross.sh size

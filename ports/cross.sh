@@ -342,12 +342,42 @@ cmd_size() {
     $SZ -A "$d/schlick_only.elf" | awk '$1 ~ /^\.(text|rodata|data|bss)$/ { printf "  %-8s %6d\n", $1, $2 }'
 }
 
+# A firmware's own program (FILE.c, with the port interface of
+# ports/common/port.h) on a target: built with the fixed-point runtime,
+# run under qemu, and the instructions it executes between its first and
+# second port_mark call counted from the trace (with the Cortex-M0's
+# cycles), and the bytes of library code it links. Builds only that.
+cmd_measure() { # target file.c [compiler flags...]
+    t=$1 file=$2
+    shift 2
+    target "$t"
+    d=$OUT/measure/$t
+    mkdir -p "$d"
+    $CC $W $CF $FIXED_ONLY -Iinclude -Iports/common "$@" $LD "$file" $PORT_COMMON $PORT $ALL_SRC -lgcc \
+        -o "$d/prog.elf" || exit 1
+    case $t in
+    rv32) $RUN -singlestep -d exec,nochain -D "$d/trace.log" "$d/prog.elf" >"$d/out.txt" || exit 1 ;;
+    *) $RUN "$d/prog.elf" -singlestep -d exec,nochain -D "$d/trace.log" >"$d/out.txt" || exit 1 ;;
+    esac
+    sed -n '/^BENCH/,/^END$/!p' "$d/out.txt"
+    printf 'BENCH 1\n%s\nEND\n' "$(basename "$file" .c)" >"$d/names.txt"
+    od=""
+    [ "$t" = m0 ] && od=arm-none-eabi-objdump
+    set -- $(sh ports/count.sh "$NMT" "$d/prog.elf" "$d/trace.log" "$d/names.txt" $od | cut -f2,5,8)
+    rm -f "$d/trace.log" "$d/trace.log.names" "$d/trace.log.isa"
+    [ -n "${1:-}" ] || { echo "cross.sh measure: $file calls port_mark fewer than twice" >&2; exit 1; }
+    printf '%s on %s: %s instructions between the first two port_mark calls' "$(basename "$file")" "$t" "$1"
+    [ "$t" = m0 ] && printf ' (Cortex-M0 cycles: %s with a 1-cycle multiplier, %s with a 32-cycle one)' "$2" "$3"
+    printf '; library code linked: %s bytes\n' "$(lib_bytes "$d/prog.elf")"
+}
+
 case ${1:-} in
 check) cmd_check ;;
 nm) cmd_check && cmd_nm ;;
 conform) cmd_check && cmd_conform "$2" "$3" "${4:-0}" ;;
 count) [ "$2" = a64 ] || cmd_check; cmd_count "$2" "${3:-}" "${4:-}" ;;
 size) cmd_check && cmd_size ;;
+measure) cmd_check && shift && cmd_measure "$@" ;;
 probe) # target id: .text and .rodata one size_probe.c probe adds to the empty program
     cmd_check
     target "$2"

@@ -406,7 +406,7 @@ static int write_cross(const report_run *r, FILE *f)
 {
     int status;
     if (r->cross_path) {
-        fputs("\n## Cortex-M0, Cortex-M4F, RV32IMC and AArch64: instructions per call\n\n"
+        fputs("\n## Cortex-M0, Cortex-M4F, Cortex-M55, RV32IMC and AArch64: instructions per call\n\n"
               "From qemu instruction traces (`make cross-count`; ports/README.md explains the method), and on the "
               "Cortex-M0 cycles from its timings; each section's header names its materials, cosines and columns."
               "\n\n```\n", f);

@@ -424,6 +424,24 @@ static void batch_targets(const report_run *r, FILE *f)
         }
 }
 
+/* .text and .rodata of `make size`'s table row `model` (fixed point) on
+ * the Cortex-M0, its first target column: 0, or -1 when absent. */
+static int table_bytes(const char *path, const char *model, long *text, long *rodata)
+{
+    FILE *in = path ? fopen(path, "r") : NULL;
+    char line[512], want[128];
+    int found = -1;
+    if (!in)
+        return -1;
+    snprintf(want, sizeof want, "| %s | fixed | ", model);
+    while (fgets(line, sizeof line, in))
+        if (!strncmp(line, want, strlen(want)) &&
+            sscanf(line + strlen(want), "%ld / %ld", text, rodata) == 2)
+            found = 0;
+    fclose(in);
+    return found;
+}
+
 static void m0_targets(const report_run *r, FILE *f)
 {
     static const struct {
@@ -491,6 +509,21 @@ static void m0_targets(const report_run *r, FILE *f)
     if (t >= 0)
         goal_row(f, "Cortex-M0 -Os, the whole fixed-point runtime (every model's Q15 code)", "<= 2048 B .text",
                t <= 2048 ? PASS : MISS, ".text %ld B", t);
+    {
+        long ft, fr, et, er;
+        if (!table_bytes(r->size_path, "exact-conductor-rgb-fast", &ft, &fr) &&
+            !table_bytes(r->size_path, "exact-conductor-rgb", &et, &er))
+            goal_row(f, "Cortex-M0 -Os, the exact conductor's RGB fast path (fresnel_conductor_q15_rgb_fast): code and "
+                        "tables against the library's RGB call (fresnel_conductor_q15_rgb)",
+                     "<= the library call's", ft + fr <= et + er ? PASS : MISS,
+                     "%ld B (.text %ld, .rodata %ld) against %ld B (.text %ld, .rodata %ld)%s", ft + fr, ft, fr, et + er,
+                     et, er,
+                     ft + fr <= et + er ? ""
+                                        : "; the fast path's chord tables (two square roots and a reciprocal with no "
+                                          "division, a byte table of leading zeros for the Cortex-M0's missing CLZ) "
+                                          "are most of it: its code, inlined once for the three channels, is half "
+                                          "the library call's");
+    }
 }
 
 /* ---- the thin film (report_film.c measures it): one row per type with a

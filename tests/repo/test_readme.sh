@@ -1,7 +1,7 @@
 #!/bin/sh
 # passes: first (the examples do not change with the pass's flags)
 # The README's examples run as printed: every code block of README.md, of
-# gen/README.md and of ports/README.md's set-up section, in order, in a
+# gen/README.md and of ports/README.md's firmware and set-up sections, in order, in a
 # scratch directory that holds the repository's top-level entries (build/
 # is $BUILD) and what the blocks before wrote; HOME is a scratch directory.
 # Each block is fenced, and its info string says how it is checked:
@@ -64,6 +64,7 @@ extract() {
 }
 extract README.md
 extract gen/README.md
+extract ports/README.md "Firmware: a scene to a Cortex-M0 binary"
 extract ports/README.md "Set-up, install, CMake and vendoring"
 
 W="-Wall -Wextra -Wpedantic -Werror"
