@@ -114,9 +114,10 @@ cmd_conform() { # target stride [offset]: PASS/FAIL lines
     fi
 }
 
-lib_bytes() { # elf -> total size of the library's symbols (fresnel_*, internal helpers fresnel_i_* included)
+lib_bytes() { # elf -> total size of the library's symbols (fresnel_*, internal helpers fresnel_i_* included),
+    # each address once (identical helpers folded into one by the compiler carry both names)
     total=0
-    for h in $($NMT -S "$1" | awk '$NF ~ /^fresnel_/ && NF == 4 { print $2 }'); do
+    for h in $($NMT -S "$1" | awk '$NF ~ /^fresnel_/ && NF == 4 && !seen[$1]++ { print $2 }'); do
         total=$((total + 0x$h))
     done
     echo $total

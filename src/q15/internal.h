@@ -14,6 +14,17 @@ static inline uint32_t fresnel_i_q15_arg(int32_t x)
     return x <= 0 ? 0u : (x >= 32768 ? FRESNEL_I_ONE_Q15 : (uint32_t)x);
 }
 
+/* F82's constants (f82_q15.c derives them; batch_q15.c uses them too). */
+#define FRESNEL_I_K1_FRAC_Q30 699418891u /* round((823543/46656 - 17) 2^30) */
+#define FRESNEL_I_K2_OVER_K1_Q30 496782080u /* round((49/6)/(823543/46656) 2^30) = 0.46266 */
+
+/* A LUT's node count as the functions read it (lut_q15.c, batch_q15.c): n
+ * above FRESNEL_I_LUT_N_MAX is taken as FRESNEL_I_LUT_N_MAX (so only entries
+ * the caller's table has are read), n <= 0 as 0, for which the callers read
+ * no entry at all. */
+#define FRESNEL_I_LUT_N_MAX 32768
+static inline int fresnel_i_qlut_n(int n) { return n <= 0 ? 0 : (n > FRESNEL_I_LUT_N_MAX ? FRESNEL_I_LUT_N_MAX : n); }
+
 /* Schlick's F0 + (1 - F0) x5 in Q30 from F0 in Q15 and x5 in Q30.
  * R: f0 2^15 <= 2^30 - (1 - f0) 2^15 ... the sum is <= f0 2^15 + (2^15 - f0) 2^15 = 2^30. */
 static inline uint32_t fresnel_i_schlick_q30(uint32_t f0, uint32_t x5)
