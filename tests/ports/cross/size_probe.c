@@ -23,7 +23,7 @@ static const fresnel_nk_prep_q15 nk = {{1073741824u, -30}, {1073741824u, -27}};
 static const fresnel_lsk_prep_q15 lsk = {700000000u, {1073741824u, -29}, 7 << 16};
 static const uint16_t t16[8] = {32768, 30000, 28000, 27000, 26500, 26200, 26100, 26000};
 static const int8_t t8[8] = {0, 10, 20, 30, 20, 10, 5, 0};
-/* gold at 550 nm (tests/ports/cross/conform_data.c's constants) in each of
+/* gold at 550 nm (the constants tests/ports/cross/conform_gen.c writes) in each of
  * three channels, for the conductor's fast path and its library call; read
  * through volatile pointers, so that nothing of them is folded into the
  * code */
