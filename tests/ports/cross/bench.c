@@ -84,8 +84,14 @@ int main(void)
     for (i = 0; i < FIXED_MODEL_COUNT; i++)
         run(fixed_models[i].name, fixed_models[i].fn);
     batch_tables_init();
-    for (i = 0; i < BATCH_MAX; i++)
-        scanline[i] = (fresnel_q15)conform_bench_cos[i % CONFORM_BENCH_SETS][i % CONFORM_BENCH_CODES];
+    {
+        int set = 0, code = 0; /* i's remainders by the set and code counts, kept without a divide */
+        for (i = 0; i < BATCH_MAX; i++) {
+            scanline[i] = (fresnel_q15)conform_bench_cos[set][code];
+            set = set + 1 == CONFORM_BENCH_SETS ? 0 : set + 1;
+            code = code + 1 == CONFORM_BENCH_CODES ? 0 : code + 1;
+        }
+    }
     for (i = 0; i < BATCH_MODEL_COUNT; i++)
         run_batch(&batch_models[i]);
     run("fresnel_ior_prepare_q15", e_ior_prepare);
