@@ -445,11 +445,13 @@ cross-count: cross-deps cross-data
 # firmware's own program, built with the fixed-point runtime for TARGET
 # (default m0) and run under qemu; the instructions between its first two
 # port_mark calls (Cortex-M0: and cycles), and the library bytes it links
-# (ports/README.md, "Firmware"). Builds only that program.
+# (ports/README.md, "Firmware"). Builds only that program, and checks (as
+# root: installs) only TARGET's toolchain and emulator (tests/deps.sh TARGET).
 TARGET ?= m0
 .PHONY: measure
-measure: cross-deps
+measure:
 	@test -n "$(FILE)" || { echo "make measure: FILE=prog.c is required" >&2; exit 2; }
+	@sh tests/deps.sh $(TARGET)
 	@BUILD=$(BUILD) sh ports/cross.sh measure $(TARGET) $(FILE) $(if $(INCLUDE),-I$(INCLUDE))
 
 size: cross-deps cross-data

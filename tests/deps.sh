@@ -3,7 +3,10 @@
 # that installs it.
 #   sh tests/deps.sh [GROUP|ROW...]   GROUP: all (default, `make deps`, run
 #                                     first by `make test`) or cross (`make
-#                                     cross-deps`); or the names of rows
+#                                     cross-deps`); or one target's toolchain
+#                                     and emulator, m0 m4f m55 (Arm), rv32,
+#                                     a64 (`make measure`), which says what
+#                                     it found or installed; or the names of rows
 # Each row's probe does what the tests do with the tool, in miniature: a
 # compiler compiles, links (static where the tests link static) and its
 # program runs, under the row's emulator for a cross compiler; OSMesa and the
@@ -14,7 +17,8 @@
 # are installed with apt-get and every probe runs again: one that still
 # fails is a deps failure naming the probe and its error, never a test FAIL.
 # Otherwise the script prints the exact `apt-get install` line to run and
-# exits 1 at once. Nothing missing: exit 0, silently.
+# exits 1 at once. Nothing missing: exit 0, silently (for a target: one line
+# naming its rows).
 #
 # For tests/repo/test_deps.sh, without uninstalling anything:
 #   DEPS_PATH      PATH the probes find their tools on (default: $PATH); the
@@ -60,14 +64,18 @@ probe_path=${DEPS_PATH-$PATH}
 root=${DEPS_ROOT-}
 uid=${DEPS_UID-$(id -u)}
 all_rows=$(printf '%s\n' "$table" | awk 'NF >= 3 { print $2 }')
+target=""
 case ${1:-all} in
 all) rows=$all_rows ;;
 cross) rows=$(printf '%s\n' "$table" | awk '$1 == "cross" { print $2 }') ;;
+m0 | m4f | m55) target=$1 rows="arm-none-eabi newlib qemu-arm" ;;
+rv32) target=$1 rows="riscv64-elf qemu-riscv32" ;;
+a64) target=$1 rows="aarch64 qemu-aarch64" ;;
 *)
     rows="$*"
     for r in $rows; do
         printf '%s\n' "$all_rows" | grep -qxF -e "$r" && continue
-        echo "tests/deps.sh: unknown group or row '$r' (expected all, cross or a row: $(echo $all_rows))" >&2
+        echo "tests/deps.sh: unknown group or row '$r' (expected all, cross, a target m0 m4f m55 rv32 a64, or a row: $(echo $all_rows))" >&2
         exit 2
     done
     ;;
@@ -193,6 +201,7 @@ cortex_m() {
 }
 M0="-mcpu=cortex-m0 -Os"
 M4F="-mcpu=cortex-m4 -mfloat-abi=hard -mfpu=fpv4-sp-d16 -O2"
+M55="-mcpu=cortex-m55 -mfloat-abi=hard -O2"
 qemu_arm() { # machine elf
     expect ok "$qemu" -M "$1" -display none -monitor none -serial none -chardev stdio,id=sh \
         -semihosting-config enable=on,target=native,chardev=sh -kernel "$2"
@@ -302,8 +311,9 @@ probe() {
     qemu-arm)
         qemu=$(tool qemu-system-arm) || return 1
         arm=$(tool arm-none-eabi-gcc) && cortex_m "$d/m0.elf" "$M0" ports/cortex-m0/microbit.ld "$w/bare.c" >/dev/null 2>&1 &&
-            cortex_m "$d/m4f.elf" "$M4F" ports/cortex-m4f/mps2-an386.ld "$w/bare.c" >/dev/null 2>&1 || return 0
-        qemu_arm microbit "$d/m0.elf" && qemu_arm mps2-an386 "$d/m4f.elf"
+            cortex_m "$d/m4f.elf" "$M4F" ports/cortex-m4f/mps2-an386.ld "$w/bare.c" >/dev/null 2>&1 &&
+            cortex_m "$d/m55.elf" "$M55" ports/cortex-m55/mps3-an547.ld "$w/bare.c" >/dev/null 2>&1 || return 0
+        qemu_arm microbit "$d/m0.elf" && qemu_arm mps2-an386 "$d/m4f.elf" && qemu_arm mps3-an547 "$d/m55.elf"
         ;;
     riscv64-elf | qemu-riscv32)
         if [ "$1" = qemu-riscv32 ]; then
@@ -339,9 +349,14 @@ probe_all() {
         rm -f "$w/$r.ok"
     done
 }
+# done_ok [WHAT]: exit 0; for a target, first say what it needed
+done_ok() {
+    [ -n "$target" ] && echo "deps: $target needs the rows $(echo $rows): ${1:-all present}"
+    exit 0
+}
 # shellcheck disable=SC2086
 probe_all $rows
-[ -z "$failed" ] && exit 0
+[ -z "$failed" ] && done_ok
 missing=""
 for r in $failed; do
     for pkg in $(packages "$r"); do
@@ -367,7 +382,7 @@ $run_apt update -qq && DEBIAN_FRONTEND=noninteractive $run_apt install -y --no-i
 }
 # shellcheck disable=SC2086
 probe_all $failed
-[ -z "$failed" ] && exit 0
+[ -z "$failed" ] && done_ok "installed$missing"
 for r in $failed; do
     echo "deps: the $r probe still fails with$(printf ' %s' $(packages "$r")) installed:" >&2
     sed "s/^/    /" "$w/$r.log" | head -8 >&2

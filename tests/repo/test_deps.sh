@@ -51,6 +51,20 @@ if [ $rc -eq 0 ] && [ ! -s "$t/out" ] && [ ! -s "$t/err" ]; then
 else
     echo "FAIL cross group asked for a non-cross package: exit $rc, $(head -2 "$t/err")"
 fi
+# one target (make measure): its toolchain and emulator rows only, named
+# on one line; with its emulator gone, only that emulator's package
+deps m55
+if [ $rc -eq 0 ] && [ ! -s "$t/err" ] &&
+    grep -qx 'deps: m55 needs the rows arm-none-eabi newlib qemu-arm: all present' "$t/out"; then
+    echo "PASS target m55: its three rows, all present, said in one line"
+else
+    echo "FAIL target m55: exit $rc, $(cat "$t/out" "$t/err" | head -3)"
+fi
+mv "$t/bin/qemu-riscv32-static" "$t/qemu-riscv32-static.away" 2>/dev/null
+mv "$t/bin/qemu-riscv32" "$t/qemu-riscv32.away" 2>/dev/null
+asks "target rv32, its emulator missing" qemu-user-static rv32
+mv "$t/qemu-riscv32-static.away" "$t/bin/qemu-riscv32-static" 2>/dev/null
+mv "$t/qemu-riscv32.away" "$t/bin/qemu-riscv32" 2>/dev/null
 
 # As root: apt-get update, the install of the missing packages alone (lock
 # timeout, noninteractive), then every failed probe again. A stand-in for
