@@ -387,7 +387,7 @@ fresnel_rgb_q15 fresnel_lut_linear_avg_u16_q15_rgb(const uint16_t *table, int n)
  *     Cortex-M0);
  *   otherwise (Cortex-M0, M0+, M23) the scalar calls' arithmetic, with
  *     their per-call clamps and set-up done once.
- * The Armv7-E DSP extension's 16-bit lane instructions are not used: the
+ * The Armv7E-M DSP extension's 16-bit lane instructions are not used: the
  * Q30 intermediates that keep the bound need 32-bit lanes, which is what
  * the long multiply gives. Every body takes the same exact floors, so all
  * agree bit for bit: tests/runtime/q15/test_q15_batch.c checks every cos
