@@ -378,8 +378,9 @@ fresnel_rgb_q15 fresnel_lut_linear_avg_u16_q15_rgb(const uint16_t *table, int n)
  * written. Reentrant, no state, no allocation.
  * The body is chosen at compile time from the target:
  *   Helium (__ARM_FEATURE_MVE: Cortex-M55, M85): Schlick, generalized
- *     Schlick at p = 5, F82 and their _rgb forms four cosines per step in
- *     32-bit lanes, the last step predicated (no scalar tail);
+ *     Schlick at p = 5, F82 and their _rgb forms, and the one-channel u16
+ *     LUTs (the square root too), four cosines per step in 32-bit lanes,
+ *     the last step predicated (no scalar tail);
  *   a 32 x 32 -> 64-bit multiply in one instruction (Arm but Armv6-M and
  *     Armv8-M Baseline, so Cortex-M3, M4, M7, M33; RISC-V with M; x86-64;
  *     AArch64): each Q30 product one multiply, where the scalar calls take
@@ -392,9 +393,12 @@ fresnel_rgb_q15 fresnel_lut_linear_avg_u16_q15_rgb(const uint16_t *table, int n)
  * the long multiply gives. Every body takes the same exact floors, so all
  * agree bit for bit: tests/runtime/q15/test_q15_batch.c checks every cos
  * code on the host against the scalar calls, `make cross-test` the
- * Cortex-M0, M4F and M55 under qemu against the host. The LUTs'
- * position (a square root from tables) and the power of p != 5 are the
- * scalar calls' in every body.
+ * Cortex-M0, M4F and M55 under qemu against the host. The power of
+ * p != 5 and the cubic LUT are the scalar calls' in every body. The sqrt
+ * LUT's position with the long multiply: the root's last two corrections
+ * are taken only where they can move the position (about 2 (nodes - 1) in
+ * 2^15 cosines, every cosine from 2^14 + 1 nodes), so its time per cosine
+ * varies with c, where the scalar call's does not.
  * Cost per cosine: `make cross-count` (rows ending in "batch", against the
  * scalar call's rows; ports/README.md). */
 void fresnel_schlick_q15_batch(int32_t f0, const fresnel_q15 *c, fresnel_q15 *out, int n);

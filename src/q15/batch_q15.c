@@ -8,7 +8,7 @@
  * word of shifted operands; and, on the cores with neither, the scalar
  * calls' arithmetic with their set-up done once, or the scalar call itself
  * where that is all there is to share (the LUTs' square root, the power of
- * p != 5, the cubic and the three-channel tables). Every floor is the
+ * p != 5, the cubic). Every floor is the
  * scalar call's, so every body agrees with it bit for bit
  * (tests/runtime/q15/test_q15_batch.c on the host, make cross-test on the
  * Cortex-M0, M4F and M55). */
@@ -360,6 +360,68 @@ static fresnel_q15 fresnel_i_lut_pos_u16(const uint16_t *table, uint32_t pos, ui
     v0 = table[i];
     return (fresnel_q15)(((v0 << 15) + (table[i + 1] - v0) * t + (1u << 14)) >> 15);
 }
+
+/* Forced inline under GCC and Clang: the per-cosine path of the loops
+ * below, where -O2 would otherwise call it; the rare exact path a call. */
+#if defined(__GNUC__)
+#define FRESNEL_I_BATCH_INLINE static inline __attribute__((always_inline))
+#define FRESNEL_I_BATCH_CALL static __attribute__((noinline))
+#else
+#define FRESNEL_I_BATCH_INLINE static inline
+#define FRESNEL_I_BATCH_CALL static
+#endif
+
+/* pos = floor((S kk + 2^14) / 2^15), S = fresnel_i_sqrt_q30(c) */
+FRESNEL_I_BATCH_CALL uint32_t fresnel_i_sqrt_pos_exact(uint32_t c, uint32_t kk)
+{
+    return (uint32_t)(((uint64_t)fresnel_i_sqrt_q30(c) * kk + (1u << 14)) >> 15);
+}
+
+/* The position of c (a code in [0, one]) in a table uniform in sqrt(c),
+ * fresnel_i_sqrt_pos_exact's, for kk = k - 1, taking S's last two
+ * corrections only where they can matter. In fresnel_i_sqrt_q30's terms
+ * (math_q15.h): c' = c 4^m in [2^13, 2^15], m from the leading zeros;
+ * X = c' 2^15, s = sqrt(X); g from the reciprocal chord, in
+ * [2^44 / s, (2^44 / s)(1 + 2^-15.4)]. Then X g / 2^44 is in
+ * [s, s + 2^15 2^-15.4] = [s, s + 0.76], so its floor is y = floor(s) or
+ * y + 1; y + 1 shows as X - (y + 1)^2 < 0 (>= -(2 y + 1), held signed),
+ * and stepping back gives y and rem = X - y^2 in [0, 2 y], the scalar's.
+ * z0 = floor(rem g / 2^30) is z - 1, z or z + 1 (the scalar's comment), so
+ * S0 = floor((y 2^15 + z0) / 2^m) is within 1 of S, and S kk + 2^14 is
+ * S0 kk + 2^14 moved by at most kk. When the low 15 bits of the latter are
+ * in [kk, 2^15 - 1 - kk], that move crosses no multiple of 2^15 and S0
+ * gives pos; otherwise (about 2 kk in 2^15 cosines, and every cosine when
+ * 2 kk >= 2^15: lim = 0) S itself is taken. c = 0 gives pos 0, as S = 0
+ * does. */
+FRESNEL_I_BATCH_INLINE uint32_t fresnel_i_sqrt_pos(uint32_t c, uint32_t kk, uint32_t lim)
+{
+    const uint32_t *t;
+    uint32_t m, y, g, x, rem;
+    uint64_t p;
+    if (c == 0)
+        return 0;
+#if defined(__GNUC__)
+    m = (uint32_t)__builtin_clz(c);
+    m = m > 17u ? (m - 17u) >> 1 : 0u;
+#else
+    for (m = 0; (c << (2u * m)) < (1u << 13); m++)
+        ;
+#endif
+    x = c << (2u * m);
+    t = fresnel_i_rsqrt_chord_q15 + ((x >> 7) - 64u);
+    g = t[0] - (((t[0] - t[1]) * (x & 127u)) >> 7);
+    x <<= 15;
+    y = (uint32_t)(((uint64_t)x * g) >> 44);
+    rem = x - y * y;
+    if ((int32_t)rem < 0) {
+        y--;
+        rem += 2u * y + 1u;
+    }
+    p = (uint64_t)(((y << 15) + fresnel_i_mulhi(rem << 2, g)) >> m) * kk + (1u << 14);
+    if (((uint32_t)p & 0x7fffu) - kk < lim)
+        return (uint32_t)(p >> 15);
+    return fresnel_i_sqrt_pos_exact(c, kk);
+}
 #endif
 
 void fresnel_lut_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_q15 *out, int n)
@@ -374,13 +436,10 @@ void fresnel_lut_u16_q15_batch(const uint16_t *table, int nodes, const fresnel_q
         return;
     }
 #elif FRESNEL_I_LONG_MUL
-    /* pos = floor((x (k - 1) + 2^14) / 2^15), the scalar's from halves */
     if (k >= 2) {
+        uint32_t kk = (uint32_t)k - 1u, lim = kk < (1u << 14) ? (1u << 15) - 2u * kk : 0u;
         for (i = 0; i < n; i++)
-            out[i] = fresnel_i_lut_pos_u16(
-                table,
-                (uint32_t)(((uint64_t)fresnel_i_sqrt_q30(fresnel_i_batch_c(c[i])) * (uint32_t)(k - 1) + (1u << 14)) >> 15),
-                (uint32_t)k - 2u);
+            out[i] = fresnel_i_lut_pos_u16(table, fresnel_i_sqrt_pos(fresnel_i_batch_c(c[i]), kk, lim), kk - 1u);
         return;
     }
 #endif
@@ -418,9 +477,30 @@ void fresnel_lut_cubic_u16_q15_batch(const uint16_t *table, int nodes, const fre
         out[i] = fresnel_lut_cubic_u16_q15(table, nodes, c[i]);
 }
 
+#if FRESNEL_I_LONG_MUL && !FRESNEL_I_MVE
+/* One position, the three channels' tables (k nodes each) read at it. */
+static fresnel_rgb_q15 fresnel_i_lut_pos_u16_rgb(const uint16_t *table, int k, uint32_t pos)
+{
+    fresnel_rgb_q15 v;
+    v.r = fresnel_i_lut_pos_u16(table, pos, (uint32_t)k - 2u);
+    v.g = fresnel_i_lut_pos_u16(table + k, pos, (uint32_t)k - 2u);
+    v.b = fresnel_i_lut_pos_u16(table + 2 * k, pos, (uint32_t)k - 2u);
+    return v;
+}
+#endif
+
 void fresnel_lut_u16_q15_rgb_batch(const uint16_t *table, int nodes, const fresnel_q15 *c, fresnel_rgb_q15 *out, int n)
 {
     int i;
+#if FRESNEL_I_LONG_MUL && !FRESNEL_I_MVE
+    int k = fresnel_i_qlut_n(nodes);
+    if (k >= 2) {
+        uint32_t kk = (uint32_t)k - 1u, lim = kk < (1u << 14) ? (1u << 15) - 2u * kk : 0u;
+        for (i = 0; i < n; i++)
+            out[i] = fresnel_i_lut_pos_u16_rgb(table, k, fresnel_i_sqrt_pos(fresnel_i_batch_c(c[i]), kk, lim));
+        return;
+    }
+#endif
     for (i = 0; i < n; i++)
         out[i] = fresnel_lut_u16_q15_rgb(table, nodes, c[i]);
 }
@@ -429,6 +509,14 @@ void fresnel_lut_linear_u16_q15_rgb_batch(const uint16_t *table, int nodes, cons
                                           int n)
 {
     int i;
+#if FRESNEL_I_LONG_MUL && !FRESNEL_I_MVE
+    int k = fresnel_i_qlut_n(nodes);
+    if (k >= 2) {
+        for (i = 0; i < n; i++)
+            out[i] = fresnel_i_lut_pos_u16_rgb(table, k, fresnel_i_batch_c(c[i]) * (uint32_t)(k - 1));
+        return;
+    }
+#endif
     for (i = 0; i < n; i++)
         out[i] = fresnel_lut_linear_u16_q15_rgb(table, nodes, c[i]);
 }

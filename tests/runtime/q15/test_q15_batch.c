@@ -165,9 +165,11 @@ int main(void)
     static const int32_t f0s[] = {0, 1, 1310, 9000, 23000, 32767, 32768, 40000};
     static const int32_t f82s[] = {0, 32768, 20000, 31000, 5, 32768, 12345, 32768};
     static const fresnel_q16 ps[] = {5 << 16, 32768, 242483, 5 << 16, 1, 5 << 16, 64 << 16, 5 << 16};
-    static const int nodes[] = {16, 64, 2, 1, 0, 17, 1024, 16};
+    /* node counts: the clamps (0, 1, 2), and 20000, where the sqrt LUT
+     * batch takes the exact root for every cosine (k - 1 >= 2^14) */
+    static const int nodes[] = {16, 64, 2, 1, 0, 17, 1024, 20000};
     fresnel_q15 *codes = malloc(CODES * sizeof *codes);
-    uint16_t *table = malloc(3 * 1024 * sizeof *table);
+    uint16_t *table = malloc(3 * 20000 * sizeof *table);
     int r, k, i;
     if (!codes || !table) {
         CHECK("batch: memory", 0, "malloc failed");
@@ -176,7 +178,7 @@ int main(void)
     for (i = 0; i < CODES; i++)
         codes[i] = (fresnel_q15)i;
     /* a reflectance-like curve per channel, some nodes above one (headroom) */
-    for (i = 0; i < 3 * 1024; i++)
+    for (i = 0; i < 3 * 20000; i++)
         table[i] = (uint16_t)((i * 2654435761u >> 7) % 36000u);
     for (r = 0; r < (int)(sizeof rows / sizeof rows[0]); r++) {
         long bad1 = 0, bad3 = 0;
