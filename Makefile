@@ -1,6 +1,7 @@
 # Fresnel reflectance library: runtime (src/, include/), host tools (gen/), tests.
 #   make          build the library, the single-file runtimes, build/fresnel
-#                 and the default scene's example, then say what is where
+#                 and the default scene's example, then say what is where;
+#                 one job per core (JOBS=N or -jN to choose)
 #   make test     installs missing tools (tests/deps.sh), unit and error-bound
 #                 tests, again under ASan+UBSan, and again built by the other
 #                 compiler (clang when CC is gcc, else gcc): each check in the
@@ -44,27 +45,40 @@ ifneq ($(words $(TEST_BIN)),$(words $(sort $(TEST_BIN))))
 $(error two checks under tests/ share a name: $(sort $(foreach b,$(TEST_BIN),$(if $(filter-out 1,$(words $(filter $(b),$(TEST_BIN)))),$(notdir $(b))))))
 endif
 
+# As many jobs as the machine has cores, unless make was given -j (or is a
+# sub-make sharing its parent's jobs).
+JOBS ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+ifeq ($(findstring -j,$(MAKEFLAGS))$(findstring jobserver,$(MAKEFLAGS)),)
+MAKEFLAGS += -j$(JOBS)
+endif
+
 .PHONY: all single test test-bins check check-bins install uninstall deps clean report bench bench-run viewer \
         spirv-count
 .DELETE_ON_ERROR:
 
 # A first build ends with what it made and where (tests/repo/test_make_summary.sh).
-SINGLE := $(BUILD)/single/fresnel_single_f32.h $(BUILD)/single/fresnel_single_q15.h $(BUILD)/single/fresnel_single_f16.h
+SINGLE := ports/single/fresnel_single_f32.h ports/single/fresnel_single_q15.h ports/single/fresnel_single_f16.h
 all: $(BUILD)/libfresnel.a $(BUILD)/fresnel $(SINGLE) $(BUILD)/scene_example
-	@echo "built, in $(BUILD)/:"
-	@echo "  libfresnel.a     the runtime, every number type (headers: include/)"
-	@echo "  single/          fresnel_single_f32.h, _q15.h, _f16.h: one type's runtime in one file"
-	@echo "  fresnel          the generator: constants and tables for a scene ($(BUILD)/fresnel help)"
-	@echo "  scene_example    a program on $(SCENE)'s header, scene_default.h: gold by angle"
+	@echo "built:"
+	@echo "  $(BUILD)/libfresnel.a     the runtime, every number type (headers: include/)"
+	@echo "  $(BUILD)/fresnel          the generator: constants and tables for a scene ($(BUILD)/fresnel help)"
+	@echo "  $(BUILD)/scene_example    a program on $(SCENE)'s header, scene_default.h: gold by angle"
+	@echo "  ports/single/          fresnel_single_f32.h, _q15.h, _f16.h: one type's runtime in one file"
 	@echo "next: make test; make report for the error, time and instructions of every model"
 	@echo "      ($(BUILD)/report/report.md; the last one made is data/report/report.md)"
 
 # The single-file runtimes: one stb-style header per number type, made from
-# include/ and src/<type>/ by ports/single.sh.
+# include/ and src/<type>/ by ports/single.sh into ports/single/, where they
+# are committed for users who vendor one file (tests/ports/test_single_file.sh
+# fails when the committed copy is not what the sources give). Rewritten only
+# when the text changes; builds running at once each write their own
+# temporary file and move it into place.
 single: $(SINGLE)
-$(BUILD)/single/fresnel_single_%.h: ports/single.sh $(wildcard include/*.h) $(wildcard src/*/*)
-	@mkdir -p $(@D)
-	sh ports/single.sh $* > $@.tmp && mv $@.tmp $@
+ports/single/fresnel_single_%.h: ports/single.sh $(wildcard include/*.h) $(wildcard src/*/*)
+	@mkdir -p $(BUILD)/single $(@D)
+	@sh ports/single.sh $* > $(BUILD)/single/$*.tmp && \
+	    if cmp -s $(BUILD)/single/$*.tmp $@; then rm -f $(BUILD)/single/$*.tmp; touch $@; \
+	    else mv $(BUILD)/single/$*.tmp $@ && echo "wrote $@"; fi
 
 # The default scene: its generated header and a program built against it.
 SCENE := data/scenes/default.scene
@@ -170,7 +184,6 @@ deps:
 # three builds share JOBS jobs; then tests/run.sh runs JOBS checks at a time
 # and prints the ten slowest. The last line printed is "N passed, N failed".
 OTHER_CC := $(if $(findstring clang,$(shell $(CC) --version 2>/dev/null)),gcc,clang)
-JOBS     ?= $(shell getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
 # -jJOBS unless make was given its own -j (a jobserver the sub-makes share)
 JFLAG     = $(if $(findstring jobserver,$(MAKEFLAGS)),,-j$(JOBS))
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer

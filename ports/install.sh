@@ -3,7 +3,8 @@
 #   sh ports/install.sh install   DESTDIR PREFIX BUILD
 #   sh ports/install.sh uninstall DESTDIR PREFIX
 # Installs, under DESTDIR/PREFIX:
-#   include/*.h, lib/libfresnel.a, lib/pkgconfig/fresnel.pc,
+#   include/*.h and the single-file runtimes (ports/single/*.h),
+#   lib/libfresnel.a, lib/pkgconfig/fresnel.pc,
 #   lib/cmake/fresnel/fresnelConfig.cmake + fresnelConfigVersion.cmake
 #   (imported target fresnel::fresnel), bin/fresnel, share/fresnel/data/ (the
 #   data pack, which the installed bin/fresnel finds without --data),
@@ -185,7 +186,7 @@ done
 mkdir -p "$root" || exit 1
 
 version=$(sed -n 's/^#define FRESNEL_VERSION "\(.*\)"/\1/p' include/fresnel.h)
-for h in include/*.h; do put 644 include "$h"; done
+for h in include/*.h ports/single/*.h; do put 644 include "$h"; done
 put 644 lib "$build/libfresnel.a"
 put 755 bin "$build/fresnel"
 mkdirs lib/pkgconfig
@@ -224,6 +225,7 @@ echo "f $manifest_rel" >>"$list"
 cat <<EOF
 installed fresnel $version in $root ($(grep -c '^f ' "$manifest") files, listed in $manifest_rel):
   include/            $(cd include && ls *.h | tr '\n' ' ')
+                      $(cd ports/single && ls *.h | tr '\n' ' ')(one file each)
   lib/                libfresnel.a; pkgconfig/fresnel.pc; the CMake package in lib/cmake/fresnel (target fresnel::fresnel)
   bin/fresnel         the generator, which reads share/fresnel/data/
   share/fresnel/      data/ (the data pack), glsl/, hlsl/ and msl/ (the shader ports), LICENSE

@@ -29,7 +29,7 @@
  * forms rely on IEEE rounding: -ffast-math and its parts break both silently
  * (critical-angle results off by up to 1), so they stop the build here. */
 #if defined(__FAST_MATH__) || defined(__FINITE_MATH_ONLY__) && __FINITE_MATH_ONLY__
-#error "fresnel: compile src/ without -ffast-math / -Ofast / -ffinite-math-only (add -fno-fast-math for these files); see fresnel.h THREAD SAFETY"
+#error "fresnel: compile the runtime (its sources in src/, or the file that defines FRESNEL_IMPLEMENTATION before including a single-file header) without -ffast-math / -Ofast / -ffinite-math-only: add -fno-fast-math for it; see fresnel.h THREAD SAFETY"
 #endif
 
 #include <math.h>

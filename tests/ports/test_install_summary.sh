@@ -1,7 +1,8 @@
 #!/bin/sh
 # passes: first (the install itself is tests/ports/test_consumers.sh's; runs once)
 # `make install` says what it installed where and how a build finds it, and
-# installs the shader ports (share/fresnel/glsl/, hlsl/ and msl/); `make uninstall`
+# installs the shader ports (share/fresnel/glsl/, hlsl/ and msl/) and the
+# single-file runtimes (in include/); `make uninstall`
 # says what it removed. (tests/ports/test_consumers.sh builds through each route.)
 t=$(mktemp -d)
 trap 'rm -rf "$t"' EXIT
@@ -13,14 +14,17 @@ if make --no-print-directory -s install PREFIX=$P DESTDIR="$t/root" >"$t/out" 2>
     for f in share/fresnel/hlsl/fresnel.hlsl share/fresnel/msl/fresnel.metal share/fresnel/glsl/fresnel.glsl; do
         [ -f "$R/$f" ] || missing="$missing $f"
     done
-    [ -z "$missing" ] && echo "PASS make install puts the shader ports in share/fresnel/ (glsl/, hlsl/, msl/)" ||
+    for f in ports/single/*.h; do
+        cmp -s "$f" "$R/include/$(basename "$f")" || missing="$missing include/$(basename "$f")"
+    done
+    [ -z "$missing" ] && echo "PASS make install puts the shader ports in share/fresnel/ (glsl/, hlsl/, msl/) and the single files in include/" ||
         echo "FAIL make install lacks:$missing"
     said=""
     grep -q "^installed fresnel .* in $R ($n files" "$t/out" || said="$said where-and-count"
     for d in include/ lib/ bin/fresnel share/fresnel/; do
         grep -q "^  $d " "$t/out" || said="$said $d"
     done
-    for h in include/*.h; do
+    for h in include/*.h ports/single/*.h; do
         grep -q "$(basename "$h")" "$t/out" || said="$said $h"
     done
     grep -q 'pkg-config --cflags --libs fresnel' "$t/out" && grep -q 'find_package(fresnel)' "$t/out" || said="$said how-to-use"

@@ -9,12 +9,12 @@ if ! make --no-print-directory BUILD="$BUILD" >"$t/out" 2>&1; then
     echo "FAIL make: $(tail -5 "$t/out")"
     exit 1
 fi
-sed -n '/^built, in /,$p' "$t/out" >"$t/summary"
+sed -n '/^built:$/,$p' "$t/out" >"$t/summary"
 n=$(wc -l <"$t/summary")
 names=$(sed -n 's/^  \([a-z_./]*[a-z_.]\/*\) .*/\1/p' "$t/summary")
 missing=""
 for name in $names; do
-    [ -e "$BUILD/$name" ] || missing="$missing $BUILD/$name"
+    [ -e "$name" ] || missing="$missing $name"
 done
 if [ "$n" -eq 0 ] || [ "$n" -gt 10 ]; then
     echo "FAIL make ends with $n summary lines: $(tail -3 "$t/out")"

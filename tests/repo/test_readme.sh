@@ -10,7 +10,7 @@
 #          emulation) are checked to be targets of the Makefile instead
 #   scene  a manifest, written to the file its first line names (# NAME)
 #   c      compiled by gcc as C99 and by g++ as C++17, -Wall -Wextra
-#          -Wpedantic -Werror, against include/, build/single/ and the
+#          -Wpedantic -Werror, against include/, ports/single/ and the
 #          headers the blocks before wrote
 #   cmake  the lines of a game's CMakeLists.txt, with this repository in
 #          fresnel/ and tests/ports/consumer/consumer.c as the game: configured,
@@ -98,8 +98,8 @@ for b in "$t"/blocks/[0-9]*; do
         ;;
     c)
         cp "$b" "$t/block.c"
-        if (cd "$run" && gcc -std=c99 $W -Iinclude -I. -Ibuild/single -c "$t/block.c" -o "$t/block.o") >"$t/log" 2>&1 &&
-            (cd "$run" && g++ -x c++ -std=c++17 $W -Iinclude -I. -Ibuild/single -c "$t/block.c" -o "$t/block.o") >>"$t/log" 2>&1 &&
+        if (cd "$run" && gcc -std=c99 $W -Iinclude -I. -Iports/single -c "$t/block.c" -o "$t/block.o") >"$t/log" 2>&1 &&
+            (cd "$run" && g++ -x c++ -std=c++17 $W -Iinclude -I. -Iports/single -c "$t/block.c" -o "$t/block.o") >>"$t/log" 2>&1 &&
             [ ! -s "$t/log" ]; then
             echo "PASS $where: c, compiles warning-free as C99 (gcc) and C++17 (g++)"
         else

@@ -1,6 +1,6 @@
 /* A program as a game or firmware writes it against the single-file runtimes
  * (ports/single.sh): WITH_F32, WITH_Q15 and WITH_F16 pick the types, which
- * come from build/single/fresnel_single_<type>.h, or, with FRESNEL_LIBRARY, from include/
+ * come from ports/single/fresnel_single_<type>.h, or, with FRESNEL_LIBRARY, from include/
  * and libfresnel.a. tests/ports/test_single_file.sh builds it both ways, as C99
  * and (a unity build that includes the .c files) as C++17, and compares the
  * printed results bit for bit. single_file_impl.c is the one file that
