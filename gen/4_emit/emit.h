@@ -66,7 +66,7 @@ void emit_loaded_free(emit_loaded *l);
  * a message. */
 int emit_scene(const char *manifest, const char *out_path, const char *tex_path, const char *dir_option,
                const emit_backend *backend);
-void emit_licence_comment(FILE *f); /* the opening comment's licence lines */
+void emit_licence_comment(FILE *f, const emit_input *in); /* the data's terms, material by material */
 /* The opening comment's list of materials and where each came from: a data
  * pack file, or a user's file by name, format, size and SHA-256. */
 void emit_material_list(FILE *f, const emit_input *in);

@@ -58,7 +58,7 @@ if "$F" gen "$t/x.v1" -o "$t/one.h" 2>"$t/err" && "$F" gen "$t/x.v2" -o "$t/two.
 else
     echo "FAIL gen name: two named scenes together: $(head -5 "$t/err")"
 fi
-if grep -q "Licence: the numbers below are facts derived from refractiveindex.info data (CC0 1.0)" "$t/one.h" &&
+if grep -q "Data: the numbers below are facts derived from refractiveindex.info data (CC0 1.0;" "$t/one.h" &&
     grep -q "CC BY-SA 4.0" "$t/one.h" && grep -q "under the project's MIT licence" "$t/one.h" &&
     "$F" gen --glsl "$t/x.v1" -o "$t/one.glsl" 2>/dev/null && grep -q "MIT licence" "$t/one.glsl"; then
     echo "PASS gen name: the opening comment states the constants' licence (C and GLSL)"

@@ -91,10 +91,22 @@ printf 'materials = cu\nmaterial tin = nk/TiN.yml\nmodels = schlick f82 lut16\nt
 if (cd "$t" && "$OLDPWD/$F" gen project/coat.scene -o "$t/coat.h" 2>"$t/err"); then
     hash=$(sha256sum "$t/project/nk/TiN.yml" | cut -d' ' -f1)
     bytes=$(wc -c <"$t/project/nk/TiN.yml" | tr -d ' ')
-    if grep -q "^ \*   tin  *TiN.yml (a user's file: rii-yaml, $bytes bytes)" "$t/coat.h" && grep -q "sha256 $hash" "$t/coat.h" &&
+    if grep -q "^ \*   tin  *TiN.yml (supplied by the user: rii-yaml, $bytes bytes)" "$t/coat.h" && grep -q "sha256 $hash" "$t/coat.h" &&
         grep -q 'fresnel_coat_tin_f0' "$t/coat.h" && grep -q 'fresnel_coat_cu_f0' "$t/coat.h"; then
         pass "gen: 'material tin = nk/TiN.yml' beside 'materials = cu'; the header records name, format, size and sha256"
     else fail "gen with a user's file: header comment $(grep -n 'tin' "$t/coat.h" | head -3)"; fi
+    # the data's terms as they are: the pack's licence for cu, none claimed for tin
+    sed -n '1,/^ \*\/$/p' "$t/coat.h" | tr '\n' ' ' >"$t/opening"
+    if grep -q "the data pack's materials are facts derived from refractiveindex.info data (CC0 1.0;" "$t/opening" &&
+        grep -q " \* tin: derived from a file supplied by the user (named with its SHA-256 in the  \* material list), under whatever terms it came with" "$t/opening" &&
+        ! grep -q "numbers below are facts derived from refractiveindex.info" "$t/opening"; then
+        pass "gen: the header gives the data pack's licence for its materials and, for the user's file, no licence it cannot know"
+    else fail "gen with a user's file: the opening comment's data terms: $(sed -n 2,5p "$t/coat.h")"; fi
+    printf 'material tin = nk/TiN.yml\nmodels = schlick\n' >"$t/project/own.scene"
+    if "$F" gen "$t/project/own.scene" -o "$t/own.h" 2>"$t/err" && ! grep -q "CC0" "$t/own.h" &&
+        grep -q "tin: derived from a file supplied by the user" "$t/own.h"; then
+        pass "gen: a scene of the user's files alone claims no licence for their data"
+    else fail "gen with only a user's file: $(sed -n 2,4p "$t/own.h" 2>/dev/null) $(head -1 "$t/err")"; fi
     if ${CC:-cc} -std=c99 -Wall -Wextra -Werror -fsyntax-only -Iinclude -include "$t/coat.h" -x c /dev/null 2>"$t/err"; then
         pass "the header with a user's material compiles warning-free"
     else fail "header with a user's material: $(head -2 "$t/err")"; fi
