@@ -159,6 +159,43 @@ static int print_targets(const char *which, const encoded_scene *es)
 }
 
 /* A parameter's row (catalog/parameters.h); one number repeated in r, g, b. */
+/* Which rows each scene model's runtime call takes: its shader call
+ * (catalog/models.h, the C call of the same name and arguments) with each
+ * constant named by its row here. */
+#define PARAM_NAMES(field, count, group, constant, name, why, q15, q15_why) {constant, name},
+static void print_calls(void)
+{
+    static const struct {
+        const char *constant, *row;
+    } names[] = {DERIVED_PARAMETERS(PARAM_NAMES)};
+    int i;
+    size_t k;
+    printf("# the runtime call each scene model makes, with these rows (the _rgb form; the Q1.15 and\n"
+           "# binary16 calls take the same rows as `fresnel gen` encodes them):\n");
+    for (i = 0; i < MODEL_ROWS; i++) {
+        const char *g = model_catalog[i].glsl;
+        if (!g || (model_catalog[i].offered & MODEL_FILM))
+            continue;
+        printf("#   %-16s ", model_catalog[i].name);
+        while (*g) {
+            if (*g != '@') {
+                putchar(*g++);
+                continue;
+            }
+            for (k = 0, g++; k < sizeof names / sizeof names[0]; k++) {
+                size_t len = strlen(names[k].constant);
+                if (!strncmp(g, names[k].constant, len) && !(g[len] == '_' || (g[len] >= 'a' && g[len] <= 'z'))) {
+                    fputs(names[k].row, stdout);
+                    g += len;
+                    break;
+                }
+            }
+        }
+        putchar('\n');
+    }
+}
+#undef PARAM_NAMES
+
 #define PARAM_ROW_3(name, v) row(name, v);
 #define PARAM_ROW_1(name, v)                                                                                           \
     {                                                                                                                  \
@@ -191,7 +228,9 @@ int cmd_params(int argc, char **argv)
                    "the fit's RMS, LSK a and alpha (on the fitted eta, kappa), Gulbrandsen r and g,\n"
                    "and Cook-Torrance's representative IOR (scalar, repeated in r, g, b). eta and\n"
                    "kappa are relative to the incident medium n1. Lines starting with # describe\n"
-                   "the run.\n\n%s"
+                   "the run and name the rows each runtime call takes (fresnel_conductor_rgb: the\n"
+                   "fitted eta_fit, kappa_fit for the exact model; eta_gaussian, kappa_gaussian for\n"
+                   "exact-gaussian; eta_point, kappa_point for exact-point).\n\n%s"
                    "  --for TARGET    instead, the parameters another renderer's metal takes, fitted\n"
                    "                  through that renderer's own Fresnel formula to the GT under the\n"
                    "                  --gamut policy (mean CIEDE2000 over theta 0-90 deg, inside the\n"
@@ -264,6 +303,7 @@ int cmd_params(int argc, char **argv)
                 status = print_film(target_find(for_target), film_n, film_d, &es);
             goto done;
         }
+        print_calls();
         printf("parameter,r,g,b\n");
         row("dominant_nm", p.nm);
         row("f0_unclamped", p.f0_unclamped);
