@@ -102,14 +102,17 @@
  *   1.33, 1.4, 1.5 and at the domain's edge; `make search`, and `make
  *   test` on the worst stacks it keeps): FRESNEL_BOUND_FILM, _Q15 (LSB),
  *   _F16 (the searched maxima and where: tests/README.md, "Thin film").
- *   Against the spectral truth, CIEDE2000 under the clip policy, films n_f
- *   1.2-2.5 (every 0.1) on Au, Cu, Al, Ti, Fe and BK7 in air, theta 0-89
- *   deg (every degree), d 0-1000 nm (every 5 nm), 1.52 million samples
- *   (FILM_FULL=1 build/tests/test_film; the default run samples it):
+ *   Against the spectral truth (Airy's sum at every nanometre, held to
+ *   [0, 1] per channel), CIEDE2000 over the films of the report's scene
+ *   (data/scenes/report.scene: 20 materials, films 1.2-2.5), theta 0-90 deg
+ *   every degree, d 0-1000 nm every 5 nm; `make report`, data/report/report.md
+ *   "Thin film", row all (tests/repo/test_doc_numbers.sh holds these to it):
  *                 mean    max
- *     binary32    0.090   1.44
- *     Q1.15       0.092   1.44
- *     binary16    0.124   1.90
+ *     binary32    0.053   1.074
+ *     Q1.15       0.055   1.090
+ *     binary16    0.093   1.408
+ *   FILM_FULL=1 build/tests/test_film prints the same measure on a denser
+ *   grid (films 1.2-2.5 every 0.1 on six substrates, 1.52 million samples).
  *   (the double model: as binary32). Thick films (1000-5000 nm, gold
  *   under 2.5, BK7 under 1.8) stay below 0.25. A film of no thickness,
  *   and one of the ambient's index at any thickness, give the bare
@@ -119,10 +122,9 @@
  *   binary32: 53 interpolated table values, 6 complex exponentials (short
  *   polynomials, no libm call), 6 complex divisions, 36 multiply-adds for
  *   the channels; the poles' loop runs 8 lanes, padded, without a branch,
- *   and compilers vectorise it (src/f32/film.c). Measured: 65.8 ns (gcc
- *   -O2, x86-64; `make bench`, row film-f32, median; every compiler and
- *   flag set: data/report/report.md, "Host speed against other renderers'
- *   algorithms").
+ *   and compilers vectorise it (src/f32/film.c). Measured: 66.0 ns (gcc
+ *   -O2, x86-64; data/report/report.md, "Thin film", the f32 row; every
+ *   compiler and flag set: `make bench`, row film-f32).
  *   Q1.15: each pole interpolates 8 values and forms a complex exponential
  *   from tables and a complex division normalised by shifts (a 257-entry
  *   reciprocal table, no division instruction, no soft-float helper); the
