@@ -128,7 +128,10 @@ typedef struct encoded_film {
 } encoded_film;
 /* 0; -1 when p has no film (film_n 0), the stack is outside the model's
  * domain (film_stack_domain: out->why says which condition fails) or the
- * fit fails (out of memory). s: the material's spectrum. */
-int encode_film(const spectrum *s, const gen_context *g, const material_params *p, encoded_film *out);
+ * fit fails (out of memory). s: the material's spectrum. poles: the
+ * colour space's poles (film_fit_poles, the same for every material of a
+ * scene), or NULL to fit them here. */
+int encode_film(const spectrum *s, const gen_context *g, const material_params *p, const film_model *poles,
+                encoded_film *out);
 
 #endif

@@ -205,7 +205,8 @@ static int halves_finite(const fresnel_f16 *v, size_t n)
 }
 #endif
 
-int encode_film(const spectrum *s, const gen_context *g, const material_params *p, encoded_film *out)
+int encode_film(const spectrum *s, const gen_context *g, const material_params *p, const film_model *poles,
+                encoded_film *out)
 {
     film_stack f;
     memset(out, 0, sizeof *out);
@@ -218,7 +219,13 @@ int encode_film(const spectrum *s, const gen_context *g, const material_params *
     f.substrate = s;
     if (film_stack_domain(&f, out->why, sizeof out->why))
         return -1;
-    if (film_fit_poles(&g->cm, &g->cs, &out->model, NULL) || film_fit_material(&f, &g->cm, &g->cs, &out->model))
+    if (poles) {
+        memcpy(out->model.nu, poles->nu, sizeof out->model.nu);
+        memcpy(out->model.gamma, poles->gamma, sizeof out->model.gamma);
+        memcpy(out->model.weight, poles->weight, sizeof out->model.weight);
+    } else if (film_fit_poles(&g->cm, &g->cs, &out->model, NULL))
+        return -1;
+    if (film_fit_material(&f, &g->cm, &g->cs, &out->model))
         return -1;
     film_encode_f32(&out->model, &out->f32);
     film_decode_f32(&out->f32, &out->model_f32);

@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "2_derive/film_fit.h"
 #include "common/cli.h"
 #include "common/reference.h"
 
@@ -61,7 +62,7 @@ int scene_model_prepare(const scene_entry *e, lut_spacing spacing, const spectru
         if (!(m->film_owned = malloc(sizeof *m->film_owned)))
             return cli_oom("scene model");
         m->film = m->film_owned;
-        if (encode_film(s, g, p, m->film_owned)) {
+        if (encode_film(s, g, p, NULL, m->film_owned)) {
             status = film_failed(p->info.id, p->info.id, p, m->film_owned);
             scene_model_free(m);
             return status;
@@ -270,16 +271,28 @@ static int encode_all(encoded_scene *es)
         if (model_of(sc->models[m].row)->offered & MODEL_FILM)
             break;
     if (m < sc->model_count) { /* the scene has the thin-film model: every material has a film */
-        if (!(es->films = malloc((size_t)sc->material_count * sizeof *es->films)))
+        /* the poles depend on the colour space alone: fitted once for every material */
+        film_model *poles = malloc(sizeof *poles);
+        int failed = 0;
+        if (!poles || !(es->films = malloc((size_t)sc->material_count * sizeof *es->films))) {
+            free(poles);
             return cli_oom("encode scene");
-        for (i = 0; i < sc->material_count; i++) {
+        }
+        if (film_fit_poles(&es->g->cm, &es->g->cs, poles, NULL)) {
+            free(poles);
+            poles = NULL;
+        }
+        for (i = 0; i < sc->material_count && !failed; i++) {
             const material_params *p = &es->params[i];
             if (!(p->film_n > 0.0))
-                return cli_error(where_at(es, sc->material_line[i], where),
-                                 "%s needs a film (a scene's film key, curve's --film N:D)", sc->models[m].name);
-            if (encode_film(es->spectra[i], es->g, p, &es->films[i]))
-                return film_failed(where_at(es, sc->material_line[i], where), sc->materials[i], p, &es->films[i]);
+                failed = cli_error(where_at(es, sc->material_line[i], where),
+                                   "%s needs a film (a scene's film key, curve's --film N:D)", sc->models[m].name);
+            else if (encode_film(es->spectra[i], es->g, p, poles, &es->films[i]))
+                failed = film_failed(where_at(es, sc->material_line[i], where), sc->materials[i], p, &es->films[i]);
         }
+        free(poles);
+        if (failed)
+            return failed;
     }
     for (i = 0; i < sc->material_count; i++) {
         if ((status = params_fit(es, i)))
