@@ -169,5 +169,14 @@ if [ -n "$times_file" ] && [ -d "$(dirname "$times_file")" ]; then
         cp "$work/times" "$times_file"
     fi
 fi
+if [ $only_check = yes ]; then
+    # what make check ran, what it left to make test, and how to run one alone
+    left=$(for src in $(find tests \( -name 'test_*.c' -o -name 'test_*.sh' \) -type f | sort); do
+        case $(header "$src" "make check") in no*) basename "$src" ;; esac
+    done | tr '\n' ' ')
+    echo "NOTE make check ran $n checks: $(awk '{ n = $6; sub(/.*\//, "", n); sub(/\.(c|sh)$/, "", n); printf "%s ", n }' "$work/list")"
+    echo "NOTE left to make test (external tools, other passes): $left"
+    echo "NOTE one alone: build/tests/test_NAME (a .c check; make build/tests/test_NAME first), or BUILD=build sh with the script's path under tests/"
+fi
 echo "$pass passed, $fail failed"
 [ "$fail" -eq 0 ]

@@ -82,6 +82,11 @@ rm -f "$t/build/a" "$t/build/b"
 (cd "$t" && CC=cc JOBS=2 sh tests/run.sh --check first=build) >"$t/out" 2>&1
 grep -q 'PASS \[build\] slow' "$t/out" && echo "FAIL run.sh: --check ran a 'make check: no' check" ||
     expect "--check leaves out 'make check: no'" "PASS [build] everywhere build cc" "NOTE checks per pass: build 5"
+# and says which it ran, which it left to make test, and how to run one alone
+grep -q '^NOTE make check ran 5 checks: .*test_everywhere' "$t/out" && grep -q '^NOTE left to make test.*test_slow' "$t/out" &&
+    grep -q '^NOTE one alone: build/tests/test_NAME' "$t/out" &&
+    echo "PASS run.sh: --check names the checks it ran, those left to make test, and how to run one alone" ||
+    echo "FAIL run.sh: --check's closing notes: $(grep '^NOTE' "$t/out" | tail -3 | tr '\n' ' ')"
 
 # two C checks of one name in two folders would share one binary: a FAIL line
 cp "$t/${TC}test_c.c" "$t/${T}test_c.c"

@@ -1,5 +1,6 @@
 #!/bin/sh
 # passes: all (the shader back ends of the tool, under ASan+UBSan in the sanitize pass)
+# make check: no (its outputs are test_gen_identity.sh's, byte for byte, in make check; this one runs the back ends under ASan+UBSan and their bad input in make test)
 # `fresnel gen --glsl` (with --tables), `--hlsl`, `--msl`, `--wgsl` and `--wgsl-f16` on every committed
 # scene and every scene of the shader tests (tests/data/scenes/): exit 0, and a
 # function per material and model. Bad input for either back end: a clear

@@ -1,5 +1,6 @@
 #!/bin/sh
 # passes: first (g++ and clang++ compile the same C++ in every pass)
+# make check: no (glslangValidator, spirv-cross)
 # The MSL port (ports/msl/) where Apple's compiler is not: for the default
 # scene and the three scenes of the Vulkan test (every model, every LUT
 # kind, the thin film on six substrates), `fresnel gen --msl` after

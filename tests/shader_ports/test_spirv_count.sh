@@ -1,5 +1,6 @@
 #!/bin/sh
 # passes: first (glslangValidator and spirv-opt do the same work in every pass)
+# make check: no (glslangValidator, spirv-opt)
 # `make spirv-count` (ports/vulkan/spirv_count.sh): a row for every model of
 # ports/vulkan/spirv_count.scene and for the thin film's two peers with a positive instruction count in each
 # column (the harness subtracted), every optimised module valid SPIR-V

@@ -1,5 +1,6 @@
 #!/bin/sh
 # passes: first (the page is the same in every pass)
+# make check: no (headless Chromium)
 # The viewer's page as a user first sees it, in headless Chromium. With a
 # 1280 x 800 window: it opens on the scene's own material (the first
 # `material ID = FILE` line) rather than the data pack's first, unless the
