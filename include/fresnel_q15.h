@@ -308,8 +308,8 @@ fresnel_q15 fresnel_dielectric_q15(const fresnel_ior_prep_q15 *m, int32_t c);
  * Cost: uniform in c, 3 mul, no division; uniform in sqrt(c), 7 mul more:
  * the exact square root from two const tables (1168 bytes, shared by every
  * form), no loop; the _residual forms add Schlick's 8 mul. On a Cortex-M0
- * with a 64-node table (`make cross-count`): 187 instructions per call
- * (_u16), 97 uniform in c. */
+ * with a 64-node table (`make cross-count`, rows lut u16 and lut-linear
+ * u16): 187 instructions per call (_u16), 96 uniform in c. */
 fresnel_q15 fresnel_lut_u16_q15(const uint16_t *table, int n, int32_t c);
 fresnel_q15 fresnel_lut_linear_u16_q15(const uint16_t *table, int n, int32_t c);
 fresnel_q15 fresnel_lut_u8_q15(const uint8_t *table, int n, int32_t c);
@@ -338,8 +338,8 @@ fresnel_rgb_q15 fresnel_lut_linear_residual_s8_q15_rgb(fresnel_rgb_q15 f0, const
  * Error <= FRESNEL_BOUND_LUT_CUBIC_Q15 LSB (nodes in [0, one];
  * FRESNEL_BOUND_LUT_CUBIC_Q15_HEADROOM with nodes above) against the same cubic in double
  * at the table's values. Cost: the position of fresnel_lut_u16_q15, 7 mul
- * for the weights, 4 per channel; 253 Cortex-M0 instructions per call with a
- * 64-node table (`make cross-count`). */
+ * for the weights, 4 per channel; 252 Cortex-M0 instructions per call with a
+ * 64-node table (`make cross-count`, row lut-cubic u16). */
 fresnel_q15 fresnel_lut_cubic_u16_q15(const uint16_t *table, int n, int32_t c);
 fresnel_rgb_q15 fresnel_lut_cubic_u16_q15_rgb(const uint16_t *table, int n, int32_t c);
 

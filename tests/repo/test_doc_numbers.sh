@@ -5,7 +5,8 @@
 # by `make report`): the thin film's CIEDE2000 (binary32, Q1.15, binary16,
 # mean and max), its binary32 time, its tables' bytes and its Cortex-M0
 # instructions, wherever they are quoted (include/fresnel_film.h, README.md,
-# tests/README.md's pole table, its six-pole row being the shipped film).
+# tests/README.md's pole table, its six-pole row being the shipped film);
+# and the LUTs' Cortex-M0 counts fresnel_q15.h quotes.
 R=data/report/report.md
 film=$(sed -n '/^## Thin film/,/^## /p' "$R")
 all=$(echo "$film" | grep -m1 '^| all | |' | awk -F'|' '{ gsub(/ /, ""); print $4, $5, $6, $7, $8, $9 }')
@@ -35,3 +36,14 @@ grep '^| a thin film' README.md | grep -q " $m0 Cortex-M0 instructions" || bad="
 [ "$(awk -F'|' '$2 ~ /^ 6 $/ { gsub(/ /, "", $7); print $7 }' tests/README.md)" = "$m0" ] || bad="$bad tests/README.md(poles 6)"
 [ -z "$bad" ] && echo "PASS the film's Cortex-M0 count ($m0) is $R's in $H, README.md and tests/README.md's six-pole row" ||
     echo "FAIL the film's Cortex-M0 count is not $R's $m0 in:$bad"
+# fresnel_q15.h's LUT counts: the Cortex-M0 means of the rows it names
+m0mean() { sed -n '/^== m0 fixed point/,/^== /p' "$R" | awk -v r="$1" 'index($0, r " ") == 1 {
+    rest = substr($0, length(r) + 1); split(rest, v, " "); if (v[1] ~ /^[0-9]+$/) { print v[1]; exit } }'; }
+Q=include/fresnel_q15.h
+q=$(tr '\n' ' ' <"$Q" | sed 's/ \* / /g')
+u16=$(m0mean "lut u16") lin=$(m0mean "lut-linear u16") cub=$(m0mean "lut-cubic u16")
+bad=""
+echo "$q" | grep -q "): $u16 instructions per call (_u16), $lin uniform in c\." || bad="$bad lut-u16=$u16/lut-linear=$lin"
+echo "$q" | grep -q "per channel; $cub Cortex-M0 instructions per call" || bad="$bad lut-cubic=$cub"
+[ -n "$u16" ] && [ -z "$bad" ] && echo "PASS $Q's LUT instruction counts ($u16, $lin, $cub) are $R's Cortex-M0 means" ||
+    echo "FAIL $Q's LUT instruction counts are not $R's:$bad"
