@@ -27,3 +27,13 @@ elif ! grep -q 'make report' "$t/summary" || ! grep -q 'report.md' "$t/summary";
 else
     echo "PASS make ends with $n lines: $(echo $names | wc -w) things built ($(echo $names)), each there, and how to see the report"
 fi
+# `make` alone runs one job per core (JOBS, the CPU count), and a -j given
+# on the command line wins
+cores=$(getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+plain=$(env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -pnq all 2>/dev/null | sed -n 's/^MAKEFLAGS = //p' | grep -o -- '-j[0-9]*' | head -1)
+given=$(env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -j1 -pnq all 2>/dev/null | sed -n 's/^MAKEFLAGS = //p' | grep -o -- '-j[0-9]*' | sort -u | tr '\n' ' ')
+if [ "$plain" = "-j$cores" ] && [ "$given" = "-j1 " ]; then
+    echo "PASS make runs $cores jobs by default (one per core), -j1 when asked"
+else
+    echo "FAIL make's jobs: '$plain' by default (want -j$cores), '$given' with -j1 (want -j1 alone)"
+fi
